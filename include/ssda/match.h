@@ -1,0 +1,167 @@
+/*
+ * match.h - SSDA template search: find where window W (L x M) best fits in a
+ * search area S (L' x M' >= L x M) by the sum of absolute differences (SAD),
+ * abandoning a position as soon as its partial sum shows it cannot win.
+ *
+ * Seed: Onoe, Maeda, Saito 1976 (SSDA with automatic thresholds), sections 2
+ * and 4; Barnea & Silverman 1972 for the fixed and increasing thresholds.
+ *
+ * Positions: (x, y) is the top-left of the window placement in the area,
+ * 0-based, x right, y down; 0 <= x <= L'-L, 0 <= y <= M'-M.
+ *
+ * TIE RULE: the best position has the smallest SAD; among equal SADs the
+ * smallest y, then the smallest x. In the exact modes (SSDA_THRESHOLD_AUTO and
+ * SSDA_THRESHOLD_NONE with the raster or predict scan) every scan, pixel order,
+ * bound option and kernel returns the same (x, y, sad).
+ *
+ * Overflow: widths and heights are at most 65535, samples at most 65535, so
+ * one window row's SAD is at most 65535 * 65535 = 4 294 836 225 < 2^32 and is
+ * summed in uint32_t; a whole window's SAD is at most 65535^3 < 2^48 and is
+ * summed in uint64_t. Every call is exact at every accepted size.
+ */
+#ifndef SSDA_MATCH_H
+#define SSDA_MATCH_H
+
+#include "ssda/view.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Threshold mode: how a position's partial SAD is cut. */
+typedef enum {
+    /* Onoe-Saito automatic constant threshold: the first position is summed
+       in full and its SAD becomes the threshold; each later position that
+       completes with a better SAD lowers it. Always the true minimum. */
+    SSDA_THRESHOLD_AUTO = 0,
+    /* Brute force: every position summed in full (the reference). */
+    SSDA_THRESHOLD_NONE = 1,
+    /* Constant threshold T = fixed_threshold: a position is cut once its
+       partial SAD exceeds T. If any position completes, the best completed
+       one is the true minimum (exact). If every position is cut, the result
+       is the position that summed the most pixels before its cut (ties by the
+       tie rule on the partial sum), flagged not exact (the paper's fallback). */
+    SSDA_THRESHOLD_FIXED = 2,
+    /* Barnea-Silverman increasing threshold, eq. 3:
+       T(r) = lambda * (r + K * sqrt(r)), r = pixels summed so far.
+       May miss the minimum: result always flagged not exact. All-cut
+       fallback as SSDA_THRESHOLD_FIXED. */
+    SSDA_THRESHOLD_RAMP = 3,
+    /* Automatic increasing threshold, eq. 4: after a completed SAD T_i,
+       T(r) = min(T_i, T_i / (L*M) * (r + K * sqrt(r))). Faster than AUTO,
+       may miss the minimum: flagged not exact. */
+    SSDA_THRESHOLD_AUTO_RAMP = 4
+} ssda_threshold_t;
+
+/* Order in which positions are visited. */
+typedef enum {
+    /* Rows of positions top to bottom, each left to right. */
+    SSDA_SCAN_RASTER = 0,
+    /* Square rings outward from the predicted position (predict_x,
+       predict_y), clamped into range, so a good prediction sets a low
+       threshold at once (the seed's prediction, Table 3). Exact with AUTO. */
+    SSDA_SCAN_PREDICT = 1,
+    /* Coarse-to-fine (Hall et al., as in the seed): positions on a grid of
+       coarse_step, keep the best two, then from each move 1 px up, down,
+       left or right to the best neighbour until none improves; the better of
+       the two wins. Fast, may miss the minimum: flagged not exact. */
+    SSDA_SCAN_COARSE = 2
+} ssda_scan_t;
+
+/* Order in which the rows of a window are summed at each position. */
+typedef enum {
+    SSDA_ORDER_ROWS = 0,       /* rows 0, 1, ..., M-1 */
+    /* A fixed decorrelated permutation of rows (bit-reversed stride order:
+       0, M/2, M/4, 3M/4, ...), so neighbouring, correlated rows are not summed
+       one after another and a bad position is cut sooner. Exact with AUTO. */
+    SSDA_ORDER_SPREAD = 1
+} ssda_order_t;
+
+/*
+ * Flag: successive-elimination bounds (Li & Salari; per-row form as in
+ * multilevel SEA). With H(x, row) the sum of the L area pixels of `row`
+ * starting at column x and Wr the sum of window row r, every position obeys
+ *     sum_r |H(x, y + r) - Wr| <= SAD(x, y),
+ * and after summing some rows exactly, the partial SAD plus the bound of the
+ * rows not yet summed is still <= SAD. Positions are rejected on these
+ * bounds before (or while) touching their pixels. Exact: it never rejects a
+ * position that could win. Needs the work buffer. Work is counted in
+ * pixel_ops: one op per sliding-sum update and per row term of a bound.
+ */
+#define SSDA_MATCH_BOUNDS 0x01u
+
+/* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
+   area_w x area_h and a window of win_w x win_h (win_* <= area_*). */
+#define SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h)                   \
+    (((((size_t)(area_w) - (size_t)(win_w)) + 1u) * (size_t)(area_h) +       \
+      2u * (size_t)(win_h)) * sizeof(uint32_t))
+
+/* Default K (safety factor of eqs. 3 and 4) in Q8.8: 2.0, the seed's value. */
+#define SSDA_DEFAULT_K_Q8 512u
+/* Default coarse grid step in pixels (the seed's 8). */
+#define SSDA_DEFAULT_COARSE_STEP 8u
+
+/*
+ * Search options. A zero-filled struct is valid: AUTO threshold, raster scan,
+ * row order, no bounds (exact brute-force result with early exit).
+ */
+typedef struct {
+    uint8_t threshold;        /* ssda_threshold_t */
+    uint8_t scan;             /* ssda_scan_t */
+    uint8_t order;            /* ssda_order_t */
+    uint8_t flags;            /* SSDA_MATCH_BOUNDS or 0 */
+    uint16_t k_q8;            /* K of eqs. 3/4, Q8.8, 0..65535 (0 = SSDA_DEFAULT_K_Q8) */
+    uint16_t coarse_step;     /* SSDA_SCAN_COARSE grid step, px (0 = 8) */
+    uint32_t lambda_q8;       /* RAMP: lambda of eq. 3, SAD units per pixel, Q24.8 */
+    uint64_t fixed_threshold; /* FIXED: T, SAD units */
+    int32_t predict_x;        /* PREDICT: predicted top-left x in area coordinates; */
+    int32_t predict_y;        /*   any value, clamped into the valid range */
+    void *work;               /* SSDA_MATCH_BOUNDS: caller buffer, 4-byte aligned, */
+    size_t work_size;         /*   >= SSDA_MATCH_WORK_SIZE(...) bytes; else unused */
+} ssda_match_config_t;
+
+/* Outcome of one search. */
+typedef struct {
+    uint64_t sad;        /* SAD at (x, y); for an all-cut fallback the partial
+                            SAD at its cut */
+    uint64_t pixel_ops;  /* absolute differences computed, plus bound work */
+    uint32_t positions;  /* positions visited (each distinct position once) */
+    uint32_t completed;  /* positions whose SAD was summed over all pixels */
+    uint16_t x;          /* best top-left column in the area */
+    uint16_t y;          /* best top-left row in the area */
+    bool exact;          /* true: (x, y, sad) is the true minimum by the tie rule */
+} ssda_match_result_t;
+
+/*
+ * Search *window over *area.
+ *   area, window: valid views of the same pixel format; window no larger
+ *                 than area in either dimension. Not modified.
+ *   cfg:          options; NULL means all defaults (AUTO, raster, rows).
+ *   result:       written on success only.
+ * Returns SSDA_OK, or without writing *result:
+ *   SSDA_ERR_NULL     area, window or result NULL; bounds requested with a
+ *                     NULL work buffer
+ *   SSDA_ERR_SIZE/_STRIDE/_FORMAT  invalid views (see ssda_view_check);
+ *                     SSDA_ERR_SIZE also when the window is larger than the area
+ *   SSDA_ERR_FORMAT   area and window formats differ
+ *   SSDA_ERR_ARG      unknown threshold/scan/order/flags value, or RAMP with
+ *                     lambda_q8 == 0
+ *   SSDA_ERR_BUFFER   bounds requested with work_size below the macro, or a
+ *                     misaligned work buffer
+ */
+int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
+               const ssda_match_config_t *cfg, ssda_match_result_t *result);
+
+/*
+ * Full SAD of the window placed at (x, y) of the area, no early exit: the
+ * reference for tests and tools. Same validation as ssda_match; also
+ * SSDA_ERR_SIZE if the placement does not fit. *sad written on success only.
+ */
+int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
+                uint16_t x, uint16_t y, uint64_t *sad);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSDA_MATCH_H */
