@@ -1,0 +1,28 @@
+/*
+ * kernels.h - the library's inner loops. Exactly one implementation file,
+ * kernel/kernel_<name>.c, is linked, chosen at configure time (SSDA_KERNEL:
+ * portable, sse2, armv7em). Every implementation returns the exact sum,
+ * bit-identical to the reference in kernel/portable.h; an implementation that
+ * does not accelerate a loop calls the portable inline for it.
+ */
+#ifndef SSDA_KERNEL_KERNELS_H
+#define SSDA_KERNEL_KERNELS_H
+
+#include <stdint.h>
+
+/* Sum of |a[i] - b[i]| for i < n, n <= 65535.
+   Worst case 255 * 65535 = 16 711 425 < 2^32. */
+uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n);
+
+/* Sum of |a[i] - b[i]| for i < n, n <= 65535.
+   Worst case 65535 * 65535 = 4 294 836 225 < 2^32 - 1. */
+uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n);
+
+/* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
+   Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
+uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
+
+/* Name of the compiled kernel set ("portable", "sse2", "armv7em"). */
+const char *ssda_kernel_name(void);
+
+#endif /* SSDA_KERNEL_KERNELS_H */
