@@ -1,0 +1,153 @@
+/* wav_io.c - mono int16 audio reading through libsndfile. */
+#include "wav_io.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <sndfile.h>
+
+static void set_err(char *err, size_t errlen, const char *fmt, ...)
+{
+    va_list ap;
+    if (err == NULL || errlen == 0) {
+        return;
+    }
+    va_start(ap, fmt);
+    vsnprintf(err, errlen, fmt, ap);
+    va_end(ap);
+}
+
+static void describe_subtype(int format, wav_info_t *info)
+{
+    switch (format & SF_FORMAT_SUBMASK) {
+    case SF_FORMAT_PCM_S8: case SF_FORMAT_PCM_U8: info->source_bits = 8; break;
+    case SF_FORMAT_PCM_16: info->source_bits = 16; break;
+    case SF_FORMAT_PCM_24: info->source_bits = 24; break;
+    case SF_FORMAT_PCM_32: info->source_bits = 32; break;
+    case SF_FORMAT_FLOAT: info->source_bits = 32; info->is_float = 1; break;
+    case SF_FORMAT_DOUBLE: info->source_bits = 64; info->is_float = 1; break;
+    default: info->source_bits = 0; break;
+    }
+}
+
+/* One mixed-down sample, full scale +-1.0, to int16 with rounding and clipping. */
+static int16_t to_i16(double v, size_t *clipped)
+{
+    double s = floor(v * 32768.0 + 0.5);
+    if (s > 32767.0) {
+        (*clipped)++;
+        return 32767;
+    }
+    if (s < -32768.0) {
+        (*clipped)++;
+        return -32768;
+    }
+    return (int16_t)s;
+}
+
+int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
+                         uint32_t *rate, wav_info_t *info, char *err, size_t errlen)
+{
+    SF_INFO sfi;
+    SF_FORMAT_INFO fmt;
+    SNDFILE *sf;
+    wav_info_t inf;
+    int16_t *out;
+    double *block;
+    size_t frames, done = 0, nch;
+    enum { BLOCK_FRAMES = 4096 };
+
+    if (path == NULL || samples == NULL || count == NULL || rate == NULL) {
+        set_err(err, errlen, "wav_read_mono_i16: NULL argument");
+        return -1;
+    }
+    memset(&sfi, 0, sizeof sfi);
+    sf = sf_open(path, SFM_READ, &sfi);
+    if (sf == NULL) {
+        set_err(err, errlen, "cannot open '%s': %s", path, sf_strerror(NULL));
+        return -1;
+    }
+    if (sfi.channels < 1 || sfi.samplerate < 1) {
+        set_err(err, errlen, "'%s': invalid header (%d channels, %d Hz)", path,
+                sfi.channels, sfi.samplerate);
+        sf_close(sf);
+        return -1;
+    }
+    if (sfi.frames <= 0) {
+        set_err(err, errlen, "'%s': no audio frames", path);
+        sf_close(sf);
+        return -1;
+    }
+    if ((unsigned long long)sfi.frames > (unsigned long long)(SIZE_MAX / sizeof(int16_t))) {
+        set_err(err, errlen, "'%s': too long (%lld frames)", path, (long long)sfi.frames);
+        sf_close(sf);
+        return -1;
+    }
+    memset(&inf, 0, sizeof inf);
+    inf.channels = (uint32_t)sfi.channels;
+    describe_subtype(sfi.format, &inf);
+    memset(&fmt, 0, sizeof fmt);
+    fmt.format = sfi.format & SF_FORMAT_TYPEMASK;
+    if (sf_command(NULL, SFC_GET_FORMAT_INFO, &fmt, sizeof fmt) == 0 && fmt.name != NULL) {
+        snprintf(inf.format_name, sizeof inf.format_name, "%s", fmt.name);
+    }
+
+    frames = (size_t)sfi.frames;
+    nch = (size_t)sfi.channels;
+    out = malloc(frames * sizeof *out);
+    block = malloc((size_t)BLOCK_FRAMES * nch * sizeof *block);
+    if (out == NULL || block == NULL) {
+        set_err(err, errlen, "'%s': out of memory for %zu frames", path, frames);
+        free(out);
+        free(block);
+        sf_close(sf);
+        return -1;
+    }
+    /* Doubles normalised to +-1.0: 16-bit PCM is divided by exactly 32768,
+       so the round trip through to_i16() is bit-exact. */
+    sf_command(sf, SFC_SET_NORM_DOUBLE, NULL, SF_TRUE);
+    while (done < frames) {
+        size_t want = frames - done < BLOCK_FRAMES ? frames - done : BLOCK_FRAMES;
+        sf_count_t got = sf_readf_double(sf, block, (sf_count_t)want);
+        size_t f, c;
+        if (got <= 0) {
+            break;
+        }
+        for (f = 0; f < (size_t)got; f++) {
+            double acc = 0.0;
+            for (c = 0; c < nch; c++) {
+                acc += block[f * nch + c];
+            }
+            out[done + f] = to_i16(acc / (double)nch, &inf.clipped);
+        }
+        done += (size_t)got;
+    }
+    if (sf_error(sf) != SF_ERR_NO_ERROR || done == 0) {
+        set_err(err, errlen, "'%s': read error after %zu of %zu frames: %s", path, done,
+                frames, sf_strerror(sf));
+        free(out);
+        free(block);
+        sf_close(sf);
+        return -1;
+    }
+    free(block);
+    sf_close(sf);
+
+    *samples = out;
+    *count = done; /* a truncated file yields the frames that were there */
+    *rate = (uint32_t)sfi.samplerate;
+    if (info != NULL) {
+        *info = inf;
+    }
+    return 0;
+}
+
+int wav_read_mono_i16(const char *path, int16_t **samples, size_t *count,
+                      uint32_t *rate, char *err, size_t errlen)
+{
+    return wav_read_mono_i16_ex(path, samples, count, rate, NULL, err, errlen);
+}
