@@ -71,9 +71,12 @@ typedef enum {
 /* Order in which the rows of a window are summed at each position. */
 typedef enum {
     SSDA_ORDER_ROWS = 0,       /* rows 0, 1, ..., M-1 */
-    /* A fixed decorrelated permutation of rows (bit-reversed stride order:
-       0, M/2, M/4, 3M/4, ...), so neighbouring, correlated rows are not summed
-       one after another and a bad position is cut sooner. Exact with AUTO. */
+    /* A fixed decorrelated permutation of rows: row k*s mod M for
+       k = 0..M-1, with s the largest step <= 0.618*M coprime to M (golden-
+       ratio stride; M = 16 gives 0, 9, 2, 11, 4, ...). Neighbouring,
+       correlated rows are not summed one after another, so a bad position is
+       cut sooner (the seed's random visiting order, made deterministic).
+       Exact with AUTO. */
     SSDA_ORDER_SPREAD = 1
 } ssda_order_t;
 
@@ -86,7 +89,13 @@ typedef enum {
  * rows not yet summed is still <= SAD. Positions are rejected on these
  * bounds before (or while) touching their pixels. Exact: it never rejects a
  * position that could win. Needs the work buffer. Work is counted in
- * pixel_ops: one op per sliding-sum update and per row term of a bound.
+ * pixel_ops: one op per pixel added or removed in a sliding sum, and one per
+ * row term of a bound. Ignored by SSDA_THRESHOLD_NONE (the reference).
+ *
+ * With bounds, every mode also cuts a position as soon as it provably cannot
+ * beat the best completed position (by the tie rule); this never changes
+ * which position wins once one has completed. Without bounds, FIXED and RAMP
+ * are the paper's algorithms unchanged.
  */
 #define SSDA_MATCH_BOUNDS 0x01u
 
@@ -125,7 +134,8 @@ typedef struct {
     uint64_t sad;        /* SAD at (x, y); for an all-cut fallback the partial
                             SAD at its cut */
     uint64_t pixel_ops;  /* absolute differences computed, plus bound work */
-    uint32_t positions;  /* positions visited (each distinct position once) */
+    uint32_t positions;  /* position evaluations (raster and predict scans visit
+                            each position once; coarse may revisit) */
     uint32_t completed;  /* positions whose SAD was summed over all pixels */
     uint16_t x;          /* best top-left column in the area */
     uint16_t y;          /* best top-left row in the area */

@@ -1,0 +1,113 @@
+/* match.c - public search API: validation, and views as row sources. */
+#include "match_rows.h"
+#include "kernel/kernels.h"
+
+void ssda_rows_from_view(ssda_rows_t *rows, const ssda_view_t *view)
+{
+    rows->base = (const uint8_t *)view->data;
+    rows->stride = view->stride;
+    rows->fetch = NULL;
+    rows->ctx = NULL;
+    rows->width = view->width;
+    rows->height = view->height;
+    rows->format = view->format;
+}
+
+int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
+                            uint32_t area_h, uint32_t win_w, uint32_t win_h)
+{
+    if (cfg->threshold > (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
+        cfg->scan > (uint8_t)SSDA_SCAN_COARSE || cfg->order > (uint8_t)SSDA_ORDER_SPREAD ||
+        (cfg->flags & (uint8_t)~SSDA_MATCH_BOUNDS) != 0u) {
+        return SSDA_ERR_ARG;
+    }
+    if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP && cfg->lambda_q8 == 0u) {
+        return SSDA_ERR_ARG;
+    }
+    if ((cfg->flags & SSDA_MATCH_BOUNDS) != 0u) {
+        if (cfg->work == NULL) {
+            return SSDA_ERR_NULL;
+        }
+        if (cfg->work_size < SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h) ||
+            (((uintptr_t)cfg->work) & (sizeof(uint32_t) - 1u)) != 0u) {
+            return SSDA_ERR_BUFFER;
+        }
+    }
+    return SSDA_OK;
+}
+
+/* Validate the pair of views: each valid, same format, window fits. */
+static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
+{
+    int err = ssda_view_check(area);
+    if (err == SSDA_OK) {
+        err = ssda_view_check(window);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (area->format != window->format) {
+        return SSDA_ERR_FORMAT;
+    }
+    if (window->width > area->width || window->height > area->height) {
+        return SSDA_ERR_SIZE;
+    }
+    return SSDA_OK;
+}
+
+int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
+               const ssda_match_config_t *cfg, ssda_match_result_t *result)
+{
+    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
+    ssda_rows_t a, w;
+    int err;
+    if (area == NULL || window == NULL || result == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = check_pair(area, window);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (cfg == NULL) {
+        cfg = &defaults;
+    }
+    err = ssda_match_check_config(cfg, area->width, area->height, window->width,
+                                  window->height);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    ssda_rows_from_view(&a, area);
+    ssda_rows_from_view(&w, window);
+    return ssda_match_rows(&a, &w, cfg, result);
+}
+
+int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
+                uint16_t x, uint16_t y, uint64_t *sad)
+{
+    uint64_t total = 0u; /* <= 65535^3 < 2^48 */
+    uint32_t r;
+    int err;
+    if (area == NULL || window == NULL || sad == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = check_pair(area, window);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if ((uint32_t)x + window->width > area->width ||
+        (uint32_t)y + window->height > area->height) {
+        return SSDA_ERR_SIZE;
+    }
+    for (r = 0u; r < window->height; r++) {
+        const uint8_t *s = ssda_view_row(area, (uint32_t)y + r) + (size_t)x * area->format;
+        const uint8_t *t = ssda_view_row(window, r);
+        if (area->format == (uint8_t)SSDA_PIX_U8) {
+            total += ssda_sad_row_u8(s, t, window->width);
+        } else {
+            total += ssda_sad_row_u16((const uint16_t *)(const void *)s,
+                                      (const uint16_t *)(const void *)t, window->width);
+        }
+    }
+    *sad = total;
+    return SSDA_OK;
+}

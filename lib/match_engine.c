@@ -1,0 +1,532 @@
+/*
+ * match_engine.c - the SSDA search over row sources: threshold modes, scan
+ * strategies, row orders and successive-elimination bounds.
+ *
+ * One position is evaluated by eval_position(): rows are summed in the
+ * configured order with the compiled SAD kernel, and after each row the
+ * partial SAD plus the bound of the rows still to sum is compared with the
+ * cut level. Scans only decide the order of positions and what the current
+ * position has to beat (the reference key).
+ */
+#include "match_rows.h"
+#include "kernel/kernels.h"
+#include "fixmath.h"
+
+/* A candidate ordered by the tie rule: (sad, y, x) lexicographically. */
+typedef struct {
+    uint64_t sad; /* <= 65535^3 < 2^48 */
+    uint32_t x;
+    uint32_t y;
+} cand_t;
+
+typedef struct {
+    const ssda_rows_t *area;
+    const ssda_rows_t *win;
+    const ssda_match_config_t *cfg;
+    uint32_t L, M;       /* window width and height */
+    uint32_t nx, ny;     /* positions per row and per column */
+    uint32_t row_step;   /* row order: r -> r + row_step (mod M) */
+    uint32_t k_q8;       /* K of eqs. 3/4, Q8.8 */
+    bool bounds;         /* successive elimination active */
+    bool use_ref;        /* positions are cut once they cannot beat ref */
+    uint32_t *hsum;      /* bounds: nx sums of L pixels per area row; <= 65535^2 */
+    uint32_t *wrow;      /* bounds: M window row sums; <= 65535^2 */
+    uint32_t *rowb;      /* bounds: M row terms of the current position */
+    cand_t ref;          /* what the current position must beat */
+    bool have_ref;
+    cand_t best, second; /* best two completed, by the tie rule */
+    uint32_t n_best;     /* 0, 1 or 2 valid entries */
+    cand_t fb;           /* all-cut fallback: most pixels before its cut */
+    uint64_t fb_pixels;
+    bool have_fb;
+    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
+    uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
+    uint32_t completed;
+} engine_t;
+
+static bool cand_less(const cand_t *a, const cand_t *b)
+{
+    if (a->sad != b->sad) {
+        return a->sad < b->sad;
+    }
+    if (a->y != b->y) {
+        return a->y < b->y;
+    }
+    return a->x < b->x;
+}
+
+static uint32_t gcd_u32(uint32_t a, uint32_t b)
+{
+    while (b != 0u) {
+        uint32_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* sqrt(r) * (r + K sqrt(r)) helper: f(r) = r + K*sqrt(r) in Q16, r < 2^32.
+   r * 2^16 < 2^48, K_q8 * sqrt_q8 < 2^16 * 2^24: sum < 2^49. */
+static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
+{
+    uint64_t sqrt_q8 = ssda_isqrt64(r << 16);
+    return (r << 16) + (uint64_t)e->k_q8 * sqrt_q8;
+}
+
+/* Threshold of the ramp modes after r pixels (only called when the partial
+   sum exceeds the ramp's linear part, which bounds it from below). */
+static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
+{
+    uint64_t f = ramp_f_q16(e, r);
+    if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
+        /* eq. 3: lambda * f(r); lambda Q24.8 times f Q16 -> shift 24 */
+        return ssda_mul_shr24(e->cfg->lambda_q8, f);
+    } else {
+        /* eq. 4: min(T_i, T_i * f(r) / (L*M)); frac in Q16, <= 2^16 */
+        uint64_t t = e->best.sad;
+        uint64_t lm = (uint64_t)e->L * e->M;
+        uint64_t frac = f / lm;
+        if (frac >= 65536u) {
+            return t;
+        }
+        /* (t >> 16) * frac < 2^32 * 2^16; (t & 0xFFFF) * frac < 2^32 */
+        return (t >> 16) * frac + (((t & 0xFFFFu) * frac) >> 16);
+    }
+}
+
+/* Lower bound of the ramp after r pixels: its linear part. */
+static uint64_t ramp_linear(const engine_t *e, uint64_t r)
+{
+    if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
+        return ((uint64_t)e->cfg->lambda_q8 * r) >> 8; /* < 2^32 * 2^32 */
+    }
+    /* t * r / LM <= t since r <= LM; t < 2^48, so split t to stay in 64 bits */
+    return (e->best.sad / ((uint64_t)e->L * e->M)) * r;
+}
+
+static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint64_t pixels)
+{
+    cand_t c;
+    c.sad = partial;
+    c.x = x;
+    c.y = y;
+    if (!e->have_fb || pixels > e->fb_pixels ||
+        (pixels == e->fb_pixels && cand_less(&c, &e->fb))) {
+        e->fb = c;
+        e->fb_pixels = pixels;
+        e->have_fb = true;
+    }
+}
+
+/*
+ * Evaluate position (x, y). Returns 1 and sets *sad when the position is
+ * summed over all pixels without being cut, 0 when cut, or a fetch error.
+ */
+static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
+{
+    const ssda_match_config_t *cfg = e->cfg;
+    const bool ramp = cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP ||
+                      (cfg->threshold == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP && e->n_best > 0u);
+    const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
+    uint64_t partial = 0u; /* SAD of the rows summed: <= 65535^3 */
+    uint64_t rest = 0u;    /* bound of the rows not summed yet: <= 65535^3 */
+    uint64_t cut_at = UINT64_MAX; /* cut once partial + rest >= cut_at */
+    uint32_t k, r = 0u;
+
+    e->positions++;
+    if (e->use_ref && e->have_ref) {
+        /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
+        bool before = y < e->ref.y || (y == e->ref.y && x < e->ref.x);
+        cut_at = e->ref.sad + (before ? 1u : 0u);
+    }
+    if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_FIXED &&
+        cfg->fixed_threshold < cut_at - 1u) {
+        cut_at = cfg->fixed_threshold + 1u; /* cut when partial > T */
+    }
+    if (cut_at == 0u) { /* nothing can beat a perfect match before it */
+        note_cut(e, x, y, 0u, 0u);
+        return 0;
+    }
+    if (e->bounds) {
+        const uint32_t *h = e->hsum + (size_t)y * e->nx + x;
+        for (k = 0u; k < e->M; k++) {
+            uint32_t a = h[(size_t)k * e->nx];
+            uint32_t b = e->wrow[k];
+            uint32_t d = a > b ? a - b : b - a;
+            e->rowb[k] = d;
+            rest += d;
+        }
+        e->ops += e->M;
+        if (rest >= cut_at) {
+            note_cut(e, x, y, 0u, 0u);
+            return 0;
+        }
+    }
+    for (k = 0u; k < e->M; k++) {
+        const uint8_t *ap;
+        const uint8_t *wp;
+        uint64_t v;
+        int err = ssda_rows_get(e->area, x, y + r, e->L, &ap);
+        if (err == SSDA_OK) {
+            err = ssda_rows_get(e->win, 0u, r, e->L, &wp);
+        }
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (u8) {
+            partial += ssda_sad_row_u8(ap, wp, e->L);
+        } else {
+            partial += ssda_sad_row_u16((const uint16_t *)(const void *)ap,
+                                        (const uint16_t *)(const void *)wp, e->L);
+        }
+        e->ops += e->L;
+        if (e->bounds) {
+            rest -= e->rowb[r];
+        }
+        r += e->row_step;
+        if (r >= e->M) {
+            r -= e->M;
+        }
+        v = partial + rest;
+        if (v >= cut_at) {
+            note_cut(e, x, y, partial, (uint64_t)(k + 1u) * e->L);
+            return 0;
+        }
+        if (ramp) {
+            uint64_t pixels = (uint64_t)(k + 1u) * e->L;
+            if (v > ramp_linear(e, pixels) && v > ramp_threshold(e, pixels)) {
+                note_cut(e, x, y, partial, pixels);
+                return 0;
+            }
+        }
+    }
+    *sad = partial;
+    return 1;
+}
+
+/* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
+   *c filled when the position completed, 0 when cut, or a fetch error. */
+static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
+{
+    int done = eval_position(e, x, y, &c->sad);
+    if (done <= 0) {
+        return done;
+    }
+    e->completed++;
+    c->x = x;
+    c->y = y;
+    if (e->n_best == 0u || cand_less(c, &e->best)) {
+        e->second = e->best;
+        e->best = *c;
+        e->n_best = e->n_best < 2u ? e->n_best + 1u : 2u;
+    } else if (e->n_best == 1u || cand_less(c, &e->second)) {
+        e->second = *c;
+        e->n_best = 2u;
+    }
+    return 1;
+}
+
+/* Raster and predict scans: the reference is always the best so far. */
+static int consider_best(engine_t *e, uint32_t x, uint32_t y)
+{
+    cand_t c;
+    int err = consider(e, x, y, &c);
+    if (err > 0) {
+        e->ref = e->best;
+        e->have_ref = true;
+    }
+    return err < 0 ? err : SSDA_OK;
+}
+
+static int scan_raster(engine_t *e)
+{
+    uint32_t x, y;
+    for (y = 0u; y < e->ny; y++) {
+        for (x = 0u; x < e->nx; x++) {
+            int err = consider_best(e, x, y);
+            if (err != SSDA_OK) {
+                return err;
+            }
+        }
+    }
+    return SSDA_OK;
+}
+
+static uint32_t clamp_pos(int32_t v, uint32_t n)
+{
+    if (v < 0) {
+        return 0u;
+    }
+    return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
+}
+
+/* Visit the positions of row y (if in range) from x0 to x1 inclusive, clipped. */
+static int scan_segment_h(engine_t *e, int64_t y, int64_t x0, int64_t x1)
+{
+    int64_t x;
+    if (y < 0 || y >= (int64_t)e->ny) {
+        return SSDA_OK;
+    }
+    if (x0 < 0) {
+        x0 = 0;
+    }
+    if (x1 >= (int64_t)e->nx) {
+        x1 = (int64_t)e->nx - 1;
+    }
+    for (x = x0; x <= x1; x++) {
+        int err = consider_best(e, (uint32_t)x, (uint32_t)y);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+    return SSDA_OK;
+}
+
+/* Visit the positions of column x (if in range) from y0 to y1 inclusive, clipped. */
+static int scan_segment_v(engine_t *e, int64_t x, int64_t y0, int64_t y1)
+{
+    int64_t y;
+    if (x < 0 || x >= (int64_t)e->nx) {
+        return SSDA_OK;
+    }
+    if (y0 < 0) {
+        y0 = 0;
+    }
+    if (y1 >= (int64_t)e->ny) {
+        y1 = (int64_t)e->ny - 1;
+    }
+    for (y = y0; y <= y1; y++) {
+        int err = consider_best(e, (uint32_t)x, (uint32_t)y);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+    return SSDA_OK;
+}
+
+/* Square rings of growing Chebyshev radius around the prediction. */
+static int scan_predict(engine_t *e)
+{
+    int64_t px = clamp_pos(e->cfg->predict_x, e->nx);
+    int64_t py = clamp_pos(e->cfg->predict_y, e->ny);
+    int64_t dmax = px;
+    int64_t d;
+    int err = consider_best(e, (uint32_t)px, (uint32_t)py);
+    if ((int64_t)e->nx - 1 - px > dmax) {
+        dmax = (int64_t)e->nx - 1 - px;
+    }
+    if (py > dmax) {
+        dmax = py;
+    }
+    if ((int64_t)e->ny - 1 - py > dmax) {
+        dmax = (int64_t)e->ny - 1 - py;
+    }
+    for (d = 1; d <= dmax && err == SSDA_OK; d++) {
+        err = scan_segment_h(e, py - d, px - d, px + d);
+        if (err == SSDA_OK) {
+            err = scan_segment_h(e, py + d, px - d, px + d);
+        }
+        if (err == SSDA_OK) {
+            err = scan_segment_v(e, px - d, py - d + 1, py + d - 1);
+        }
+        if (err == SSDA_OK) {
+            err = scan_segment_v(e, px + d, py - d + 1, py + d - 1);
+        }
+    }
+    return err;
+}
+
+/* Coarse grid, keeping the best two exactly (reference = second best). */
+static int scan_coarse_grid(engine_t *e, uint32_t step)
+{
+    uint32_t x, y;
+    for (y = 0u; y < e->ny; y += step) {
+        for (x = 0u; x < e->nx; x += step) {
+            cand_t c;
+            int err;
+            e->have_ref = e->n_best == 2u;
+            e->ref = e->second;
+            err = consider(e, x, y, &c);
+            if (err < 0) {
+                return err;
+            }
+        }
+    }
+    return SSDA_OK;
+}
+
+/* From start, move 1 px to the best better neighbour until none improves. */
+static int hill_climb(engine_t *e, cand_t start)
+{
+    static const int8_t dx[4] = {0, 0, -1, 1};
+    static const int8_t dy[4] = {-1, 1, 0, 0};
+    cand_t cur = start;
+    for (;;) {
+        cand_t next = cur;
+        uint32_t i;
+        for (i = 0u; i < 4u; i++) {
+            int64_t nxp = (int64_t)cur.x + dx[i];
+            int64_t nyp = (int64_t)cur.y + dy[i];
+            cand_t c;
+            int done;
+            if (nxp < 0 || nyp < 0 || nxp >= (int64_t)e->nx || nyp >= (int64_t)e->ny) {
+                continue;
+            }
+            e->ref = next; /* a neighbour must beat the best move so far */
+            e->have_ref = true;
+            done = consider(e, (uint32_t)nxp, (uint32_t)nyp, &c);
+            if (done < 0) {
+                return done;
+            }
+            if (done > 0 && cand_less(&c, &next)) {
+                next = c;
+            }
+        }
+        if (next.x == cur.x && next.y == cur.y) {
+            return SSDA_OK;
+        }
+        cur = next;
+    }
+}
+
+static int scan_coarse(engine_t *e)
+{
+    uint32_t step = e->cfg->coarse_step != 0u ? e->cfg->coarse_step : SSDA_DEFAULT_COARSE_STEP;
+    cand_t s1, s2;
+    uint32_t starts;
+    int err = scan_coarse_grid(e, step);
+    if (err != SSDA_OK || e->n_best == 0u) {
+        return err;
+    }
+    starts = e->n_best;
+    s1 = e->best;
+    s2 = e->second;
+    err = hill_climb(e, s1);
+    if (err == SSDA_OK && starts == 2u) {
+        err = hill_climb(e, s2);
+    }
+    return err;
+}
+
+/* Bounds tables: sliding sums of L pixels on every area row, and window row sums. */
+static int build_bounds(engine_t *e)
+{
+    const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
+    uint32_t yy, i;
+    uint32_t *work = (uint32_t *)e->cfg->work;
+    e->hsum = work;
+    e->wrow = work + (size_t)e->nx * e->area->height;
+    e->rowb = e->wrow + e->M;
+    for (yy = 0u; yy < e->area->height; yy++) {
+        const uint8_t *p;
+        uint32_t *h = e->hsum + (size_t)yy * e->nx;
+        uint32_t s = 0u; /* <= L * 65535 <= 65535^2 < 2^32 */
+        int err = ssda_rows_get(e->area, 0u, yy, e->area->width, &p);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (u8) {
+            for (i = 0u; i < e->L; i++) {
+                s += p[i];
+            }
+            h[0] = s;
+            for (i = 1u; i < e->nx; i++) {
+                s = s + p[i + e->L - 1u] - p[i - 1u]; /* stays in [0, L*255] */
+                h[i] = s;
+            }
+        } else {
+            const uint16_t *q = (const uint16_t *)(const void *)p;
+            for (i = 0u; i < e->L; i++) {
+                s += q[i];
+            }
+            h[0] = s;
+            for (i = 1u; i < e->nx; i++) {
+                s = s + q[i + e->L - 1u] - q[i - 1u]; /* wraps back into [0, L*65535] */
+                h[i] = s;
+            }
+        }
+        e->ops += e->L + 2u * ((uint64_t)e->nx - 1u);
+    }
+    for (yy = 0u; yy < e->M; yy++) {
+        const uint8_t *p;
+        uint32_t s = 0u;
+        int err = ssda_rows_get(e->win, 0u, yy, e->L, &p);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        for (i = 0u; i < e->L; i++) {
+            s += u8 ? p[i] : ((const uint16_t *)(const void *)p)[i];
+        }
+        e->wrow[yy] = s;
+        e->ops += e->L;
+    }
+    return SSDA_OK;
+}
+
+int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
+                    const ssda_match_config_t *cfg, ssda_match_result_t *result)
+{
+    engine_t e = {0};
+    uint8_t mode = cfg->threshold;
+    int err;
+
+    e.area = area;
+    e.win = window;
+    e.cfg = cfg;
+    e.L = window->width;
+    e.M = window->height;
+    e.nx = (uint32_t)area->width - e.L + 1u;
+    e.ny = (uint32_t)area->height - e.M + 1u;
+    e.k_q8 = cfg->k_q8 != 0u ? cfg->k_q8 : SSDA_DEFAULT_K_Q8;
+    e.row_step = 1u;
+    if (cfg->order == (uint8_t)SSDA_ORDER_SPREAD) {
+        uint32_t s = (e.M * 158u) / 256u; /* ~0.618 M, golden-ratio stride */
+        if (s == 0u) {
+            s = 1u;
+        }
+        while (s > 1u && gcd_u32(s, e.M) != 1u) {
+            s--;
+        }
+        e.row_step = s;
+    }
+    e.bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
+                (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
+                 (e.bounds || cfg->scan == (uint8_t)SSDA_SCAN_COARSE));
+    if (e.bounds) {
+        err = build_bounds(&e);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+    if (cfg->scan == (uint8_t)SSDA_SCAN_PREDICT) {
+        err = scan_predict(&e);
+    } else if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE) {
+        err = scan_coarse(&e);
+    } else {
+        err = scan_raster(&e);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (e.n_best > 0u) {
+        result->sad = e.best.sad;
+        result->x = (uint16_t)e.best.x;
+        result->y = (uint16_t)e.best.y;
+        result->exact = cfg->scan != (uint8_t)SSDA_SCAN_COARSE &&
+                        (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                         mode == (uint8_t)SSDA_THRESHOLD_NONE ||
+                         mode == (uint8_t)SSDA_THRESHOLD_FIXED);
+    } else {
+        /* every position cut (FIXED/RAMP): the paper's fallback */
+        result->sad = e.fb.sad;
+        result->x = (uint16_t)e.fb.x;
+        result->y = (uint16_t)e.fb.y;
+        result->exact = false;
+    }
+    result->positions = e.positions;
+    result->completed = e.completed;
+    result->pixel_ops = e.ops;
+    return SSDA_OK;
+}

@@ -1,0 +1,210 @@
+/*
+ * test_match_property.c - thousands of random searches: every exact mode,
+ * scan, row order and bound option returns the brute-force minimum
+ * (computed here independently, tie rule included).
+ */
+#include <stdio.h>
+#include <string.h>
+#include "unity.h"
+#include "ssda/match.h"
+#include "test_image.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#ifndef SSDA_TEST_CASES
+#define SSDA_TEST_CASES 1500u
+#endif
+
+#define AMAX 40u
+static uint16_t g_area[AMAX * AMAX + 64u];
+static uint16_t g_win[AMAX * AMAX + 64u];
+static uint32_t g_work[4096];
+
+typedef struct {
+    uint32_t aw, ah, ww, wh, astride, wstride; /* strides in pixels */
+    ssda_pixfmt_t fmt;
+} geom_t;
+
+/* Random case: texture, flat, binary (many ties) or noise; window cut from
+   the area (exact match somewhere), or perturbed, or unrelated. */
+static void make_case(test_rng_t *r, geom_t *g, ssda_view_t *area, ssda_view_t *win)
+{
+    uint32_t kind = test_rng_range(r, 0, 5);
+    uint32_t maxv, x, y, wx, wy;
+    g->fmt = test_rng_range(r, 0, 1) ? SSDA_PIX_U16 : SSDA_PIX_U8;
+    maxv = g->fmt == SSDA_PIX_U8 ? 255u : (test_rng_range(r, 0, 1) ? 65535u : 4095u);
+    g->aw = test_rng_range(r, 1, AMAX);
+    g->ah = test_rng_range(r, 1, AMAX);
+    g->ww = test_rng_range(r, 1, g->aw < 20u ? g->aw : 20u);
+    g->wh = test_rng_range(r, 1, g->ah < 20u ? g->ah : 20u);
+    g->astride = g->aw + test_rng_range(r, 0, 3);
+    g->wstride = g->ww + test_rng_range(r, 0, 3);
+    if (g->astride * g->ah > AMAX * AMAX + 64u) {
+        g->astride = g->aw;
+    }
+    for (y = 0; y < g->ah; y++) {
+        for (x = 0; x < g->aw; x++) {
+            uint32_t v;
+            switch (kind) {
+            case 0: v = test_rng_range(r, 0, maxv); break;                      /* noise */
+            case 1: v = maxv / 3u; break;                                        /* flat: all tie */
+            case 2: v = test_rng_range(r, 0, 1) ? maxv : 0u; break;             /* binary */
+            case 3: v = ((x / 3u + y / 3u) & 1u) ? maxv : 0u; break;             /* periodic: ties */
+            default: v = (x * 37u + y * 11u + test_rng_range(r, 0, 9)) % (maxv + 1u); break;
+            }
+            if (g->fmt == SSDA_PIX_U8) {
+                ((uint8_t *)g_area)[y * g->astride + x] = (uint8_t)v;
+            } else {
+                g_area[y * g->astride + x] = (uint16_t)v;
+            }
+        }
+    }
+    wx = test_rng_range(r, 0, g->aw - g->ww);
+    wy = test_rng_range(r, 0, g->ah - g->wh);
+    for (y = 0; y < g->wh; y++) {
+        for (x = 0; x < g->ww; x++) {
+            uint32_t v = g->fmt == SSDA_PIX_U8 ? ((uint8_t *)g_area)[(wy + y) * g->astride + wx + x]
+                                               : g_area[(wy + y) * g->astride + wx + x];
+            uint32_t noise = test_rng_range(r, 0, 3);
+            if (kind == 5) {
+                v = test_rng_range(r, 0, maxv);
+            } else if (noise == 0u && v < maxv) {
+                v++;
+            }
+            if (g->fmt == SSDA_PIX_U8) {
+                ((uint8_t *)g_win)[y * g->wstride + x] = (uint8_t)v;
+            } else {
+                g_win[y * g->wstride + x] = (uint16_t)v;
+            }
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(area, g_area, (uint16_t)g->aw, (uint16_t)g->ah,
+                                                  g->astride * (uint32_t)g->fmt, g->fmt));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(win, g_win, (uint16_t)g->ww, (uint16_t)g->wh,
+                                                  g->wstride * (uint32_t)g->fmt, g->fmt));
+}
+
+static void test_exact_modes_equal_brute_force(void)
+{
+    test_rng_t r;
+    uint32_t n;
+    uint32_t checked = 0;
+    test_rng_seed(&r, 12345u);
+    for (n = 0; n < SSDA_TEST_CASES; n++) {
+        ssda_view_t area, win;
+        geom_t g;
+        uint32_t bx = 0, by = 0, variant;
+        uint64_t bsad = 0;
+        make_case(&r, &g, &area, &win);
+        test_best(&area, &win, &bx, &by, &bsad);
+        /* threshold x scan x order x bounds: 2 x 2 x 2 x 2 */
+        for (variant = 0; variant < 16u; variant++) {
+            ssda_match_config_t cfg;
+            ssda_match_result_t res;
+            char msg[96];
+            memset(&cfg, 0, sizeof cfg);
+            cfg.threshold = (variant & 1u) ? SSDA_THRESHOLD_NONE : SSDA_THRESHOLD_AUTO;
+            cfg.scan = (variant & 2u) ? SSDA_SCAN_PREDICT : SSDA_SCAN_RASTER;
+            cfg.order = (variant & 4u) ? SSDA_ORDER_SPREAD : SSDA_ORDER_ROWS;
+            if (variant & 8u) {
+                cfg.flags = SSDA_MATCH_BOUNDS;
+                cfg.work = g_work;
+                cfg.work_size = sizeof g_work;
+            }
+            cfg.predict_x = (int32_t)test_rng_range(&r, 0, 60) - 10;
+            cfg.predict_y = (int32_t)test_rng_range(&r, 0, 60) - 10;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+            snprintf(msg, sizeof msg, "case %u variant %u area %ux%u win %ux%u fmt %d",
+                     (unsigned)n, (unsigned)variant, (unsigned)g.aw, (unsigned)g.ah,
+                     (unsigned)g.ww, (unsigned)g.wh, (int)g.fmt);
+            TEST_ASSERT_EQUAL_UINT64_MESSAGE(bsad, res.sad, msg);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(by, res.y, msg);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(bx, res.x, msg);
+            TEST_ASSERT_TRUE_MESSAGE(res.exact, msg);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE((g.aw - g.ww + 1u) * (g.ah - g.wh + 1u), res.positions, msg);
+            checked++;
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32(SSDA_TEST_CASES * 16u, checked);
+}
+
+/* FIXED is exact whenever some position completes: the minimum is never cut. */
+static void test_fixed_exact_when_any_position_completes(void)
+{
+    test_rng_t r;
+    uint32_t n;
+    test_rng_seed(&r, 777u);
+    for (n = 0; n < SSDA_TEST_CASES / 4u; n++) {
+        ssda_view_t area, win;
+        geom_t g;
+        ssda_match_config_t cfg;
+        ssda_match_result_t res;
+        uint32_t bx = 0, by = 0;
+        uint64_t bsad = 0;
+        make_case(&r, &g, &area, &win);
+        test_best(&area, &win, &bx, &by, &bsad);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.threshold = SSDA_THRESHOLD_FIXED;
+        cfg.fixed_threshold = bsad + test_rng_range(&r, 0, 50);
+        cfg.order = (uint8_t)test_rng_range(&r, 0, 1);
+        cfg.scan = (uint8_t)test_rng_range(&r, 0, 1);
+        if (test_rng_range(&r, 0, 1)) {
+            cfg.flags = SSDA_MATCH_BOUNDS;
+            cfg.work = g_work;
+            cfg.work_size = sizeof g_work;
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_TRUE(res.exact);
+        TEST_ASSERT_TRUE(res.completed >= 1u);
+        TEST_ASSERT_EQUAL_UINT64(bsad, res.sad);
+        TEST_ASSERT_EQUAL_UINT32(bx, res.x);
+        TEST_ASSERT_EQUAL_UINT32(by, res.y);
+    }
+}
+
+/* Every mode, whatever it returns, returns a real placement and its true SAD
+   (or, for the all-cut fallback, a partial SAD no larger than the true one). */
+static void test_inexact_modes_report_consistent_results(void)
+{
+    test_rng_t r;
+    uint32_t n;
+    test_rng_seed(&r, 4242u);
+    for (n = 0; n < SSDA_TEST_CASES / 4u; n++) {
+        ssda_view_t area, win;
+        geom_t g;
+        ssda_match_config_t cfg;
+        ssda_match_result_t res;
+        uint64_t truth;
+        make_case(&r, &g, &area, &win);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.threshold = (uint8_t)test_rng_range(&r, 2, 4);
+        cfg.scan = (uint8_t)test_rng_range(&r, 0, 2);
+        cfg.lambda_q8 = test_rng_range(&r, 1, 64u * 256u);
+        cfg.fixed_threshold = test_rng_range(&r, 0, 5000);
+        cfg.k_q8 = (uint16_t)test_rng_range(&r, 0, 1024);
+        cfg.coarse_step = (uint16_t)test_rng_range(&r, 0, 9);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_TRUE(res.x + g.ww <= g.aw);
+        TEST_ASSERT_TRUE(res.y + g.wh <= g.ah);
+        truth = test_sad(&area, &win, res.x, res.y);
+        if (res.completed > 0u) {
+            TEST_ASSERT_EQUAL_UINT64(truth, res.sad);
+        } else {
+            TEST_ASSERT_FALSE(res.exact);
+            TEST_ASSERT_TRUE(res.sad <= truth);
+        }
+        if (cfg.threshold != SSDA_THRESHOLD_FIXED || cfg.scan == SSDA_SCAN_COARSE) {
+            TEST_ASSERT_FALSE(res.exact);
+        }
+    }
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_exact_modes_equal_brute_force);
+    RUN_TEST(test_fixed_exact_when_any_position_completes);
+    RUN_TEST(test_inexact_modes_report_consistent_results);
+    return UNITY_END();
+}
