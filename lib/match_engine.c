@@ -29,9 +29,12 @@ typedef struct {
     uint32_t k_q8;       /* K of eqs. 3/4, Q8.8 */
     bool bounds;         /* successive elimination active */
     bool use_ref;        /* positions are cut once they cannot beat ref */
-    uint32_t *hsum;      /* bounds: nx sums of L pixels per area row; <= 65535^2 */
-    uint32_t *wrow;      /* bounds: M window row sums; <= 65535^2 */
-    uint32_t *rowb;      /* bounds: M row terms of the current position */
+    uint32_t group;      /* bounds: rows per group (1..4) */
+    uint32_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
+    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
+                            row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
+    uint32_t *wgrp;      /* bounds: window sums per group, same range */
+    uint32_t *term;      /* bounds: group terms of the current position */
     cand_t ref;          /* what the current position must beat */
     bool have_ref;
     cand_t best, second; /* best two completed, by the tie rule */
@@ -148,18 +151,23 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         return 0;
     }
     if (e->bounds) {
-        const uint32_t *h = e->hsum + (size_t)y * e->nx + x;
-        for (k = 0u; k < e->M; k++) {
-            uint32_t a = h[(size_t)k * e->nx];
-            uint32_t b = e->wrow[k];
+        /* sum over groups of |area group sum - window group sum| <= SAD */
+        const uint32_t *g = e->gsum + (size_t)y * e->nx + x;
+        const size_t down = (size_t)e->group * e->nx;
+        for (k = 0u; k < e->ngroups; k++) {
+            uint32_t a = g[k * down];
+            uint32_t b = e->wgrp[k];
             uint32_t d = a > b ? a - b : b - a;
-            e->rowb[k] = d;
+            e->term[k] = d;
             rest += d;
         }
-        e->ops += e->M;
+        e->ops += e->ngroups;
         if (rest >= cut_at) {
             note_cut(e, x, y, 0u, 0u);
             return 0;
+        }
+        if (e->row_step != 1u) {
+            rest = 0u; /* spread order: the bound serves as a pre-check only */
         }
     }
     for (k = 0u; k < e->M; k++) {
@@ -180,8 +188,10 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
                                         (const uint16_t *)(const void *)wp, e->L);
         }
         e->ops += e->L;
-        if (e->bounds) {
-            rest -= e->rowb[r];
+        if (rest != 0u && r % e->group == 0u && r / e->group < e->ngroups) {
+            /* row order: a group leaves the bound once its first row is summed,
+               so rest only covers groups with no row in partial */
+            rest -= e->term[r / e->group];
         }
         r += e->row_step;
         if (r >= e->M) {
@@ -408,18 +418,30 @@ static int scan_coarse(engine_t *e)
     return err;
 }
 
-/* Bounds tables: sliding sums of L pixels on every area row, and window row sums. */
+/*
+ * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
+ * then in place the vertical sums of `group` consecutive H (rows yy ..
+ * yy+group-1), and the window's sums over the same groups of rows.
+ * Ranges: H <= L * 65535 <= 65535^2 < 2^32. A group sum <= group * L * maxval:
+ * group = 4 unless 16-bit windows wider than 16384 px, where group = 1.
+ */
 static int build_bounds(engine_t *e)
 {
     const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
-    uint32_t yy, i;
+    const uint32_t ah = e->area->height;
     uint32_t *work = (uint32_t *)e->cfg->work;
-    e->hsum = work;
-    e->wrow = work + (size_t)e->nx * e->area->height;
-    e->rowb = e->wrow + e->M;
-    for (yy = 0u; yy < e->area->height; yy++) {
+    uint32_t yy, i;
+    e->group = (!u8 && e->L > 16384u) ? 1u : 4u;
+    if (e->group > e->M) {
+        e->group = e->M;
+    }
+    e->ngroups = e->M / e->group;
+    e->gsum = work;
+    e->wgrp = work + (size_t)e->nx * ah;
+    e->term = e->wgrp + e->M;
+    for (yy = 0u; yy < ah; yy++) {
         const uint8_t *p;
-        uint32_t *h = e->hsum + (size_t)yy * e->nx;
+        uint32_t *h = e->gsum + (size_t)yy * e->nx;
         uint32_t s = 0u; /* <= L * 65535 <= 65535^2 < 2^32 */
         int err = ssda_rows_get(e->area, 0u, yy, e->area->width, &p);
         if (err != SSDA_OK) {
@@ -431,7 +453,7 @@ static int build_bounds(engine_t *e)
             }
             h[0] = s;
             for (i = 1u; i < e->nx; i++) {
-                s = s + p[i + e->L - 1u] - p[i - 1u]; /* stays in [0, L*255] */
+                s = s + p[i + e->L - 1u] - p[i - 1u];
                 h[i] = s;
             }
         } else {
@@ -441,24 +463,46 @@ static int build_bounds(engine_t *e)
             }
             h[0] = s;
             for (i = 1u; i < e->nx; i++) {
-                s = s + q[i + e->L - 1u] - q[i - 1u]; /* wraps back into [0, L*65535] */
+                s = s + q[i + e->L - 1u] - q[i - 1u]; /* < 65535^2 + 65535 < 2^32 */
                 h[i] = s;
             }
         }
         e->ops += e->L + 2u * ((uint64_t)e->nx - 1u);
     }
-    for (yy = 0u; yy < e->M; yy++) {
-        const uint8_t *p;
+    if (e->group > 1u) {
+        /* in place, top-down: row yy becomes H(yy) + ... + H(yy + group - 1);
+           rows past ah - group are never read afterwards */
+        for (i = 0u; i < e->nx; i++) {
+            uint32_t *c = e->gsum + i;
+            uint32_t s = 0u; /* a group sum, range above */
+            for (yy = 0u; yy < e->group; yy++) {
+                s += c[(size_t)yy * e->nx];
+            }
+            for (yy = 0u; yy + e->group <= ah; yy++) {
+                uint32_t top = c[(size_t)yy * e->nx];
+                c[(size_t)yy * e->nx] = s;
+                if (yy + e->group < ah) {
+                    s = s - top + c[(size_t)(yy + e->group) * e->nx];
+                }
+            }
+            e->ops += e->group + 2u * ((uint64_t)ah - e->group);
+        }
+    }
+    for (i = 0u; i < e->ngroups; i++) {
         uint32_t s = 0u;
-        int err = ssda_rows_get(e->win, 0u, yy, e->L, &p);
-        if (err != SSDA_OK) {
-            return err;
+        for (yy = i * e->group; yy < (i + 1u) * e->group; yy++) {
+            const uint8_t *p;
+            uint32_t c;
+            int err = ssda_rows_get(e->win, 0u, yy, e->L, &p);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            for (c = 0u; c < e->L; c++) {
+                s += u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+            }
         }
-        for (i = 0u; i < e->L; i++) {
-            s += u8 ? p[i] : ((const uint16_t *)(const void *)p)[i];
-        }
-        e->wrow[yy] = s;
-        e->ops += e->L;
+        e->wgrp[i] = s;
+        e->ops += (uint64_t)e->group * e->L;
     }
     return SSDA_OK;
 }

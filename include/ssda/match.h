@@ -81,16 +81,19 @@ typedef enum {
 } ssda_order_t;
 
 /*
- * Flag: successive-elimination bounds (Li & Salari; per-row form as in
- * multilevel SEA). With H(x, row) the sum of the L area pixels of `row`
- * starting at column x and Wr the sum of window row r, every position obeys
- *     sum_r |H(x, y + r) - Wr| <= SAD(x, y),
- * and after summing some rows exactly, the partial SAD plus the bound of the
- * rows not yet summed is still <= SAD. Positions are rejected on these
- * bounds before (or while) touching their pixels. Exact: it never rejects a
- * position that could win. Needs the work buffer. Work is counted in
- * pixel_ops: one op per pixel added or removed in a sliding sum, and one per
- * row term of a bound. Ignored by SSDA_THRESHOLD_NONE (the reference).
+ * Flag: successive-elimination bounds (Li & Salari's SEA in the multilevel
+ * form of Gao et al.). The window's rows are taken in groups of G = 4
+ * (G = 1 for 16-bit windows wider than 16384 px; a last partial group is left
+ * out). With A_k(x, y) the sum of the area pixels under group k and W_k the
+ * window's, the triangle inequality gives, at every position,
+ *     sum_k |A_k(x, y) - W_k| <= SAD(x, y),
+ * so a position is rejected from G-row sums alone, at one operation per group,
+ * before its pixels are touched. In row order the bound of the groups not yet
+ * started is added to the partial SAD after every row, so positions are cut
+ * sooner too. Exact: it never rejects a position that could win. The sums
+ * come from sliding sums built once per search in the work buffer (counted
+ * in pixel_ops: one op per pixel added or removed in a sliding sum, and one
+ * per group term of a bound). Ignored by SSDA_THRESHOLD_NONE (the reference).
  *
  * With bounds, every mode also cuts a position as soon as it provably cannot
  * beat the best completed position (by the tie rule); this never changes
