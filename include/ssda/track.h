@@ -1,0 +1,230 @@
+/*
+ * track.h - grid tracking: motion vectors between two images by SSDA, the
+ * seed's cloud tracking (Onoe, Maeda, Saito 1976, section 3).
+ *
+ * Windows of win_w x win_h pixels are laid on a grid in the SECOND (later)
+ * image; each is searched by ssda_match in the search_w x search_h area of
+ * the FIRST (earlier) image centred on it. The seed used 16 x 16 windows on
+ * a 7 x 7 grid, each searched in the 32 x 32 area centred on it, on 128 x 128
+ * images (grid region starting 8 px in from the border, so that every area
+ * fits); those are the defaults here (the grid region defaults to the whole
+ * image, so windows near the border get status SSDA_TRACK_EDGE).
+ *
+ * GEOMETRY (all in pixels, x right, y down, 0-based):
+ *   window k = (col, row), k = row * cols + col, has its top-left in SECOND at
+ *       wx = roi_x + col * step_x,  wy = roi_y + row * step_y;
+ *   its search area in FIRST has its top-left at
+ *       ax = wx - hx,  ay = wy - hy,  hx = (search_w - win_w) / 2,
+ *                                     hy = (search_h - win_h) / 2 (floor);
+ *   if ssda_match finds the best placement at (px, py) of that area, the
+ *   window's content came from (ax + px, ay + py) in FIRST, and the vector is
+ *       dx = wx - (ax + px) = hx - px,   dy = hy - py:
+ *   the MOTION FROM FIRST TO SECOND. The window at (wx, wy) of SECOND
+ *   matched best at (wx - dx, wy - dy) of FIRST. dx ranges over
+ *   hx - (search_w - win_w) .. hx (-8 .. +8 for 16 in 32), dy likewise.
+ *
+ * STATUS of each window, decided in this order:
+ *   SSDA_TRACK_EDGE      the search area would leave FIRST (no pixel read);
+ *   SSDA_TRACK_MASKED    (flag SSDA_TRACK_MASK) the window holds mask_value;
+ *   SSDA_TRACK_EXCLUDED  (flag SSDA_TRACK_EXCLUDE) the window has no texture
+ *                        by the seed's rule (below);
+ *   SSDA_TRACK_MASKED    (flag SSDA_TRACK_MASK) the search area holds
+ *                        mask_value (a fill pixel could attract or repel
+ *                        the match, so the vector would not be trustworthy);
+ *   SSDA_TRACK_OK        searched; dx, dy, sad, exact are valid.
+ * Only OK windows are searched. Excluded windows' areas are never read.
+ *
+ * TEXTURE EXCLUSION (the seed, section 3: windows that are all clear or all
+ * cloud are "excluded beforehand automatically by setting a suitable
+ * threshold and counting the black or white pixels beyond it"). The paper
+ * gives no numbers; this library's rule and defaults are:
+ *   bright = number of window pixels > texture_threshold,
+ *   dark   = win_w * win_h - bright;
+ *   the window is EXCLUDED if bright < texture_min_count or
+ *   dark < texture_min_count (fewer than min_count pixels on one side of
+ *   the threshold: essentially all dark or all bright).
+ *   Defaults: texture_threshold = half the sample range (128 for 8-bit,
+ *   32768 for 16-bit; set it for your data, e.g. a cloud/clear level, or
+ *   2048 for 12-bit counts); texture_min_count = win_w * win_h / 16 (16 of
+ *   256 for the 16 x 16 window), at least 1.
+ *
+ * PREDICTION (the seed, section 4 and Table 3: "prediction was made so that
+ * the motion vector equals that of the neighbouring region"): windows are
+ * solved in raster order of the grid (row by row, left to right); each
+ * window's search starts at the vector predicted from OK neighbours already
+ * solved, through SSDA_SCAN_PREDICT, so a good prediction lowers the
+ * automatic threshold at once. In the exact modes (SSDA_THRESHOLD_AUTO,
+ * SSDA_THRESHOLD_NONE) prediction changes only the work, never a vector.
+ *
+ * The library reads pixels only; nothing is allocated. See docs/tracking.md.
+ */
+#ifndef SSDA_TRACK_H
+#define SSDA_TRACK_H
+
+#include "ssda/match.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Defaults (zero in the config means these). */
+#define SSDA_TRACK_DEFAULT_WIN 16u         /* window side, px (the seed's 16) */
+/* search side default: twice the window side (32 for 16), capped at
+   SSDA_MAX_DIM */
+#define SSDA_TRACK_DEFAULT_MIN_COUNT_DIV 16u /* texture_min_count = w*h / 16 */
+
+/* Per-window status. */
+typedef enum {
+    SSDA_TRACK_OK = 0,       /* searched: vector valid */
+    SSDA_TRACK_EXCLUDED = 1, /* textureless window (SSDA_TRACK_EXCLUDE) */
+    SSDA_TRACK_MASKED = 2,   /* window or area holds mask_value (SSDA_TRACK_MASK) */
+    SSDA_TRACK_EDGE = 3      /* search area would leave FIRST */
+} ssda_track_status_t;
+
+/* Prediction of each window's vector from solved neighbours. */
+typedef enum {
+    /* No prediction: cfg->match.scan is used as given; with
+       SSDA_SCAN_PREDICT the rings start at zero motion (area centre). */
+    SSDA_TRACK_PREDICT_NONE = 0,
+    /* The seed's: the vector of the left neighbour; for the first window
+       of a grid row, the one above; zero motion if that one is not OK. */
+    SSDA_TRACK_PREDICT_LEFT = 1,
+    /* Component-wise median of the OK ones among left, up and up-right
+       (up-left replaces up-right when that one is not OK, as in video
+       motion-vector prediction): with 3 candidates their median, with 2 or
+       1 the first of left, up, up-right, up-left that is OK, with none zero
+       motion. Robust against one wrong neighbour. */
+    SSDA_TRACK_PREDICT_MEDIAN = 2
+} ssda_track_predict_t;
+
+/* Flags. */
+#define SSDA_TRACK_EXCLUDE 0x01u /* exclude textureless windows (rule above) */
+#define SSDA_TRACK_MASK 0x02u    /* windows/areas holding mask_value are MASKED */
+
+/*
+ * Tracking options. A zero-filled struct is valid: 16 x 16 windows, 32 x 32
+ * areas, step 16, the whole SECOND image, AUTO threshold with raster scan,
+ * no prediction, no exclusion, no mask.
+ */
+typedef struct {
+    uint16_t win_w, win_h;       /* window size, px (0 = 16) */
+    uint16_t search_w, search_h; /* search area size, px, >= window
+                                    (0 = twice the window, at most 65535) */
+    uint16_t step_x, step_y;     /* grid step, px (0 = the window size) */
+    uint16_t roi_x, roi_y;       /* grid region top-left in SECOND, px */
+    uint16_t roi_w, roi_h;       /* grid region size, px (0 = to the right /
+                                    bottom edge of SECOND) */
+    uint8_t predict;             /* ssda_track_predict_t */
+    uint8_t flags;               /* SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK */
+    uint16_t mask_value;         /* SSDA_TRACK_MASK: the fill value (GOES: 4095);
+                                    <= 255 for 8-bit images */
+    uint16_t texture_threshold;  /* SSDA_TRACK_EXCLUDE: brightness level in sample
+                                    units, < the format's maximum
+                                    (0 = half range: 128 or 32768) */
+    uint32_t texture_min_count;  /* SSDA_TRACK_EXCLUDE: pixels needed on each side
+                                    of the threshold, 2 * count <= win_w * win_h
+                                    (0 = win_w * win_h / 16, at least 1) */
+    /* Search options for every window (see match.h). predict_x/predict_y
+       are ignored (set per window). With a prediction mode other than
+       NONE, scan must be RASTER or PREDICT and is run as PREDICT.
+       SSDA_MATCH_BOUNDS needs work >= SSDA_TRACK_WORK_SIZE(...) bytes. */
+    ssda_match_config_t match;
+} ssda_track_config_t;
+
+/* The grid a configuration gives on an image (defaults resolved). */
+typedef struct {
+    uint32_t count;              /* cols * rows, <= 65535^2 */
+    uint16_t cols, rows;         /* windows per grid row / column, >= 1 */
+    uint16_t win_w, win_h;
+    uint16_t search_w, search_h;
+    uint16_t step_x, step_y;
+    uint16_t roi_x, roi_y, roi_w, roi_h;
+} ssda_track_grid_t;
+
+/* Result for one window. */
+typedef struct {
+    uint64_t sad;    /* OK: SAD at the match (< 2^48); else 0 */
+    int32_t dx, dy;  /* OK: motion FIRST -> SECOND, px (see GEOMETRY); else 0 */
+    uint16_t x, y;   /* window top-left in SECOND, px */
+    uint8_t status;  /* ssda_track_status_t */
+    bool exact;      /* OK: ssda_match's exact flag; else false */
+} ssda_track_vector_t;
+
+/* Totals over one call. Counts saturate at UINT64_MAX (unreachable in
+   practice: it would take decades of computation). */
+typedef struct {
+    uint64_t pixel_ops;    /* sum of ssda_match pixel_ops over OK windows */
+    uint64_t positions;    /* sum of positions evaluated */
+    uint64_t completed;    /* sum of positions summed in full */
+    uint64_t check_pixels; /* pixels read by the mask and texture tests */
+    uint32_t windows;      /* grid windows (= grid count) */
+    uint32_t ok, excluded, masked, edge; /* windows per status */
+} ssda_track_stats_t;
+
+/* Windows along one grid axis: region length len, window side win, step. */
+#define SSDA_TRACK_GRID_DIM(len, win, step)                                   \
+    (((size_t)(len) >= (size_t)(win))                                         \
+         ? (((size_t)(len) - (size_t)(win)) / (size_t)(step) + 1u)            \
+         : (size_t)0u)
+
+/* Windows in the grid of a roi_w x roi_h region (explicit, non-zero sizes). */
+#define SSDA_TRACK_GRID_COUNT(roi_w, roi_h, win_w, win_h, step_x, step_y)     \
+    (SSDA_TRACK_GRID_DIM(roi_w, win_w, step_x) *                              \
+     SSDA_TRACK_GRID_DIM(roi_h, win_h, step_y))
+
+/* Bytes of the vector array for that grid. */
+#define SSDA_TRACK_OUT_SIZE(roi_w, roi_h, win_w, win_h, step_x, step_y)       \
+    (SSDA_TRACK_GRID_COUNT(roi_w, roi_h, win_w, win_h, step_x, step_y) *      \
+     sizeof(ssda_track_vector_t))
+
+/* Bytes of match work buffer SSDA_MATCH_BOUNDS needs (one, reused by
+   every window). */
+#define SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h)                \
+    SSDA_MATCH_WORK_SIZE(search_w, search_h, win_w, win_h)
+
+/*
+ * Resolve defaults and lay out the grid of cfg on a SECOND image of
+ * width x height pixels (for sizing the vector array before tracking).
+ *   cfg:  options; NULL means all defaults.
+ *   grid: written on success only.
+ * Returns SSDA_OK, or without writing *grid:
+ *   SSDA_ERR_NULL  grid NULL
+ *   SSDA_ERR_SIZE  width or height 0; search area smaller than the window;
+ *                  grid region not inside the image or smaller than the window
+ * (Only the geometry is checked here; ssda_track checks everything.)
+ */
+int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t height,
+                    ssda_track_grid_t *grid);
+
+/*
+ * Track the grid of windows of SECOND in FIRST.
+ *   first, second: valid views of the same pixel format (sizes may differ:
+ *             both share one pixel coordinate system). Not modified.
+ *   cfg:       options; NULL means all defaults.
+ *   out:       caller array of out_count entries, >= the grid count
+ *             (ssda_track_grid or SSDA_TRACK_GRID_COUNT); entry k is window
+ *             k = row * cols + col. Entries past the grid are not touched.
+ *   stats:     totals, or NULL.
+ * Returns SSDA_OK, or without writing out or stats:
+ *   SSDA_ERR_NULL     first, second or out NULL; bounds requested with a
+ *                     NULL work buffer
+ *   SSDA_ERR_SIZE/_STRIDE/_FORMAT  invalid views; SSDA_ERR_SIZE also for the
+ *                     geometry errors of ssda_track_grid
+ *   SSDA_ERR_FORMAT   first and second formats differ
+ *   SSDA_ERR_ARG      unknown predict value or flags; mask_value or
+ *                     texture_threshold beyond the format's range;
+ *                     2 * texture_min_count > win_w * win_h; COARSE scan with
+ *                     prediction; and every SSDA_ERR_ARG of ssda_match
+ *   SSDA_ERR_BUFFER   out_count below the grid count; bounds work buffer
+ *                     below SSDA_TRACK_WORK_SIZE or misaligned
+ * Work: for each OK window, one ssda_match over a search_w x search_h area.
+ */
+int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
+               const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+               size_t out_count, ssda_track_stats_t *stats);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSDA_TRACK_H */

@@ -1,0 +1,126 @@
+/* track_plan.c - grid layout and configuration checks of grid tracking. */
+#include "track_rows.h"
+
+/* One axis of the grid: window, search, step and region along it. */
+typedef struct {
+    uint32_t win, search, step, start, len, count;
+} axis_t;
+
+static int resolve_axis(axis_t *a, uint16_t win, uint16_t search, uint16_t step,
+                        uint16_t start, uint16_t len, uint32_t image)
+{
+    a->win = win != 0u ? win : SSDA_TRACK_DEFAULT_WIN;
+    if (search != 0u) {
+        a->search = search;
+    } else {
+        a->search = 2u * a->win <= SSDA_MAX_DIM ? 2u * a->win : SSDA_MAX_DIM;
+    }
+    a->step = step != 0u ? step : a->win;
+    a->start = start;
+    if (image == 0u || a->search < a->win || start >= image) {
+        return SSDA_ERR_SIZE;
+    }
+    a->len = len != 0u ? len : image - start;
+    if (start + a->len > image || a->len < a->win) {
+        return SSDA_ERR_SIZE;
+    }
+    a->count = (a->len - a->win) / a->step + 1u; /* <= 65535 */
+    return SSDA_OK;
+}
+
+static int resolve_grid(const ssda_track_config_t *cfg, uint32_t width, uint32_t height,
+                        ssda_track_grid_t *grid)
+{
+    axis_t ax, ay;
+    int err = resolve_axis(&ax, cfg->win_w, cfg->search_w, cfg->step_x, cfg->roi_x,
+                           cfg->roi_w, width);
+    if (err == SSDA_OK) {
+        err = resolve_axis(&ay, cfg->win_h, cfg->search_h, cfg->step_y, cfg->roi_y,
+                           cfg->roi_h, height);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    /* every value below is <= 65535 by construction */
+    grid->cols = (uint16_t)ax.count;
+    grid->rows = (uint16_t)ay.count;
+    grid->count = ax.count * ay.count; /* <= 65535^2 < 2^32 */
+    grid->win_w = (uint16_t)ax.win;
+    grid->win_h = (uint16_t)ay.win;
+    grid->search_w = (uint16_t)ax.search;
+    grid->search_h = (uint16_t)ay.search;
+    grid->step_x = (uint16_t)ax.step;
+    grid->step_y = (uint16_t)ay.step;
+    grid->roi_x = (uint16_t)ax.start;
+    grid->roi_y = (uint16_t)ay.start;
+    grid->roi_w = (uint16_t)ax.len;
+    grid->roi_h = (uint16_t)ay.len;
+    return SSDA_OK;
+}
+
+int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t height,
+                    ssda_track_grid_t *grid)
+{
+    static const ssda_track_config_t defaults;
+    ssda_track_grid_t g;
+    int err;
+    if (grid == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = resolve_grid(cfg != NULL ? cfg : &defaults, width, height, &g);
+    if (err == SSDA_OK) {
+        *grid = g;
+    }
+    return err;
+}
+
+int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
+                    uint32_t second_h, ssda_track_plan_t *plan)
+{
+    const uint32_t maxval = format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
+    ssda_track_plan_t p;
+    uint32_t pixels; /* win_w * win_h <= 65535^2 < 2^32 */
+    int err = resolve_grid(cfg, second_w, second_h, &p.grid);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (cfg->predict > (uint8_t)SSDA_TRACK_PREDICT_MEDIAN ||
+        (cfg->flags & (uint8_t)~(SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK)) != 0u) {
+        return SSDA_ERR_ARG;
+    }
+    p.predict = cfg->predict;
+    p.flags = cfg->flags;
+    p.mask_value = cfg->mask_value;
+    if ((p.flags & SSDA_TRACK_MASK) != 0u && p.mask_value > maxval) {
+        return SSDA_ERR_ARG;
+    }
+    pixels = (uint32_t)p.grid.win_w * p.grid.win_h;
+    p.texture_threshold = cfg->texture_threshold != 0u ? cfg->texture_threshold
+                                                       : (maxval + 1u) / 2u;
+    p.texture_min_count = cfg->texture_min_count;
+    if (p.texture_min_count == 0u) {
+        p.texture_min_count = pixels / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV;
+        if (p.texture_min_count == 0u) {
+            p.texture_min_count = 1u;
+        }
+    }
+    if ((p.flags & SSDA_TRACK_EXCLUDE) != 0u &&
+        (p.texture_threshold >= maxval || p.texture_min_count > pixels / 2u)) {
+        return SSDA_ERR_ARG;
+    }
+    p.match = cfg->match;
+    if (p.predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
+        if (p.match.scan == (uint8_t)SSDA_SCAN_COARSE) {
+            return SSDA_ERR_ARG;
+        }
+        if (p.match.scan == (uint8_t)SSDA_SCAN_RASTER) {
+            p.match.scan = (uint8_t)SSDA_SCAN_PREDICT;
+        }
+    }
+    err = ssda_match_check_config(&p.match, p.grid.search_w, p.grid.search_h,
+                                  p.grid.win_w, p.grid.win_h);
+    if (err == SSDA_OK) {
+        *plan = p;
+    }
+    return err;
+}

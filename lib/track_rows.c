@@ -1,0 +1,295 @@
+/*
+ * track_rows.c - grid tracking over row sources: window statuses (edge,
+ * mask, texture), prediction from solved neighbours, one ssda_match_rows per
+ * window on sub-sources of the two images.
+ */
+#include "track_rows.h"
+
+/* A rectangle of a parent row source, seen as a row source of its own. */
+typedef struct {
+    const ssda_rows_t *parent;
+    uint32_t x0, y0;
+} sub_ctx_t;
+
+static int sub_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
+{
+    const sub_ctx_t *s = (const sub_ctx_t *)ctx;
+    return ssda_rows_get(s->parent, s->x0 + x, s->y0 + y, n, px);
+}
+
+/* Make *sub the w x h rectangle at (x0, y0) of parent (inside it). In RAM
+   it is a plain pointer offset; otherwise fetches are forwarded. */
+static void make_sub(ssda_rows_t *sub, sub_ctx_t *ctx, const ssda_rows_t *parent,
+                     uint32_t x0, uint32_t y0, uint32_t w, uint32_t h)
+{
+    sub->width = (uint16_t)w;
+    sub->height = (uint16_t)h;
+    sub->format = parent->format;
+    sub->stride = parent->stride;
+    if (parent->base != NULL) {
+        sub->base = parent->base + (size_t)y0 * parent->stride + (size_t)x0 * parent->format;
+        sub->fetch = NULL;
+        sub->ctx = NULL;
+    } else {
+        ctx->parent = parent;
+        ctx->x0 = x0;
+        ctx->y0 = y0;
+        sub->base = NULL;
+        sub->fetch = sub_fetch;
+        sub->ctx = ctx;
+    }
+}
+
+static int check_rows(const ssda_rows_t *r)
+{
+    if (r->format != (uint8_t)SSDA_PIX_U8 && r->format != (uint8_t)SSDA_PIX_U16) {
+        return SSDA_ERR_FORMAT;
+    }
+    if (r->width == 0u || r->height == 0u) {
+        return SSDA_ERR_SIZE;
+    }
+    if (r->base == NULL) {
+        return r->fetch == NULL ? SSDA_ERR_NULL : SSDA_OK;
+    }
+    if (r->stride < (uint32_t)r->width * r->format || (r->stride % r->format) != 0u) {
+        return SSDA_ERR_STRIDE;
+    }
+    return SSDA_OK;
+}
+
+/* What a pass over a rectangle's pixels found. */
+typedef struct {
+    uint32_t bright; /* pixels > threshold, <= 65535^2 < 2^32 */
+    bool masked;     /* some pixel == mask value */
+} scan_t;
+
+/* Count bright pixels and look for the mask value over all rows of src, one
+   span per row. Stops early once the mask value is seen (the status is then
+   decided). Returns SSDA_OK or a fetch error. */
+static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool mask,
+                       scan_t *s, uint64_t *pixels_read)
+{
+    const uint32_t n = src->width;
+    const uint32_t thr = p->texture_threshold;
+    const uint32_t mv = p->mask_value;
+    uint32_t y, i;
+    s->bright = 0u;
+    s->masked = false;
+    for (y = 0u; y < src->height && !s->masked; y++) {
+        const uint8_t *px;
+        uint32_t bright = 0u; /* <= n <= 65535 */
+        uint32_t hits = 0u;   /* <= n */
+        int err = ssda_rows_get(src, 0u, y, n, &px);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (src->format == (uint8_t)SSDA_PIX_U8) {
+            for (i = 0u; i < n; i++) {
+                bright += px[i] > thr ? 1u : 0u;
+                hits += px[i] == mv ? 1u : 0u;
+            }
+        } else {
+            const uint16_t *q = (const uint16_t *)(const void *)px;
+            for (i = 0u; i < n; i++) {
+                bright += q[i] > thr ? 1u : 0u;
+                hits += q[i] == mv ? 1u : 0u;
+            }
+        }
+        s->bright += bright;
+        s->masked = mask && hits != 0u;
+        *pixels_read += n;
+    }
+    return SSDA_OK;
+}
+
+static void add_sat(uint64_t *acc, uint64_t v)
+{
+    *acc = v > UINT64_MAX - *acc ? UINT64_MAX : *acc + v;
+}
+
+static int32_t med3(int32_t a, int32_t b, int32_t c)
+{
+    int32_t lo = a < b ? a : b;
+    int32_t hi = a < b ? b : a;
+    return c < lo ? lo : (c > hi ? hi : c);
+}
+
+/* Predicted vector of window (col, row) from the solved entries of out. */
+static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
+                    uint32_t col, uint32_t row, int32_t *pdx, int32_t *pdy)
+{
+    const uint32_t cols = p->grid.cols;
+    const size_t k = (size_t)row * cols + col;
+    const ssda_track_vector_t *cand[4];
+    const ssda_track_vector_t *ok[3];
+    uint32_t n = 0u, i;
+    cand[0] = col > 0u ? &out[k - 1u] : NULL;                            /* left */
+    cand[1] = row > 0u ? &out[k - cols] : NULL;                          /* up */
+    cand[2] = row > 0u && col + 1u < cols ? &out[k - cols + 1u] : NULL;  /* up-right */
+    cand[3] = row > 0u && col > 0u ? &out[k - cols - 1u] : NULL;         /* up-left */
+    *pdx = 0;
+    *pdy = 0;
+    if (p->predict == (uint8_t)SSDA_TRACK_PREDICT_LEFT) {
+        const ssda_track_vector_t *v = col > 0u ? cand[0] : cand[1];
+        if (v != NULL && v->status == (uint8_t)SSDA_TRACK_OK) {
+            *pdx = v->dx;
+            *pdy = v->dy;
+        }
+        return;
+    }
+    for (i = 0u; i < 4u && n < 3u; i++) {
+        if (cand[i] != NULL && cand[i]->status == (uint8_t)SSDA_TRACK_OK) {
+            ok[n++] = cand[i];
+        }
+    }
+    if (n == 3u) {
+        *pdx = med3(ok[0]->dx, ok[1]->dx, ok[2]->dx);
+        *pdy = med3(ok[0]->dy, ok[1]->dy, ok[2]->dy);
+    } else if (n > 0u) {
+        *pdx = ok[0]->dx;
+        *pdy = ok[0]->dy;
+    }
+}
+
+/* Status and vector of window k; on OK also runs the search. */
+static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
+                        ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
+                        uint32_t row, ssda_track_vector_t *v, ssda_track_stats_t *st)
+{
+    const ssda_track_grid_t *g = &p->grid;
+    const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
+    const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
+    const uint32_t wx = g->roi_x + col * g->step_x; /* < second width <= 65535 */
+    const uint32_t wy = g->roi_y + row * g->step_y;
+    const bool mask = (p->flags & SSDA_TRACK_MASK) != 0u;
+    const bool texture = (p->flags & SSDA_TRACK_EXCLUDE) != 0u;
+    ssda_rows_t win, area;
+    sub_ctx_t win_ctx, area_ctx;
+    ssda_match_result_t res;
+    scan_t s;
+    int err;
+
+    v->sad = 0u;
+    v->dx = 0;
+    v->dy = 0;
+    v->x = (uint16_t)wx;
+    v->y = (uint16_t)wy;
+    v->exact = false;
+    v->status = (uint8_t)SSDA_TRACK_EDGE;
+    if (wx < hx || wy < hy || wx - hx + g->search_w > first->width ||
+        wy - hy + g->search_h > first->height) {
+        return SSDA_OK;
+    }
+    make_sub(&win, &win_ctx, second, wx, wy, g->win_w, g->win_h);
+    make_sub(&area, &area_ctx, first, wx - hx, wy - hy, g->search_w, g->search_h);
+    if (mask || texture) {
+        uint32_t bright_max = (uint32_t)g->win_w * g->win_h - p->texture_min_count;
+        err = scan_pixels(&win, p, mask, &s, &st->check_pixels);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (s.masked) {
+            v->status = (uint8_t)SSDA_TRACK_MASKED;
+            return SSDA_OK;
+        }
+        if (texture && (s.bright < p->texture_min_count || s.bright > bright_max)) {
+            v->status = (uint8_t)SSDA_TRACK_EXCLUDED;
+            return SSDA_OK;
+        }
+    }
+    if (mask) {
+        err = scan_pixels(&area, p, true, &s, &st->check_pixels);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (s.masked) {
+            v->status = (uint8_t)SSDA_TRACK_MASKED;
+            return SSDA_OK;
+        }
+    }
+    if (p->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
+        int32_t pdx, pdy;
+        predict(p, out, col, row, &pdx, &pdy);
+        /* |pd| <= 65535: no overflow; the engine clamps into range */
+        p->match.predict_x = (int32_t)hx - pdx;
+        p->match.predict_y = (int32_t)hy - pdy;
+    } else {
+        p->match.predict_x = (int32_t)hx; /* zero motion, for a PREDICT scan */
+        p->match.predict_y = (int32_t)hy;
+    }
+    err = ssda_match_rows(&area, &win, &p->match, &res);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    v->status = (uint8_t)SSDA_TRACK_OK;
+    v->sad = res.sad;
+    v->dx = (int32_t)hx - (int32_t)res.x;
+    v->dy = (int32_t)hy - (int32_t)res.y;
+    v->exact = res.exact;
+    add_sat(&st->pixel_ops, res.pixel_ops);
+    add_sat(&st->positions, res.positions);
+    add_sat(&st->completed, res.completed);
+    return SSDA_OK;
+}
+
+int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
+                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                    size_t out_count, ssda_track_stats_t *stats)
+{
+    static const ssda_track_config_t defaults;
+    ssda_track_plan_t plan;
+    ssda_track_stats_t st;
+    uint32_t row, col;
+    int err;
+
+    if (first == NULL || second == NULL || out == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = check_rows(first);
+    if (err == SSDA_OK) {
+        err = check_rows(second);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (first->format != second->format) {
+        return SSDA_ERR_FORMAT;
+    }
+    err = ssda_track_plan(cfg != NULL ? cfg : &defaults, second->format, second->width,
+                          second->height, &plan);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (out_count < plan.grid.count) {
+        return SSDA_ERR_BUFFER;
+    }
+    st.pixel_ops = 0u;
+    st.positions = 0u;
+    st.completed = 0u;
+    st.check_pixels = 0u;
+    st.windows = plan.grid.count;
+    st.ok = 0u;
+    st.excluded = 0u;
+    st.masked = 0u;
+    st.edge = 0u;
+    for (row = 0u; row < plan.grid.rows; row++) {
+        for (col = 0u; col < plan.grid.cols; col++) {
+            ssda_track_vector_t v;
+            err = solve_window(first, second, &plan, out, col, row, &v, &st);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            out[(size_t)row * plan.grid.cols + col] = v;
+            switch (v.status) {
+            case SSDA_TRACK_OK: st.ok++; break;
+            case SSDA_TRACK_EXCLUDED: st.excluded++; break;
+            case SSDA_TRACK_MASKED: st.masked++; break;
+            default: st.edge++; break;
+            }
+        }
+    }
+    if (stats != NULL) {
+        *stats = st;
+    }
+    return SSDA_OK;
+}

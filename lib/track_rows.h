@@ -1,0 +1,48 @@
+/*
+ * track_rows.h - internal: grid tracking over row sources, so the same code
+ * serves images in RAM (ssda_track) and block-streamed images (the stream
+ * layer). Every pixel read, for the mask and texture tests as for the
+ * search, is a row span through ssda_rows_get(): never a call per pixel.
+ */
+#ifndef SSDA_TRACK_ROWS_H
+#define SSDA_TRACK_ROWS_H
+
+#include "ssda/track.h"
+#include "match_rows.h"
+
+/* A checked configuration with every default resolved. */
+typedef struct {
+    ssda_track_grid_t grid;
+    ssda_match_config_t match; /* scan set for the prediction mode */
+    uint32_t texture_threshold; /* resolved; < the format's maximum */
+    uint32_t texture_min_count; /* resolved; 1 .. win_w * win_h / 2 */
+    uint32_t mask_value;        /* <= the format's maximum */
+    uint8_t predict;
+    uint8_t flags;
+} ssda_track_plan_t;
+
+/*
+ * Resolve and check cfg (never NULL) for images of the given format whose
+ * SECOND is second_w x second_h: every error ssda_track documents for the
+ * configuration (SSDA_ERR_SIZE, _ARG, _NULL, _BUFFER of the match options).
+ * *plan written on success only.
+ */
+int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
+                    uint32_t second_h, ssda_track_plan_t *plan);
+
+/*
+ * ssda_track over row sources. first and second are checked here (non-NULL,
+ * known and equal formats, non-zero sizes, a fetch callback when base is
+ * NULL, a large enough stride when base is set); cfg NULL means defaults.
+ * Windows are solved in raster order of the grid, so a streamed SECOND is
+ * read top to bottom, and FIRST in bands of search_h rows moving down.
+ * Returns what ssda_track returns, or a fetch error unchanged. On a fetch
+ * error, out[0 .. k-1] hold the windows solved before the failing window k,
+ * the rest of out and *stats are untouched (a streamed call cannot undo
+ * what it wrote; argument errors still write nothing).
+ */
+int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
+                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                    size_t out_count, ssda_track_stats_t *stats);
+
+#endif /* SSDA_TRACK_ROWS_H */
