@@ -1,0 +1,277 @@
+/*
+ * test_kernel.c - the compiled kernel set (portable, sse2 or armv7em: see
+ * ssda_kernel_name()) against the reference loops of kernel/portable.h and an
+ * independent 64-bit reference written here: random rows of every length
+ * 0..MAX_LEN at every pointer misalignment, lane patterns that exercise both
+ * signs of a - b within one machine word, and the accumulator worst cases
+ * (65535 differences of 255 for 8-bit, of 65535 for 16-bit and int16).
+ *
+ * The host build tests its SIMD set (sse2 on x86); the QEMU builds test the
+ * armv7em set (mps2-an386, mps2-an500) and the portable set (mps2-an385).
+ */
+#include <stdint.h>
+
+#include "unity.h"
+#include "kernel/kernels.h"
+#include "kernel/portable.h"
+#include "test_rng.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* Longest random row; covers every unrolled block size plus all tails. */
+#define MAX_LEN 200u
+/* Misalignments tried for each pointer, in elements (bytes for 8-bit). */
+#define MAX_OFF 4u
+/* The longest row the kernels accept (kernels.h). */
+#define N_MAX 65535u
+
+/* Two rows of N_MAX + 1 16-bit elements: room for the worst cases at a
+   misaligned start (256 KiB; reused as bytes and as int16_t). */
+static uint16_t g_big[2u * (N_MAX + 1u)];
+static uint8_t g_a8[MAX_LEN + MAX_OFF], g_b8[MAX_LEN + MAX_OFF];
+static uint16_t g_a16[MAX_LEN + MAX_OFF], g_b16[MAX_LEN + MAX_OFF];
+static int16_t g_ai16[MAX_LEN + MAX_OFF], g_bi16[MAX_LEN + MAX_OFF];
+
+/* Independent references: signed 64-bit differences, no shortcuts. */
+static uint64_t ref_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+    uint64_t s = 0;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        int64_t d = (int64_t)a[i] - (int64_t)b[i];
+        s += (uint64_t)(d < 0 ? -d : d);
+    }
+    return s;
+}
+
+static uint64_t ref_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+    uint64_t s = 0;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        int64_t d = (int64_t)a[i] - (int64_t)b[i];
+        s += (uint64_t)(d < 0 ? -d : d);
+    }
+    return s;
+}
+
+static uint64_t ref_i16(const int16_t *a, const int16_t *b, uint32_t n)
+{
+    uint64_t s = 0;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        int64_t d = (int64_t)a[i] - (int64_t)b[i];
+        s += (uint64_t)(d < 0 ? -d : d);
+    }
+    return s;
+}
+
+/* A sample in 0..maxval: the extremes half of the time, so that words
+   holding max and 0 side by side (both signs of a - b) are common. */
+static uint32_t sample(test_rng_t *r, uint32_t maxval)
+{
+    switch (test_rng_next(r) & 3u) {
+    case 0:
+        return 0u;
+    case 1:
+        return maxval;
+    default:
+        return test_rng_range(r, 0u, maxval);
+    }
+}
+
+static void test_kernel_name_is_known(void)
+{
+    const char *name = ssda_kernel_name();
+    TEST_ASSERT_NOT_NULL(name);
+#ifdef SSDA_EXPECT_KERNEL
+    /* Cross builds: the configure-time choice is the set that got linked. */
+    TEST_ASSERT_EQUAL_STRING(SSDA_EXPECT_KERNEL, name);
+#else
+    TEST_ASSERT_TRUE(name[0] == 'p' || name[0] == 's' || name[0] == 'a');
+#endif
+}
+
+static void test_sad_u8_random_every_length_and_alignment(void)
+{
+    test_rng_t r;
+    uint32_t i, oa, ob, n;
+    test_rng_seed(&r, 0x5AD08u);
+    for (i = 0; i < MAX_LEN + MAX_OFF; i++) {
+        g_a8[i] = (uint8_t)sample(&r, 255u);
+        g_b8[i] = (uint8_t)sample(&r, 255u);
+    }
+    for (oa = 0; oa < MAX_OFF; oa++) {
+        for (ob = 0; ob < MAX_OFF; ob++) {
+            for (n = 0; n <= MAX_LEN; n++) {
+                const uint8_t *a = g_a8 + oa, *b = g_b8 + ob;
+                uint64_t want = ref_u8(a, b, n);
+                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_sad_row_u8(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_sad_row_u8(a, b, n), ssda_kernel_name());
+            }
+        }
+    }
+}
+
+static void test_sad_u16_random_every_length_and_alignment(void)
+{
+    test_rng_t r;
+    uint32_t i, oa, ob, n;
+    test_rng_seed(&r, 0x5AD16u);
+    for (i = 0; i < MAX_LEN + MAX_OFF; i++) {
+        g_a16[i] = (uint16_t)sample(&r, 65535u);
+        g_b16[i] = (uint16_t)sample(&r, 65535u);
+    }
+    for (oa = 0; oa < MAX_OFF; oa++) {
+        for (ob = 0; ob < MAX_OFF; ob++) {
+            for (n = 0; n <= MAX_LEN; n++) {
+                const uint16_t *a = g_a16 + oa, *b = g_b16 + ob;
+                uint64_t want = ref_u16(a, b, n);
+                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_sad_row_u16(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_sad_row_u16(a, b, n), ssda_kernel_name());
+            }
+        }
+    }
+}
+
+static void test_absdiff_i16_random_every_length_and_alignment(void)
+{
+    test_rng_t r;
+    uint32_t i, oa, ob, n;
+    test_rng_seed(&r, 0xA3DF16u);
+    for (i = 0; i < MAX_LEN + MAX_OFF; i++) {
+        g_ai16[i] = (int16_t)((int32_t)sample(&r, 65535u) - 32768);
+        g_bi16[i] = (int16_t)((int32_t)sample(&r, 65535u) - 32768);
+    }
+    for (oa = 0; oa < MAX_OFF; oa++) {
+        for (ob = 0; ob < MAX_OFF; ob++) {
+            for (n = 0; n <= MAX_LEN; n++) {
+                const int16_t *a = g_ai16 + oa, *b = g_bi16 + ob;
+                uint64_t want = ref_i16(a, b, n);
+                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_absdiff_row_i16(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_absdiff_row_i16(a, b, n), ssda_kernel_name());
+            }
+        }
+    }
+}
+
+/* Within each pair of lanes, a - b is +max in one and -max in the other,
+   in both arrangements: a wrong lane select or sign test shows at once. */
+static void test_lanes_of_opposite_sign(void)
+{
+    uint32_t i, n;
+    for (i = 0; i < MAX_LEN; i++) {
+        uint32_t hi = ((i >> 1) & 1u) ^ (i & 1u); /* 0 1 1 0 0 1 1 0 ... */
+        g_a8[i] = hi ? 255u : 0u;
+        g_b8[i] = hi ? 0u : 255u;
+        g_a16[i] = hi ? 65535u : 0u;
+        g_b16[i] = hi ? 0u : 65535u;
+        g_ai16[i] = hi ? INT16_MAX : INT16_MIN;
+        g_bi16[i] = hi ? INT16_MIN : INT16_MAX;
+    }
+    for (n = 0; n <= MAX_LEN; n++) {
+        TEST_ASSERT_EQUAL_UINT32(255u * n, ssda_sad_row_u8(g_a8, g_b8, n));
+        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda_sad_row_u16(g_a16, g_b16, n));
+        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda_absdiff_row_i16(g_ai16, g_bi16, n));
+        /* One lane equal, the other maximal. */
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_u16(g_a16, g_a16 + 1, n),
+                                 ssda_sad_row_u16(g_a16, g_a16 + 1, n));
+        TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_i16(g_ai16, g_ai16 + 1, n),
+                                 ssda_absdiff_row_i16(g_ai16, g_ai16 + 1, n));
+    }
+}
+
+/* Fill g_big's two rows: first row all x, second all y (16-bit lanes). */
+static void fill_big(uint16_t x, uint16_t y)
+{
+    uint32_t i;
+    for (i = 0; i <= N_MAX; i++) {
+        g_big[i] = x;
+        g_big[N_MAX + 1u + i] = y;
+    }
+}
+
+/* 65535 differences of 255: 16 711 425, the 8-bit row's worst case; aligned
+   and misaligned, both signs. */
+static void test_sad_u8_worst_case(void)
+{
+    const uint32_t want = 255u * N_MAX;
+    const uint8_t *bytes = (const uint8_t *)g_big;
+    uint32_t off;
+    fill_big(0xFFFFu, 0x0000u); /* bytes: 2 * 65536 of 255, then of 0 */
+    for (off = 0; off < 4u; off++) {
+        const uint8_t *hi = bytes + off, *lo = bytes + 2u * (N_MAX + 1u) + off;
+        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_sad_row_u8(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u8(hi, lo, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u8(lo, hi, N_MAX), ssda_kernel_name());
+    }
+}
+
+/* 65535 differences of 65535: 4 294 836 225 = 2^32 - 131071, the u16 row's
+   worst case (above 2^31: no signed 32-bit lane may hold it). */
+static void test_sad_u16_worst_case(void)
+{
+    const uint32_t want = 65535u * N_MAX;
+    uint32_t off;
+    fill_big(65535u, 0u);
+    for (off = 0; off < 2u; off++) {
+        const uint16_t *hi = g_big + off, *lo = g_big + N_MAX + 1u + off;
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)65535u * 65535u, want);
+        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_sad_row_u16(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u16(hi, lo, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u16(lo, hi, N_MAX), ssda_kernel_name());
+    }
+}
+
+/* 65535 differences of 32767 - (-32768) = 65535: the AMDF worst case. */
+static void test_absdiff_i16_worst_case(void)
+{
+    const uint32_t want = 65535u * N_MAX;
+    /* int16_t and uint16_t may alias: 0x7FFF is INT16_MAX, 0x8000 INT16_MIN. */
+    const int16_t *rows = (const int16_t *)(const void *)g_big;
+    uint32_t off;
+    fill_big(0x7FFFu, 0x8000u);
+    TEST_ASSERT_EQUAL_INT16(INT16_MAX, rows[0]);
+    TEST_ASSERT_EQUAL_INT16(INT16_MIN, rows[N_MAX + 1u]);
+    for (off = 0; off < 2u; off++) {
+        const int16_t *hi = rows + off, *lo = rows + N_MAX + 1u + off;
+        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_absdiff_row_i16(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_absdiff_row_i16(hi, lo, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_absdiff_row_i16(lo, hi, N_MAX), ssda_kernel_name());
+    }
+}
+
+/* Long random rows at the maximum length, against the 64-bit reference. */
+static void test_long_random_rows(void)
+{
+    const uint8_t *bytes = (const uint8_t *)g_big;
+    const int16_t *rows = (const int16_t *)(const void *)g_big;
+    test_rng_t r;
+    uint32_t i;
+    test_rng_seed(&r, 0x10C0u);
+    for (i = 0; i < 2u * (N_MAX + 1u); i++) {
+        g_big[i] = (uint16_t)sample(&r, 65535u);
+    }
+    TEST_ASSERT_EQUAL_UINT64(ref_u8(bytes + 1, bytes + 70001u, N_MAX),
+                             ssda_sad_row_u8(bytes + 1, bytes + 70001u, N_MAX));
+    TEST_ASSERT_EQUAL_UINT64(ref_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX),
+                             ssda_sad_row_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX));
+    TEST_ASSERT_EQUAL_UINT64(ref_i16(rows, rows + N_MAX + 2u, N_MAX),
+                             ssda_absdiff_row_i16(rows, rows + N_MAX + 2u, N_MAX));
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_kernel_name_is_known);
+    RUN_TEST(test_sad_u8_random_every_length_and_alignment);
+    RUN_TEST(test_sad_u16_random_every_length_and_alignment);
+    RUN_TEST(test_absdiff_i16_random_every_length_and_alignment);
+    RUN_TEST(test_lanes_of_opposite_sign);
+    RUN_TEST(test_sad_u8_worst_case);
+    RUN_TEST(test_sad_u16_worst_case);
+    RUN_TEST(test_absdiff_i16_worst_case);
+    RUN_TEST(test_long_random_rows);
+    return UNITY_END();
+}
