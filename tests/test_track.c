@@ -545,7 +545,7 @@ static void expect_error(int code, const ssda_view_t *a, const ssda_view_t *b,
     memset(g_out, 0xA5, sizeof g_out);
     memset(g_out2, 0xA5, sizeof g_out2);
     memset(&st, 0x5A, sizeof st);
-    st0 = st;
+    memcpy(&st0, &st, sizeof st);
     TEST_ASSERT_EQUAL_INT(code, ssda_track(a, b, cfg, g_out, n, &st));
     TEST_ASSERT_EQUAL_MEMORY(g_out2, g_out, sizeof g_out);
     TEST_ASSERT_EQUAL_MEMORY(&st0, &st, sizeof st);
@@ -620,7 +620,7 @@ static void test_bad_arguments_write_nothing(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, NWIN, NULL));
 
     memset(&g, 0x33, sizeof g);
-    g0 = g;
+    memcpy(&g0, &g, sizeof g);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_track_grid(NULL, IMG, IMG, NULL));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_grid(NULL, 0, IMG, &g));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_grid(NULL, 15, IMG, &g));
