@@ -1,0 +1,243 @@
+/*
+ * pitch.h - streaming pitch (f0) extraction with the average magnitude
+ * difference function (AMDF) and SSDA early exit, in integers only.
+ *
+ * Seed: Onoe, Maeda, Saito 1976, appendix. For a segment of K samples the
+ * AMDF at lag j is Y_j = sum_i |X_i - X_(i-j)|; the pitch period is the lag of
+ * its dip. SSDA applies: a lag's sum is abandoned as soon as it passes a
+ * threshold, and the threshold bounds every sum.
+ *
+ * What is computed for one frame (x[0 .. span-1], span = K + lag_max + 1):
+ *
+ *   mean   m = floor((sum_{i<K} (x[i] + 32768) + floor(K/2)) / K) - 32768
+ *   level  A = sum_{i<K} |x[i] - m|                (the frame's own level)
+ *   AMDF   d(t) = sum_{i<K} |x[i] - x[i+t]|
+ *   scale  s(t) = A + sum_{i<K} |x[i+t] - m|       (d(t) <= s(t): triangle inequality)
+ *   n(t) = d(t) / s(t), in [0, 1]: the normalised difference (0 = periodic)
+ *
+ * for lags t in [lag_min - 1, lag_max + 1]. A frame is silent when
+ * A < silence_mad * K. Otherwise the chosen lag t* is (YIN's idea, on n):
+ *   - a "run" is a maximal interval of lags in [lag_min, lag_max] with
+ *     n(t) <= threshold; its minimum is its lag of smallest n (ties: the
+ *     smallest lag). A run's minimum is a dip unless it sits on a range edge
+ *     and is not a real minimum there (at lag_min it needs
+ *     n(lag_min - 1) > n(lag_min), at lag_max it needs n(lag_max + 1) >=
+ *     n(lag_max)): that excludes the tail of the lag-0 dip and dips below
+ *     f0_min. t* = the minimum of the first (smallest-lag) dip run;
+ *   - if no run qualifies: t* = the lag in [lag_min, lag_max] of smallest n
+ *     (ties: the smallest lag).
+ * Taking the first dip instead of the global minimum avoids the sub-octave
+ * errors of plain AMDF (its minimum also falls on 2T, 3T, ...).
+ * Sub-sample period: parabolic interpolation through
+ * a, b, c = floor(2^20 * n(t* - 1, t*, t* + 1)):
+ *   delta_q16 = round_half_away(65536 * (a - c) / (2 * (a - 2b + c))),
+ *   0 if a - 2b + c <= 0, clamped to [-32768, 32768] (half a sample);
+ *   period_q16 = 65536 * t* + delta_q16,
+ *   f0_q16     = floor((rate << 32) / period_q16 + 1/2).
+ * Voiced when not silent and n(t*) <= voicing threshold (compared exactly).
+ *
+ * EXACTNESS: every output except the work counters (lag, period_q16, f0_q16,
+ * confidence_q15, voiced, dip) is bit-identical to the definition above
+ * evaluated with every d(t) summed in full, in every mode (early exit or
+ * SSDA_PITCH_FULL, with or without SSDA_PITCH_TRACK), for every kernel set
+ * and every push pattern. Why early exit keeps it exact:
+ *   - a lag is summed in chunks and cut once its partial sum exceeds
+ *     max(floor(threshold * s(t)), what it must stay under to beat the best
+ *     lag so far); every lag with n <= threshold, and every lag better than
+ *     the best so far, is therefore summed in full (the automatic threshold
+ *     of the seed, Fig. 9), and a cut lag is known to be above both;
+ *   - before summing, |A - (s(t) - A)| <= d(t) (a successive-elimination
+ *     lower bound) may reject the lag with no differences at all;
+ *   - the scan goes up from lag_min and stops after the first dip run: no
+ *     later lag can change t*;
+ *   - with SSDA_PITCH_TRACK the previous voiced lag is summed first; its n
+ *     lowers the best-so-far bound at once (the seed's prediction) but cannot
+ *     change t*, because the rule above is a function of n only;
+ *   - the neighbours t* +- 1 are re-summed in full when they were cut.
+ *
+ * Overflow (all proven by the limits below, tested at full scale):
+ *   |x[i] - x[i+t]| <= 65535 and |x - m| <= 65535, K <= 8192, so
+ *   d(t) <= 8192 * 65535 < 2^29 and s(t) <= 2 * 8192 * 65535 < 2^30 in
+ *   uint32_t; cross products d * s < 2^59 in uint64_t. The seed's point holds
+ *   too: a partial sum never exceeds its bound by more than one chunk
+ *   (chunk * 65535), so the early exit itself bounds the accumulator.
+ *
+ * Time: estimate number f (from 0 after init/reset) analyses stream samples
+ * [f * hop, f * hop + span); its reference segment is the first K of them.
+ */
+#ifndef SSDA_PITCH_H
+#define SSDA_PITCH_H
+
+#include "ssda/ssda.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Accepted ranges. */
+#define SSDA_PITCH_RATE_MIN 8000u     /* sample rate, Hz */
+#define SSDA_PITCH_RATE_MAX 48000u
+#define SSDA_PITCH_F0_LOWEST 10u      /* smallest accepted f0_min_hz */
+#define SSDA_PITCH_FRAME_MIN 16u      /* K, samples */
+#define SSDA_PITCH_FRAME_MAX 8192u
+
+/* Defaults (used where a config field is 0). */
+#define SSDA_PITCH_DEFAULT_F0_MIN 50u           /* Hz */
+#define SSDA_PITCH_DEFAULT_F0_MAX 1000u         /* Hz */
+#define SSDA_PITCH_DEFAULT_THRESHOLD_Q15 6554u  /* 0.20 */
+#define SSDA_PITCH_DEFAULT_SILENCE_MAD 16u      /* mean |x - m| in LSB, about -66 dBFS */
+#define SSDA_PITCH_DEFAULT_CHUNK 32u            /* samples between early-exit tests */
+
+/* Flags. */
+#define SSDA_PITCH_TRACK 0x01u /* predict from the previous voiced lag (less work, same results) */
+#define SSDA_PITCH_FULL  0x02u /* no early exit: every lag summed in full (the reference) */
+
+/* Internal: f0_min after defaulting. */
+#define SSDA_PITCH_F0_MIN_(f0_min_hz) \
+    ((uint32_t)(f0_min_hz) != 0u ? (uint32_t)(f0_min_hz) : SSDA_PITCH_DEFAULT_F0_MIN)
+
+/* Largest lag searched, samples: ceil(rate / f0_min) (f0_min 0 = default). */
+#define SSDA_PITCH_LAG_MAX(rate_hz, f0_min_hz)                                   \
+    (((uint32_t)(rate_hz) + SSDA_PITCH_F0_MIN_(f0_min_hz) - 1u) / SSDA_PITCH_F0_MIN_(f0_min_hz))
+
+/* K after defaulting: frame_len, or max(16, lag_max) when 0. */
+#define SSDA_PITCH_FRAME_LEN(rate_hz, f0_min_hz, frame_len)                      \
+    ((uint32_t)(frame_len) != 0u ? (uint32_t)(frame_len)                         \
+     : SSDA_PITCH_LAG_MAX(rate_hz, f0_min_hz) > SSDA_PITCH_FRAME_MIN             \
+         ? SSDA_PITCH_LAG_MAX(rate_hz, f0_min_hz) : SSDA_PITCH_FRAME_MIN)
+
+/* Samples analysed per estimate: K + lag_max + 1. */
+#define SSDA_PITCH_SPAN(rate_hz, f0_min_hz, frame_len)                           \
+    (SSDA_PITCH_FRAME_LEN(rate_hz, f0_min_hz, frame_len) +                       \
+     SSDA_PITCH_LAG_MAX(rate_hz, f0_min_hz) + 1u)
+
+/* Bytes of sample buffer for ssda_pitch_init, from the config's
+   sample_rate_hz, f0_min_hz and frame_len (zeros mean defaults, as there).
+   Example: 44100 Hz, f0_min 50, default K = 882: 1765 samples, 3530 bytes. */
+#define SSDA_PITCH_BUFFER_SIZE(rate_hz, f0_min_hz, frame_len) \
+    ((size_t)SSDA_PITCH_SPAN(rate_hz, f0_min_hz, frame_len) * sizeof(int16_t))
+
+/*
+ * Configuration. A zero field means its default; sample_rate_hz is required.
+ */
+typedef struct {
+    uint32_t sample_rate_hz; /* 8000..48000 */
+    uint16_t f0_min_hz;      /* lowest f0 searched, Hz: >= 10, < f0_max (0 = 50).
+                                Sets lag_max = ceil(rate / f0_min) */
+    uint16_t f0_max_hz;      /* highest f0 searched, Hz: <= rate / 4 (0 = 1000).
+                                Sets lag_min = floor(rate / f0_max) >= 4 */
+    uint16_t frame_len;      /* K, samples per difference sum: 16..8192 (0 = lag_max,
+                                i.e. one period of f0_min as in YIN, at least 16) */
+    uint16_t hop;            /* samples between estimates: >= 1 (0 = max(1, K / 4)) */
+    uint16_t threshold_q15;  /* dip threshold on n, Q15: 1..32767 (0 = 0.20) */
+    uint16_t voicing_q15;    /* voiced iff n(t*) <= this, Q15: 1..32767 (0 = threshold_q15) */
+    uint16_t silence_mad;    /* silent iff mean |x - m| over the K samples < this, LSB:
+                                1..65535 (0 = 16; 1 = only constant frames) */
+    uint16_t chunk;          /* samples summed between early-exit tests: 1..K (0 = 32,
+                                or K if smaller). Changes work only, not results */
+    uint8_t flags;           /* SSDA_PITCH_TRACK, SSDA_PITCH_FULL, or 0 */
+} ssda_pitch_config_t;
+
+/* The resolved parameters (every default filled in). */
+typedef struct {
+    uint32_t sample_rate_hz;
+    uint32_t lag_min;        /* floor(rate / f0_max), samples, >= 4 */
+    uint32_t lag_max;        /* ceil(rate / f0_min), samples, <= 4800 */
+    uint32_t frame_len;      /* K */
+    uint32_t hop;            /* samples between estimates */
+    uint32_t span;           /* K + lag_max + 1: samples per estimate */
+    uint32_t chunk;          /* samples between early-exit tests */
+    uint32_t full_diffs;     /* (lag_max - lag_min + 1) * K: absolute differences
+                                one frame of plain full-search AMDF computes */
+    uint16_t threshold_q15;
+    uint16_t voicing_q15;
+    uint16_t silence_mad;
+    uint8_t flags;
+} ssda_pitch_info_t;
+
+/* One estimate (per hop). */
+typedef struct {
+    uint32_t frame;          /* estimate number since init/reset: covers stream
+                                samples [frame * hop, frame * hop + span) */
+    uint32_t lag;            /* t*, samples; 0 when silent */
+    uint32_t period_q16;     /* period, samples, Q16.16; 0 when silent */
+    uint32_t f0_q16;         /* rate / period, Hz, Q16.16; 0 when silent */
+    uint32_t diffs;          /* absolute differences computed for this frame
+                                (work; the only field that depends on the mode) */
+    uint16_t confidence_q15; /* 1 - n(t*), Q15, 0..32767; 0 when silent */
+    bool voiced;             /* not silent and n(t*) <= voicing threshold */
+    bool dip;                /* t* is the minimum of a dip run under the threshold
+                                (false: global-minimum fallback, or silent) */
+    bool silent;             /* level below silence_mad: no search was made */
+} ssda_pitch_estimate_t;
+
+/* The stream state. Caller-allocated; fields are private (read them through
+   ssda_pitch_get_info). */
+typedef struct {
+    ssda_pitch_info_t info;
+    int16_t *buf;            /* caller buffer of info.span samples */
+    uint32_t fill;           /* valid samples in buf */
+    uint32_t skip;           /* input samples still to drop (when hop > span) */
+    uint32_t frame;          /* number of the next estimate */
+    uint32_t predict_lag;    /* SSDA_PITCH_TRACK: last voiced lag, 0 = none */
+    uint32_t magic;          /* set by ssda_pitch_init */
+} ssda_pitch_t;
+
+/*
+ * Bytes of buffer the config needs (the value of SSDA_PITCH_BUFFER_SIZE),
+ * after checking the config as ssda_pitch_init does.
+ * Returns SSDA_OK and writes *bytes, or an error of ssda_pitch_init (other
+ * than SSDA_ERR_BUFFER) with *bytes untouched.
+ */
+int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
+
+/*
+ * Start a stream.
+ *   p:       state to initialise (caller-owned; written on success only).
+ *   cfg:     configuration, copied (not kept).
+ *   buffer:  caller buffer of >= SSDA_PITCH_BUFFER_SIZE(...) bytes, 2-byte
+ *            aligned; owned by the stream until the caller stops using p.
+ * Returns SSDA_OK, or with *p untouched:
+ *   SSDA_ERR_NULL    p, cfg or buffer NULL
+ *   SSDA_ERR_ARG     sample rate outside 8000..48000; f0_min < 10,
+ *                    f0_max > rate / 4, or f0_min >= f0_max (after defaults);
+ *                    threshold_q15 or voicing_q15 > 32767; unknown flags
+ *   SSDA_ERR_SIZE    frame_len outside 16..8192; chunk > frame_len
+ *   SSDA_ERR_BUFFER  buffer_size too small, or buffer not 2-byte aligned
+ */
+int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
+                    void *buffer, size_t buffer_size);
+
+/*
+ * Feed samples. Consumes samples until one estimate is ready or all count
+ * samples are used, whichever comes first; call again with the rest.
+ *   samples:  count int16 samples (may be NULL when count is 0), not kept.
+ *   consumed: receives how many samples were taken (<= count).
+ *   est:      receives the estimate when 1 is returned; else untouched.
+ * Estimates do not depend on how the stream is cut into calls.
+ * Returns 1 (estimate written), 0 (all samples taken, no estimate yet), or
+ * with nothing consumed and *consumed, *est untouched:
+ *   SSDA_ERR_NULL   p, consumed or est NULL, or samples NULL with count > 0
+ *   SSDA_ERR_STATE  p not initialised by ssda_pitch_init
+ */
+int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
+                    size_t *consumed, ssda_pitch_estimate_t *est);
+
+/*
+ * Forget buffered samples and the prediction; the next estimate is number
+ * 0 again. Config and buffer are kept.
+ * Returns SSDA_OK, SSDA_ERR_NULL or SSDA_ERR_STATE.
+ */
+int ssda_pitch_reset(ssda_pitch_t *p);
+
+/*
+ * The resolved parameters of an initialised stream.
+ * Returns SSDA_OK, SSDA_ERR_NULL or SSDA_ERR_STATE (*info untouched).
+ */
+int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSDA_PITCH_H */

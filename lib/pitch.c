@@ -1,0 +1,115 @@
+/* pitch.c - the pitch stream: caller buffer, sample intake in any chunk
+   sizes, one analysis per hop. */
+#include "pitch_internal.h"
+
+#include <string.h>
+
+#define PITCH_MAGIC 0x50495443u /* "PITC" */
+
+int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
+{
+    ssda_pitch_info_t info;
+    int err;
+    if (cfg == NULL || bytes == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = ssda_pitch_resolve(cfg, &info);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    *bytes = (size_t)info.span * sizeof(int16_t);
+    return SSDA_OK;
+}
+
+int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
+                    void *buffer, size_t buffer_size)
+{
+    ssda_pitch_info_t info;
+    int err;
+    if (p == NULL || cfg == NULL || buffer == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = ssda_pitch_resolve(cfg, &info);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (buffer_size / sizeof(int16_t) < info.span ||
+        ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
+        return SSDA_ERR_BUFFER;
+    }
+    p->info = info;
+    p->buf = (int16_t *)buffer;
+    p->magic = PITCH_MAGIC;
+    return ssda_pitch_reset(p);
+}
+
+int ssda_pitch_reset(ssda_pitch_t *p)
+{
+    if (p == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (p->magic != PITCH_MAGIC) {
+        return SSDA_ERR_STATE;
+    }
+    p->fill = 0u;
+    p->skip = 0u;
+    p->frame = 0u;
+    p->predict_lag = 0u;
+    return SSDA_OK;
+}
+
+int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
+{
+    if (p == NULL || info == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (p->magic != PITCH_MAGIC) {
+        return SSDA_ERR_STATE;
+    }
+    *info = p->info;
+    return SSDA_OK;
+}
+
+int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
+                    size_t *consumed, ssda_pitch_estimate_t *est)
+{
+    const uint32_t span = p != NULL ? p->info.span : 0u;
+    size_t used = 0u;
+
+    if (p == NULL || consumed == NULL || est == NULL || (samples == NULL && count > 0u)) {
+        return SSDA_ERR_NULL;
+    }
+    if (p->magic != PITCH_MAGIC) {
+        return SSDA_ERR_STATE;
+    }
+    while (used < count) {
+        size_t take;
+        if (p->skip > 0u) {
+            /* hop > span: samples between two frames are never analysed */
+            take = count - used < p->skip ? count - used : p->skip;
+            p->skip -= (uint32_t)take;
+            used += take;
+            continue;
+        }
+        take = count - used < span - p->fill ? count - used : span - p->fill;
+        memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
+        p->fill += (uint32_t)take;
+        used += take;
+        if (p->fill == span) {
+            ssda_pitch_analyze(&p->info, p->buf, p->predict_lag, est);
+            est->frame = p->frame++;
+            p->predict_lag = est->voiced ? est->lag : 0u;
+            if (p->info.hop < span) {
+                p->fill = span - p->info.hop;
+                memmove(p->buf, p->buf + p->info.hop, p->fill * sizeof(int16_t));
+            } else {
+                p->fill = 0u;
+                p->skip = p->info.hop - span;
+            }
+            *consumed = used;
+            return 1;
+        }
+    }
+    *consumed = used;
+    return 0;
+}

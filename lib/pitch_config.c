@@ -1,0 +1,55 @@
+/* pitch_config.c - checking a pitch configuration and resolving its
+   defaults (shared by ssda_pitch_init and ssda_pitch_buffer_size). */
+#include "pitch_internal.h"
+
+#define KNOWN_FLAGS (SSDA_PITCH_TRACK | SSDA_PITCH_FULL)
+
+int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
+{
+    ssda_pitch_info_t r;
+    uint32_t rate, f0_min, f0_max;
+
+    if (cfg == NULL || info == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    rate = cfg->sample_rate_hz;
+    if (rate < SSDA_PITCH_RATE_MIN || rate > SSDA_PITCH_RATE_MAX) {
+        return SSDA_ERR_ARG;
+    }
+    f0_min = SSDA_PITCH_F0_MIN_(cfg->f0_min_hz);
+    f0_max = cfg->f0_max_hz != 0u ? cfg->f0_max_hz : SSDA_PITCH_DEFAULT_F0_MAX;
+    /* f0_max <= rate / 4 keeps lag_min >= 4; f0_min >= 10 keeps
+       lag_max <= 4800, so span <= 8192 + 4800 + 1. */
+    if (f0_min < SSDA_PITCH_F0_LOWEST || f0_max > rate / 4u || f0_min >= f0_max) {
+        return SSDA_ERR_ARG;
+    }
+    if (cfg->threshold_q15 > 32767u || cfg->voicing_q15 > 32767u ||
+        (cfg->flags & ~KNOWN_FLAGS) != 0u) {
+        return SSDA_ERR_ARG;
+    }
+
+    r.sample_rate_hz = rate;
+    r.lag_min = rate / f0_max;
+    r.lag_max = SSDA_PITCH_LAG_MAX(rate, f0_min);
+    r.frame_len = SSDA_PITCH_FRAME_LEN(rate, f0_min, cfg->frame_len);
+    if (r.frame_len < SSDA_PITCH_FRAME_MIN || r.frame_len > SSDA_PITCH_FRAME_MAX) {
+        return SSDA_ERR_SIZE;
+    }
+    if (cfg->chunk > r.frame_len) {
+        return SSDA_ERR_SIZE;
+    }
+    r.chunk = cfg->chunk != 0u ? cfg->chunk
+              : (SSDA_PITCH_DEFAULT_CHUNK < r.frame_len ? SSDA_PITCH_DEFAULT_CHUNK : r.frame_len);
+    r.hop = cfg->hop != 0u ? cfg->hop : (r.frame_len / 4u > 0u ? r.frame_len / 4u : 1u);
+    r.span = r.frame_len + r.lag_max + 1u;
+    /* <= 4800 * 8192 < 2^26 */
+    r.full_diffs = (r.lag_max - r.lag_min + 1u) * r.frame_len;
+    r.threshold_q15 = cfg->threshold_q15 != 0u ? cfg->threshold_q15
+                                               : (uint16_t)SSDA_PITCH_DEFAULT_THRESHOLD_Q15;
+    r.voicing_q15 = cfg->voicing_q15 != 0u ? cfg->voicing_q15 : r.threshold_q15;
+    r.silence_mad = cfg->silence_mad != 0u ? cfg->silence_mad
+                                           : (uint16_t)SSDA_PITCH_DEFAULT_SILENCE_MAD;
+    r.flags = cfg->flags;
+    *info = r;
+    return SSDA_OK;
+}

@@ -1,0 +1,63 @@
+/*
+ * pitch_internal.h - the pieces of the pitch extractor, shared between
+ * lib/pitch*.c and the tests (not installed).
+ */
+#ifndef SSDA_PITCH_INTERNAL_H
+#define SSDA_PITCH_INTERNAL_H
+
+#include "ssda/pitch.h"
+
+/* Check cfg and fill *info with every default resolved. Writes *info on
+   success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
+int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
+
+/* Frame mean as defined in pitch.h:
+   floor((sum_{i<n} (x[i] + 32768) + floor(n/2)) / n) - 32768, n = 1..8192.
+   The offset sum is <= 8192 * 65535 < 2^30. */
+int32_t ssda_pitch_mean(const int16_t *x, uint32_t n);
+
+/* sum_{i<n} |x[i] - mean|, n <= 8192, mean in -32768..32767:
+   <= 8192 * 65535 < 2^30. */
+uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean);
+
+/*
+ * AMDF term d(lag) = sum_{i<K} |x[i] - x[i + lag]| with SSDA early exit:
+ * summed chunk samples at a time (through the kernel set's
+ * ssda_absdiff_row_i16), stopping after the first chunk that takes the
+ * partial sum above bound.
+ *   Returns the sum so far; *complete is true when all K terms were summed
+ *   (the result is then exact, whether or not it exceeds bound), false when
+ *   cut (the result is then > bound and a lower bound of d).
+ *   *diffs is increased by the number of absolute differences computed.
+ * Worst case: the partial sum before the last chunk is <= bound, and any
+ * sum is <= K * 65535 < 2^29 (K <= 8192).
+ */
+uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
+                             uint32_t chunk, uint32_t bound, bool *complete,
+                             uint32_t *diffs);
+
+/*
+ * Sub-sample offset of the dip at t*, from the normalised values
+ * a = nq(t* - 1), b = nq(t*), c = nq(t* + 1) (Q20, 0..2^20):
+ * round_half_away(65536 * (a - c) / (2 * (a - 2b + c))), 0 if
+ * a - 2b + c <= 0, clamped to [-32768, 32768]. Q16.16 samples.
+ */
+int32_t ssda_pitch_parabola_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20);
+
+/* floor(2^20 * d / s), s > 0, d <= s: Q20 in 0..2^20. */
+uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s);
+
+/* f0 in Hz Q16.16 from rate (Hz) and period (samples, Q16.16, > 0):
+   floor((rate << 32) / period_q16 + 1/2); saturates at UINT32_MAX. */
+uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
+
+/*
+ * Analyse one frame x[0 .. info->span - 1] (the rule in pitch.h).
+ *   predict_lag: with SSDA_PITCH_TRACK, a lag to sum first (0 or out of
+ *                range = none). Changes work only.
+ *   est:         written in full except est->frame.
+ */
+void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
+                        uint32_t predict_lag, ssda_pitch_estimate_t *est);
+
+#endif /* SSDA_PITCH_INTERNAL_H */

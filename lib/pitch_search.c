@@ -1,0 +1,267 @@
+/*
+ * pitch_search.c - choosing the lag of one frame: the first dip run of the
+ * normalised AMDF under the threshold, else its global minimum, with SSDA
+ * early exit that leaves the choice exactly as a full search makes it
+ * (the rule and the argument are in include/ssda/pitch.h).
+ */
+#include "pitch_internal.h"
+
+#define NO_BOUND UINT32_MAX /* larger than any sum (K * 65535 < 2^29) */
+
+/* One lag's value: d exact when `exact`, else a lower bound of d that is
+   above the bound the lag was cut at. s = A + B(lag) > 0. */
+typedef struct {
+    uint32_t d;
+    uint32_t s;
+    bool exact;
+} lag_value_t;
+
+typedef struct {
+    const ssda_pitch_info_t *info;
+    const int16_t *x;
+    uint32_t level;   /* A */
+    uint32_t diffs;   /* absolute differences so far: <= (lag_max + 4) * K < 2^26 */
+} frame_t;
+
+/* n(p) < n(q), exactly: d_p * s_q < d_q * s_p (products < 2^59). */
+static bool n_less(const lag_value_t *p, const lag_value_t *q)
+{
+    return (uint64_t)p->d * q->s < (uint64_t)q->d * p->s;
+}
+
+/* n <= q15 / 32768, exactly. */
+static bool n_at_most_q15(const lag_value_t *v, uint32_t q15)
+{
+    return ((uint64_t)v->d << 15) <= (uint64_t)q15 * v->s;
+}
+
+/* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s. */
+static uint32_t threshold_bound(uint32_t q15, uint32_t s)
+{
+    return (uint32_t)(((uint64_t)q15 * s) >> 15);
+}
+
+/* Largest d at scale s that still wins against best: n < n(best) for a lag
+   after best's, n <= n(best) for one before it (ties go to the smaller lag).
+   Returns false when no d >= 0 can win. The result is <= s < 2^30. */
+static bool best_bound(const lag_value_t *best, bool after, uint32_t s, uint32_t *bound)
+{
+    uint64_t p = (uint64_t)best->d * s; /* < 2^59 */
+    if (after) {
+        if (p == 0u) {
+            return false;
+        }
+        p -= 1u;
+    }
+    *bound = (uint32_t)(p / best->s);
+    return true;
+}
+
+/* Sum one lag, cut above bound. Rejected for free when the lower bound
+   |A - B(lag)| <= d(lag) is already above bound. */
+static lag_value_t evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound)
+{
+    lag_value_t v;
+    uint32_t b = s - f->level;
+    uint32_t lower = f->level > b ? f->level - b : b - f->level;
+    v.s = s;
+    if (lower > bound) {
+        v.d = lower;
+        v.exact = false;
+        return v;
+    }
+    v.d = ssda_pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
+                              &v.exact, &f->diffs);
+    return v;
+}
+
+/* Make v exact (re-sum without a bound) for the interpolation. */
+static void make_exact(frame_t *f, uint32_t lag, lag_value_t *v)
+{
+    if (!v->exact) {
+        *v = evaluate(f, lag, v->s, NO_BOUND);
+    }
+}
+
+/* |x[i] - m| for the sliding sum B(lag) = sum_{i<K} |x[lag + i] - m|. */
+static uint32_t abs_dev(int16_t x, int32_t mean)
+{
+    int32_t v = (int32_t)x - mean;
+    return v < 0 ? (uint32_t)(-v) : (uint32_t)v;
+}
+
+static void silent_estimate(ssda_pitch_estimate_t *est)
+{
+    est->lag = 0u;
+    est->period_q16 = 0u;
+    est->f0_q16 = 0u;
+    est->diffs = 0u;
+    est->confidence_q15 = 0u;
+    est->voiced = false;
+    est->dip = false;
+    est->silent = true;
+}
+
+void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
+                        uint32_t predict_lag, ssda_pitch_estimate_t *est)
+{
+    const uint32_t k = info->frame_len;
+    const uint32_t lag_min = info->lag_min, lag_max = info->lag_max;
+    const bool full = (info->flags & SSDA_PITCH_FULL) != 0u;
+    const uint32_t thr = info->threshold_q15;
+    frame_t f;
+    int32_t mean;
+    uint32_t b_sum, lag, pred = 0u;
+    uint32_t q_a, q_b, q_c, n_q15;
+    int32_t delta;
+    lag_value_t prev, cur, pred_v;
+    /* The best lag so far (global-minimum fallback), with its neighbours. */
+    lag_value_t best = {0u, 1u, false}, best_left = {0u, 1u, false}, best_right = {0u, 1u, false};
+    uint32_t best_lag = 0u;
+    bool best_need_right = false;
+    /* The open run under the threshold: its minimum and neighbours. */
+    lag_value_t run = {0u, 1u, false}, run_left = {0u, 1u, false}, run_right = {0u, 1u, false};
+    uint32_t run_lag = 0u;
+    bool in_run = false, run_need_right = false;
+    /* The chosen lag. */
+    uint32_t t_lag = 0u;
+    lag_value_t t_left = {0u, 1u, false}, t_mid = {0u, 1u, false}, t_right = {0u, 1u, false};
+    bool found = false;
+
+    f.info = info;
+    f.x = x;
+    f.diffs = 0u;
+    mean = ssda_pitch_mean(x, k);
+    f.level = ssda_pitch_level(x, k, mean);
+    /* silence_mad * K <= 65535 * 8192 < 2^30 */
+    if (f.level < (uint32_t)info->silence_mad * k) {
+        silent_estimate(est);
+        return;
+    }
+    /* From here A >= K >= 16, so every s(lag) >= A > 0. */
+
+    if (!full && (info->flags & SSDA_PITCH_TRACK) != 0u &&
+        predict_lag >= lag_min && predict_lag <= lag_max) {
+        /* The seed's prediction: sum the predicted lag first, in full; its
+           value becomes the best so far and tightens every later bound. */
+        pred = predict_lag;
+        pred_v = evaluate(&f, pred, f.level + ssda_pitch_level(x + pred, k, mean), NO_BOUND);
+        best = pred_v;
+        best_lag = pred;
+    } else {
+        pred_v = best;
+    }
+
+    /* lag_min - 1 is only a neighbour: needed exactly when n <= threshold. */
+    b_sum = ssda_pitch_level(x + lag_min - 1u, k, mean);
+    prev = evaluate(&f, lag_min - 1u, f.level + b_sum,
+                    full ? NO_BOUND : threshold_bound(thr, f.level + b_sum));
+
+    for (lag = lag_min; lag <= lag_max + 1u; lag++) {
+        const bool candidate = lag <= lag_max;
+        uint32_t s;
+        /* Slide B: drop x[lag - 1], add x[lag - 1 + K]. B stays <= K * 65535. */
+        b_sum = b_sum - abs_dev(x[lag - 1u], mean) + abs_dev(x[lag - 1u + k], mean);
+        s = f.level + b_sum;
+
+        if (lag == pred) {
+            cur = pred_v;
+        } else {
+            uint32_t bound = NO_BOUND;
+            if (!full) {
+                bound = threshold_bound(thr, s);
+                if (candidate) {
+                    uint32_t bb;
+                    if (best_lag == 0u) {
+                        bound = NO_BOUND; /* first candidate: summed in full (Fig. 9) */
+                    } else if (best_bound(&best, lag > best_lag, s, &bb) && bb > bound) {
+                        bound = bb;
+                    }
+                }
+            }
+            cur = evaluate(&f, lag, s, bound);
+        }
+
+        /* Neighbours wanted by the best lag and by the run minimum. */
+        if (best_need_right) {
+            best_right = cur;
+            best_need_right = false;
+        }
+        if (run_need_right) {
+            run_right = cur;
+            run_need_right = false;
+        }
+
+        if (candidate && cur.exact) {
+            bool better;
+            if (best_lag == 0u) {
+                better = true;
+            } else if (lag > best_lag) {
+                better = n_less(&cur, &best);
+            } else {
+                better = !n_less(&best, &cur); /* before best: ties win */
+            }
+            if (better && lag != best_lag) {
+                best = cur;
+                best_lag = lag;
+                best_left = prev;
+                best_need_right = true;
+            } else if (lag == best_lag) {
+                best_left = prev; /* the predicted lag, reached by the scan */
+                best_need_right = true;
+            }
+        }
+
+        if (candidate && cur.exact && n_at_most_q15(&cur, thr)) {
+            if (!in_run || n_less(&cur, &run)) {
+                run = cur;
+                run_lag = lag;
+                run_left = prev;
+                run_need_right = true;
+            }
+            in_run = true;
+        } else if (in_run) {
+            /* The run ended at lag - 1. Its minimum is a dip unless it is a
+               range edge that is not a minimum (see pitch.h). */
+            bool valid = (run_lag != lag_min || n_less(&run, &run_left)) &&
+                         (run_lag != lag_max || !n_less(&run_right, &run));
+            in_run = false;
+            if (valid && !found) {
+                found = true;
+                t_lag = run_lag;
+                t_left = run_left;
+                t_mid = run;
+                t_right = run_right;
+                if (!full) {
+                    break; /* no later lag can change the choice */
+                }
+            }
+        }
+        prev = cur;
+    }
+
+    if (!found) {
+        t_lag = best_lag;
+        t_left = best_left;
+        t_mid = best;
+        t_right = best_right;
+    }
+    /* Interpolation needs both neighbours exactly. */
+    make_exact(&f, t_lag - 1u, &t_left);
+    make_exact(&f, t_lag + 1u, &t_right);
+
+    q_a = ssda_pitch_norm_q20(t_left.d, t_left.s);
+    q_b = ssda_pitch_norm_q20(t_mid.d, t_mid.s);
+    q_c = ssda_pitch_norm_q20(t_right.d, t_right.s);
+    delta = ssda_pitch_parabola_q16(q_a, q_b, q_c);
+    /* t_lag <= 4800: 65536 * t_lag + delta < 2^29 */
+    est->lag = t_lag;
+    est->period_q16 = (uint32_t)((int32_t)(t_lag << 16) + delta);
+    est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
+    n_q15 = (uint32_t)(((uint64_t)t_mid.d << 15) / t_mid.s); /* 0..32768 */
+    est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
+    est->voiced = n_at_most_q15(&t_mid, info->voicing_q15);
+    est->dip = found;
+    est->silent = false;
+    est->diffs = f.diffs;
+}

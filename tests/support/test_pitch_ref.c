@@ -1,0 +1,109 @@
+/* test_pitch_ref.c - brute-force pitch reference (see header). */
+#include "test_pitch_ref.h"
+
+static int64_t g_d[TEST_PITCH_REF_MAX_LAG + 2u];
+static int64_t g_s[TEST_PITCH_REF_MAX_LAG + 2u];
+
+int64_t test_pitch_ref_d(uint32_t lag) { return g_d[lag]; }
+int64_t test_pitch_ref_s(uint32_t lag) { return g_s[lag]; }
+
+static int64_t floor_div(int64_t a, int64_t b) /* b > 0 */
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+static int64_t iabs(int64_t v) { return v < 0 ? -v : v; }
+
+/* n(p) < n(q) as rationals */
+static bool less(uint32_t p, uint32_t q) { return g_d[p] * g_s[q] < g_d[q] * g_s[p]; }
+
+static bool under(uint32_t t, uint32_t q15) { return g_d[t] * 32768 <= (int64_t)q15 * g_s[t]; }
+
+static int64_t q20(uint32_t t) { return (g_d[t] * 1048576) / g_s[t]; }
+
+void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_pitch_ref_t *out)
+{
+    const int64_t k = c->frame_len;
+    int64_t sum = 0, mean, level = 0, a, b, cc, den, num, delta, period;
+    uint32_t t, i, chosen = 0, run_start;
+    bool found = false;
+
+    for (i = 0; i < c->frame_len; i++) {
+        sum += x[i];
+    }
+    /* floor((sum(x + 32768) + floor(K/2)) / K) - 32768 = floor((sum + floor(K/2)) / K) */
+    mean = floor_div(sum + k / 2, k);
+    for (i = 0; i < c->frame_len; i++) {
+        level += iabs(x[i] - mean);
+    }
+    out->lag = 0; out->period_q16 = 0; out->f0_q16 = 0; out->confidence_q15 = 0;
+    out->voiced = false; out->dip = false; out->silent = true;
+    if (level < (int64_t)c->silence_mad * k) {
+        return;
+    }
+    for (t = c->lag_min - 1u; t <= c->lag_max + 1u; t++) {
+        int64_t d = 0, s = level;
+        for (i = 0; i < c->frame_len; i++) {
+            d += iabs((int64_t)x[i] - x[i + t]);
+            s += iabs(x[i + t] - mean);
+        }
+        g_d[t] = d;
+        g_s[t] = s;
+    }
+    /* Runs of n <= threshold in [lag_min, lag_max]; first valid one wins. */
+    t = c->lag_min;
+    while (t <= c->lag_max && !found) {
+        uint32_t m;
+        if (!under(t, c->threshold_q15)) {
+            t++;
+            continue;
+        }
+        run_start = t;
+        m = t;
+        while (t <= c->lag_max && under(t, c->threshold_q15)) {
+            if (less(t, m)) {
+                m = t;
+            }
+            t++;
+        }
+        (void)run_start;
+        if ((m != c->lag_min || less(m, m - 1u)) && (m != c->lag_max || !less(m + 1u, m))) {
+            chosen = m;
+            found = true;
+        }
+    }
+    if (!found) {
+        chosen = c->lag_min;
+        for (t = c->lag_min + 1u; t <= c->lag_max; t++) {
+            if (less(t, chosen)) {
+                chosen = t;
+            }
+        }
+    }
+    a = q20(chosen - 1u);
+    b = q20(chosen);
+    cc = q20(chosen + 1u);
+    den = 2 * (a - 2 * b + cc);
+    num = 65536 * (a - cc);
+    if (den <= 0) {
+        delta = 0;
+    } else if (num >= 0) {
+        delta = (num + den / 2) / den;
+    } else {
+        delta = -((-num + den / 2) / den);
+    }
+    if (delta > 32768) delta = 32768;
+    if (delta < -32768) delta = -32768;
+    period = (int64_t)chosen * 65536 + delta;
+    out->lag = chosen;
+    out->period_q16 = (uint32_t)period;
+    out->f0_q16 = (uint32_t)((((int64_t)c->rate << 32) + period / 2) / period);
+    {
+        int64_t nq15 = g_d[chosen] * 32768 / g_s[chosen];
+        out->confidence_q15 = (uint16_t)(nq15 >= 32767 ? 0 : 32767 - nq15);
+    }
+    out->voiced = under(chosen, c->voicing_q15);
+    out->dip = found;
+    out->silent = false;
+}
