@@ -63,40 +63,72 @@ typedef struct {
     bool masked;     /* some pixel == mask value */
 } scan_t;
 
-/* Count bright pixels and look for the mask value over all rows of src, one
-   span per row. Stops early once the mask value is seen (the status is then
-   decided). Returns SSDA_OK or a fetch error. */
+/* Span loops: plain, so that compilers vectorise them. */
+static bool has_value_u8(const uint8_t *p, uint32_t n, uint32_t v)
+{
+    uint32_t i, hit = 0u;
+    for (i = 0u; i < n; i++) {
+        hit |= p[i] == v ? 1u : 0u;
+    }
+    return hit != 0u;
+}
+
+static bool has_value_u16(const uint16_t *p, uint32_t n, uint32_t v)
+{
+    uint32_t i, hit = 0u;
+    for (i = 0u; i < n; i++) {
+        hit |= p[i] == v ? 1u : 0u;
+    }
+    return hit != 0u;
+}
+
+/* Pixels > thr in a span: <= n <= 65535. */
+static uint32_t count_above_u8(const uint8_t *p, uint32_t n, uint32_t thr)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i] > thr ? 1u : 0u;
+    }
+    return c;
+}
+
+static uint32_t count_above_u16(const uint16_t *p, uint32_t n, uint32_t thr)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i] > thr ? 1u : 0u;
+    }
+    return c;
+}
+
+/* Over all rows of src, one span per row: look for the mask value (if
+   mask) and count pixels above the texture threshold (if texture). Stops
+   at the first row holding the mask value (the status is then decided).
+   Returns SSDA_OK or a fetch error. */
 static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool mask,
-                       scan_t *s, uint64_t *pixels_read)
+                       bool texture, scan_t *s, uint64_t *pixels_read)
 {
     const uint32_t n = src->width;
-    const uint32_t thr = p->texture_threshold;
-    const uint32_t mv = p->mask_value;
-    uint32_t y, i;
+    const bool u8 = src->format == (uint8_t)SSDA_PIX_U8;
+    uint32_t y;
     s->bright = 0u;
     s->masked = false;
     for (y = 0u; y < src->height && !s->masked; y++) {
         const uint8_t *px;
-        uint32_t bright = 0u; /* <= n <= 65535 */
-        uint32_t hits = 0u;   /* <= n */
+        const uint16_t *q;
         int err = ssda_rows_get(src, 0u, y, n, &px);
         if (err != SSDA_OK) {
             return err;
         }
-        if (src->format == (uint8_t)SSDA_PIX_U8) {
-            for (i = 0u; i < n; i++) {
-                bright += px[i] > thr ? 1u : 0u;
-                hits += px[i] == mv ? 1u : 0u;
-            }
-        } else {
-            const uint16_t *q = (const uint16_t *)(const void *)px;
-            for (i = 0u; i < n; i++) {
-                bright += q[i] > thr ? 1u : 0u;
-                hits += q[i] == mv ? 1u : 0u;
-            }
+        q = (const uint16_t *)(const void *)px;
+        if (mask) {
+            s->masked = u8 ? has_value_u8(px, n, p->mask_value)
+                           : has_value_u16(q, n, p->mask_value);
         }
-        s->bright += bright;
-        s->masked = mask && hits != 0u;
+        if (texture) {
+            s->bright += u8 ? count_above_u8(px, n, p->texture_threshold)
+                            : count_above_u16(q, n, p->texture_threshold);
+        }
         *pixels_read += n;
     }
     return SSDA_OK;
@@ -184,7 +216,7 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     make_sub(&area, &area_ctx, first, wx - hx, wy - hy, g->search_w, g->search_h);
     if (mask || texture) {
         uint32_t bright_max = (uint32_t)g->win_w * g->win_h - p->texture_min_count;
-        err = scan_pixels(&win, p, mask, &s, &st->check_pixels);
+        err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
         if (err != SSDA_OK) {
             return err;
         }
@@ -198,7 +230,7 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
         }
     }
     if (mask) {
-        err = scan_pixels(&area, p, true, &s, &st->check_pixels);
+        err = scan_pixels(&area, p, true, false, &s, &st->check_pixels);
         if (err != SSDA_OK) {
             return err;
         }
