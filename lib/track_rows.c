@@ -51,7 +51,8 @@ static int check_rows(const ssda_rows_t *r)
     if (r->base == NULL) {
         return r->fetch == NULL ? SSDA_ERR_NULL : SSDA_OK;
     }
-    if (r->stride < (uint32_t)r->width * r->format || (r->stride % r->format) != 0u) {
+    if (r->stride < (uint32_t)r->width * r->format || (r->stride % r->format) != 0u ||
+        (r->format == (uint8_t)SSDA_PIX_U16 && (((uintptr_t)r->base) & 1u) != 0u)) {
         return SSDA_ERR_STRIDE;
     }
     return SSDA_OK;

@@ -33,7 +33,8 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
 /*
  * ssda_track over row sources. first and second are checked here (non-NULL,
  * known and equal formats, non-zero sizes, a fetch callback when base is
- * NULL, a large enough stride when base is set); cfg NULL means defaults.
+ * NULL, a large enough stride and an aligned 16-bit base when base is set);
+ * cfg NULL means defaults.
  * Windows are solved in raster order of the grid, so a streamed SECOND is
  * read top to bottom, and FIRST in bands of search_h rows moving down.
  * Returns what ssda_track returns, or a fetch error unchanged. On a fetch

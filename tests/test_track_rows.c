@@ -271,6 +271,10 @@ static void test_row_source_argument_errors(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad.stride = IMG * 2u + 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    bad.stride = IMG * 2u;
+    bad.base = (const uint8_t *)g_first + 1;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    bad.base = (const uint8_t *)g_first;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_track_rows(&ra, &rb, &cfg, g_out, 35, &st));
     TEST_ASSERT_EQUAL_MEMORY(g_ram, g_out, sizeof g_out);
     TEST_ASSERT_EQUAL_MEMORY(&st0, &st, sizeof st);
