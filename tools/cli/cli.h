@@ -1,0 +1,120 @@
+/*
+ * cli.h - shared parts of the `ssda` command-line tool: exit codes, option
+ * scanning, value parsers, input loading. One file per subcommand (cmd_*.c).
+ */
+#ifndef SSDA_CLI_H
+#define SSDA_CLI_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "atomic_file.h"
+#include "png_io.h"
+#include "ssda/match.h"
+
+/* Exit codes (docs/cli.md). */
+enum {
+    CLI_OK = 0,    /* success */
+    CLI_INPUT = 1, /* bad input file or a failure while running; no output file left */
+    CLI_USAGE = 2  /* bad command line */
+};
+
+/* ---- option scanning ----
+ * Options are "--name VALUE" or "--name=VALUE"; everything else is a
+ * positional argument; "--" ends the options. Typical loop:
+ *     cli_args_t a;
+ *     cli_args_begin(&a, "match", argc, argv);
+ *     while (cli_next(&a)) {
+ *         if (cli_flag(&a, "--json")) json = 1;
+ *         else if (cli_opt(&a, "--scan", &v)) ...;
+ *         else return cli_unknown(&a);
+ *     }
+ */
+#define CLI_MAX_POSITIONAL 8
+
+typedef struct {
+    const char *cmd;   /* subcommand name, for messages */
+    int argc;
+    char **argv;
+    int i;             /* next argv index */
+    const char *name;  /* current option name (without "=value") */
+    size_t name_len;
+    const char *inline_value; /* value after '=' or NULL */
+    int bad;           /* a usage error was already reported */
+    const char *pos[CLI_MAX_POSITIONAL];
+    int npos;
+    int options_done;
+} cli_args_t;
+
+void cli_args_begin(cli_args_t *a, const char *cmd, int argc, char **argv);
+/* Advance to the next option; positionals are collected on the way.
+   Returns 0 at the end of argv or after a usage error (check a->bad). */
+int cli_next(cli_args_t *a);
+/* The current option is a flag called name (a value is a usage error). */
+int cli_flag(cli_args_t *a, const char *name);
+/* The current option is name, taking a value (next argument or "=VALUE"). */
+int cli_opt(cli_args_t *a, const char *name, const char **value);
+/* Report the current option as unknown; returns CLI_USAGE. */
+int cli_unknown(cli_args_t *a);
+
+/* Print "ssda CMD: message" and a hint to stderr; returns CLI_USAGE. */
+int cli_usage_error(const char *cmd, const char *fmt, ...);
+/* Print "ssda CMD: message" to stderr; returns CLI_INPUT. */
+int cli_input_error(const char *cmd, const char *fmt, ...);
+
+/* ---- value parsers: 0 on success, -1 (nothing written) otherwise ---- */
+int cli_parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out);
+int cli_parse_i32(const char *s, int32_t lo, int32_t hi, int32_t *out);
+int cli_parse_double(const char *s, double lo, double hi, double *out);
+/* "X,Y" of integers in [lo, hi]. */
+int cli_parse_pair(const char *s, int32_t lo, int32_t hi, int32_t *x, int32_t *y);
+/* n comma-separated unsigned integers in [lo, hi]. */
+int cli_parse_list_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out, int n);
+
+/* --threshold none|fixed:T|ramp:LAMBDA[:K]|auto|auto-ramp[:K] into cfg. */
+int cli_parse_threshold(const char *s, ssda_match_config_t *cfg);
+/* --scan raster|predict|coarse. */
+int cli_parse_scan(const char *s, ssda_match_config_t *cfg);
+/* --order rows|spread. */
+int cli_parse_order(const char *s, ssda_match_config_t *cfg);
+/* Name of cfg's threshold and scan, for output ("auto", "ramp:2:2", ...). */
+void cli_threshold_name(const ssda_match_config_t *cfg, char *buf, size_t len);
+const char *cli_scan_name(const ssda_match_config_t *cfg);
+
+/* ---- inputs ---- */
+/* Read a PNG as gray (depth as png_io). Prints the error; returns 0 or -1. */
+int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray_image_t *img);
+/* Read two PNGs of a common depth (an 8-bit one is widened to 16 if the
+   other is 16-bit, v * 257). Prints errors; returns 0 or -1. */
+int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_image_t *a,
+                      gray_image_t *b);
+
+/* ---- output files: all or nothing ----
+ * Each output is written to a temp file beside its final name; only when
+ * every output is complete are they renamed into place. On any failure,
+ * cli_outputs_abort deletes the temp files: no output is created or changed. */
+#define CLI_MAX_OUTPUTS 4
+
+typedef struct {
+    const char *cmd;
+    atomic_file_t f[CLI_MAX_OUTPUTS];
+    int n;
+} cli_outputs_t;
+
+void cli_outputs_begin(cli_outputs_t *o, const char *cmd);
+/* Open one more output ("-" = stdout). Prints the error; NULL on failure. */
+FILE *cli_outputs_open(cli_outputs_t *o, const char *path);
+/* Rename every output into place. Returns CLI_OK or CLI_INPUT (printed). */
+int cli_outputs_commit(cli_outputs_t *o);
+/* Delete every temp file. */
+void cli_outputs_abort(cli_outputs_t *o);
+
+/* ---- subcommands: (argc, argv) after the subcommand name; return an exit code ---- */
+int cmd_match(int argc, char **argv);
+int cmd_track(int argc, char **argv);
+int cmd_compare(int argc, char **argv);
+int cmd_grad(int argc, char **argv);
+int cmd_pitch(int argc, char **argv);
+
+#endif /* SSDA_CLI_H */

@@ -1,0 +1,409 @@
+/* cli_args.c - option scanning, value parsing and messages for `ssda`. */
+#include "cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+void cli_args_begin(cli_args_t *a, const char *cmd, int argc, char **argv)
+{
+    memset(a, 0, sizeof *a);
+    a->cmd = cmd;
+    a->argc = argc;
+    a->argv = argv;
+    a->i = 1; /* argv[0] is the subcommand */
+}
+
+int cli_next(cli_args_t *a)
+{
+    while (a->i < a->argc) {
+        const char *s = a->argv[a->i++];
+        const char *eq;
+        if (!a->options_done && strcmp(s, "--") == 0) {
+            a->options_done = 1;
+            continue;
+        }
+        /* "-" alone is a positional (stdout/stdin); "-5" is not an option either */
+        if (a->options_done || s[0] != '-' || s[1] == '\0' || (s[1] >= '0' && s[1] <= '9')) {
+            if (a->npos >= CLI_MAX_POSITIONAL) {
+                cli_usage_error(a->cmd, "too many arguments ('%s')", s);
+                a->bad = 1;
+                return 0;
+            }
+            a->pos[a->npos++] = s;
+            continue;
+        }
+        a->name = s;
+        eq = strchr(s, '=');
+        a->name_len = eq != NULL ? (size_t)(eq - s) : strlen(s);
+        a->inline_value = eq != NULL ? eq + 1 : NULL;
+        return 1;
+    }
+    return 0;
+}
+
+static int name_is(const cli_args_t *a, const char *name)
+{
+    return strlen(name) == a->name_len && strncmp(a->name, name, a->name_len) == 0;
+}
+
+int cli_flag(cli_args_t *a, const char *name)
+{
+    if (!name_is(a, name)) {
+        return 0;
+    }
+    if (a->inline_value != NULL) {
+        cli_usage_error(a->cmd, "option %s takes no value", name);
+        a->bad = 1;
+    }
+    return 1;
+}
+
+int cli_opt(cli_args_t *a, const char *name, const char **value)
+{
+    if (!name_is(a, name)) {
+        return 0;
+    }
+    if (a->inline_value != NULL) {
+        *value = a->inline_value;
+    } else if (a->i < a->argc) {
+        *value = a->argv[a->i++];
+    } else {
+        cli_usage_error(a->cmd, "option %s needs a value", name);
+        a->bad = 1;
+        *value = NULL;
+    }
+    return 1;
+}
+
+int cli_unknown(cli_args_t *a)
+{
+    return cli_usage_error(a->cmd, "unknown option '%.*s'", (int)a->name_len, a->name);
+}
+
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "ssda %s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "\nTry 'ssda %s --help'.\n", cmd);
+    return CLI_USAGE;
+}
+
+int cli_input_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "ssda %s: ", cmd);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return CLI_INPUT;
+}
+
+/* ---- values ---- */
+
+int cli_parse_i32(const char *s, int32_t lo, int32_t hi, int32_t *out)
+{
+    char *end;
+    long long v;
+    if (s == NULL || *s == '\0') {
+        return -1;
+    }
+    errno = 0;
+    v = strtoll(s, &end, 10);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
+        return -1;
+    }
+    *out = (int32_t)v;
+    return 0;
+}
+
+int cli_parse_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    char *end;
+    unsigned long long v;
+    if (s == NULL || *s < '0' || *s > '9') { /* no sign, no space */
+        return -1;
+    }
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (errno != 0 || *end != '\0' || v < lo || v > hi) {
+        return -1;
+    }
+    *out = (uint32_t)v;
+    return 0;
+}
+
+int cli_parse_double(const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    double v;
+    if (s == NULL || *s == '\0') {
+        return -1;
+    }
+    errno = 0;
+    v = strtod(s, &end);
+    if (errno != 0 || *end != '\0' || !(v >= lo && v <= hi)) {
+        return -1;
+    }
+    *out = v;
+    return 0;
+}
+
+int cli_parse_pair(const char *s, int32_t lo, int32_t hi, int32_t *x, int32_t *y)
+{
+    char buf[64];
+    char *comma;
+    int32_t a, b;
+    if (s == NULL || strlen(s) >= sizeof buf) {
+        return -1;
+    }
+    strcpy(buf, s);
+    comma = strchr(buf, ',');
+    if (comma == NULL) {
+        return -1;
+    }
+    *comma = '\0';
+    if (cli_parse_i32(buf, lo, hi, &a) != 0 || cli_parse_i32(comma + 1, lo, hi, &b) != 0) {
+        return -1;
+    }
+    *x = a;
+    *y = b;
+    return 0;
+}
+
+int cli_parse_list_u32(const char *s, uint32_t lo, uint32_t hi, uint32_t *out, int n)
+{
+    char buf[128];
+    char *p, *next;
+    uint32_t tmp[8];
+    int k;
+    if (s == NULL || n > 8 || strlen(s) >= sizeof buf) {
+        return -1;
+    }
+    strcpy(buf, s);
+    p = buf;
+    for (k = 0; k < n; k++) {
+        next = strchr(p, ',');
+        if ((next == NULL) != (k == n - 1)) {
+            return -1;
+        }
+        if (next != NULL) {
+            *next = '\0';
+        }
+        if (cli_parse_u32(p, lo, hi, &tmp[k]) != 0) {
+            return -1;
+        }
+        p = next != NULL ? next + 1 : p;
+    }
+    memcpy(out, tmp, (size_t)n * sizeof *out);
+    return 0;
+}
+
+/* K (safety factor) in Q8.8, 0 < K < 256. */
+static int parse_k_q8(const char *s, uint16_t *k_q8)
+{
+    double k;
+    if (cli_parse_double(s, 1.0 / 256.0, 255.99, &k) != 0) {
+        return -1;
+    }
+    *k_q8 = (uint16_t)lround(k * 256.0);
+    return 0;
+}
+
+int cli_parse_threshold(const char *s, ssda_match_config_t *cfg)
+{
+    ssda_match_config_t c = *cfg;
+    char buf[96];
+    char *arg, *arg2;
+    if (s == NULL || strlen(s) >= sizeof buf) {
+        return -1;
+    }
+    strcpy(buf, s);
+    arg = strchr(buf, ':');
+    if (arg != NULL) {
+        *arg++ = '\0';
+    }
+    arg2 = arg != NULL ? strchr(arg, ':') : NULL;
+    if (arg2 != NULL) {
+        *arg2++ = '\0';
+    }
+    c.k_q8 = 0;
+    if (strcmp(buf, "auto") == 0 && arg == NULL) {
+        c.threshold = SSDA_THRESHOLD_AUTO;
+    } else if (strcmp(buf, "none") == 0 && arg == NULL) {
+        c.threshold = SSDA_THRESHOLD_NONE;
+    } else if (strcmp(buf, "fixed") == 0 && arg != NULL && arg2 == NULL) {
+        char *end;
+        unsigned long long t;
+        if (*arg < '0' || *arg > '9') {
+            return -1;
+        }
+        errno = 0;
+        t = strtoull(arg, &end, 10);
+        if (errno != 0 || *end != '\0') {
+            return -1;
+        }
+        c.threshold = SSDA_THRESHOLD_FIXED;
+        c.fixed_threshold = (uint64_t)t;
+    } else if (strcmp(buf, "ramp") == 0 && arg != NULL) {
+        double lambda;
+        /* lambda in SAD units per pixel, Q24.8 */
+        if (cli_parse_double(arg, 1.0 / 256.0, 16777215.0, &lambda) != 0) {
+            return -1;
+        }
+        c.threshold = SSDA_THRESHOLD_RAMP;
+        c.lambda_q8 = (uint32_t)llround(lambda * 256.0);
+        if (arg2 != NULL && parse_k_q8(arg2, &c.k_q8) != 0) {
+            return -1;
+        }
+    } else if (strcmp(buf, "auto-ramp") == 0 && arg2 == NULL) {
+        c.threshold = SSDA_THRESHOLD_AUTO_RAMP;
+        if (arg != NULL && parse_k_q8(arg, &c.k_q8) != 0) {
+            return -1;
+        }
+    } else {
+        return -1;
+    }
+    *cfg = c;
+    return 0;
+}
+
+int cli_parse_scan(const char *s, ssda_match_config_t *cfg)
+{
+    if (strcmp(s, "raster") == 0) {
+        cfg->scan = SSDA_SCAN_RASTER;
+    } else if (strcmp(s, "predict") == 0) {
+        cfg->scan = SSDA_SCAN_PREDICT;
+    } else if (strcmp(s, "coarse") == 0) {
+        cfg->scan = SSDA_SCAN_COARSE;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+int cli_parse_order(const char *s, ssda_match_config_t *cfg)
+{
+    if (strcmp(s, "rows") == 0) {
+        cfg->order = SSDA_ORDER_ROWS;
+    } else if (strcmp(s, "spread") == 0) {
+        cfg->order = SSDA_ORDER_SPREAD;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+void cli_threshold_name(const ssda_match_config_t *cfg, char *buf, size_t len)
+{
+    double k = (cfg->k_q8 != 0 ? cfg->k_q8 : SSDA_DEFAULT_K_Q8) / 256.0;
+    switch (cfg->threshold) {
+    case SSDA_THRESHOLD_NONE: snprintf(buf, len, "none"); break;
+    case SSDA_THRESHOLD_FIXED:
+        snprintf(buf, len, "fixed:%llu", (unsigned long long)cfg->fixed_threshold);
+        break;
+    case SSDA_THRESHOLD_RAMP:
+        snprintf(buf, len, "ramp:%g:%g", cfg->lambda_q8 / 256.0, k);
+        break;
+    case SSDA_THRESHOLD_AUTO_RAMP: snprintf(buf, len, "auto-ramp:%g", k); break;
+    default: snprintf(buf, len, "auto"); break;
+    }
+}
+
+const char *cli_scan_name(const ssda_match_config_t *cfg)
+{
+    return cfg->scan == SSDA_SCAN_PREDICT  ? "predict"
+           : cfg->scan == SSDA_SCAN_COARSE ? "coarse"
+                                           : "raster";
+}
+
+/* ---- outputs ---- */
+
+void cli_outputs_begin(cli_outputs_t *o, const char *cmd)
+{
+    memset(o, 0, sizeof *o);
+    o->cmd = cmd;
+}
+
+FILE *cli_outputs_open(cli_outputs_t *o, const char *path)
+{
+    if (o->n >= CLI_MAX_OUTPUTS) {
+        cli_input_error(o->cmd, "internal error: too many outputs");
+        return NULL;
+    }
+    if (atomic_file_open(&o->f[o->n], path) != 0) {
+        cli_input_error(o->cmd, "cannot create '%s': %s", path, strerror(errno));
+        return NULL;
+    }
+    return o->f[o->n++].fp;
+}
+
+int cli_outputs_commit(cli_outputs_t *o)
+{
+    int i, rc = CLI_OK;
+    for (i = 0; i < o->n; i++) { /* write errors first: nothing renamed if any */
+        if (o->f[i].fp != stdout && (fflush(o->f[i].fp) != 0 || ferror(o->f[i].fp))) {
+            cli_input_error(o->cmd, "cannot write '%s': %s", o->f[i].final_path,
+                            strerror(errno));
+            cli_outputs_abort(o);
+            return CLI_INPUT;
+        }
+    }
+    for (i = 0; i < o->n; i++) {
+        const char *name = o->f[i].final_path != NULL ? o->f[i].final_path : "stdout";
+        char shown[512];
+        snprintf(shown, sizeof shown, "%s", name);
+        if (atomic_file_commit(&o->f[i]) != 0 && rc == CLI_OK) {
+            rc = cli_input_error(o->cmd, "cannot write '%s': %s", shown, strerror(errno));
+        }
+    }
+    o->n = 0;
+    return rc;
+}
+
+void cli_outputs_abort(cli_outputs_t *o)
+{
+    int i;
+    for (i = 0; i < o->n; i++) {
+        atomic_file_abort(&o->f[i]);
+    }
+    o->n = 0;
+}
+
+/* ---- inputs ---- */
+
+int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray_image_t *img)
+{
+    char err[512];
+    if (png_read_gray(path, depth, img, NULL, err, sizeof err) != 0) {
+        cli_input_error(cmd, "%s", err);
+        return -1;
+    }
+    return 0;
+}
+
+int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_image_t *a,
+                      gray_image_t *b)
+{
+    if (cli_load_png(cmd, p1, PNG_GRAY_NATIVE, a) != 0) {
+        return -1;
+    }
+    if (cli_load_png(cmd, p2, a->bits == 16 ? PNG_GRAY_16 : PNG_GRAY_NATIVE, b) != 0) {
+        gray_image_free(a);
+        return -1;
+    }
+    if (b->bits == 16 && a->bits == 8) { /* widen the first to match */
+        gray_image_free(a);
+        if (cli_load_png(cmd, p1, PNG_GRAY_16, a) != 0) {
+            gray_image_free(b);
+            return -1;
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,171 @@
+/* cmd_compare.c - `ssda compare FIRST.png SECOND.png`: the seed's Table 1 on the
+   user's images: SSDA vectors against exhaustive normalised cross-correlation. */
+#include "ncc_ref.h"
+#include "progress.h"
+#include "track_run.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static void help(void)
+{
+    fputs("usage: ssda compare FIRST.png SECOND.png [track options]\n"
+          "\n"
+          "Track as `ssda track` does, then search every ok window again by exhaustive\n"
+          "normalised cross-correlation (NCC, the maximum the seed's FFT correlation\n"
+          "finds) over the same area of the same (pre-processed) images. Prints the share\n"
+          "of windows whose SSDA vector is within 0, 1 and 2 px of the NCC vector\n"
+          "(largest of |ddx|, |ddy|) and the time of each method (the seed's Table 1).\n"
+          "--json adds ref_dx, ref_dy to each window and a \"compare\" object;\n"
+          "--overlay draws the NCC vectors as thin cyan arrows under the SSDA ones.\n"
+          "\n",
+          stdout);
+    fputs(track_opts_help, stdout);
+    fputs("  -h, --help        this text\n"
+          "\nExit codes: 0 ok, 1 bad input, 2 usage.\n",
+          stdout);
+}
+
+int cmd_compare(int argc, char **argv)
+{
+    cli_args_t a;
+    cli_outputs_t out;
+    FILE *f;
+    track_opts_t o;
+    track_result_t r;
+    int32_t (*ref)[2] = NULL;
+    double (*truth)[2] = NULL;
+    uint32_t k, within[3] = {0, 0, 0}, hx, hy, ok = 0;
+    double t0, ncc_secs;
+    progress_t prog;
+    int rc;
+    char extra[512], title[256], sub[256];
+
+    track_opts_init(&o);
+    cli_args_begin(&a, "compare", argc, argv);
+    while (cli_next(&a)) {
+        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
+            help();
+            return CLI_OK;
+        }
+        if (!track_opts_take(&a, &o)) {
+            return cli_unknown(&a);
+        }
+        if (a.bad) {
+            return CLI_USAGE;
+        }
+    }
+    if (a.bad) {
+        return CLI_USAGE;
+    }
+    if (a.npos != 2) {
+        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
+    }
+    cli_outputs_begin(&out, a.cmd);
+    rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
+    if (rc != CLI_OK) {
+        return rc;
+    }
+    ref = calloc(r.grid.count + 1u, sizeof *ref);
+    truth = calloc(r.grid.count + 1u, sizeof *truth);
+    if (ref == NULL || truth == NULL) {
+        rc = cli_input_error(a.cmd, "out of memory");
+        goto done;
+    }
+    hx = (r.grid.search_w - r.grid.win_w) / 2u;
+    hy = (r.grid.search_h - r.grid.win_h) / 2u;
+    progress_begin(&prog, "NCC reference", r.grid.count, o.quiet);
+    t0 = progress_now();
+    for (k = 0; k < r.grid.count; k++) {
+        const ssda_track_vector_t *v = &r.vec[k];
+        uint32_t bx, by, d;
+        double score;
+        int32_t ddx, ddy;
+        if (v->status != SSDA_TRACK_OK) {
+            continue;
+        }
+        if (ncc_search(&r.first, v->x - hx, v->y - hy, r.grid.search_w, r.grid.search_h,
+                       &r.second, v->x, v->y, r.grid.win_w, r.grid.win_h, &bx, &by,
+                       &score) != 0) {
+            progress_end(&prog);
+            rc = cli_input_error(a.cmd, "out of memory");
+            goto done;
+        }
+        ref[k][0] = (int32_t)hx - (int32_t)bx;
+        ref[k][1] = (int32_t)hy - (int32_t)by;
+        truth[k][0] = ref[k][0];
+        truth[k][1] = ref[k][1];
+        ddx = abs(v->dx - ref[k][0]);
+        ddy = abs(v->dy - ref[k][1]);
+        d = (uint32_t)(ddx > ddy ? ddx : ddy);
+        ok++;
+        if (d <= 2u) {
+            within[2]++;
+            if (d <= 1u) {
+                within[1]++;
+                if (d == 0u) {
+                    within[0]++;
+                }
+            }
+        }
+        progress_update(&prog, k + 1u);
+    }
+    ncc_secs = progress_now() - t0;
+    progress_end(&prog);
+
+#define PCT(n) (ok ? 100.0 * (double)(n) / (double)ok : 0.0)
+    snprintf(extra, sizeof extra,
+             "\"compare\":{\"reference\":\"ncc\",\"windows\":%u,\"within_0\":%u,"
+             "\"within_1\":%u,\"within_2\":%u,\"within_0_pct\":%.2f,\"within_1_pct\":%.2f,"
+             "\"within_2_pct\":%.2f,\"ssda_time_s\":%.6f,\"ncc_time_s\":%.6f}",
+             ok, within[0], within[1], within[2], PCT(within[0]), PCT(within[1]),
+             PCT(within[2]), r.secs, ncc_secs);
+    if (o.json_path != NULL) {
+        if ((f = cli_outputs_open(&out, o.json_path)) == NULL) {
+            rc = CLI_INPUT;
+            goto done;
+        }
+        track_write_json(f, &r, &o, (const int32_t(*)[2])ref, extra);
+    }
+    if (o.overlay_path != NULL) {
+        snprintf(title, sizeof title, "ssda compare  %s -> %s", a.pos[0], a.pos[1]);
+        snprintf(sub, sizeof sub,
+                 "SSDA vs exhaustive NCC on %u windows: within 0 px %.0f %%, 1 px %.0f %%, "
+                 "2 px %.0f %%",
+                 ok, PCT(within[0]), PCT(within[1]), PCT(within[2]));
+        if ((f = cli_outputs_open(&out, o.overlay_path)) == NULL ||
+            track_write_overlay(a.cmd, f, o.overlay_path, &r, &o, (const double(*)[2])truth,
+                                "NCC reference", title, sub) != 0) {
+            rc = CLI_INPUT;
+            goto done;
+        }
+    }
+    if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
+        goto done;
+    }
+    if (!(o.json_path != NULL && strcmp(o.json_path, "-") == 0) &&
+        !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
+        uint64_t brute = track_brute_ops(&r);
+        printf("SSDA vs exhaustive normalised cross-correlation on %u ok windows "
+               "(of %u; window %ux%u, search %ux%u):\n",
+               ok, r.grid.count, r.grid.win_w, r.grid.win_h, r.grid.search_w,
+               r.grid.search_h);
+        printf("  within 0 px: %4u  %5.1f %%\n", within[0], PCT(within[0]));
+        printf("  within 1 px: %4u  %5.1f %%\n", within[1], PCT(within[1]));
+        printf("  within 2 px: %4u  %5.1f %%\n", within[2], PCT(within[2]));
+        printf("time: SSDA %.2f ms (%.2f %% of brute-force pixel ops), NCC %.2f ms",
+               1e3 * r.secs, brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
+               1e3 * ncc_secs);
+        if (r.secs > 0.0 && ok > 0) {
+            printf(" (%.0fx the SSDA time)", ncc_secs / r.secs);
+        }
+        printf("\n");
+    }
+#undef PCT
+done:
+    cli_outputs_abort(&out);
+    free(ref);
+    free(truth);
+    track_result_free(&r);
+    return rc;
+}

@@ -1,0 +1,149 @@
+/* cmd_track.c - `ssda track FIRST.png SECOND.png`: the seed's cloud tracking. */
+#include "track_run.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+static void help(void)
+{
+    fputs("usage: ssda track FIRST.png SECOND.png [options]\n"
+          "\n"
+          "Motion vectors between two images, as in the seed's cloud tracking: windows\n"
+          "are laid on a grid in SECOND; each is searched by SSDA in the area of FIRST\n"
+          "centred on it. dx, dy = motion from FIRST to SECOND in pixels (x right,\n"
+          "y down): the window at (x, y) of SECOND matched best at (x-dx, y-dy) of FIRST.\n"
+          "Prints a summary; --json writes every window, --overlay draws them.\n"
+          "\n",
+          stdout);
+    fputs(track_opts_help, stdout);
+    fputs("  -h, --help        this text\n"
+          "\n"
+          "JSON: {\"windows\":[{\"x\",\"y\",\"dx\",\"dy\",\"sad\",\"status\",\"exact\"}...],\n"
+          "       \"stats\":{\"pixel_ops\",\"bytes_read\",\"brute_force_ops\",...}, \"grid\",...}\n"
+          "status: ok, excluded (no texture), masked (fill value), edge (area leaves FIRST).\n"
+          "Exit codes: 0 ok, 1 bad input, 2 usage.\n",
+          stdout);
+}
+
+static int cmp_i32(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Median of the OK windows' dx (axis 0) or dy (axis 1). */
+static int32_t median_component(const track_result_t *r, int axis)
+{
+    int32_t *v = malloc((r->grid.count + 1u) * sizeof *v), m = 0;
+    uint32_t k, n = 0;
+    if (v == NULL) {
+        return 0;
+    }
+    for (k = 0; k < r->grid.count; k++) {
+        if (r->vec[k].status == SSDA_TRACK_OK) {
+            v[n++] = axis == 0 ? r->vec[k].dx : r->vec[k].dy;
+        }
+    }
+    if (n > 0) {
+        qsort(v, n, sizeof *v, cmp_i32);
+        m = v[n / 2];
+    }
+    free(v);
+    return m;
+}
+
+int cmd_track(int argc, char **argv)
+{
+    cli_args_t a;
+    cli_outputs_t out;
+    FILE *f;
+    track_opts_t o;
+    track_result_t r;
+    int rc, json_stdout;
+    uint64_t brute;
+    char title[256], sub[256], tname[64];
+
+    track_opts_init(&o);
+    cli_args_begin(&a, "track", argc, argv);
+    while (cli_next(&a)) {
+        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
+            help();
+            return CLI_OK;
+        }
+        if (!track_opts_take(&a, &o)) {
+            return cli_unknown(&a);
+        }
+        if (a.bad) {
+            return CLI_USAGE;
+        }
+    }
+    if (a.bad) {
+        return CLI_USAGE;
+    }
+    if (a.npos != 2) {
+        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
+    }
+    if (o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0 && o.json_path != NULL &&
+        strcmp(o.json_path, "-") == 0) {
+        return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
+    }
+    rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
+    if (rc != CLI_OK) {
+        return rc;
+    }
+    json_stdout = o.json_path != NULL && strcmp(o.json_path, "-") == 0;
+    brute = track_brute_ops(&r);
+    cli_threshold_name(&r.cfg.match, tname, sizeof tname);
+    cli_outputs_begin(&out, a.cmd);
+    if (o.json_path != NULL) {
+        if ((f = cli_outputs_open(&out, o.json_path)) == NULL) {
+            rc = CLI_INPUT;
+            goto done;
+        }
+        track_write_json(f, &r, &o, NULL, NULL);
+    }
+    if (o.overlay_path != NULL) {
+        snprintf(title, sizeof title, "ssda track  %s -> %s", a.pos[0], a.pos[1]);
+        snprintf(sub, sizeof sub,
+                 "window %ux%u, search %ux%u, step %u, threshold %s%s:  %u ok, "
+                 "median motion (%+d, %+d) px,  work %.1f %% of brute force",
+                 r.grid.win_w, r.grid.win_h, r.grid.search_w, r.grid.search_h, r.grid.step_x,
+                 tname, o.grad ? ", grad" : "", r.stats.ok, (int)median_component(&r, 0),
+                 (int)median_component(&r, 1),
+                 brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0);
+        if ((f = cli_outputs_open(&out, o.overlay_path)) == NULL ||
+            track_write_overlay(a.cmd, f, o.overlay_path, &r, &o, NULL, NULL, title, sub) != 0) {
+            rc = CLI_INPUT;
+            goto done;
+        }
+    }
+    if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
+        goto done;
+    }
+    if (!json_stdout && !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
+        printf("%u windows (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n",
+               r.grid.count, r.grid.cols, r.grid.rows, r.grid.win_w, r.grid.win_h,
+               r.grid.search_w, r.grid.search_h, r.grid.step_x, r.grid.step_y);
+        printf("status:  %u ok, %u excluded, %u masked, %u edge\n", r.stats.ok,
+               r.stats.excluded, r.stats.masked, r.stats.edge);
+        if (r.stats.ok > 0) {
+            printf("motion:  median dx=%+d dy=%+d px (FIRST -> SECOND)\n",
+                   (int)median_component(&r, 0), (int)median_component(&r, 1));
+            printf("work:    %llu pixel ops = %.2f %% of brute force (%llu); threshold %s, "
+                   "%.2f ms\n",
+                   (unsigned long long)r.stats.pixel_ops,
+                   brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
+                   (unsigned long long)brute, tname, 1e3 * r.secs);
+        }
+        if (o.json_path != NULL) {
+            printf("wrote:   %s\n", o.json_path);
+        }
+        if (o.overlay_path != NULL) {
+            printf("wrote:   %s\n", o.overlay_path);
+        }
+    }
+done:
+    cli_outputs_abort(&out);
+    track_result_free(&r);
+    return rc;
+}

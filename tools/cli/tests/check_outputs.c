@@ -1,0 +1,437 @@
+#define _POSIX_C_SOURCE 200809L /* strtok_r */
+/*
+ * check_outputs.c - checks the `ssda` tool's outputs against known answers
+ * for the CLI tests. Each command exits 0 when the check passes, 1 with a
+ * message when it fails, 2 on a bad command line.
+ *
+ *   match-json FILE X|- Y|- SAD|- EXACT(true|false|-)   ("-": not checked)
+ *   track-json FILE DX DY MINFRAC [--min-ok N] [--count STATUS N] [--no-ok]
+ *       MINFRAC of the ok windows must have exactly (DX, DY); the JSON is
+ *       also checked for consistency (grid, statuses, stats).
+ *   compare-json FILE MIN_WITHIN1_PCT
+ *   pitch-csv FILE --f0 A[:B] --voiced T0:T1 [--glide-secs S0:S1] [--tol REL]
+ *       [--silent-before T] [--min-voiced FRAC]
+ *   png-same A.png B.png        same gray size, depth and pixels
+ *   png-size FILE W H [BITS]
+ *   grad-same IN.png OUT.png SHIFT   OUT is the Fig. 8 operator of IN (same
+ *       size, border 0), recomputed here in plain C
+ */
+#include "json_mini.h"
+#include "png_io.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int fail(const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "check: ");
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return 1;
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long n;
+    if (f == NULL) return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = malloc((size_t)n + 1);
+    if (fread(buf, 1, (size_t)n, f) != (size_t)n) {
+        free(buf);
+        fclose(f);
+        return NULL;
+    }
+    buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+static json_value_t *load_json(const char *path)
+{
+    char *s = slurp(path);
+    size_t at = 0;
+    json_value_t *v;
+    if (s == NULL) {
+        fail("cannot read %s", path);
+        return NULL;
+    }
+    v = json_parse(s, &at);
+    if (v == NULL) fail("%s is not valid JSON (error at byte %zu)", path, at);
+    free(s);
+    return v;
+}
+
+static int num(const json_value_t *o, const char *key, double *out)
+{
+    const json_value_t *v = json_get(o, key);
+    if (v == NULL || v->type != JSON_NUMBER) return -1;
+    *out = v->number;
+    return 0;
+}
+
+static int check_match(int argc, char **argv)
+{
+    json_value_t *j;
+    double x, y, sad, pos, comp, ops, brute;
+    const json_value_t *ex;
+    int rc = 0;
+    if (argc != 5) return 2;
+    j = load_json(argv[0]);
+    if (j == NULL) return 1;
+    ex = json_get(j, "exact");
+    if (num(j, "x", &x) || num(j, "y", &y) || num(j, "sad", &sad) || num(j, "positions", &pos) ||
+        num(j, "completed", &comp) || num(j, "pixel_ops", &ops) ||
+        num(j, "brute_force_ops", &brute) || ex == NULL ||
+        (ex->type != JSON_TRUE && ex->type != JSON_FALSE)) {
+        rc = fail("match JSON lacks a field");
+    } else if ((strcmp(argv[1], "-") != 0 && x != atof(argv[1])) ||
+               (strcmp(argv[2], "-") != 0 && y != atof(argv[2]))) {
+        rc = fail("match at (%g, %g), expected (%s, %s)", x, y, argv[1], argv[2]);
+    } else if (strcmp(argv[3], "-") != 0 && sad != atof(argv[3])) {
+        rc = fail("sad %g, expected %s", sad, argv[3]);
+    } else if (strcmp(argv[4], "-") != 0 &&
+               (ex->type == JSON_TRUE) != (strcmp(argv[4], "true") == 0)) {
+        rc = fail("exact is %s, expected %s", ex->type == JSON_TRUE ? "true" : "false", argv[4]);
+    } else if (comp < 1 || comp > pos || ops <= 0) {
+        rc = fail("implausible work counts: positions %g completed %g pixel_ops %g", pos, comp,
+                  ops);
+    }
+    json_free(j);
+    free(j);
+    return rc;
+}
+
+static const char *status_names[] = {"ok", "excluded", "masked", "edge"};
+
+static int check_track(int argc, char **argv)
+{
+    json_value_t *j;
+    const json_value_t *wins, *stats, *grid;
+    double dx = atof(argv[1]), dy = atof(argv[2]), minfrac = atof(argv[3]);
+    double cols, rows, sw, sh, ww, wh, v, counts_json[4];
+    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
+    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
+    int a, rc = 0;
+    if (argc < 4) return 2;
+    for (a = 4; a < argc; a++) {
+        if (strcmp(argv[a], "--min-ok") == 0 && a + 1 < argc) {
+            min_ok = atol(argv[++a]);
+        } else if (strcmp(argv[a], "--no-ok") == 0) {
+            min_ok = 0;
+        } else if (strcmp(argv[a], "--count") == 0 && a + 2 < argc) {
+            int k, found = 0;
+            for (k = 0; k < 4; k++) {
+                if (strcmp(argv[a + 1], status_names[k]) == 0) {
+                    want_count[k] = atol(argv[a + 2]);
+                    found = 1;
+                }
+            }
+            if (!found) return 2;
+            a += 2;
+        } else {
+            return 2;
+        }
+    }
+    j = load_json(argv[0]);
+    if (j == NULL) return 1;
+    wins = json_get(j, "windows");
+    stats = json_get(j, "stats");
+    grid = json_get(j, "grid");
+    if (wins == NULL || wins->type != JSON_ARRAY || stats == NULL || grid == NULL ||
+        num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &sw) ||
+        num(grid, "search_h", &sh) || num(grid, "window_w", &ww) || num(grid, "window_h", &wh) ||
+        num(stats, "pixel_ops", &v) || num(stats, "bytes_read", &v)) {
+        rc = fail("track JSON lacks windows, grid or stats fields");
+        goto done;
+    }
+    if ((double)wins->count != cols * rows) {
+        rc = fail("%zu windows, grid says %g x %g", wins->count, cols, rows);
+        goto done;
+    }
+    for (i = 0; i < wins->count; i++) {
+        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
+        double wx, wy, wdx, wdy, sad;
+        int k, s = -1;
+        if (st == NULL || st->type != JSON_STRING || num(w, "x", &wx) || num(w, "y", &wy) ||
+            num(w, "dx", &wdx) || num(w, "dy", &wdy) || num(w, "sad", &sad)) {
+            rc = fail("window %zu lacks x, y, dx, dy, sad or status", i);
+            goto done;
+        }
+        for (k = 0; k < 4; k++) {
+            if (strcmp(st->string, status_names[k]) == 0) s = k;
+        }
+        if (s < 0) {
+            rc = fail("window %zu has unknown status '%s'", i, st->string);
+            goto done;
+        }
+        counts[s]++;
+        if (s == 0) {
+            /* dx ranges over hx - (sw - ww) .. hx */
+            double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
+            if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
+                rc = fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
+                goto done;
+            }
+            if (wdx == dx && wdy == dy) agree++;
+        } else if (wdx != 0 || wdy != 0) {
+            rc = fail("window %zu is %s but has a vector", i, st->string);
+            goto done;
+        }
+    }
+    for (a = 0; a < 4; a++) {
+        if (num(stats, status_names[a], &counts_json[a]) || counts_json[a] != (double)counts[a]) {
+            rc = fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
+            goto done;
+        }
+        if (want_count[a] >= 0 && (long)counts[a] != want_count[a]) {
+            rc = fail("%zu %s windows, expected %ld", counts[a], status_names[a], want_count[a]);
+            goto done;
+        }
+    }
+    if ((long)counts[0] < min_ok) {
+        rc = fail("only %zu ok windows, expected at least %ld", counts[0], min_ok);
+    } else if (counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
+        rc = fail("%zu of %zu ok windows found (%g, %g); wanted %.0f %%", agree, counts[0], dx,
+                  dy, 100 * minfrac);
+    }
+done:
+    json_free(j);
+    free(j);
+    return rc;
+}
+
+static int check_compare(int argc, char **argv)
+{
+    json_value_t *j;
+    const json_value_t *cmp, *wins;
+    double w0, w1, w2, n, p1;
+    size_t i, mine[3] = {0, 0, 0}, ok = 0;
+    int rc = 0;
+    if (argc != 2) return 2;
+    j = load_json(argv[0]);
+    if (j == NULL) return 1;
+    cmp = json_get(j, "compare");
+    wins = json_get(j, "windows");
+    if (cmp == NULL || wins == NULL || num(cmp, "within_0", &w0) || num(cmp, "within_1", &w1) ||
+        num(cmp, "within_2", &w2) || num(cmp, "windows", &n) || num(cmp, "within_1_pct", &p1) ||
+        num(cmp, "ncc_time_s", &n) || num(cmp, "windows", &n)) {
+        rc = fail("compare JSON lacks fields");
+        goto done;
+    }
+    for (i = 0; i < wins->count; i++) {
+        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
+        double dx, dy, rx, ry, d;
+        if (strcmp(st->string, "ok") != 0) continue;
+        if (num(w, "dx", &dx) || num(w, "dy", &dy) || num(w, "ref_dx", &rx) ||
+            num(w, "ref_dy", &ry)) {
+            rc = fail("ok window %zu lacks ref_dx/ref_dy", i);
+            goto done;
+        }
+        ok++;
+        d = fmax(fabs(dx - rx), fabs(dy - ry));
+        if (d <= 0) mine[0]++;
+        if (d <= 1) mine[1]++;
+        if (d <= 2) mine[2]++;
+    }
+    if ((double)ok != n || (double)mine[0] != w0 || (double)mine[1] != w1 ||
+        (double)mine[2] != w2) {
+        rc = fail("compare counts (%g: %g %g %g) disagree with the windows (%zu: %zu %zu %zu)",
+                  n, w0, w1, w2, ok, mine[0], mine[1], mine[2]);
+    } else if (p1 < atof(argv[1])) {
+        rc = fail("within 1 px %.1f %%, expected at least %s %%", p1, argv[1]);
+    }
+done:
+    json_free(j);
+    free(j);
+    return rc;
+}
+
+static int check_pitch(int argc, char **argv)
+{
+    char *text, *line, *save = NULL;
+    double fa = 0, fb = 0, t0 = 0, t1 = 0, g0 = -1, g1 = -1, tol = 0.03, silent_before = -1;
+    double min_voiced = 0.9, prev_t = -1;
+    size_t in_span = 0, voiced = 0, good = 0, rows = 0;
+    int a, rc = 0;
+    if (argc < 1) return 2;
+    for (a = 1; a < argc; a++) {
+        if (strcmp(argv[a], "--f0") == 0 && a + 1 < argc) {
+            if (sscanf(argv[++a], "%lf:%lf", &fa, &fb) != 2) fb = fa = atof(argv[a]);
+        } else if (strcmp(argv[a], "--voiced") == 0 && a + 1 < argc) {
+            if (sscanf(argv[++a], "%lf:%lf", &t0, &t1) != 2) return 2;
+        } else if (strcmp(argv[a], "--glide-secs") == 0 && a + 1 < argc) {
+            if (sscanf(argv[++a], "%lf:%lf", &g0, &g1) != 2) return 2;
+        } else if (strcmp(argv[a], "--tol") == 0 && a + 1 < argc) {
+            tol = atof(argv[++a]);
+        } else if (strcmp(argv[a], "--silent-before") == 0 && a + 1 < argc) {
+            silent_before = atof(argv[++a]);
+        } else if (strcmp(argv[a], "--min-voiced") == 0 && a + 1 < argc) {
+            min_voiced = atof(argv[++a]);
+        } else {
+            return 2;
+        }
+    }
+    if (g0 < 0) { /* constant f0 over the voiced span */
+        g0 = t0;
+        g1 = t1;
+    }
+    text = slurp(argv[0]);
+    if (text == NULL) return fail("cannot read %s", argv[0]);
+    line = strtok_r(text, "\n", &save);
+    if (line == NULL || strncmp(line, "time_s,f0_hz,voiced", 19) != 0) {
+        rc = fail("CSV header is not time_s,f0_hz,voiced...");
+        goto done;
+    }
+    while ((line = strtok_r(NULL, "\n", &save)) != NULL) {
+        double t, f;
+        int v;
+        if (sscanf(line, "%lf,%lf,%d", &t, &f, &v) != 3 || (v != 0 && v != 1)) {
+            rc = fail("bad CSV row '%s'", line);
+            goto done;
+        }
+        rows++;
+        if (t <= prev_t) {
+            rc = fail("times not increasing at '%s'", line);
+            goto done;
+        }
+        prev_t = t;
+        if ((v == 0) != (f == 0.0)) {
+            rc = fail("f0 must be 0 exactly when unvoiced: '%s'", line);
+            goto done;
+        }
+        if (silent_before >= 0 && t < silent_before && v) {
+            rc = fail("voiced frame in the silence: '%s'", line);
+            goto done;
+        }
+        if (t >= t0 && t <= t1) {
+            double want = fa + (fb - fa) * (t - g0) / (g1 - g0);
+            in_span++;
+            if (v) {
+                voiced++;
+                if (fabs(f - want) <= tol * want) good++;
+            }
+        }
+    }
+    if (rows == 0 || in_span == 0) {
+        rc = fail("no frames in %g..%g s", t0, t1);
+    } else if ((double)voiced < min_voiced * (double)in_span) {
+        rc = fail("%zu of %zu frames voiced in %g..%g s", voiced, in_span, t0, t1);
+    } else if ((double)good < 0.95 * (double)voiced) {
+        rc = fail("only %zu of %zu voiced frames within %.1f %% of the known f0", good, voiced,
+                  100 * tol);
+    }
+done:
+    free(text);
+    return rc;
+}
+
+static int load_png(const char *path, gray_image_t *img)
+{
+    char err[512];
+    if (png_read_gray(path, PNG_GRAY_NATIVE, img, NULL, err, sizeof err) != 0) {
+        fail("%s", err);
+        return -1;
+    }
+    return 0;
+}
+
+static int check_png_same(int argc, char **argv)
+{
+    gray_image_t a, b;
+    uint32_t x, y;
+    int rc = 0;
+    if (argc != 2) return 2;
+    if (load_png(argv[0], &a) != 0) return 1;
+    if (load_png(argv[1], &b) != 0) return 1;
+    if (a.width != b.width || a.height != b.height || a.bits != b.bits) {
+        rc = fail("%s is %ux%u %u-bit, %s is %ux%u %u-bit", argv[0], a.width, a.height, a.bits,
+                  argv[1], b.width, b.height, b.bits);
+    } else {
+        for (y = 0; y < a.height && rc == 0; y++) {
+            for (x = 0; x < a.width && rc == 0; x++) {
+                if (gray_image_get(&a, x, y) != gray_image_get(&b, x, y)) {
+                    rc = fail("pixel (%u, %u): %u vs %u", x, y, gray_image_get(&a, x, y),
+                              gray_image_get(&b, x, y));
+                }
+            }
+        }
+    }
+    gray_image_free(&a);
+    gray_image_free(&b);
+    return rc;
+}
+
+static int check_png_size(int argc, char **argv)
+{
+    gray_image_t a;
+    int rc = 0;
+    if (argc != 3 && argc != 4) return 2;
+    if (load_png(argv[0], &a) != 0) return 1;
+    if (a.width != (uint32_t)atoi(argv[1]) || a.height != (uint32_t)atoi(argv[2]) ||
+        (argc == 4 && a.bits != (uint32_t)atoi(argv[3]))) {
+        rc = fail("%s is %ux%u %u-bit", argv[0], a.width, a.height, a.bits);
+    }
+    gray_image_free(&a);
+    return rc;
+}
+
+static int check_grad(int argc, char **argv)
+{
+    gray_image_t in, out;
+    uint32_t x, y, shift, maxv;
+    int rc = 0;
+    if (argc != 3) return 2;
+    shift = (uint32_t)atoi(argv[2]);
+    if (load_png(argv[0], &in) != 0 || load_png(argv[1], &out) != 0) return 1;
+    maxv = gray_image_max(&out);
+    if (in.width != out.width || in.height != out.height) {
+        rc = fail("grad output %ux%u, input %ux%u", out.width, out.height, in.width, in.height);
+    }
+    for (y = 0; y < in.height && rc == 0; y++) {
+        for (x = 0; x < in.width && rc == 0; x++) {
+            long want = 0;
+            if (x > 0 && y > 0 && x + 1 < in.width && y + 1 < in.height) {
+#define P(dx, dy) ((long)gray_image_get(&in, x + (dx), y + (dy)))
+                long a = P(-1, -1), b = P(0, -1), c = P(1, -1), d = P(-1, 0), f = P(1, 0);
+                long g = P(-1, 1), h = P(0, 1), i = P(1, 1);
+#undef P
+                want = labs(a + b + c - g - h - i) + labs(a + d + g - c - f - i);
+                want >>= shift;
+                if (want > (long)maxv) want = (long)maxv;
+            }
+            if ((long)gray_image_get(&out, x, y) != want) {
+                rc = fail("grad pixel (%u, %u) = %u, expected %ld", x, y,
+                          gray_image_get(&out, x, y), want);
+            }
+        }
+    }
+    gray_image_free(&in);
+    gray_image_free(&out);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    int rc = 2;
+    if (argc >= 2) {
+        if (strcmp(argv[1], "match-json") == 0) rc = check_match(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "track-json") == 0) rc = check_track(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "compare-json") == 0) rc = check_compare(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "pitch-csv") == 0) rc = check_pitch(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "png-same") == 0) rc = check_png_same(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "png-size") == 0) rc = check_png_size(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "grad-same") == 0) rc = check_grad(argc - 2, argv + 2);
+    }
+    if (rc == 2) fprintf(stderr, "check_outputs: bad command line\n");
+    return rc;
+}

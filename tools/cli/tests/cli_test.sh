@@ -1,0 +1,252 @@
+#!/usr/bin/env bash
+# CLI tests of the `ssda` tool, one group per CTest entry:
+#   cli_test.sh GROUP SSDA GEN CHECK WORKDIR
+# GEN (gen_inputs.c) makes inputs with known motion and f0, CHECK
+# (check_outputs.c) checks JSON/CSV/PNG outputs against the known answers.
+# Every case states its expected exit code; failed runs must leave no output.
+set -u
+group=$1 ssda=$2 gen=$3 check=$4 work=$5
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+# run EXPECTED_EXIT ARGS...: run ssda, keep stdout/stderr in out.txt/err.txt
+run() {
+  local want=$1; shift
+  "$ssda" "$@" >out.txt 2>err.txt
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
+    return 1
+  fi
+  return 0
+}
+
+# chk ARGS...: run the output checker
+chk() { "$check" "$@" || { fail "check $*"; return 1; }; }
+
+# absent FILES...: none of the files, nor any temp file, may exist
+absent() {
+  local f
+  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
+  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left: $(ls ./*.tmp.*)"; fi
+}
+
+# stderr_has TEXT: the last run's stderr mentions TEXT
+stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+
+case $group in
+usage)
+  run 0 --help && grep -q "usage: ssda" out.txt || fail "ssda --help"
+  run 0 --version && grep -q "^ssda [0-9]" out.txt || fail "ssda --version"
+  for c in match track compare grad pitch; do
+    run 0 "$c" --help && grep -q "usage: ssda $c" out.txt || fail "ssda $c --help"
+    run 2 "$c"                       # no arguments
+    run 2 "$c" a b c d               # too many
+    run 2 "$c" --no-such-option x.png
+  done
+  run 0 help track && grep -q "usage: ssda track" out.txt || fail "ssda help track"
+  run 2
+  run 2 frobnicate
+  run 2 match a.png b.png --threshold fixed
+  run 2 match a.png b.png --threshold ramp:0
+  run 2 match a.png b.png --threshold auto-ramp:x
+  run 2 match a.png b.png --scan diagonal
+  run 2 match a.png b.png --scan predict          # needs --predict
+  run 2 match a.png b.png --predict 3
+  run 2 match a.png b.png --json=yes              # a flag takes no value
+  run 2 track a.png b.png --window 0
+  run 2 track a.png b.png --window 16x
+  run 2 track a.png b.png --roi 1,2,3
+  run 2 track a.png b.png --predict sideways
+  run 2 track a.png b.png --mem lots
+  run 2 track a.png b.png --json                  # needs a value
+  run 2 pitch a.wav --fmin 300 --fmax 200
+  run 2 pitch a.wav --hop-ms -1
+  run 2 grad a.png b.png --bits 12
+  run 2 grad a.png b.png --shift 40
+  ;;
+
+kinds)
+  # Every PNG kind libpng reads becomes the documented gray (checked pixel by
+  # pixel against an independent computation in gen_inputs), and the tool
+  # finds the same match in colour, palette, 16-bit and interlaced images.
+  "$gen" kinds . || exit 1
+  for k in gray1 gray2 gray4 gray8 gray16 ga8 rgb8 rgba8 rgb16 palette palette_trns interlaced; do
+    chk png-same "$k.png" "$k.expect.png"
+  done
+  "$gen" texture t8.png --size 80x72 --seed 5
+  "$gen" crop t8.png w8.png 29,33,16,12
+  for k in rgb8 rgba8 ga8 palette interlaced; do
+    "$gen" texture "t_$k.png" --size 80x72 --seed 5 --kind "$k"
+    run 0 match "t_$k.png" w8.png --json && cp out.txt "m_$k.json" && chk match-json "m_$k.json" 29 33 0 true
+  done
+  "$gen" texture t16.png --size 80x72 --seed 5 --kind gray16
+  "$gen" crop t16.png w16.png 29,33,16,12
+  run 0 match t16.png w16.png --json && cp out.txt m16.json && chk match-json m16.json 29 33 0 true
+  grep -q '"bits":16' m16.json || fail "16-bit match not reported as 16-bit"
+  # a 16-bit search and an 8-bit window: the window is widened (v * 257)
+  "$gen" texture t16w.png --size 80x72 --seed 5 --kind rgb16
+  run 0 match t16w.png w8.png --json && cp out.txt m_mixed.json && chk match-json m_mixed.json 29 33 - true
+  ;;
+
+match)
+  "$gen" texture s.png --size 96x80 --seed 2
+  "$gen" crop s.png w.png 37,21,16,16
+  for t in auto none fixed:5000; do
+    for sc in raster "predict --predict 30,20"; do
+      # shellcheck disable=SC2086
+      run 0 match s.png w.png --threshold "$t" --scan $sc --json && cp out.txt m.json &&
+        chk match-json m.json 37 21 0 true
+    done
+  done
+  run 0 match s.png w.png --bounds --order spread --json && cp out.txt m.json && chk match-json m.json 37 21 0 true
+  # inexact modes: the crop's zero SAD is never cut, so they find it too, flagged not exact
+  for t in ramp:8 ramp:8:3 auto-ramp auto-ramp:1.5; do
+    run 0 match s.png w.png --threshold "$t" --json && cp out.txt m.json && chk match-json m.json 37 21 0 false || echo "  (threshold $t)" >&2
+  done
+  # coarse-to-fine: a position on its 8 px grid with SAD 0 is always found;
+  # elsewhere it may miss (flagged not exact either way)
+  "$gen" crop s.png wg.png 32,16,16,16
+  run 0 match s.png wg.png --scan coarse --json && cp out.txt m.json && chk match-json m.json 32 16 0 false
+  run 0 match s.png w.png --scan coarse --coarse-step 4 --json && cp out.txt m.json && chk match-json m.json - - - false
+  # a fixed threshold below every SAD: all cut, the fallback is flagged not exact
+  "$gen" texture other.png --size 16x16 --seed 99
+  run 0 match s.png other.png --threshold fixed:1 --json && grep -q '"exact":false' out.txt || fail "all-cut fallback"
+  # the early exit does less work than brute force, which does it all
+  run 0 match s.png w.png --threshold none --json && grep -q '"completed":5265' out.txt || fail "brute force completes every position"
+  # text output names the position
+  run 0 match s.png w.png && grep -q "x=37 y=21" out.txt || fail "text output"
+  # window larger than the search image: bad input
+  run 1 match w.png s.png && stderr_has "larger than"
+  ;;
+
+track)
+  "$gen" texture a.png --size 128x128 --seed 3
+  "$gen" texture b.png --size 128x128 --seed 3 --shift 3,-2
+  # default grid: 16 px windows every 16 px, 32 px areas: 6 x 6 fit, 28 edge
+  run 0 track a.png b.png --json t.json --overlay o.png --quiet
+  chk track-json t.json 3 -2 1.0 --count ok 36 --count edge 28
+  chk png-size o.png 896 1024
+  grep -q "median dx=+3 dy=-2" out.txt || fail "track summary"
+  for opts in "--threshold none" "--predict none" "--predict left" "--bounds" "--order spread" \
+              "--threshold auto-ramp" "--grad" \
+              "--window 8 --search 24 --step 8" "--window 12x10 --search 30x20 --step 10x9" \
+              "--roi 20,20,80,70"; do
+    # shellcheck disable=SC2086
+    run 0 track a.png b.png $opts --json t.json && chk track-json t.json 3 -2 1.0 || echo "  (options: $opts)" >&2
+  done
+  # coarse-to-fine may miss the minimum (the seed's caveat): most windows, not all
+  run 0 track a.png b.png --predict none --scan coarse --json t.json && chk track-json t.json 3 -2 0.5
+  run 0 track a.png b.png --json - && cp out.txt t2.json && chk track-json t2.json 3 -2 1.0
+  # --roi and --step together select the grid: 3 x 2 windows, all inside
+  run 0 track a.png b.png --roi 40,40,48,40 --step 16x24 --json t.json &&
+    chk track-json t.json 3 -2 1.0 --count ok 6
+  # textureless windows: the left 64 columns are flat in both images
+  "$gen" texture fa.png --size 128x128 --seed 4 --fill 128,0,0,63,127
+  "$gen" texture fb.png --size 128x128 --seed 4 --fill 128,0,0,63,127 --shift -2,1
+  # (the default level, the mean, may also exclude a few textured windows)
+  run 0 track fa.png fb.png --exclude --json t.json && chk track-json t.json -2 1 0.6 --count edge 28
+  grep -c '"excluded"' t.json >/dev/null || fail "no excluded window"
+  run 0 track fa.png fb.png --exclude=129:4 --json t.json && chk track-json t.json -2 1 0.6 --count excluded 18
+  run 0 track fa.png fb.png --exclude mean:4 --json t.json && chk track-json t.json -2 1 0.6 --count excluded 18
+  # fill pixels (GOES style: 12-bit counts, 4095 = fill) in the left 41 columns
+  "$gen" texture ga.png --size 128x128 --seed 6 --kind gray16 --max 4000 --fill 4095,0,0,40,127
+  "$gen" texture gb.png --size 128x128 --seed 6 --kind gray16 --max 4000 --fill 4095,0,0,40,127 --shift 1,2
+  run 0 track ga.png gb.png --mask-value 4095 --json t.json --overlay om.png &&
+    chk track-json t.json 1 2 1.0 --count ok 18 --count masked 18 --count edge 28
+  run 0 track ga.png gb.png --mask-value 4095 --grad --json t.json &&
+    chk track-json t.json 1 2 1.0 --count masked 18
+  run 2 track a.png b.png --mask-value 4095        # beyond 8-bit samples
+  run 2 track a.png b.png --roi 100,100,64,64      # outside the image
+  run 2 track a.png b.png --window 40 --search 32  # area smaller than window
+  run 2 track a.png b.png --mem 4096               # until streaming lands
+  ;;
+
+compare)
+  "$gen" texture a.png --size 112x112 --seed 7
+  "$gen" texture b.png --size 112x112 --seed 7 --shift -3,4
+  run 0 compare a.png b.png --json c.json --overlay co.png --quiet && chk compare-json c.json 100
+  chk track-json c.json -3 4 1.0
+  grep -q "within 1 px: " out.txt || fail "compare summary"
+  run 0 compare a.png b.png --threshold auto-ramp:0.5 --window 8 --search 24 --step 8 --json c.json &&
+    chk compare-json c.json 0
+  ;;
+
+grad)
+  "$gen" texture g8.png --size 40x30 --seed 8
+  "$gen" texture g16.png --size 40x30 --seed 8 --kind gray16
+  run 0 grad g8.png o.png && chk grad-same g8.png o.png 2 && chk png-size o.png 40 30 8
+  run 0 grad g8.png o16.png --bits 16 && chk grad-same g8.png o16.png 0 && chk png-size o16.png 40 30 16
+  run 0 grad g16.png o.png && chk grad-same g16.png o.png 2 && chk png-size o.png 40 30 16
+  run 0 grad g16.png o.png --bits 8 && chk grad-same g16.png o.png 10
+  run 0 grad g8.png o.png --shift 0 && chk grad-same g8.png o.png 0   # saturates at 255
+  stderr_has "saturated"
+  run 0 grad g8.png c.png --crop && chk png-size c.png 38 28 8
+  "$gen" texture tiny.png --size 2x9 --seed 1
+  run 1 grad tiny.png x.png && absent x.png
+  ;;
+
+pitch)
+  # constant 200 Hz after 0.3 s of silence, 16 kHz mono 16-bit
+  "$gen" wav v.wav --f0 200 --rate 16000 --secs 1 --silence 0.3
+  run 0 pitch v.wav --csv p.csv --plot p.png --quiet &&
+    chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2 --silent-before 0.25 --tol 0.01
+  grep -q "median 200" out.txt || fail "pitch summary: $(cat out.txt)"
+  run 0 pitch v.wav --csv - && cp out.txt p2.csv && chk pitch-csv p2.csv --f0 200 --voiced 0.4:1.2
+  run 0 pitch v.wav --full --csv pf.csv && cmp -s <(cut -d, -f1-3 p.csv) <(cut -d, -f1-3 pf.csv) ||
+    fail "early exit changed the track"
+  run 0 pitch v.wav --hop-ms 5 --csv p.csv && chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2
+  # a glide 150 -> 300 Hz, 22.05 kHz stereo float, and a reference file
+  "$gen" wav g.wav --glide 150:300 --rate 22050 --secs 1 --silence 0.3 --channels 2 --format float
+  run 0 pitch g.wav --csv g.csv && chk pitch-csv g.csv --f0 150:300 --glide-secs 0.3:1.3 --voiced 0.4:1.2 --tol 0.03
+  awk 'BEGIN { print "time_s,f0_hz"; for (t = 0; t < 1.3; t += 0.005) printf "%.3f,%.3f\n", t, (t < 0.3 ? 0 : 150 + 150 * (t - 0.3)) }' >ref.csv
+  run 0 pitch g.wav --ref ref.csv --plot gp.png && grep -q "GPE 0.00 %" out.txt || fail "reference score: $(cat out.txt)"
+  # 96 kHz 24-bit: analysed at 48 kHz
+  "$gen" wav h.wav --f0 440 --rate 96000 --secs 0.5 --format pcm24
+  run 0 pitch h.wav --csv h.csv && chk pitch-csv h.csv --f0 440 --voiced 0.1:0.4
+  run 0 pitch v.wav --fmin 100 --fmax 400 --csv p.csv && chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2
+  run 2 pitch v.wav --fmax 5000                   # above rate / 4
+  "$gen" wav lo.wav --rate 4000 --secs 0.5
+  run 1 pitch lo.wav --csv x.csv && stderr_has "8000" && absent x.csv
+  "$gen" wav short.wav --rate 16000 --secs 0.01
+  run 1 pitch short.wav --csv x.csv --plot x.png && stderr_has "too short" && absent x.csv x.png
+  ;;
+
+errors)
+  # malformed inputs: exit 1, a message naming the file, no output left behind
+  "$gen" texture good.png --size 64x64 --seed 1
+  for k in empty text truncated crc huge toomuch; do
+    "$gen" bad "$k" "bad_$k.png"
+    run 1 grad "bad_$k.png" out.png && stderr_has "bad_$k.png" && absent out.png
+    run 1 match "bad_$k.png" good.png --json && stderr_has "bad_$k.png"
+    run 1 track good.png "bad_$k.png" --json t.json --overlay o.png && absent t.json o.png
+    run 1 compare "bad_$k.png" good.png --json t.json && absent t.json
+  done
+  run 1 grad bad_huge.png out.png && stderr_has "65535"
+  run 1 grad bad_toomuch.png out.png && stderr_has "limit"
+  run 1 grad missing.png out.png && stderr_has "missing.png" && absent out.png
+  for k in wav-empty wav-text wav-header; do
+    "$gen" bad "$k" "bad_$k.wav"
+    run 1 pitch "bad_$k.wav" --csv p.csv --plot p.png && stderr_has "bad_$k.wav" && absent p.csv p.png
+  done
+  run 1 pitch missing.wav --csv p.csv && absent p.csv
+  # an output in a missing folder: exit 1, and the other output is not written either
+  "$gen" texture b.png --size 64x64 --seed 1 --shift 1,1
+  run 1 track good.png b.png --json t.json --overlay no/such/dir/o.png && absent t.json
+  # a failed run leaves an existing output untouched
+  echo old >keep.json
+  run 1 track good.png bad_truncated.png --json keep.json
+  [ "$(cat keep.json)" = old ] || fail "existing output changed by a failed run"
+  ;;
+
+*)
+  echo "unknown group $group" >&2; exit 2 ;;
+esac
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failure(s) in group $group" >&2
+  exit 1
+fi
+echo "group $group: ok"

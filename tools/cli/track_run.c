@@ -1,0 +1,645 @@
+/* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
+#include "track_run.h"
+#include "progress.h"
+#include "ssda/grad.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char track_opts_help[] =
+    "grid:\n"
+    "  --window N|WxH    window size, px (default 16, the seed's)\n"
+    "  --search N|WxH    search area size, px, centred on the window (default 32)\n"
+    "  --step N|XxY      grid step, px (default: the window size)\n"
+    "  --roi X,Y,W,H     lay the grid in this rectangle of SECOND (default: all)\n"
+    "search:\n"
+    "  --threshold MODE  auto (default, exact), none, fixed:T, ramp:LAMBDA[:K],\n"
+    "                    auto-ramp[:K]  (see ssda match --help)\n"
+    "  --predict P       neighbour (default: median of the solved left, up and\n"
+    "                    up-right vectors), left (the seed's), or none\n"
+    "  --scan ORDER      raster, predict or coarse (coarse needs --predict none)\n"
+    "  --order ROWS      rows (default) or spread\n"
+    "  --bounds          successive-elimination bounds (exact, less work)\n"
+    "windows to skip:\n"
+    "  --exclude [LEVEL[:COUNT]]  skip textureless windows (the seed's rule): a window\n"
+    "                    is excluded when fewer than COUNT of its pixels lie on one\n"
+    "                    side of brightness LEVEL. Defaults: LEVEL = mean of SECOND\n"
+    "                    (fill pixels ignored), COUNT = window pixels / 16\n"
+    "  --mask-value V    windows or areas holding V are 'masked' (GOES fill: 4095)\n"
+    "  --grad            apply the Fig. 8 differential operator to both images first\n"
+    "  --mem BYTES       track from block-streamed images within BYTES of memory\n"
+    "outputs:\n"
+    "  --json FILE|-     write the vectors as JSON (- = stdout)\n"
+    "  --overlay OUT.png draw the vectors over SECOND\n"
+    "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
+    "  --quiet           no progress bar\n";
+
+void track_opts_init(track_opts_t *o)
+{
+    memset(o, 0, sizeof *o);
+    o->cfg.predict = SSDA_TRACK_PREDICT_MEDIAN;
+}
+
+/* "N" or "WxH", each 1..65535. */
+static int parse_size(const char *s, uint16_t *w, uint16_t *h)
+{
+    char buf[40];
+    char *x;
+    uint32_t a, b;
+    if (s == NULL || strlen(s) >= sizeof buf) {
+        return -1;
+    }
+    strcpy(buf, s);
+    x = strchr(buf, 'x');
+    if (x == NULL) {
+        if (cli_parse_u32(buf, 1, 65535, &a) != 0) {
+            return -1;
+        }
+        b = a;
+    } else {
+        *x = '\0';
+        if (cli_parse_u32(buf, 1, 65535, &a) != 0 || cli_parse_u32(x + 1, 1, 65535, &b) != 0) {
+            return -1;
+        }
+    }
+    *w = (uint16_t)a;
+    *h = (uint16_t)b;
+    return 0;
+}
+
+/* "LEVEL[:COUNT]"; LEVEL may be "mean". */
+static int parse_exclude(const char *s, uint32_t *level, int *level_given, uint32_t *count)
+{
+    char buf[40];
+    char *colon;
+    if (strlen(s) >= sizeof buf) {
+        return -1;
+    }
+    strcpy(buf, s);
+    colon = strchr(buf, ':');
+    if (colon != NULL) {
+        *colon = '\0';
+        if (cli_parse_u32(colon + 1, 1, 65535u * 65535u / 2u, count) != 0) {
+            return -1;
+        }
+    }
+    if (strcmp(buf, "mean") == 0) {
+        *level_given = 0;
+        return 0;
+    }
+    if (cli_parse_u32(buf, 0, 65534, level) != 0) {
+        return -1;
+    }
+    *level_given = 1;
+    return 0;
+}
+
+/* BYTES with an optional K, M or G suffix (powers of 1024). */
+static int parse_bytes(const char *s, uint64_t *out)
+{
+    char *end;
+    unsigned long long v;
+    uint64_t mul = 1;
+    if (*s < '0' || *s > '9') {
+        return -1;
+    }
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (errno != 0) {
+        return -1;
+    }
+    if (*end == 'K' || *end == 'k') {
+        mul = 1024u;
+        end++;
+    } else if (*end == 'M' || *end == 'm') {
+        mul = 1024u * 1024u;
+        end++;
+    } else if (*end == 'G' || *end == 'g') {
+        mul = 1024u * 1024u * 1024u;
+        end++;
+    }
+    if (*end != '\0' || v == 0 || v > UINT64_MAX / mul) {
+        return -1;
+    }
+    *out = v * mul;
+    return 0;
+}
+
+int track_opts_take(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    uint32_t u;
+    if (cli_opt(a, "--window", &v)) {
+        if (v != NULL && parse_size(v, &o->cfg.win_w, &o->cfg.win_h) != 0) {
+            cli_usage_error(a->cmd, "bad --window '%s' (N or WxH, 1..65535)", v);
+            a->bad = 1;
+        }
+    } else if (cli_opt(a, "--search", &v)) {
+        if (v != NULL && parse_size(v, &o->cfg.search_w, &o->cfg.search_h) != 0) {
+            cli_usage_error(a->cmd, "bad --search '%s' (N or WxH, 1..65535)", v);
+            a->bad = 1;
+        }
+    } else if (cli_opt(a, "--step", &v)) {
+        if (v != NULL && parse_size(v, &o->cfg.step_x, &o->cfg.step_y) != 0) {
+            cli_usage_error(a->cmd, "bad --step '%s' (N or XxY, 1..65535)", v);
+            a->bad = 1;
+        }
+    } else if (cli_opt(a, "--roi", &v)) {
+        if (v != NULL && (cli_parse_list_u32(v, 0, 65535, o->roi, 4) != 0 || o->roi[2] == 0 ||
+                          o->roi[3] == 0)) {
+            cli_usage_error(a->cmd, "bad --roi '%s' (X,Y,W,H with W, H >= 1)", v);
+            a->bad = 1;
+        }
+        o->have_roi = 1;
+    } else if (cli_opt(a, "--threshold", &v)) {
+        if (v != NULL && cli_parse_threshold(v, &o->cfg.match) != 0) {
+            cli_usage_error(a->cmd, "bad --threshold '%s' (auto, none, fixed:T, "
+                            "ramp:LAMBDA[:K], auto-ramp[:K])", v);
+            a->bad = 1;
+        }
+    } else if (cli_opt(a, "--scan", &v)) {
+        if (v != NULL && cli_parse_scan(v, &o->cfg.match) != 0) {
+            cli_usage_error(a->cmd, "bad --scan '%s' (raster, predict, coarse)", v);
+            a->bad = 1;
+        }
+    } else if (cli_opt(a, "--order", &v)) {
+        if (v != NULL && cli_parse_order(v, &o->cfg.match) != 0) {
+            cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
+            a->bad = 1;
+        }
+    } else if (cli_flag(a, "--bounds")) {
+        o->cfg.match.flags |= SSDA_MATCH_BOUNDS;
+    } else if (cli_opt(a, "--predict", &v)) {
+        if (v == NULL) {
+            return 1;
+        }
+        if (strcmp(v, "neighbour") == 0 || strcmp(v, "neighbor") == 0 ||
+            strcmp(v, "median") == 0) {
+            o->cfg.predict = SSDA_TRACK_PREDICT_MEDIAN;
+        } else if (strcmp(v, "left") == 0) {
+            o->cfg.predict = SSDA_TRACK_PREDICT_LEFT;
+        } else if (strcmp(v, "none") == 0) {
+            o->cfg.predict = SSDA_TRACK_PREDICT_NONE;
+        } else {
+            cli_usage_error(a->cmd, "bad --predict '%s' (neighbour, left, none)", v);
+            a->bad = 1;
+        }
+    } else if (a->name_len == 9 && strncmp(a->name, "--exclude", 9) == 0) {
+        /* optional value: "--exclude=SPEC", or a following argument that parses as one */
+        uint32_t level = 0, count = 0;
+        int given = 0;
+        o->exclude = 1;
+        v = a->inline_value;
+        if (v == NULL && a->i < a->argc &&
+            parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
+            v = a->argv[a->i++];
+        }
+        if (v != NULL) {
+            if (parse_exclude(v, &level, &given, &count) != 0) {
+                cli_usage_error(a->cmd, "bad --exclude '%s' (LEVEL[:COUNT] or mean[:COUNT])", v);
+                a->bad = 1;
+                return 1;
+            }
+            o->exclude_level_given = given;
+            o->exclude_level = level;
+            o->exclude_count = count;
+        }
+    } else if (cli_opt(a, "--mask-value", &v)) {
+        if (v != NULL && cli_parse_u32(v, 0, 65535, &u) != 0) {
+            cli_usage_error(a->cmd, "bad --mask-value '%s' (0..65535)", v);
+            a->bad = 1;
+        }
+        o->cfg.flags |= SSDA_TRACK_MASK;
+        o->cfg.mask_value = (uint16_t)u;
+    } else if (cli_flag(a, "--grad")) {
+        o->grad = 1;
+    } else if (cli_opt(a, "--mem", &v)) {
+        if (v != NULL && parse_bytes(v, &o->mem) != 0) {
+            cli_usage_error(a->cmd, "bad --mem '%s' (bytes, optional K/M/G suffix)", v);
+            a->bad = 1;
+        }
+        o->have_mem = 1;
+    } else if (cli_opt(a, "--json", &v)) {
+        o->json_path = v;
+    } else if (cli_opt(a, "--overlay", &v)) {
+        o->overlay_path = v;
+    } else if (cli_opt(a, "--arrow-scale", &v)) {
+        if (v != NULL && cli_parse_double(v, 0.01, 1000.0, &o->arrow_scale) != 0) {
+            cli_usage_error(a->cmd, "bad --arrow-scale '%s' (0.01..1000)", v);
+            a->bad = 1;
+        }
+    } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
+        o->quiet = 1;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+const char *track_status_name(int status)
+{
+    switch (status) {
+    case SSDA_TRACK_OK: return "ok";
+    case SSDA_TRACK_EXCLUDED: return "excluded";
+    case SSDA_TRACK_MASKED: return "masked";
+    case SSDA_TRACK_EDGE: return "edge";
+    default: return "unknown";
+    }
+}
+
+/* ---- pre-processing ---- */
+
+/* The Fig. 8 operator into a same-size 16-bit image (border 0), so window
+   coordinates stay those of the input. With a mask, every output pixel whose
+   3 x 3 neighbourhood holds the fill value becomes 65535, the new fill value
+   (the shift keeps real values below it). */
+static int grad_image(const char *cmd, const gray_image_t *in, int masked, uint32_t mask,
+                      unsigned shift, gray_image_t *out)
+{
+    ssda_view_t src;
+    ssda_grad_out_t go;
+    uint32_t sat = 0, x, y;
+    int e;
+    if (in->width < 3 || in->height < 3) {
+        cli_input_error(cmd, "--grad needs images of at least 3 x 3 pixels");
+        return -1;
+    }
+    if (gray_image_alloc(out, in->width, in->height, 16) != 0) {
+        cli_input_error(cmd, "out of memory");
+        return -1;
+    }
+    gray_image_view(in, &src);
+    go.data = (uint8_t *)out->pixels + out->stride + 2u;
+    go.size = (size_t)out->stride * out->height - out->stride - 2u;
+    go.stride = out->stride;
+    go.format = SSDA_PIX_U16;
+    go.shift = (uint8_t)shift;
+    e = ssda_grad(&src, &go, &sat);
+    if (e != SSDA_OK) {
+        cli_input_error(cmd, "--grad failed: %s", ssda_strerror(e));
+        gray_image_free(out);
+        return -1;
+    }
+    if (masked) {
+        for (y = 0; y < in->height; y++) {
+            for (x = 0; x < in->width; x++) {
+                if (gray_image_get(in, x, y) == mask) {
+                    uint32_t yy, xx;
+                    for (yy = y > 0 ? y - 1 : 0; yy <= y + 1 && yy < in->height; yy++) {
+                        for (xx = x > 0 ? x - 1 : 0; xx <= x + 1 && xx < in->width; xx++) {
+                            ((uint16_t *)out->pixels)[(size_t)yy * in->width + xx] = 65535u;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    return 0;
+}
+
+/* Largest sample of an image, fill pixels ignored. */
+static uint32_t image_max(const gray_image_t *img, int masked, uint32_t mask)
+{
+    uint32_t x, y, m = 0;
+    for (y = 0; y < img->height; y++) {
+        for (x = 0; x < img->width; x++) {
+            uint32_t v = gray_image_get(img, x, y);
+            if (!(masked && v == mask) && v > m) {
+                m = v;
+            }
+        }
+    }
+    return m;
+}
+
+/* Mean of an image rounded down, fill pixels ignored (the default texture level). */
+static uint32_t image_mean(const gray_image_t *img, int masked, uint32_t mask)
+{
+    uint64_t sum = 0, n = 0;
+    uint32_t x, y;
+    for (y = 0; y < img->height; y++) {
+        for (x = 0; x < img->width; x++) {
+            uint32_t v = gray_image_get(img, x, y);
+            if (!(masked && v == mask)) {
+                sum += v;
+                n++;
+            }
+        }
+    }
+    return n > 0 ? (uint32_t)(sum / n) : 0u;
+}
+
+/* ---- the run ---- */
+
+void track_result_free(track_result_t *r)
+{
+    gray_image_free(&r->first);
+    gray_image_free(&r->second);
+    gray_image_free(&r->second_orig);
+    free(r->vec);
+    memset(r, 0, sizeof *r);
+}
+
+static void stats_add(ssda_track_stats_t *t, const ssda_track_stats_t *s)
+{
+    t->pixel_ops += s->pixel_ops;
+    t->positions += s->positions;
+    t->completed += s->completed;
+    t->check_pixels += s->check_pixels;
+    t->windows += s->windows;
+    t->ok += s->ok;
+    t->excluded += s->excluded;
+    t->masked += s->masked;
+    t->edge += s->edge;
+}
+
+int track_run(const char *cmd, const char *first_path, const char *second_path,
+              const track_opts_t *o, track_result_t *r)
+{
+    ssda_view_t vf, vs;
+    void *work = NULL;
+    int e, masked = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
+    uint32_t maxval;
+    progress_t prog;
+    double t0;
+
+    memset(r, 0, sizeof *r);
+    r->cfg = o->cfg;
+    if (o->have_mem) {
+        return cli_usage_error(cmd, "--mem: block-streamed tracking is not in this build yet; "
+                               "run without --mem (images are read whole)");
+    }
+    if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
+        return CLI_INPUT;
+    }
+    maxval = gray_image_max(&r->second);
+    if (masked && o->cfg.mask_value > maxval) {
+        track_result_free(r);
+        return cli_usage_error(cmd, "--mask-value %u is beyond these %u-bit images", 
+                               o->cfg.mask_value, maxval == 255 ? 8 : 16);
+    }
+    if (o->overlay_path != NULL) {
+        /* the overlay shows SECOND as read, also when tracking on gradients */
+        r->second_orig = r->second;
+        r->second.pixels = NULL;
+        if (gray_image_alloc(&r->second, r->second_orig.width, r->second_orig.height,
+                             r->second_orig.bits) != 0) {
+            track_result_free(r);
+            return cli_input_error(cmd, "out of memory");
+        }
+        memcpy(r->second.pixels, r->second_orig.pixels,
+               (size_t)r->second.stride * r->second.height);
+    }
+    if (o->grad) {
+        gray_image_t gf, gs;
+        /* smallest shift that keeps 4 * max below 65535 (the fill value) */
+        uint32_t m = image_max(&r->first, masked, o->cfg.mask_value);
+        unsigned shift = 0;
+        uint32_t m2 = image_max(&r->second, masked, o->cfg.mask_value);
+        if (m2 > m) {
+            m = m2;
+        }
+        while ((4u * m) >> shift >= 65535u) {
+            shift++;
+        }
+        if (grad_image(cmd, &r->first, masked, o->cfg.mask_value, shift, &gf) != 0) {
+            track_result_free(r);
+            return CLI_INPUT;
+        }
+        if (grad_image(cmd, &r->second, masked, o->cfg.mask_value, shift, &gs) != 0) {
+            gray_image_free(&gf);
+            track_result_free(r);
+            return CLI_INPUT;
+        }
+        gray_image_free(&r->first);
+        gray_image_free(&r->second);
+        r->first = gf;
+        r->second = gs;
+        if (masked) {
+            r->cfg.mask_value = 65535u;
+        }
+    }
+    if (o->exclude) {
+        r->cfg.flags |= SSDA_TRACK_EXCLUDE;
+        r->texture_level = o->exclude_level_given
+                               ? o->exclude_level
+                               : image_mean(&r->second, masked, r->cfg.mask_value);
+        if (r->texture_level >= gray_image_max(&r->second)) {
+            track_result_free(r);
+            return cli_usage_error(cmd, "--exclude level %u is not below the images' maximum",
+                                   o->exclude_level);
+        }
+        r->cfg.texture_threshold = (uint16_t)r->texture_level;
+        r->cfg.texture_min_count = o->exclude_count;
+    }
+    if (o->have_roi) {
+        if (o->roi[0] + o->roi[2] > r->second.width || o->roi[1] + o->roi[3] > r->second.height) {
+            cli_usage_error(cmd, "--roi %u,%u,%u,%u is not inside SECOND (%u x %u)", o->roi[0],
+                            o->roi[1], o->roi[2], o->roi[3], r->second.width, r->second.height);
+            track_result_free(r);
+            return CLI_USAGE;
+        }
+        r->cfg.roi_x = (uint16_t)o->roi[0];
+        r->cfg.roi_y = (uint16_t)o->roi[1];
+        r->cfg.roi_w = (uint16_t)o->roi[2];
+        r->cfg.roi_h = (uint16_t)o->roi[3];
+    }
+    e = ssda_track_grid(&r->cfg, (uint16_t)r->second.width, (uint16_t)r->second.height,
+                        &r->grid);
+    if (e != SSDA_OK) {
+        const ssda_track_config_t *c = &r->cfg;
+        cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
+                        "(the search area must be at least the window, the window inside "
+                        "the region)",
+                        c->win_w ? c->win_w : 16, c->win_h ? c->win_h : 16, c->search_w,
+                        c->search_h, c->roi_w ? c->roi_w : r->second.width,
+                        c->roi_h ? c->roi_h : r->second.height);
+        track_result_free(r);
+        return CLI_USAGE;
+    }
+    if (o->exclude) {
+        r->texture_min_count = o->exclude_count != 0
+                                   ? o->exclude_count
+                                   : ((uint32_t)r->grid.win_w * r->grid.win_h / 16u > 0
+                                          ? (uint32_t)r->grid.win_w * r->grid.win_h / 16u
+                                          : 1u);
+        if (2u * (uint64_t)r->texture_min_count > (uint64_t)r->grid.win_w * r->grid.win_h) {
+            track_result_free(r);
+            return cli_usage_error(cmd, "--exclude count %u is more than half the window's "
+                                   "pixels", o->exclude_count);
+        }
+    }
+    r->vec = calloc(r->grid.count, sizeof *r->vec);
+    if (r->vec == NULL) {
+        track_result_free(r);
+        return cli_input_error(cmd, "out of memory for %u windows", r->grid.count);
+    }
+    if (r->cfg.match.flags & SSDA_MATCH_BOUNDS) {
+        r->cfg.match.work_size = SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
+                                                      r->grid.win_w, r->grid.win_h);
+        work = malloc(r->cfg.match.work_size);
+        if (work == NULL) {
+            track_result_free(r);
+            return cli_input_error(cmd, "out of memory");
+        }
+        r->cfg.match.work = work;
+    }
+    gray_image_view(&r->first, &vf);
+    gray_image_view(&r->second, &vs);
+
+    progress_begin(&prog, "tracking", r->grid.rows, o->quiet);
+    t0 = progress_now();
+    if (prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1) {
+        /* Without prediction every window is independent: run the grid in bands of
+           rows to show progress; vectors and counts equal those of one call. */
+        uint32_t row = 0, band = r->grid.rows / 50u + 1u;
+        e = SSDA_OK;
+        while (row < r->grid.rows && e == SSDA_OK) {
+            ssda_track_config_t c = r->cfg;
+            ssda_track_stats_t s;
+            uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
+            c.roi_x = r->grid.roi_x;
+            c.roi_w = r->grid.roi_w;
+            c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
+            c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
+            e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
+                           (size_t)n * r->grid.cols, &s);
+            if (e == SSDA_OK) {
+                stats_add(&r->stats, &s);
+            }
+            row += n;
+            progress_update(&prog, row);
+        }
+    } else {
+        e = ssda_track(&vf, &vs, &r->cfg, r->vec, r->grid.count, &r->stats);
+    }
+    r->secs = progress_now() - t0;
+    progress_end(&prog);
+    free(work);
+    r->cfg.match.work = NULL;
+    if (e != SSDA_OK) {
+        cli_usage_error(cmd, "tracking refused these options: %s", ssda_strerror(e));
+        track_result_free(r);
+        return CLI_USAGE;
+    }
+    /* RAM sources: every pixel of both images was loaded once. */
+    r->bytes_read = (uint64_t)r->first.stride * r->first.height +
+                    (uint64_t)r->second.stride * r->second.height;
+    return CLI_OK;
+}
+
+uint64_t track_brute_ops(const track_result_t *r)
+{
+    const ssda_track_grid_t *g = &r->grid;
+    uint64_t per = (uint64_t)(g->search_w - g->win_w + 1u) * (g->search_h - g->win_h + 1u) *
+                   g->win_w * g->win_h;
+    return per * r->stats.ok;
+}
+
+/* ---- outputs ---- */
+
+void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
+                      const int32_t (*ref)[2], const char *extra_top)
+{
+    uint32_t k;
+    char tname[64];
+    const ssda_track_grid_t *g = &r->grid;
+    static const char *pnames[] = {"none", "left", "neighbour"};
+
+    cli_threshold_name(&r->cfg.match, tname, sizeof tname);
+    fprintf(f, "{\"width\":%u,\"height\":%u,\"bits\":%u,\n", r->second.width, r->second.height,
+            r->second.bits);
+    fprintf(f, " \"grid\":{\"cols\":%u,\"rows\":%u,\"window_w\":%u,\"window_h\":%u,"
+               "\"search_w\":%u,\"search_h\":%u,\"step_x\":%u,\"step_y\":%u,"
+               "\"roi\":[%u,%u,%u,%u]},\n",
+            g->cols, g->rows, g->win_w, g->win_h, g->search_w, g->search_h, g->step_x,
+            g->step_y, g->roi_x, g->roi_y, g->roi_w, g->roi_h);
+    fprintf(f, " \"options\":{\"threshold\":\"%s\",\"scan\":\"%s\",\"predict\":\"%s\","
+               "\"bounds\":%s,\"grad\":%s,",
+            tname, cli_scan_name(&r->cfg.match), pnames[r->cfg.predict % 3u],
+            (r->cfg.match.flags & SSDA_MATCH_BOUNDS) ? "true" : "false",
+            o->grad ? "true" : "false");
+    if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
+        fprintf(f, "\"exclude\":{\"level\":%u,\"min_count\":%u},", r->texture_level,
+                r->texture_min_count);
+    } else {
+        fprintf(f, "\"exclude\":null,");
+    }
+    if (o->cfg.flags & SSDA_TRACK_MASK) {
+        fprintf(f, "\"mask_value\":%u},\n", o->cfg.mask_value);
+    } else {
+        fprintf(f, "\"mask_value\":null},\n");
+    }
+    if (extra_top != NULL) {
+        fprintf(f, " %s,\n", extra_top);
+    }
+    fprintf(f, " \"windows\":[");
+    for (k = 0; k < g->count; k++) {
+        const ssda_track_vector_t *v = &r->vec[k];
+        fprintf(f, "%s\n  {\"x\":%u,\"y\":%u,\"dx\":%d,\"dy\":%d,\"sad\":%llu,"
+                   "\"status\":\"%s\",\"exact\":%s",
+                k ? "," : "", v->x, v->y, (int)v->dx, (int)v->dy, (unsigned long long)v->sad,
+                track_status_name(v->status), v->exact ? "true" : "false");
+        if (ref != NULL && v->status == SSDA_TRACK_OK) {
+            fprintf(f, ",\"ref_dx\":%d,\"ref_dy\":%d", (int)ref[k][0], (int)ref[k][1]);
+        }
+        fputc('}', f);
+    }
+    fprintf(f, "],\n \"stats\":{\"pixel_ops\":%llu,\"bytes_read\":%llu,"
+               "\"brute_force_ops\":%llu,\"positions\":%llu,\"completed\":%llu,"
+               "\"check_pixels\":%llu,\"windows\":%u,\"ok\":%u,\"excluded\":%u,"
+               "\"masked\":%u,\"edge\":%u,\"time_s\":%.6f}}\n",
+            (unsigned long long)r->stats.pixel_ops, (unsigned long long)r->bytes_read,
+            (unsigned long long)track_brute_ops(r), (unsigned long long)r->stats.positions,
+            (unsigned long long)r->stats.completed, (unsigned long long)r->stats.check_pixels,
+            r->stats.windows, r->stats.ok, r->stats.excluded, r->stats.masked, r->stats.edge,
+            r->secs);
+}
+
+int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,
+                        const track_opts_t *o, const double (*truth)[2],
+                        const char *truth_label, const char *title, const char *subtitle)
+{
+    draw_vector_t *dv = calloc(r->grid.count + 1u, sizeof *dv);
+    draw_vectors_opts_t dopt;
+    char err[512];
+    uint32_t k;
+    int rc;
+    if (dv == NULL) {
+        cli_input_error(cmd, "out of memory");
+        return -1;
+    }
+    for (k = 0; k < r->grid.count; k++) {
+        const ssda_track_vector_t *v = &r->vec[k];
+        dv[k].x = v->x + (r->grid.win_w - 1) / 2.0;
+        dv[k].y = v->y + (r->grid.win_h - 1) / 2.0;
+        dv[k].dx = v->dx;
+        dv[k].dy = v->dy;
+        dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
+                       : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
+                       : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
+                                                          : DRAW_EDGE;
+        if (truth != NULL && v->status == SSDA_TRACK_OK) {
+            dv[k].has_truth = 1;
+            dv[k].tdx = truth[k][0];
+            dv[k].tdy = truth[k][1];
+        }
+    }
+    memset(&dopt, 0, sizeof dopt);
+    dopt.title = title;
+    dopt.truth_label = truth_label;
+    dopt.subtitle = subtitle;
+    dopt.arrow_scale = o->arrow_scale;
+    dopt.grid_step = r->grid.step_x < r->grid.step_y ? r->grid.step_x : r->grid.step_y;
+    dopt.have_mask = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
+    dopt.mask_value = o->cfg.mask_value;
+    rc = draw_vectors_to(f, name, &r->second_orig, dv, r->grid.count, &dopt, NULL, err,
+                         sizeof err);
+    free(dv);
+    if (rc != 0) {
+        cli_input_error(cmd, "%s", err);
+    }
+    return rc;
+}

@@ -1,0 +1,84 @@
+/*
+ * track_run.h - the grid tracking shared by `ssda track` and `ssda compare`:
+ * the track options, loading and pre-processing the pair, running
+ * ssda_track, and writing the JSON and the overlay picture.
+ */
+#ifndef SSDA_TRACK_RUN_H
+#define SSDA_TRACK_RUN_H
+
+#include "cli.h"
+#include "draw.h"
+#include "ssda/track.h"
+
+typedef struct {
+    ssda_track_config_t cfg;  /* library options as parsed */
+    int grad;                 /* --grad: Fig. 8 operator on both images first */
+    int exclude;              /* --exclude given */
+    int exclude_level_given;  /* LEVEL given (else the mean of SECOND) */
+    uint32_t exclude_level;
+    uint32_t exclude_count;   /* COUNT, 0 = window pixels / 16 */
+    int have_mem;             /* --mem BYTES given */
+    uint64_t mem;
+    int have_roi;
+    uint32_t roi[4];          /* X, Y, W, H */
+    const char *json_path;    /* --json FILE|- or NULL */
+    const char *overlay_path; /* --overlay OUT.png or NULL */
+    double arrow_scale;       /* --arrow-scale, 0 = automatic */
+    int quiet;
+} track_opts_t;
+
+/* Defaults: 16 px windows, 32 px areas, step 16, auto threshold, prediction
+   from neighbours (median), no exclusion, no mask. */
+void track_opts_init(track_opts_t *o);
+
+/* If the current option of a is a track option, take it and return 1
+   (a->bad set on a usage error, already reported); else return 0. */
+int track_opts_take(cli_args_t *a, track_opts_t *o);
+
+/* The help text lines of the track options (for --help). */
+extern const char track_opts_help[];
+
+/* A finished run. */
+typedef struct {
+    gray_image_t first, second;   /* as tracked (after --grad) */
+    gray_image_t second_orig;     /* SECOND as read, for the overlay */
+    ssda_track_config_t cfg;      /* as run (mask value moved by --grad) */
+    uint32_t texture_level;       /* --exclude level used (0 when not excluding) */
+    uint32_t texture_min_count;   /* --exclude count used */
+    ssda_track_grid_t grid;
+    ssda_track_vector_t *vec;     /* grid.count entries */
+    ssda_track_stats_t stats;
+    uint64_t bytes_read;          /* image bytes the tracker's sources read */
+    double secs;                  /* tracking time only */
+} track_result_t;
+
+/*
+ * Load FIRST and SECOND, apply --grad, track. Prints errors.
+ * Returns CLI_OK, CLI_INPUT or CLI_USAGE (an option that does not fit the
+ * images, e.g. a --roi outside them, or --mem in a build without streaming).
+ */
+int track_run(const char *cmd, const char *first_path, const char *second_path,
+              const track_opts_t *o, track_result_t *r);
+void track_result_free(track_result_t *r);
+
+/* "ok", "excluded", "masked", "edge". */
+const char *track_status_name(int status);
+
+/* Brute-force pixel operations for the OK windows (each area searched in full). */
+uint64_t track_brute_ops(const track_result_t *r);
+
+/* Write the JSON document (see docs/cli.md). ref (grid.count entries, may be
+   NULL) adds "ref_dx", "ref_dy" to each OK window; extra_top (may be NULL)
+   is inserted as more top-level members, e.g. "\"compare\":{...}".
+   Written to f (an output of the command's cli_outputs_t). */
+void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
+                      const int32_t (*ref)[2], const char *extra_top);
+
+/* Draw the vectors over SECOND into f (name for messages). truth
+   (grid.count entries, may be NULL) is drawn as the reference arrows.
+   Returns 0 or -1 (message printed). */
+int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,
+                        const track_opts_t *o, const double (*truth)[2],
+                        const char *truth_label, const char *title, const char *subtitle);
+
+#endif /* SSDA_TRACK_RUN_H */
