@@ -147,9 +147,11 @@ static int32_t med3(int32_t a, int32_t b, int32_t c)
     return c < lo ? lo : (c > hi ? hi : c);
 }
 
-/* Predicted vector of window (col, row) from the solved entries of out. */
+/* Predicted vector of window (col, row) from the solved entries of out:
+   every column left of the strip, and the strip's windows solved before
+   this one; col1 (the strip's end) and beyond are not solved yet. */
 static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
-                    uint32_t col, uint32_t row, int32_t *pdx, int32_t *pdy)
+                    uint32_t col, uint32_t row, uint32_t col1, int32_t *pdx, int32_t *pdy)
 {
     const uint32_t cols = p->grid.cols;
     const size_t k = (size_t)row * cols + col;
@@ -158,7 +160,7 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
     uint32_t n = 0u, i;
     cand[0] = col > 0u ? &out[k - 1u] : NULL;                            /* left */
     cand[1] = row > 0u ? &out[k - cols] : NULL;                          /* up */
-    cand[2] = row > 0u && col + 1u < cols ? &out[k - cols + 1u] : NULL;  /* up-right */
+    cand[2] = row > 0u && col + 1u < col1 ? &out[k - cols + 1u] : NULL;  /* up-right */
     cand[3] = row > 0u && col > 0u ? &out[k - cols - 1u] : NULL;         /* up-left */
     *pdx = 0;
     *pdy = 0;
@@ -187,7 +189,8 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
 /* Status and vector of window k; on OK also runs the search. */
 static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
                         ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
-                        uint32_t row, ssda_track_vector_t *v, ssda_track_stats_t *st)
+                        uint32_t row, uint32_t col1, ssda_track_vector_t *v,
+                        ssda_track_stats_t *st)
 {
     const ssda_track_grid_t *g = &p->grid;
     const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
@@ -242,7 +245,7 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     }
     if (p->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
         int32_t pdx, pdy;
-        predict(p, out, col, row, &pdx, &pdy);
+        predict(p, out, col, row, col1, &pdx, &pdy);
         /* |pd| <= 65535: no overflow; the engine clamps into range */
         p->match.predict_x = (int32_t)hx - pdx;
         p->match.predict_y = (int32_t)hy - pdy;
@@ -265,6 +268,46 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     return SSDA_OK;
 }
 
+static void stats_zero(ssda_track_stats_t *st)
+{
+    st->pixel_ops = 0u;
+    st->positions = 0u;
+    st->completed = 0u;
+    st->check_pixels = 0u;
+    st->windows = 0u;
+    st->ok = 0u;
+    st->excluded = 0u;
+    st->masked = 0u;
+    st->edge = 0u;
+}
+
+int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
+                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+{
+    ssda_track_stats_t st = *acc;
+    uint32_t row, col;
+    for (row = 0u; row < plan->grid.rows; row++) {
+        for (col = col0; col < col1; col++) {
+            ssda_track_vector_t v;
+            int err = solve_window(first, second, plan, out, col, row, col1, &v, &st);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            out[(size_t)row * plan->grid.cols + col] = v;
+            st.windows++;
+            switch (v.status) {
+            case SSDA_TRACK_OK: st.ok++; break;
+            case SSDA_TRACK_EXCLUDED: st.excluded++; break;
+            case SSDA_TRACK_MASKED: st.masked++; break;
+            default: st.edge++; break;
+            }
+        }
+    }
+    *acc = st;
+    return SSDA_OK;
+}
+
 int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats)
@@ -272,7 +315,6 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
     static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_track_stats_t st;
-    uint32_t row, col;
     int err;
 
     if (first == NULL || second == NULL || out == NULL) {
@@ -296,33 +338,10 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
     if (out_count < plan.grid.count) {
         return SSDA_ERR_BUFFER;
     }
-    st.pixel_ops = 0u;
-    st.positions = 0u;
-    st.completed = 0u;
-    st.check_pixels = 0u;
-    st.windows = plan.grid.count;
-    st.ok = 0u;
-    st.excluded = 0u;
-    st.masked = 0u;
-    st.edge = 0u;
-    for (row = 0u; row < plan.grid.rows; row++) {
-        for (col = 0u; col < plan.grid.cols; col++) {
-            ssda_track_vector_t v;
-            err = solve_window(first, second, &plan, out, col, row, &v, &st);
-            if (err != SSDA_OK) {
-                return err;
-            }
-            out[(size_t)row * plan.grid.cols + col] = v;
-            switch (v.status) {
-            case SSDA_TRACK_OK: st.ok++; break;
-            case SSDA_TRACK_EXCLUDED: st.excluded++; break;
-            case SSDA_TRACK_MASKED: st.masked++; break;
-            default: st.edge++; break;
-            }
-        }
-    }
-    if (stats != NULL) {
+    stats_zero(&st);
+    err = ssda_track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);
+    if (err == SSDA_OK && stats != NULL) {
         *stats = st;
     }
-    return SSDA_OK;
+    return err;
 }

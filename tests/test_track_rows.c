@@ -243,6 +243,51 @@ static void test_fetch_errors_pass_through(void)
     }
 }
 
+/* The stream layer's strips: solving the grid in vertical strips of grid
+   columns, left to right, gives the whole-grid vectors in exact modes; with
+   no prediction or the left predictor also the same work. */
+static void test_strips_equal_whole_grid(void)
+{
+    uint32_t c, width;
+    make_pair();
+    for (c = 0; c < 8u; c++) {
+        for (width = 1; width <= 4u; width++) {
+            ssda_track_config_t cfg;
+            ssda_track_stats_t st_ram, acc;
+            ssda_track_plan_t plan;
+            ssda_view_t a, b;
+            ssda_rows_t ra, rb;
+            fake_src_t fa, fb;
+            uint32_t col0;
+            config_case(&cfg, c);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, g_first, IMG, IMG, IMG * 2u, SSDA_PIX_U16));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, g_second, IMG, IMG, IMG * 2u, SSDA_PIX_U16));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_ram, NMAX, &st_ram));
+            fake_init(&fa, &ra, g_first, SSDA_PIX_U16);
+            fake_init(&fb, &rb, g_second, SSDA_PIX_U16);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_plan(&cfg, SSDA_PIX_U16, IMG, IMG, &plan));
+            memset(&acc, 0, sizeof acc);
+            memset(g_out, 0xA5, sizeof g_out);
+            for (col0 = 0; col0 < plan.grid.cols; col0 += width) {
+                uint32_t col1 = col0 + width < plan.grid.cols ? col0 + width : plan.grid.cols;
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_strip(&ra, &rb, &plan, col0, col1, g_out, &acc));
+            }
+            assert_same(g_ram, g_out, plan.grid.count);
+            TEST_ASSERT_EQUAL_UINT32(st_ram.windows, acc.windows);
+            TEST_ASSERT_EQUAL_UINT32(st_ram.ok, acc.ok);
+            TEST_ASSERT_EQUAL_UINT32(st_ram.masked, acc.masked);
+            TEST_ASSERT_EQUAL_UINT32(st_ram.excluded, acc.excluded);
+            TEST_ASSERT_EQUAL_UINT32(st_ram.edge, acc.edge);
+            TEST_ASSERT_EQUAL_UINT64(st_ram.check_pixels, acc.check_pixels);
+            if (cfg.predict != SSDA_TRACK_PREDICT_MEDIAN) {
+                TEST_ASSERT_EQUAL_UINT64(st_ram.pixel_ops, acc.pixel_ops);
+                TEST_ASSERT_EQUAL_UINT64(st_ram.positions, acc.positions);
+                TEST_ASSERT_EQUAL_UINT64(st_ram.completed, acc.completed);
+            }
+        }
+    }
+}
+
 static void test_row_source_argument_errors(void)
 {
     ssda_track_config_t cfg;
@@ -290,6 +335,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_streamed_equals_ram);
     RUN_TEST(test_fetch_errors_pass_through);
+    RUN_TEST(test_strips_equal_whole_grid);
     RUN_TEST(test_row_source_argument_errors);
     return UNITY_END();
 }
