@@ -219,7 +219,6 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     make_sub(&win, &win_ctx, second, wx, wy, g->win_w, g->win_h);
     make_sub(&area, &area_ctx, first, wx - hx, wy - hy, g->search_w, g->search_h);
     if (mask || texture) {
-        uint32_t bright_max = (uint32_t)g->win_w * g->win_h - p->texture_min_count;
         err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
         if (err != SSDA_OK) {
             return err;
@@ -228,7 +227,10 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
             v->status = (uint8_t)SSDA_TRACK_MASKED;
             return SSDA_OK;
         }
-        if (texture && (s.bright < p->texture_min_count || s.bright > bright_max)) {
+        /* dark = pixels - bright < min_count  <=>  bright > pixels - min_count
+           (min_count <= pixels / 2 when texture is on, so no wrap) */
+        if (texture && (s.bright < p->texture_min_count ||
+                        s.bright > (uint32_t)g->win_w * g->win_h - p->texture_min_count)) {
             v->status = (uint8_t)SSDA_TRACK_EXCLUDED;
             return SSDA_OK;
         }
