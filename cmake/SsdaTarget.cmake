@@ -1,7 +1,7 @@
 # Cross builds: included at the end of project(ssda) by the toolchain files in
 # cmake/toolchains/ (CMAKE_PROJECT_ssda_INCLUDE), never on a host build.
 #
-# With a QEMU board (SSDA_QEMU_MACHINE, set by the Cortex-M3/M4F/M7 files):
+# With a QEMU board (SSDA_QEMU_MACHINE, set by the Cortex-M3/M4F/M7/M33 files):
 #  - every Unity test becomes a bare-metal image: our startup code and vector
 #    table, the board's linker script, newlib with semihosting (rdimon) for
 #    output, and the exit status handed back to QEMU (tests/target/);
@@ -9,7 +9,7 @@
 #    qemu-system-arm -M <board> -semihosting ... -kernel <image>;
 #  - tests are compiled with SSDA_TEST_SMALL=1, the size knob heavy tests
 #    read to keep emulated run times short (the same cases, smaller loops).
-# Without a board (Cortex-M0+, Cortex-M33, RV32IMC) only the library is
+# Without a board (Cortex-M0+, RV32IMC) only the library is
 # built unless SSDA_BUILD_TESTS is set explicitly.
 
 set(SSDA_TARGET_DIR ${CMAKE_CURRENT_LIST_DIR}/../tests/target)

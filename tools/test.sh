@@ -1,14 +1,23 @@
 #!/usr/bin/env bash
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
-# test: host build with -Werror, and a host build with ASan + UBSan.
+# test: host build with -Werror, a host build with ASan + UBSan, the library
+# tests as bare-metal images under qemu-system-arm on three Cortex-M boards,
+# and the library alone for six cross targets at -Os and -O2 (-Werror).
 # Usage: tools/test.sh            (build dirs under build/)
+#        SSDA_SKIP_CROSS=1 tools/test.sh   host builds only
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash tools/setup-deps.sh
+skip_cross=${SSDA_SKIP_CROSS:-0}
+if [ "$skip_cross" = 1 ]; then
+  bash tools/setup-deps.sh
+else
+  bash tools/setup-deps.sh gcc-arm-none-eabi libnewlib-arm-none-eabi \
+       gcc-riscv64-unknown-elf qemu-system-arm
+fi
 unity=$(bash tools/fetch-unity.sh)
 
 configure_build_test() { # <dir> <cmake args...>
@@ -25,4 +34,41 @@ configure_build_test() { # <dir> <cmake args...>
 configure_build_test build/host
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
   configure_build_test build/asan -DSSDA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+
+# Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) under QEMU with
+# semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
+# guest that hangs is stopped by the CTest timeout.
+qemu_test() { # <toolchain> <build type>
+  local dir=build/qemu-$1
+  echo "==> $dir (qemu-system-arm)" >&2
+  cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="cmake/toolchains/$1.cmake" \
+        -DCMAKE_BUILD_TYPE="$2" -DSSDA_WERROR=ON -DFETCHCONTENT_SOURCE_DIR_UNITY="$unity" >/dev/null
+  if ! cmake --build "$dir" -j "$jobs" >"$dir/build.log" 2>&1; then
+    cat "$dir/build.log"; echo "tools/test.sh: build failed in $dir" >&2; exit 1
+  fi
+  ctest --test-dir "$dir" --output-on-failure -j "$jobs" --timeout 600
+}
+
+# The library alone, warning-free (-Werror) at -Os and -O2 for every target.
+cross_lib() { # <toolchain>
+  local bt dir
+  for bt in MinSizeRel RelWithDebInfo; do
+    dir=build/cross-$1-$bt
+    cmake -S . -B "$dir" -DCMAKE_TOOLCHAIN_FILE="cmake/toolchains/$1.cmake" \
+          -DCMAKE_BUILD_TYPE="$bt" -DSSDA_WERROR=ON -DSSDA_BUILD_TESTS=OFF >/dev/null
+    if ! cmake --build "$dir" -j "$jobs" >"$dir/build.log" 2>&1; then
+      cat "$dir/build.log"; echo "tools/test.sh: cross build failed in $dir" >&2; exit 1
+    fi
+  done
+  echo "==> $1: library builds at -Os and -O2" >&2
+}
+
+if [ "$skip_cross" != 1 ]; then
+  qemu_test cortex-m3 MinSizeRel
+  qemu_test cortex-m4f RelWithDebInfo
+  qemu_test cortex-m7 RelWithDebInfo
+  for t in cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 rv32imc; do
+    cross_lib "$t"
+  done
+fi
 echo "tools/test.sh: all test builds passed" >&2

@@ -1,6 +1,8 @@
 # RV32IMC (ILP32, soft float) with riscv64-unknown-elf-gcc, freestanding:
 # Debian ships this compiler without a C library, so only the library is
 # built (-ffreestanding; nothing is linked against a libc). Portable kernels.
+# freestanding/string.h declares memcpy and memset only: the library may use
+# nothing else from the C library, and this build proves it.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR riscv32)
 set(SSDA_TARGET_NAME rv32imc)
@@ -14,7 +16,7 @@ set(CMAKE_SIZE riscv64-unknown-elf-size CACHE FILEPATH "size")
 set(CMAKE_OBJDUMP riscv64-unknown-elf-objdump CACHE FILEPATH "objdump")
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
-set(CMAKE_C_FLAGS_INIT "${SSDA_TARGET_CPU_FLAGS} -ffreestanding -ffunction-sections -fdata-sections")
+set(CMAKE_C_FLAGS_INIT "${SSDA_TARGET_CPU_FLAGS} -ffreestanding -isystem ${CMAKE_CURRENT_LIST_DIR}/freestanding -ffunction-sections -fdata-sections")
 set(CMAKE_ASM_FLAGS_INIT "${SSDA_TARGET_CPU_FLAGS}")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "${SSDA_TARGET_CPU_FLAGS} -nostdlib -Wl,--gc-sections")
 

@@ -68,8 +68,8 @@ static inline uint32_t lanes_sum(uint32_t d)
 uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 255 * 65535 = 16 711 425 */
-    uint32_t blocks = n >> 4;
-    while (blocks-- > 0u) {
+    const uint8_t *end16 = a + (n & ~15u);
+    while (a != end16) {
         sum = __usada8(load_u32(a), load_u32(b), sum);
         sum = __usada8(load_u32(a + 4), load_u32(b + 4), sum);
         sum = __usada8(load_u32(a + 8), load_u32(b + 8), sum);
@@ -77,20 +77,28 @@ uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
         a += 16;
         b += 16;
     }
-    blocks = (n >> 2) & 3u;
-    while (blocks-- > 0u) {
+    if ((n & 8u) != 0u) {
+        sum = __usada8(load_u32(a), load_u32(b), sum);
+        sum = __usada8(load_u32(a + 4), load_u32(b + 4), sum);
+        a += 8;
+        b += 8;
+    }
+    if ((n & 4u) != 0u) {
         sum = __usada8(load_u32(a), load_u32(b), sum);
         a += 4;
         b += 4;
     }
-    return sum + ssda_portable_sad_row_u8(a, b, n & 3u);
+    if ((n & 3u) != 0u) {
+        sum += ssda_portable_sad_row_u8(a, b, n & 3u);
+    }
+    return sum;
 }
 
 uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
-    uint32_t blocks = n >> 3;
-    while (blocks-- > 0u) {
+    const uint16_t *end8 = a + (n & ~7u);
+    while (a != end8) {
         sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
         sum += lanes_sum(absdiff_u16x2(load_u32(a + 2), load_u32(b + 2)));
         sum += lanes_sum(absdiff_u16x2(load_u32(a + 4), load_u32(b + 4)));
@@ -98,20 +106,28 @@ uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
         a += 8;
         b += 8;
     }
-    blocks = (n >> 1) & 3u;
-    while (blocks-- > 0u) {
+    if ((n & 4u) != 0u) {
+        sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
+        sum += lanes_sum(absdiff_u16x2(load_u32(a + 2), load_u32(b + 2)));
+        a += 4;
+        b += 4;
+    }
+    if ((n & 2u) != 0u) {
         sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
         a += 2;
         b += 2;
     }
-    return sum + ssda_portable_sad_row_u16(a, b, n & 1u);
+    if ((n & 1u) != 0u) {
+        sum += ssda_portable_sad_row_u16(a, b, 1u);
+    }
+    return sum;
 }
 
 uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
-    uint32_t blocks = n >> 3;
-    while (blocks-- > 0u) {
+    const int16_t *end8 = a + (n & ~7u);
+    while (a != end8) {
         sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
         sum += lanes_sum(absdiff_i16x2(load_u32(a + 2), load_u32(b + 2)));
         sum += lanes_sum(absdiff_i16x2(load_u32(a + 4), load_u32(b + 4)));
@@ -119,13 +135,21 @@ uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
         a += 8;
         b += 8;
     }
-    blocks = (n >> 1) & 3u;
-    while (blocks-- > 0u) {
+    if ((n & 4u) != 0u) {
+        sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
+        sum += lanes_sum(absdiff_i16x2(load_u32(a + 2), load_u32(b + 2)));
+        a += 4;
+        b += 4;
+    }
+    if ((n & 2u) != 0u) {
         sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
         a += 2;
         b += 2;
     }
-    return sum + ssda_portable_absdiff_row_i16(a, b, n & 1u);
+    if ((n & 1u) != 0u) {
+        sum += ssda_portable_absdiff_row_i16(a, b, 1u);
+    }
+    return sum;
 }
 
 const char *ssda_kernel_name(void)

@@ -1,0 +1,385 @@
+#!/usr/bin/env python3
+"""report.py - the budget tables in Markdown, from the builds and runs that
+tools/budget.sh makes (python3, standard library only).
+
+  report.py --size NAME=BUILD_DIR ...      size images and stack data (-Os)
+            --cycles NAME=QEMU_OUTPUT ...  cycle-image outputs (RESULT lines)
+
+Flash/RAM: each fw_<feature>.elf against fw_base.elf (tools/budget/CMakeLists.txt).
+Stack: the library's frames from GCC (-fcallgraph-info=su: the .ci call
+graphs carry each function's -fstack-usage bytes), frames of C library and
+libgcc routines from the linked image's disassembly (their prologue's
+push/stmdb/sub sp; their calls); worst case = frame + deepest callee chain.
+"""
+import argparse
+import glob
+import os
+import re
+import subprocess
+import sys
+
+# Targets of the issue (Cortex-M0+, -Os), bytes of flash.
+M0_FLASH_TARGETS = {"match": 2048, "pitch": 1536, "stream": 2048}
+STACK_LIMIT = 256
+FEATURE_NAMES = {
+    "match": "SSDA search core (`match.h`)",
+    "pitch": "AMDF pitch (`pitch.h`)",
+    "stream": "block-streamed images (`stream.h`)",
+    "track": "grid tracking (`track.h`)",
+    "grad": "Fig. 8 operator (`grad.h`)",
+    "view": "image views (`view.h`)",
+    "ssda": "error names (`ssda.h`)",
+}
+
+
+def cache_value(build, key):
+    with open(os.path.join(build, "CMakeCache.txt")) as f:
+        for line in f:
+            if line.startswith(key + ":"):
+                return line.split("=", 1)[1].strip()
+    raise SystemExit(f"report.py: {key} not in {build}/CMakeCache.txt")
+
+
+def read_features(build):
+    feats = {}
+    with open(os.path.join(build, "features.txt")) as f:
+        for line in f:
+            name, _, fns = line.partition(":")
+            feats[name.strip()] = fns.split()
+    return feats
+
+
+def section_sizes(size_tool, elf):
+    out = subprocess.run([size_tool, "-B", elf], check=True, capture_output=True, text=True).stdout
+    text, data, bss = (int(v) for v in out.splitlines()[1].split()[:3])
+    return text + data, data + bss  # flash, RAM
+
+
+# ---- stack -----------------------------------------------------------------
+
+NODE_RE = re.compile(r'node: \{ title: "([^"]+)" label: "([^"]*)"')
+EDGE_RE = re.compile(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+BYTES_RE = re.compile(r"\\n(\d+) bytes \(([a-z,]+)\)")
+
+
+def read_callgraphs(build):
+    """Frames and edges of the library's functions from GCC's .ci files, and
+    the library calls GCC may emit (<built-in> nodes)."""
+    frames, edges, qual, builtins = {}, {}, {}, set()
+    pattern = os.path.join(build, "ssda", "lib", "CMakeFiles", "ssda.dir", "**", "*.ci")
+    files = glob.glob(pattern, recursive=True)
+    if not files:
+        raise SystemExit(f"report.py: no .ci call graphs under {build}")
+    for path in files:
+        with open(path) as f:
+            for line in f:
+                m = NODE_RE.search(line)
+                if m:
+                    b = BYTES_RE.search(m.group(2))
+                    if b:
+                        frames[m.group(1)] = int(b.group(1))
+                        qual[m.group(1)] = b.group(2)
+                    elif "<built-in>" in m.group(2):
+                        builtins.add(m.group(1))
+                    continue
+                m = EDGE_RE.search(line)
+                if m:
+                    edges.setdefault(m.group(1), set()).add(m.group(2))
+    return frames, edges, qual, builtins
+
+
+FUNC_RE = re.compile(r"^([0-9a-f]+) <([^>]+)>:$")
+INSN_RE = re.compile(r"^\s+[0-9a-f]+:\s+(\S+)\s*(.*)$")
+CALL_TARGET_RE = re.compile(r"<([^>+]+)>")
+
+
+def reg_count(reglist):
+    n = 0
+    for part in reglist.strip("{} ").split(","):
+        part = part.strip()
+        m = re.match(r"([a-z]+)(\d+)-[a-z]+(\d+)$", part)
+        n += int(m.group(3)) - int(m.group(2)) + 1 if m else (1 if part else 0)
+    return n
+
+
+def read_disassembly(objdump, elf):
+    """Frames and call edges of every function of a linked image, from its
+    prologue instructions (ARM Thumb and RISC-V)."""
+    out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True,
+                         capture_output=True, text=True).stdout
+    frames, edges, indirect, labels = {}, {}, set(), {}
+    fn = None
+    push = sub = 0
+    for line in out.splitlines():
+        m = FUNC_RE.match(line)
+        if m:
+            labels[int(m.group(1), 16)] = m.group(2)
+            if fn:
+                frames[fn] = max(frames.get(fn, 0), push + sub)
+            fn, push, sub = m.group(2), 0, 0
+            continue
+        m = INSN_RE.match(line)
+        if not m or fn is None:
+            continue
+        op, args = m.group(1), m.group(2).split(";")[0].split("@")[0].strip()
+        if op in ("push", "push.w") or (op.startswith("stmdb") and args.startswith("sp!")):
+            push = max(push, 4 * reg_count(args[args.index("{"):]))
+        elif op in ("vpush", "vstmdb") and "{" in args:
+            regs = args[args.index("{"):]
+            push += (8 if "d" in regs else 4) * reg_count(regs)
+        elif re.match(r"str\S*$", op) and re.search(r"\[sp, #-(\d+)\]!", args):
+            push += int(re.search(r"\[sp, #-(\d+)\]!", args).group(1))
+        elif re.match(r"subw?(\.w)?$", op) and re.match(r"sp, (sp, )?#(\d+)", args):
+            sub = max(sub, int(re.match(r"sp, (sp, )?#(\d+)", args).group(2)))
+        elif op in ("addi", "c.addi", "c.addi16sp") and re.match(r"sp,\s*(sp,\s*)?-(\d+)", args):
+            sub = max(sub, int(re.match(r"sp,\s*(sp,\s*)?-(\d+)", args).group(2)))
+        if op in ("bl", "blx", "b", "b.w", "b.n", "jal", "j", "call", "tail", "c.j", "c.jal",
+                  "jalr", "c.jalr"):
+            t = CALL_TARGET_RE.search(m.group(2))
+            if t and t.group(1) != fn:
+                edges.setdefault(fn, set()).add(t.group(1))  # a call, or a tail call
+            elif not t and op in ("blx", "jalr", "c.jalr"):
+                indirect.add(fn)  # through a register
+    if fn:
+        frames[fn] = max(frames.get(fn, 0), push + sub)
+    # Aliases (libgcc's __aeabi_uidiv is __udivsi3...): objdump labels one
+    # name per address; give the others the same frame and calls.
+    nm = objdump[: -len("objdump")] + "nm" if objdump.endswith("objdump") else "nm"
+    syms = subprocess.run([nm, elf], check=True, capture_output=True, text=True).stdout
+    by_addr = {}
+    for line in syms.splitlines():
+        p = line.split()
+        if len(p) == 3 and p[1] in "TtWw":
+            by_addr.setdefault(int(p[0], 16), []).append(p[2])
+    for addr, name in labels.items():
+        for alias in by_addr.get(addr, []):
+            if alias != name and alias not in frames:
+                frames[alias] = frames.get(name, 0)
+                edges[alias] = edges.get(name, set())
+                if name in indirect:
+                    indirect.add(alias)
+    return frames, edges, indirect
+
+
+def stack_worst(build):
+    """Worst-case stack of every public function: {name: (bytes, flags, path)}."""
+    objdump = cache_value(build, "CMAKE_OBJDUMP")
+    frames, edges, qual, builtins = read_callgraphs(build)
+    dframes, dedges, dindirect = {}, {}, set()
+    for elf in sorted(glob.glob(os.path.join(build, "fw_*.elf"))):
+        f, e, i = read_disassembly(objdump, elf)
+        dframes.update(f)
+        for k, v in e.items():
+            dedges.setdefault(k, set()).update(v)
+        dindirect |= i
+    memo = {}
+
+    def resolve(name):
+        if name in frames:
+            return name
+        base = name.split(":")[-1]
+        return base if base in frames else name
+
+    def worst(node, active):
+        if node in memo:
+            return memo[node]
+        if node in active:
+            return (0, {"recursion"}, [node])
+        active = active | {node}
+        if node == "__indirect_call":
+            return (0, {"callback"}, ["(callback)"])
+        if node in frames:
+            own, calls, flags = frames[node], edges.get(node, ()), set()
+            if qual[node] != "static":
+                flags.add(qual[node])
+        elif node in dframes:
+            own, calls, flags = dframes[node], dedges.get(node, ()), set()
+            if node in dindirect:
+                flags.add("callback")
+        elif node in builtins:
+            # A libcall GCC listed but the linked code never makes (the
+            # operation was expanded inline or optimised away).
+            return (0, set(), [])
+        else:
+            return (0, {"unknown:" + node}, [node])
+        best = (0, set(), [])
+        for callee in sorted(calls):
+            r = worst(resolve(callee), active)
+            flags |= r[1]
+            if r[0] > best[0]:
+                best = r
+        result = (own + best[0], flags, [node.split(":")[-1]] + best[2])
+        memo[node] = result
+        return result
+
+    out = {}
+    for fns in read_features(build).values():
+        for fn in fns:
+            if fn in frames:
+                out[fn] = worst(fn, frozenset())
+    return out
+
+
+# ---- cycles ----------------------------------------------------------------
+
+def read_cycles(path):
+    res, kernel = {}, "?"
+    with open(path) as f:
+        for line in f:
+            p = line.split()
+            if p[:1] == ["KERNEL"]:
+                kernel = p[1]
+            elif p[:1] == ["RESULT"] and len(p) >= 6:
+                res[p[1]] = tuple(int(v) for v in p[2:6])  # instr, units, stack, work
+            elif p[:1] == ["FAILED"]:
+                raise SystemExit(f"report.py: self-check failed in {path}: {line.strip()}")
+    return kernel, res
+
+
+def fmt(v):
+    return f"{v:,}".replace(",", " ")
+
+
+def per(instr, units, digits=2):
+    return f"{instr / units:.{digits}f}" if units else "-"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--size", action="append", default=[], metavar="NAME=DIR")
+    ap.add_argument("--cycles", action="append", default=[], metavar="NAME=FILE")
+    a = ap.parse_args()
+    targets = [s.split("=", 1) for s in a.size]
+    w = sys.stdout.write
+
+    if targets:
+        feats = read_features(targets[0][1])
+        sizes = {}
+        for name, build in targets:
+            tool = cache_value(build, "CMAKE_SIZE")
+            base = section_sizes(tool, os.path.join(build, "fw_base.elf"))
+            for feat in list(feats) + ["all"]:
+                elf = os.path.join(build, f"fw_{feat}.elf")
+                if not os.path.exists(elf):
+                    sizes[(name, feat)] = None  # did not link
+                    continue
+                f, r = section_sizes(tool, elf)
+                sizes[(name, feat)] = (f - base[0], r - base[1])
+        w("### Flash and static RAM per feature (bytes, -Os)\n\n")
+        w("Each feature's whole public API linked into an empty firmware "
+          "(with `--gc-sections`), minus the empty firmware: library code, "
+          "constants, and what it pulls from libgcc and the C library "
+          "(64-bit division, `memcpy`). Static RAM (`.data` + `.bss`) is 0 "
+          "for every feature: all state is in caller buffers.\n\n")
+        w("| feature | " + " | ".join(n for n, _ in targets) + " | Cortex-M0+ target |\n")
+        w("|---|" + "---:|" * len(targets) + "---|\n")
+        order = [f for f in ("match", "pitch", "stream", "track", "grad", "view", "ssda") if f in feats]
+        order += sorted(f for f in feats if f not in order) + ["all"]
+        for feat in order:
+            cells = []
+            for name, _ in targets:
+                if sizes[(name, feat)] is None:
+                    cells.append("does not link")
+                    continue
+                fl, ram = sizes[(name, feat)]
+                cells.append(fmt(fl) + ("" if ram == 0 else f" (+{ram} RAM)"))
+            goal = M0_FLASH_TARGETS.get(feat)
+            m0 = next((sizes[(n, feat)][0] for n, _ in targets
+                       if "m0" in n.lower() and sizes[(n, feat)] is not None), None)
+            verdict = ""
+            if goal and m0 is not None:
+                verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
+            label = FEATURE_NAMES.get(feat, f"`{feat}.h`") if feat != "all" else "everything"
+            w(f"| {label} | " + " | ".join(cells) + f" | {verdict} |\n")
+
+        stacks = {name: stack_worst(build) for name, build in targets}
+        w("\n### Worst-case stack per public function (bytes, -Os)\n\n")
+        w("GCC's `-fstack-usage` frame of each library function (from "
+          "`-fcallgraph-info=su`) plus the deepest chain of calls below it, "
+          "libgcc and C library routines included (their frames read from "
+          "the disassembly). `+cb`: the function calls a caller's callback, "
+          "whose stack comes on top. Limit: " + str(STACK_LIMIT) + " B.\n\n")
+        w("| function | " + " | ".join(n for n, _ in targets) + " | deepest chain (" + targets[0][0] + ") |\n")
+        w("|---|" + "---:|" * len(targets) + "---|\n")
+        for feat in order[:-1]:
+            for fn in feats[feat]:
+                cells = []
+                for name, _ in targets:
+                    r = stacks[name].get(fn)
+                    if r is None:
+                        cells.append("-")
+                        continue
+                    cell = str(r[0])
+                    if r[0] > STACK_LIMIT:
+                        cell = f"**{cell}**"
+                    if "callback" in r[1]:
+                        cell += " +cb"
+                    if "recursion" in r[1] or any(x.startswith("unknown") or x.startswith("dynamic") for x in r[1]):
+                        cell += " (" + ", ".join(sorted(x for x in r[1] if x != "callback")) + ")"
+                    cells.append(cell)
+                r0 = stacks[targets[0][0]].get(fn)
+                chain = " > ".join(r0[2]) if r0 else ""
+                w(f"| `{fn}` | " + " | ".join(cells) + f" | {chain} |\n")
+
+    runs = [(name, *read_cycles(path)) for name, path in (c.split("=", 1) for c in a.cycles)]
+    if runs:
+        def get(res, key):
+            return res.get(key, (0, 0, 0, 0))
+        w("\n### Instructions on the emulated Cortex-M4 (QEMU mps2-an386, `-icount shift=0`)\n\n")
+        w("SysTick read before and after each job (1 count = 40 instructions, "
+          "+-40 per reading); the method is checked on a loop of known length "
+          "each run. Columns: kernel set linked.\n\n")
+        names = [f"{n} ({k})" for n, k, _ in runs]
+        w("| SAD kernel, instructions per pixel | " + " | ".join(names) + " |\n")
+        w("|---|" + "---:|" * len(runs) + "\n")
+        for key, label in (("kernel.sad_u8.row16", "8-bit, 16-px row (inside the call)"),
+                           ("kernel.sad_u8.row4096", "8-bit, long rows"),
+                           ("kernel.sad_u16.row16", "16-bit, 16-px row (inside the call)"),
+                           ("kernel.sad_u16.row4096", "16-bit, long rows"),
+                           ("kernel.absdiff_i16.row320", "int16 AMDF, 320-sample row"),
+                           ("kernel.absdiff_i16.row4096", "int16 AMDF, long rows")):
+            w(f"| {label} | " + " | ".join(per(*get(r, key)[:2]) for _, _, r in runs) + " |\n")
+
+        if any("match.none" in r for _, _, r in runs):
+            w("\n| 16x16 window in a 32x32 area (16 windows, mean) | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | pixel ops | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            for key, label in (("match.none", "brute force (`SSDA_THRESHOLD_NONE`)"),
+                               ("match.auto", "`auto` (raster)"),
+                               ("match.auto_predict", "`auto` + prediction"),
+                               ("match.auto_bounds", "`auto` + bounds"),
+                               ("match.auto_predict_bounds", "`auto` + prediction + bounds")):
+                r0 = get(runs[0][2], key)
+                w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                                              for _, _, r in runs) +
+                  f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        if any("track.none" in r for _, _, r in runs):
+            w("\n| 7x7 grid tracking, 128x128 image (per window) | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | pixel ops | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            for key, label in (("track.none", "brute force"), ("track.auto", "`auto`"),
+                               ("track.auto_predict_bounds", "`auto` + median prediction + bounds")):
+                r0 = get(runs[0][2], key)
+                w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                                              for _, _, r in runs) +
+                  f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        if any("pitch.full" in r for _, _, r in runs):
+            plain = get(runs[0][2], "pitch.plain_amdf_diffs")[3]
+            w("\n| pitch frame, 16 kHz, lags 16..320, K = 320, hop 80 (24 voiced frames) | " +
+              " | ".join(f"{n}: mean / worst instructions" for n in names) +
+              f" | differences (plain AMDF: {fmt(plain)}) | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            for key, label in (("pitch.full", "full AMDF (`SSDA_PITCH_FULL`)"),
+                               ("pitch.early_exit", "early exit"),
+                               ("pitch.early_exit_track", "early exit + tracking (`SSDA_PITCH_TRACK`)")):
+                r0 = get(runs[0][2], key)
+                cells = [fmt(round(get(r, key)[0] / max(1, get(r, key)[1]))) + " / " +
+                         fmt(get(r, key + ".worst")[0]) for _, _, r in runs]
+                w(f"| {label} | " + " | ".join(cells) +
+                  f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+
+if __name__ == "__main__":
+    main()
