@@ -1,0 +1,285 @@
+/*
+ * stream.h - block-streamed images: match images far larger than RAM.
+ *
+ * Seed: Nagao et al. 1975, section 2.3 and Figs. 5-6: images of 4000 x 4000
+ * and more stay on disk; "plate-shaped" blocks of rows, sized to the memory
+ * given to each image, are paged in and out so that a routine can ask for
+ * pixel (I, J) of image N and never see the I/O.
+ *
+ * A SOURCE is an image in external memory (SPI flash, PSRAM, SD card, a
+ * file) reached through one read callback, described by one config struct
+ * (littlefs style). Each source owns a caller-provided ARENA holding its
+ * PLATE: a w x h rectangle of the image, rows `pitch` bytes apart, in RAM.
+ *
+ * PLATE POLICY (the cache's replacement rule). A row span outside the plate
+ * is a miss; the plate then moves to cover it:
+ *   - columns: if the plate is at least as wide as the job's region, it
+ *     starts at the region's left edge; otherwise at the span's left edge
+ *     (kept inside the region and the image);
+ *   - rows: if the plate is at least as tall as the region, it starts at the
+ *     region's top; otherwise, moving down, it keeps the `keep` rows above
+ *     the missed row (a job sets keep = window height - 1, so a raster scan
+ *     reads each row once), moving up it starts at the missed row;
+ *   - rows still inside the moved plate (same columns) are copied, not
+ *     read again; every other row is read. One read per plate row in the
+ *     raster layout (one per plate load when rows are stored contiguously at
+ *     the plate's pitch); one read per tile and run of rows in the tiled one.
+ * Jobs (ssda_stream_match, ssda_stream_track) shape the plate for their
+ * region and order their work so that each byte is read as few times as the
+ * arena allows; see docs/streaming.md for the plans and the figures.
+ *
+ * Errors: a negative value returned by read() is passed back unchanged
+ * (so it may be any negative int; SSDA_ERR_IO is a good default), and the
+ * job's result is left untouched. After a failed read the plate is empty and
+ * the source stays usable. Counters are never reset by the library.
+ *
+ * The library never allocates: the source struct and the arena belong to the
+ * caller and must outlive every call on the source. A source is not
+ * thread-safe; two sources may share one read callback and context.
+ */
+#ifndef SSDA_STREAM_H
+#define SSDA_STREAM_H
+
+#include "ssda/match.h"
+#include "ssda/track.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* How the image is stored in the device. */
+typedef enum {
+    /* Rows top to bottom, pixels left to right; row y starts at
+       offset + y * stride. */
+    SSDA_LAYOUT_RASTER = 0,
+    /* tile_w x tile_h tiles, row-major over the image (tiles_across =
+       ceil(width / tile_w)); tile (tx, ty) starts at
+       offset + (ty * tiles_across + tx) * tile_stride, its rows stride bytes
+       apart. Edge tiles are stored full size (TIFF style); their padding
+       pixels are never read into the plate. */
+    SSDA_LAYOUT_TILED = 1
+} ssda_layout_t;
+
+/*
+ * Read size bytes at byte address offset of the device into buffer.
+ * Return 0 on success or a negative error code, which the library passes
+ * back unchanged. offset and size are multiples of the source's read_size;
+ * size > 0. A read may cover up to read_size - 1 bytes before the image's
+ * first byte and after its last (the aligned range around it), never more.
+ */
+typedef int (*ssda_read_fn)(void *context, uint32_t offset, void *buffer, uint32_t size);
+
+/*
+ * Source configuration. Zero means the documented default.
+ */
+typedef struct {
+    ssda_read_fn read;    /* required */
+    void *context;        /* passed to read(), may be NULL */
+    uint32_t offset;      /* byte address of the image (pixel (0, 0) or tile
+                             (0, 0)); a multiple of the pixel size */
+    uint32_t stride;      /* bytes from one row start to the next: image rows
+                             (raster) or rows inside a tile (tiled); a multiple
+                             of the pixel size, >= width (or tile_w) * bpp;
+                             0 = packed */
+    uint32_t tile_stride; /* tiled: bytes from one tile to the next,
+                             >= (tile_h - 1) * stride + tile_w * bpp, a
+                             multiple of the pixel size; 0 = stride * tile_h */
+    uint32_t read_size;   /* read granularity in bytes: every read's offset
+                             and size are multiples of it (flash page, SD
+                             sector); 1 or a multiple of the pixel size;
+                             0 = 1 */
+    void *arena;          /* cache memory, 4-byte aligned, owned by the caller */
+    size_t arena_size;    /* bytes; >= SSDA_SOURCE_SIZE(..., 1, 1, ...) to
+                             initialise, more per job (see the job functions) */
+    uint16_t width;       /* pixels, 1..65535 */
+    uint16_t height;      /* rows, 1..65535 */
+    uint16_t tile_w;      /* tiled: tile width, px, 1..65535 */
+    uint16_t tile_h;      /* tiled: tile height, rows, 1..65535 */
+    uint8_t format;       /* ssda_pixfmt_t */
+    uint8_t layout;       /* ssda_layout_t */
+} ssda_source_config_t;
+
+/* What a source has cost so far. Counts are cumulative from init and
+   wrap only after 2^64 events. */
+typedef struct {
+    uint64_t bytes_read; /* bytes requested from read(), alignment included */
+    uint64_t reads;      /* read() calls */
+    uint64_t hits;       /* row spans served from the plate without reading */
+    uint64_t misses;     /* row spans that moved the plate (and read) */
+} ssda_source_stats_t;
+
+/*
+ * A source. Allocate it (static, stack, or in a struct); fill it only with
+ * ssda_source_init or ssda_source_init_view. All fields are private except
+ * stats, which may be read (and zeroed) at any time between calls.
+ */
+typedef struct {
+    ssda_source_config_t cfg; /* resolved copy (defaults filled in) */
+    ssda_source_stats_t stats;
+    const uint8_t *view;      /* in-RAM source: pixel (0, 0); else NULL */
+    uint32_t pitch;           /* bytes between plate rows */
+    uint32_t head;            /* bytes before the first pixel of a plate row */
+    uint32_t bounce;          /* tiled: arena offset of the tile bounce buffer */
+    uint32_t bounce_size;     /* tiled: its bytes */
+    uint16_t pw, ph;          /* plate capacity: pixels per row, rows */
+    uint16_t px0, py0;        /* image position of the plate's first pixel */
+    uint16_t rows;            /* plate rows holding valid pixels: 0 or ph */
+    uint16_t keep;            /* rows kept above a downward miss */
+    uint16_t rx, ry, rw, rh;  /* region of the current job */
+} ssda_source_t;
+
+/* A rectangle of a source, px: top-left (x, y), width x height. */
+typedef struct {
+    uint16_t x, y;
+    uint16_t width, height;
+} ssda_rect_t;
+
+/* ----- Arena sizes. All in bytes; read_size 0 counts as 1. ----- */
+
+#define SSDA_STREAM_RS_(rs) ((size_t)(rs) > 1u ? (size_t)(rs) : (size_t)1u)
+#define SSDA_STREAM_ALIGN4_(n) ((((size_t)(n)) + 3u) & ~(size_t)3u)
+
+/* Raster: room before each plate row's first pixel so that a read can start
+   at the aligned address below it: read_size - 1, rounded up to a pixel. */
+#define SSDA_STREAM_HEAD(format, read_size)                                   \
+    (((SSDA_STREAM_RS_(read_size) - 1u + (size_t)(format) - 1u) /             \
+      (size_t)(format)) * (size_t)(format))
+
+/* Bytes of one plate row of w pixels: raster (head, pixels, tail room for
+   alignment) and tiled (pixels only: tiles go through the bounce buffer). */
+#define SSDA_STREAM_RASTER_PITCH(w, format, read_size)                        \
+    SSDA_STREAM_ALIGN4_(SSDA_STREAM_HEAD(format, read_size) +                 \
+                        (size_t)(w) * (size_t)(format) +                      \
+                        SSDA_STREAM_RS_(read_size) - 1u)
+#define SSDA_STREAM_TILED_PITCH(w, format)                                    \
+    SSDA_STREAM_ALIGN4_((size_t)(w) * (size_t)(format))
+
+/* Tiled: the smallest bounce buffer, one tile row read with its alignment
+   on both sides. A larger one lets a read cover several rows of a tile. */
+#define SSDA_STREAM_BOUNCE_MIN(tile_w, format, read_size)                     \
+    SSDA_STREAM_ALIGN4_((size_t)(tile_w) * (size_t)(format) +                 \
+                        2u * (SSDA_STREAM_RS_(read_size) - 1u))
+
+/*
+ * Arena bytes for a plate of w x h pixels of a source with this layout,
+ * format, read_size and tile width (tile_w unused for raster). The source
+ * needs w >= the widest row span a job fetches; h >= 1.
+ */
+#define SSDA_SOURCE_SIZE(layout, w, h, format, read_size, tile_w)             \
+    ((layout) == SSDA_LAYOUT_TILED                                            \
+         ? (size_t)(h) * SSDA_STREAM_TILED_PITCH(w, format) +                 \
+               SSDA_STREAM_BOUNCE_MIN(tile_w, format, read_size)              \
+         : (size_t)(h) * SSDA_STREAM_RASTER_PITCH(w, format, read_size))
+
+/* Width of the search-area strip of n grid columns in grid tracking:
+   (n - 1) * step + search (the windows' strip is (n - 1) * step + win). */
+#define SSDA_STREAM_STRIP_W(n, step, side)                                    \
+    (((size_t)(n) - 1u) * (size_t)(step) + (size_t)(side))
+
+/* ----- Sources ----- */
+
+/*
+ * Initialise *src from *cfg (copied; cfg may be discarded afterwards). No
+ * read is made. The plate starts empty, as wide as the image (or as the
+ * arena allows) and as tall as the arena allows.
+ * Returns SSDA_OK, or without touching *src:
+ *   SSDA_ERR_NULL    src, cfg, cfg->read or cfg->arena NULL
+ *   SSDA_ERR_FORMAT  unknown format
+ *   SSDA_ERR_ARG     unknown layout; read_size neither 1 nor a multiple of
+ *                    the pixel size
+ *   SSDA_ERR_SIZE    zero width, height, tile_w or tile_h; the image (with
+ *                    read alignment) does not fit below 2^32 bytes
+ *   SSDA_ERR_STRIDE  offset, stride or tile_stride not a multiple of the
+ *                    pixel size; stride or tile_stride too small
+ *   SSDA_ERR_BUFFER  arena not 4-byte aligned, or smaller than a 1 x 1
+ *                    plate (SSDA_SOURCE_SIZE(layout, 1, 1, ...))
+ */
+int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg);
+
+/*
+ * Initialise *src as an image already in RAM (no arena, no reads, no
+ * counts), so the job functions take any mix of streamed and in-RAM images.
+ * The view's pixels must outlive the source. Returns SSDA_OK, SSDA_ERR_NULL,
+ * or the errors of ssda_view_check; *src untouched on error.
+ */
+int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view);
+
+/*
+ * Pixels x .. x+n-1 of row y as one contiguous span (the seed's "pixel
+ * (I, J) of image N", a row at a time): on success *px points to them
+ * (uint16_t-aligned for 16-bit images) until the next call on this source.
+ * Reads as the plate policy says; the job region is the whole image.
+ * Returns SSDA_OK, or without writing *px:
+ *   SSDA_ERR_NULL    src or px NULL
+ *   SSDA_ERR_STATE   src not initialised
+ *   SSDA_ERR_SIZE    n == 0 or the span leaves the image
+ *   SSDA_ERR_BUFFER  n wider than the arena's plate can be
+ *   any negative value read() returned
+ */
+int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
+                    const uint8_t **px);
+
+/* ----- Jobs ----- */
+
+/*
+ * ssda_match over a rectangle of one source (the search area) and a
+ * rectangle of another (the window); either may be streamed or in RAM. The
+ * result is the one ssda_match gives on the same pixels in RAM, field for
+ * field, in every mode.
+ *   area, window: initialised sources of the same format (may be the same
+ *             source only if it is in RAM).
+ *   area_rect, window_rect: rectangles inside them; NULL = the whole image.
+ *             The window rectangle is no larger than the area's.
+ *   cfg:      as ssda_match (NULL = defaults).
+ *   result:   written on success only.
+ * Arena: a streamed area needs SSDA_SOURCE_SIZE(.., span, 1, ..) where span
+ * is the area width with SSDA_MATCH_BOUNDS, else the window width; with
+ * (area width) x (window height) the raster scan reads every byte once, and
+ * with the whole area every scan does. A streamed window needs
+ * (window width) x 1; (window width) x (window height) reads it once.
+ * Returns SSDA_OK, or without writing *result:
+ *   SSDA_ERR_NULL, _SIZE, _FORMAT, _ARG, _BUFFER as ssda_match (SIZE also
+ *   for a rectangle outside its source, BUFFER also for a short arena,
+ *   found before any read); SSDA_ERR_STATE for an uninitialised source or
+ *   one source used for both streamed operands; any read() error unchanged.
+ */
+int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
+                      ssda_source_t *window, const ssda_rect_t *window_rect,
+                      const ssda_match_config_t *cfg, ssda_match_result_t *result);
+
+/*
+ * ssda_track with FIRST and/or SECOND streamed.
+ * PLAN: the grid is cut into vertical strips of as many grid columns as the
+ * arenas hold with the strip's search areas (search_h rows) in FIRST's plate
+ * and its windows (win_h rows) in SECOND's; each strip is solved top to
+ * bottom while the plates slide down, so every byte is read about once
+ * (strips overlap by search_w - step_x columns). Within a strip windows are
+ * solved in raster order. Strips change only the order of the work, so:
+ *   - vectors, statuses and exact flags equal ssda_track's whenever the
+ *     result does not depend on the order: exact modes (AUTO, NONE without
+ *     COARSE scan), or no prediction, or SSDA_TRACK_PREDICT_LEFT (whose
+ *     neighbours are solved in both orders); otherwise (MEDIAN prediction
+ *     with an inexact mode) one full-width strip is used, which reads more
+ *     when it does not fit but gives ssda_track's result exactly;
+ *   - the work counts (pixel_ops, positions, completed) may differ from
+ *     ssda_track's when prediction is on, since a window at a strip's right
+ *     edge has no solved up-right neighbour.
+ * Arena: a streamed FIRST needs SSDA_SOURCE_SIZE(.., search_w, 1, ..), a
+ * streamed SECOND (.., win_w, 1, ..); read-once strips of n columns need
+ * SSDA_STREAM_STRIP_W(n, step_x, search_w) x search_h and
+ * SSDA_STREAM_STRIP_W(n, step_x, win_w) x win_h.
+ * Returns what ssda_track returns (every argument error before any read or
+ * write), SSDA_ERR_STATE for an uninitialised source or one streamed source
+ * used for both images, or a read() error unchanged. On a read error out
+ * holds the windows solved before it (the rest of out and *stats are
+ * untouched): a streamed call cannot take back what it wrote.
+ */
+int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
+                      const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                      size_t out_count, ssda_track_stats_t *stats);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSDA_STREAM_H */

@@ -1,0 +1,71 @@
+/*
+ * stream_internal.h - internal: the plate cache of a source, and sources
+ * seen as row sources (match_rows.h) by the search and tracking engines.
+ */
+#ifndef SSDA_STREAM_INTERNAL_H
+#define SSDA_STREAM_INTERNAL_H
+
+#include "ssda/stream.h"
+#include "match_rows.h"
+
+/* A source is usable once initialised (width 0 only in a zeroed struct). */
+static inline bool stream_ready(const ssda_source_t *s)
+{
+    return s->cfg.width != 0u;
+}
+
+/* Largest plate width (px) of h rows that the arena holds, 0 if none. */
+uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h);
+
+/* Largest number of plate rows of w px that the arena holds, 0 if none. */
+uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w);
+
+/*
+ * Shape the plate for a job over region r (inside the image) that fetches
+ * spans of at most span px and revisits `rows` consecutive rows: the whole
+ * region width if `rows` rows of it fit (and as many rows as fit, up to the
+ * region height), else the widest plate of `rows` rows, else span x (as many
+ * rows as fit). Keeps the plate's pixels when its shape does not change.
+ * keep: rows kept above a downward miss. Returns SSDA_OK or SSDA_ERR_BUFFER
+ * (not even one row of span px fits) with the source unchanged.
+ */
+int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+                      uint32_t rows, uint32_t keep);
+
+/* Read-callback source: fetch through the plate (misses move it). Same
+   contract as ssda_row_fetch_fn with ctx = the source; the span must lie
+   inside the image and n <= s->pw. */
+int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
+                       const uint8_t **px);
+
+/* Fast path of stream_plate_fetch, inlined where it pays. */
+static inline int stream_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
+                               const uint8_t **px)
+{
+    uint32_t dy = y - s->py0; /* wraps above the plate: then >= rows */
+    uint32_t dx = x - s->px0;
+    if (dy < s->rows && dx <= s->pw && n <= s->pw - dx) {
+        s->stats.hits++;
+        *px = (const uint8_t *)s->cfg.arena + (size_t)dy * s->pitch + s->head +
+              (size_t)dx * s->cfg.format;
+        return SSDA_OK;
+    }
+    return stream_plate_fetch(s, x, y, n, px);
+}
+
+/* A rectangle of a source as a row source (coordinates relative to it). */
+typedef struct {
+    ssda_source_t *src;
+    uint32_t x0, y0;
+} stream_rows_ctx_t;
+
+/* Make *rows the rectangle r of s: a plain pointer for in-RAM sources, else
+   fetches through ctx (which must outlive rows). */
+void stream_rows_make(ssda_rows_t *rows, stream_rows_ctx_t *ctx, ssda_source_t *s,
+                      const ssda_rect_t *r);
+
+/* Resolve a rectangle (NULL = whole image) and check it lies inside s:
+   SSDA_OK or SSDA_ERR_SIZE. */
+int stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out);
+
+#endif /* SSDA_STREAM_INTERNAL_H */

@@ -1,0 +1,215 @@
+/* stream_source.c - source configuration: validation, geometry, defaults;
+   sources and their rectangles as row sources. */
+#include <string.h>
+#include "stream_internal.h"
+
+/* Bytes from the first to the last byte of the image as stored, or 0 when
+   that exceeds 2^32 (the device address space of read()). */
+static uint64_t image_extent(const ssda_source_config_t *c)
+{
+    const uint64_t bpp = c->format;
+    uint64_t last;
+    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+        uint64_t across = ((uint64_t)c->width + c->tile_w - 1u) / c->tile_w;
+        uint64_t down = ((uint64_t)c->height + c->tile_h - 1u) / c->tile_h;
+        /* (tiles - 1) * tile_stride < 2^32 * 2^32: no wrap */
+        last = (across * down - 1u) * c->tile_stride;
+        if (last > UINT32_MAX) {
+            return 0u;
+        }
+        return last + (uint64_t)(c->tile_h - 1u) * c->stride + c->tile_w * bpp;
+    }
+    return (uint64_t)(c->height - 1u) * c->stride + c->width * bpp; /* < 2^49 */
+}
+
+/* Resolve defaults in *c and check it; SSDA_OK or the documented error. */
+static int check_config(ssda_source_config_t *c)
+{
+    uint32_t bpp, row_bytes;
+    uint64_t end;
+    if (c->read == NULL || c->arena == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (c->format != (uint8_t)SSDA_PIX_U8 && c->format != (uint8_t)SSDA_PIX_U16) {
+        return SSDA_ERR_FORMAT;
+    }
+    bpp = c->format;
+    if (c->read_size == 0u) {
+        c->read_size = 1u;
+    }
+    if (c->layout > (uint8_t)SSDA_LAYOUT_TILED ||
+        (c->read_size != 1u && (c->read_size % bpp) != 0u)) {
+        return SSDA_ERR_ARG;
+    }
+    if (c->width == 0u || c->height == 0u) {
+        return SSDA_ERR_SIZE;
+    }
+    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+        if (c->tile_w == 0u || c->tile_h == 0u) {
+            return SSDA_ERR_SIZE;
+        }
+        row_bytes = (uint32_t)c->tile_w * bpp;
+    } else {
+        row_bytes = (uint32_t)c->width * bpp;
+    }
+    if (c->stride == 0u) {
+        c->stride = row_bytes;
+    }
+    if ((c->offset % bpp) != 0u || (c->stride % bpp) != 0u || c->stride < row_bytes) {
+        return SSDA_ERR_STRIDE;
+    }
+    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+        uint64_t tile_bytes = (uint64_t)(c->tile_h - 1u) * c->stride + row_bytes;
+        if (c->tile_stride == 0u) {
+            uint64_t ts = (uint64_t)c->stride * c->tile_h;
+            if (ts > UINT32_MAX) {
+                return SSDA_ERR_SIZE;
+            }
+            c->tile_stride = (uint32_t)ts;
+        }
+        if ((c->tile_stride % bpp) != 0u || c->tile_stride < tile_bytes) {
+            return SSDA_ERR_STRIDE;
+        }
+    }
+    /* Every read stays inside [offset, offset + extent) widened to
+       read_size multiples, which must lie below 2^32. */
+    end = image_extent(c);
+    if (end == 0u) {
+        return SSDA_ERR_SIZE;
+    }
+    end += c->offset;
+    end = (end + c->read_size - 1u) / c->read_size * c->read_size;
+    if (end > (uint64_t)UINT32_MAX + 1u) {
+        return SSDA_ERR_SIZE;
+    }
+    if ((((uintptr_t)c->arena) & 3u) != 0u ||
+        c->arena_size < SSDA_SOURCE_SIZE(c->layout, 1u, 1u, c->format, c->read_size,
+                                         c->tile_w)) {
+        return SSDA_ERR_BUFFER;
+    }
+    return SSDA_OK;
+}
+
+int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
+{
+    ssda_source_t s;
+    ssda_rect_t all;
+    int err;
+    if (src == NULL || cfg == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    memset(&s, 0, sizeof s);
+    s.cfg = *cfg;
+    err = check_config(&s.cfg);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    all.x = 0u;
+    all.y = 0u;
+    all.width = s.cfg.width;
+    all.height = s.cfg.height;
+    /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
+       plate fits (checked above), so this cannot fail. */
+    err = stream_plate_plan(&s, &all, 1u, 1u, 0u);
+    if (err == SSDA_OK) {
+        *src = s;
+    }
+    return err;
+}
+
+int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view)
+{
+    int err;
+    if (src == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = ssda_view_check(view);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    memset(src, 0, sizeof *src);
+    src->view = (const uint8_t *)view->data;
+    src->cfg.stride = view->stride;
+    src->cfg.width = view->width;
+    src->cfg.height = view->height;
+    src->cfg.format = view->format;
+    return SSDA_OK;
+}
+
+int stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out)
+{
+    if (in == NULL) {
+        out->x = 0u;
+        out->y = 0u;
+        out->width = s->cfg.width;
+        out->height = s->cfg.height;
+        return SSDA_OK;
+    }
+    if (in->width == 0u || in->height == 0u ||
+        (uint32_t)in->x + in->width > s->cfg.width ||
+        (uint32_t)in->y + in->height > s->cfg.height) {
+        return SSDA_ERR_SIZE;
+    }
+    *out = *in;
+    return SSDA_OK;
+}
+
+int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
+                    const uint8_t **px)
+{
+    ssda_rect_t all;
+    if (src == NULL || px == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!stream_ready(src)) {
+        return SSDA_ERR_STATE;
+    }
+    if (n == 0u || x >= src->cfg.width || n > src->cfg.width - x || y >= src->cfg.height) {
+        return SSDA_ERR_SIZE;
+    }
+    if (src->view != NULL) {
+        *px = src->view + (size_t)y * src->cfg.stride + (size_t)x * src->cfg.format;
+        return SSDA_OK;
+    }
+    (void)stream_rect(src, NULL, &all);
+    if (n > src->pw) {
+        /* Reshape for this width: whole rows if they fit, else n px. */
+        int err = stream_plate_plan(src, &all, n, 1u, 0u);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+    src->rx = all.x;
+    src->ry = all.y;
+    src->rw = all.width;
+    src->rh = all.height;
+    src->keep = 0u;
+    return stream_fetch(src, x, y, n, px);
+}
+
+static int rows_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
+{
+    const stream_rows_ctx_t *c = (const stream_rows_ctx_t *)ctx;
+    return stream_fetch(c->src, c->x0 + x, c->y0 + y, n, px);
+}
+
+void stream_rows_make(ssda_rows_t *rows, stream_rows_ctx_t *ctx, ssda_source_t *s,
+                      const ssda_rect_t *r)
+{
+    rows->width = r->width;
+    rows->height = r->height;
+    rows->format = s->cfg.format;
+    rows->stride = s->cfg.stride;
+    if (s->view != NULL) {
+        rows->base = s->view + (size_t)r->y * s->cfg.stride + (size_t)r->x * s->cfg.format;
+        rows->fetch = NULL;
+        rows->ctx = NULL;
+    } else {
+        ctx->src = s;
+        ctx->x0 = r->x;
+        ctx->y0 = r->y;
+        rows->base = NULL;
+        rows->fetch = rows_fetch;
+        rows->ctx = ctx;
+    }
+}
