@@ -82,6 +82,9 @@ int cli_parse_order(const char *s, ssda_match_config_t *cfg);
 void cli_threshold_name(const ssda_match_config_t *cfg, char *buf, size_t len);
 const char *cli_scan_name(const ssda_match_config_t *cfg);
 
+/* The file name of a path, without its folders (for picture titles). */
+const char *cli_basename(const char *path);
+
 /* ---- inputs ---- */
 /* Read a PNG as gray (depth as png_io). Prints the error; returns 0 or -1. */
 int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray_image_t *img);

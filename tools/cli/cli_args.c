@@ -376,6 +376,12 @@ void cli_outputs_abort(cli_outputs_t *o)
     o->n = 0;
 }
 
+const char *cli_basename(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash != NULL && slash[1] != '\0' ? slash + 1 : path;
+}
+
 /* ---- inputs ---- */
 
 int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray_image_t *img)

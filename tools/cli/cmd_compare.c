@@ -128,7 +128,8 @@ int cmd_compare(int argc, char **argv)
         track_write_json(f, &r, &o, (const int32_t(*)[2])ref, extra);
     }
     if (o.overlay_path != NULL) {
-        snprintf(title, sizeof title, "ssda compare  %s -> %s", a.pos[0], a.pos[1]);
+        snprintf(title, sizeof title, "ssda compare  %s -> %s", cli_basename(a.pos[0]),
+                 cli_basename(a.pos[1]));
         snprintf(sub, sizeof sub,
                  "SSDA vs exhaustive NCC on %u windows: within 0 px %.0f %%, 1 px %.0f %%, "
                  "2 px %.0f %%",

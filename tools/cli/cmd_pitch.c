@@ -192,12 +192,12 @@ int cmd_pitch(int argc, char **argv)
         draw_pitch_opts_t po;
         char title[256], sub[256];
         memset(&po, 0, sizeof po);
-        snprintf(title, sizeof title, "ssda pitch  %s", a.pos[0]);
+        snprintf(title, sizeof title, "ssda pitch  %s", cli_basename(a.pos[0]));
         snprintf(sub, sizeof sub,
-                 "AMDF with SSDA early exit, %.0f..%.0f Hz, hop %.1f ms: work %.1f %% of "
+                 "AMDF with SSDA early exit, f0 %g..%g Hz, hop %.1f ms: work %.1f %% of "
                  "full-search AMDF",
-                 (double)tr.info.sample_rate_hz / tr.info.lag_max,
-                 (double)tr.info.sample_rate_hz / tr.info.lag_min,
+                 fmin > 0 ? fmin : (double)SSDA_PITCH_DEFAULT_F0_MIN,
+                 fmax > 0 ? fmax : (double)SSDA_PITCH_DEFAULT_F0_MAX,
                  1000.0 * tr.info.hop / tr.info.sample_rate_hz,
                  tr.full_diffs ? 100.0 * (double)tr.diffs / (double)tr.full_diffs : 0.0);
         po.title = title;

@@ -103,7 +103,8 @@ int cmd_track(int argc, char **argv)
         track_write_json(f, &r, &o, NULL, NULL);
     }
     if (o.overlay_path != NULL) {
-        snprintf(title, sizeof title, "ssda track  %s -> %s", a.pos[0], a.pos[1]);
+        snprintf(title, sizeof title, "ssda track  %s -> %s", cli_basename(a.pos[0]),
+                 cli_basename(a.pos[1]));
         snprintf(sub, sizeof sub,
                  "window %ux%u, search %ux%u, step %u, threshold %s%s:  %u ok, "
                  "median motion (%+d, %+d) px,  work %.1f %% of brute force",

@@ -604,17 +604,34 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
 {
     draw_vector_t *dv = calloc(r->grid.count + 1u, sizeof *dv);
     draw_vectors_opts_t dopt;
+    gray_image_t bg = {0};
+    const gray_image_t *src = &r->second_orig;
+    const ssda_track_grid_t *g = &r->grid;
     char err[512];
-    uint32_t k;
+    uint32_t k, x0, y0, x1, y1, y;
     int rc;
-    if (dv == NULL) {
+    /* Show the part of SECOND the grid covers, plus the search margin: a
+       small --roi is drawn large instead of lost in a reduced whole image. */
+    x0 = g->roi_x > (g->search_w - g->win_w) / 2u ? g->roi_x - (g->search_w - g->win_w) / 2u : 0u;
+    y0 = g->roi_y > (g->search_h - g->win_h) / 2u ? g->roi_y - (g->search_h - g->win_h) / 2u : 0u;
+    x1 = (uint32_t)g->roi_x + g->roi_w + (g->search_w - g->win_w) / 2u;
+    y1 = (uint32_t)g->roi_y + g->roi_h + (g->search_h - g->win_h) / 2u;
+    x1 = x1 < src->width ? x1 : src->width;
+    y1 = y1 < src->height ? y1 : src->height;
+    if (dv == NULL || gray_image_alloc(&bg, x1 - x0, y1 - y0, src->bits) != 0) {
+        free(dv);
         cli_input_error(cmd, "out of memory");
         return -1;
     }
+    for (y = y0; y < y1; y++) {
+        memcpy((uint8_t *)bg.pixels + (size_t)(y - y0) * bg.stride,
+               (const uint8_t *)src->pixels + (size_t)y * src->stride + (size_t)x0 * (src->bits / 8u),
+               bg.stride);
+    }
     for (k = 0; k < r->grid.count; k++) {
         const ssda_track_vector_t *v = &r->vec[k];
-        dv[k].x = v->x + (r->grid.win_w - 1) / 2.0;
-        dv[k].y = v->y + (r->grid.win_h - 1) / 2.0;
+        dv[k].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
+        dv[k].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
         dv[k].dx = v->dx;
         dv[k].dy = v->dy;
         dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
@@ -635,9 +652,9 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     dopt.grid_step = r->grid.step_x < r->grid.step_y ? r->grid.step_x : r->grid.step_y;
     dopt.have_mask = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
     dopt.mask_value = o->cfg.mask_value;
-    rc = draw_vectors_to(f, name, &r->second_orig, dv, r->grid.count, &dopt, NULL, err,
-                         sizeof err);
+    rc = draw_vectors_to(f, name, &bg, dv, r->grid.count, &dopt, NULL, err, sizeof err);
     free(dv);
+    gray_image_free(&bg);
     if (rc != 0) {
         cli_input_error(cmd, "%s", err);
     }

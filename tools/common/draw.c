@@ -245,8 +245,12 @@ static void status_mark(cairo_t *cr, double x, double y, int status, double r)
 {
     const double *c = status_rgb[status];
     int pass;
+    if (status == DRAW_EXCLUDED) { /* the commonest mark: small and quiet */
+        r *= 0.7;
+    }
     for (pass = 0; pass < 2; pass++) {
-        cairo_set_line_width(cr, pass == 0 ? 4.0 : 2.0);
+        cairo_set_line_width(cr, pass == 0 ? (status == DRAW_EXCLUDED ? 3.0 : 4.0)
+                                           : (status == DRAW_EXCLUDED ? 1.2 : 2.0));
         if (pass == 0) {
             cairo_set_source_rgb(cr, 0, 0, 0);
         } else {
@@ -319,8 +323,12 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     } else {
         memset(&o, 0, sizeof o);
     }
-    /* Enlarge small images (integer zoom keeps pixels crisp), reduce huge ones. */
-    z = m < 640.0 ? floor(960.0 / m) : m > 1600.0 ? 1600.0 / m : 1.0;
+    /* Enlarge small images (integer zoom from 2x keeps pixels crisp), reduce
+       huge ones, so the longer side shows at about 900..1600 px. */
+    z = m < 900.0 ? 960.0 / m : m > 1600.0 ? 1600.0 / m : 1.0;
+    if (z >= 2.0) {
+        z = floor(z);
+    }
     if (z > 12.0) {
         z = 12.0;
     }
@@ -330,6 +338,18 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     }
     top = (o.title != NULL ? 26.0 : 0.0) + (o.subtitle != NULL ? 20.0 : 0.0) + 8.0;
     W = fmax(ceil(bg->width * z), 720.0);
+    { /* wide enough for the title lines */
+        cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
+        cairo_t *m_cr = cairo_create(scratch);
+        if (o.title != NULL) {
+            W = fmax(W, ceil(text_width(m_cr, 16, 1, o.title)) + 20.0);
+        }
+        if (o.subtitle != NULL) {
+            W = fmax(W, ceil(text_width(m_cr, 13, 0, o.subtitle)) + 20.0);
+        }
+        cairo_destroy(m_cr);
+        cairo_surface_destroy(scratch);
+    }
     H = ceil(bg->height * z) + top + bottom;
     ox = floor((W - ceil(bg->width * z)) / 2.0);
 
@@ -459,6 +479,12 @@ static double tick_step(double span, int want)
     return (r < 1.5 ? 1.0 : r < 3.5 ? 2.0 : r < 7.5 ? 5.0 : 10.0) * p;
 }
 
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 /* Median spacing of a track's frames (for breaking lines at gaps). */
 static double frame_spacing(const draw_track_t *t)
 {
@@ -481,21 +507,30 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
     int pass, rc;
     char buf[64];
 
-    /* Axes ranges from the data unless given. */
+    /* Axes ranges from the data unless given: the 2nd..98th percentile of the
+       voiced values, so a few wild frames do not squash the plot (frames
+       beyond the range are marked on its edge). */
     {
-        double lo = 1e9, hi = 0.0;
+        double lo = 0.0, hi = 0.0, *vals;
+        size_t nv = 0;
         const draw_track_t *tr[2] = {&o->estimate, &o->reference};
+        vals = malloc((o->estimate.n + o->reference.n + 1u) * sizeof *vals);
         for (pass = 0; pass < 2; pass++) {
             for (i = 0; i < tr[pass]->n; i++) {
                 if (tr[pass]->t[i] > tmax) {
                     tmax = tr[pass]->t[i];
                 }
-                if (tr[pass]->f0[i] > 0.0) {
-                    lo = fmin(lo, tr[pass]->f0[i]);
-                    hi = fmax(hi, tr[pass]->f0[i]);
+                if (tr[pass]->f0[i] > 0.0 && vals != NULL) {
+                    vals[nv++] = tr[pass]->f0[i];
                 }
             }
         }
+        if (nv > 0) {
+            qsort(vals, nv, sizeof *vals, cmp_double);
+            lo = vals[(nv * 2u) / 100u];
+            hi = vals[nv - 1u - (nv * 2u) / 100u];
+        }
+        free(vals);
         if (o->samples != NULL && o->sample_rate > 0) {
             tmax = fmax(tmax, (double)o->sample_count / o->sample_rate);
         }
@@ -504,10 +539,10 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
             hi = 500.0;
         }
         if (f_lo <= 0.0) {
-            f_lo = fmax(0.0, lo - 0.12 * (hi - lo) - 5.0);
+            f_lo = fmax(0.0, lo - 0.15 * (hi - lo) - 5.0);
         }
         if (f_hi <= 0.0) {
-            f_hi = hi + 0.12 * (hi - lo) + 5.0;
+            f_hi = hi + 0.15 * (hi - lo) + 5.0;
         }
         if (f_hi <= f_lo) {
             f_hi = f_lo + 1.0;
@@ -569,7 +604,12 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
 
     /* Waveform strip: min/max per column. */
     if (o->samples != NULL && o->sample_count > 0 && o->sample_rate > 0) {
-        int col;
+        int col, peak = 1;
+        size_t k;
+        for (k = 0; k < o->sample_count; k++) { /* scale the loudest sample to the strip */
+            int a = o->samples[k] < 0 ? -o->samples[k] : o->samples[k];
+            peak = a > peak ? a : peak;
+        }
         cairo_set_source_rgb(cr, 0.97, 0.97, 0.98);
         cairo_rectangle(cr, L, WT, PW, WH);
         cairo_fill(cr);
@@ -579,7 +619,6 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
             size_t a = (size_t)((double)col / PW * tmax * o->sample_rate);
             size_t b = (size_t)((double)(col + 1) / PW * tmax * o->sample_rate);
             int lo = 0, hi = 0;
-            size_t k;
             if (a >= o->sample_count) {
                 break;
             }
@@ -590,12 +629,12 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
                 lo = o->samples[k] < lo ? o->samples[k] : lo;
                 hi = o->samples[k] > hi ? o->samples[k] : hi;
             }
-            cairo_move_to(cr, L + col + 0.5, WT + WH / 2 - hi / 32768.0 * WH / 2);
-            cairo_line_to(cr, L + col + 0.5, WT + WH / 2 - lo / 32768.0 * WH / 2 + 0.5);
+            cairo_move_to(cr, L + col + 0.5, WT + WH / 2 - 0.95 * hi / peak * WH / 2);
+            cairo_line_to(cr, L + col + 0.5, WT + WH / 2 - 0.95 * lo / peak * WH / 2 + 0.5);
             cairo_stroke(cr);
         }
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text_at(cr, L + 6, WT + 13, 11, 0, "waveform");
+        text_at(cr, L + 6, WT + 13, 11, 0, "waveform (scaled to its peak)");
     }
 
     /* Tracks, clipped to the plot. */
@@ -640,6 +679,25 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
         }
     }
     cairo_restore(cr);
+    /* Estimates beyond the y range: small triangles on the edge they pass. */
+    cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
+    for (i = 0; i < o->estimate.n; i++) {
+        double f = o->estimate.f0[i], x = PX(o->estimate.t[i]);
+        if (f <= 0.0 || (f >= f_lo && f <= f_hi)) {
+            continue;
+        }
+        if (f > f_hi) {
+            cairo_move_to(cr, x, T - 7);
+            cairo_line_to(cr, x - 3.5, T - 1);
+            cairo_line_to(cr, x + 3.5, T - 1);
+        } else {
+            cairo_move_to(cr, x, T + PH + 7);
+            cairo_line_to(cr, x - 3.5, T + PH + 1);
+            cairo_line_to(cr, x + 3.5, T + PH + 1);
+        }
+        cairo_close_path(cr);
+        cairo_fill(cr);
+    }
 
     /* Frame and legend. */
     cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
@@ -649,10 +707,8 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
     {
         const char *est_label = "estimate (unvoiced frames not drawn)";
         double tw = text_width(cr, 12, 0, est_label);
-        double lx = L + PW - tw - 60, ly = T + 20;
-        cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
-        cairo_rectangle(cr, lx - 10, ly - 15, tw + 56, o->reference.n > 0 ? 48 : 26);
-        cairo_fill(cr);
+        /* top right, above the plot, clear of the data */
+        double lx = L + PW - tw - 40, ly = o->reference.n > 0 ? 22 : 44;
         cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
         cairo_set_line_width(cr, 2.0);
         cairo_move_to(cr, lx, ly - 4);
