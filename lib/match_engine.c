@@ -28,6 +28,10 @@ typedef struct {
     uint32_t row_step;   /* row order: r -> r + row_step (mod M) */
     uint32_t k_q8;       /* K of eqs. 3/4, Q8.8 */
     bool bounds;         /* successive elimination active */
+    bool u8;             /* 8-bit samples (else 16-bit) */
+    bool ramp_mode;      /* RAMP or AUTO_RAMP */
+    bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
+    uint64_t fixed_cut;  /* FIXED: T + 1 (cut when partial > T); else UINT64_MAX */
     bool use_ref;        /* positions are cut once they cannot beat ref */
     uint32_t group;      /* bounds: rows per group (1..4) */
     uint32_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
@@ -107,9 +111,24 @@ static uint64_t ramp_linear(const engine_t *e, uint64_t r)
     return (e->best.sad / ((uint64_t)e->L * e->M)) * r;
 }
 
+/* Pixels per early-exit test on a placement's first row (a multiple of the
+   SIMD widths: 16 bytes of u8, 8 of u16). */
+#define SSDA_FIRST_ROW_CHUNK 8u
+
+static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, uint32_t n)
+{
+    if (e->u8) {
+        return ssda_sad_row_u8(a, w, n);
+    }
+    return ssda_sad_row_u16((const uint16_t *)(const void *)a, (const uint16_t *)(const void *)w, n);
+}
+
 static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint64_t pixels)
 {
     cand_t c;
+    if (!e->need_fb) {
+        return; /* a mode whose first placement always completes */
+    }
     c.sad = partial;
     c.x = x;
     c.y = y;
@@ -127,24 +146,22 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
  */
 static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
-    const ssda_match_config_t *cfg = e->cfg;
-    const bool ramp = cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP ||
-                      (cfg->threshold == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP && e->n_best > 0u);
-    const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
-    uint64_t partial = 0u; /* SAD of the rows summed: <= 65535^3 */
-    uint64_t rest = 0u;    /* bound of the rows not summed yet: <= 65535^3 */
-    uint64_t cut_at = UINT64_MAX; /* cut once partial + rest >= cut_at */
+    const bool ramp = e->ramp_mode &&
+                      (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
+    uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
+    uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
+    uint64_t cut_at = e->fixed_cut; /* cut once partial + rest >= cut_at */
     uint32_t k, r = 0u;
+    uint32_t next_group = 0u;     /* row order: index of the next group to start */
 
     e->positions++;
     if (e->use_ref && e->have_ref) {
         /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
         bool before = y < e->ref.y || (y == e->ref.y && x < e->ref.x);
-        cut_at = e->ref.sad + (before ? 1u : 0u);
-    }
-    if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_FIXED &&
-        cfg->fixed_threshold < cut_at - 1u) {
-        cut_at = cfg->fixed_threshold + 1u; /* cut when partial > T */
+        uint64_t lim = e->ref.sad + (before ? 1u : 0u);
+        if (lim < cut_at) {
+            cut_at = lim;
+        }
     }
     if (cut_at == 0u) { /* nothing can beat a perfect match before it */
         note_cut(e, x, y, 0u, 0u);
@@ -181,17 +198,29 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         if (err != SSDA_OK) {
             return err;
         }
-        if (u8) {
-            partial += ssda_sad_row_u8(ap, wp, e->L);
-        } else {
-            partial += ssda_sad_row_u16((const uint16_t *)(const void *)ap,
-                                        (const uint16_t *)(const void *)wp, e->L);
-        }
-        e->ops += e->L;
-        if (rest != 0u && r % e->group == 0u && r / e->group < e->ngroups) {
-            /* row order: a group leaves the bound once its first row is summed,
+        if (rest != 0u && r == next_group * e->group && next_group < e->ngroups) {
+            /* row order: a group leaves the bound when its first row is summed,
                so rest only covers groups with no row in partial */
-            rest -= e->term[r / e->group];
+            rest -= e->term[next_group];
+            next_group++;
+        }
+        if (k == 0u && e->L >= 2u * SSDA_FIRST_ROW_CHUNK) {
+            /* Most placements are cut on their first row: test it in chunks. */
+            uint32_t done = 0u;
+            while (done < e->L) {
+                uint32_t n = e->L - done < SSDA_FIRST_ROW_CHUNK ? e->L - done : SSDA_FIRST_ROW_CHUNK;
+                partial += row_sad(e, ap + (size_t)done * e->area->format,
+                                   wp + (size_t)done * e->area->format, n);
+                e->ops += n;
+                done += n;
+                if (done < e->L && partial + rest >= cut_at) {
+                    note_cut(e, x, y, partial, done);
+                    return 0;
+                }
+            }
+        } else {
+            partial += row_sad(e, ap, wp, e->L);
+            e->ops += e->L;
         }
         r += e->row_step;
         if (r >= e->M) {
@@ -534,6 +563,13 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
         e.row_step = s;
     }
     e.bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+    e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
+    e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
+    e.fixed_cut = UINT64_MAX;
+    if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
+        e.fixed_cut = cfg->fixed_threshold + 1u;
+    }
     e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
