@@ -1,0 +1,72 @@
+/* stream_match.c - one SSDA search with the area and/or the window streamed:
+   checks, plate shapes for the scan, then the engine over row sources. */
+#include "stream_internal.h"
+
+/* Narrowest plate each streamed operand needs: the widest span the engine
+   fetches from it (whole area rows when it builds bounds). */
+static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
+                          const ssda_rect_t *w)
+{
+    return (cfg->flags & SSDA_MATCH_BOUNDS) != 0u ? a->width : w->width;
+}
+
+static bool fits(const ssda_source_t *s, uint32_t span)
+{
+    return s->view != NULL || stream_plate_fit_h(s, span) >= 1u;
+}
+
+int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
+                      ssda_source_t *window, const ssda_rect_t *window_rect,
+                      const ssda_match_config_t *cfg, ssda_match_result_t *result)
+{
+    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
+    ssda_rect_t ar, wr;
+    ssda_rows_t a, w;
+    stream_rows_ctx_t actx, wctx;
+    int err;
+
+    if (area == NULL || window == NULL || result == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!stream_ready(area) || !stream_ready(window)) {
+        return SSDA_ERR_STATE;
+    }
+    if (area == window && area->view == NULL) {
+        return SSDA_ERR_ARG; /* one plate cannot hold both operands' rows */
+    }
+    err = stream_rect(area, area_rect, &ar);
+    if (err == SSDA_OK) {
+        err = stream_rect(window, window_rect, &wr);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (area->cfg.format != window->cfg.format) {
+        return SSDA_ERR_FORMAT;
+    }
+    if (wr.width > ar.width || wr.height > ar.height) {
+        return SSDA_ERR_SIZE;
+    }
+    if (cfg == NULL) {
+        cfg = &defaults;
+    }
+    err = ssda_match_check_config(cfg, ar.width, ar.height, wr.width, wr.height);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (!fits(area, area_span(cfg, &ar, &wr)) || !fits(window, wr.width)) {
+        return SSDA_ERR_BUFFER;
+    }
+    if (area->view == NULL) {
+        /* The raster scan revisits a band of window-height rows moving
+           down; the other scans jump around the whole area. */
+        uint32_t rows = cfg->scan == (uint8_t)SSDA_SCAN_RASTER ? wr.height : ar.height;
+        (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr), rows, wr.height - 1u);
+    }
+    if (window->view == NULL) {
+        (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u);
+    }
+    stream_rows_make(&a, &actx, area, &ar);
+    stream_rows_make(&w, &wctx, window, &wr);
+    return ssda_match_rows(&a, &w, cfg, result);
+}
