@@ -404,7 +404,8 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     y = H - bottom + 24.0;
     x = 12.0;
     {
-        static const char *names[DRAW_STATUS_COUNT] = {"vector", "excluded (no texture)",
+        static const char *names[DRAW_STATUS_COUNT] = {"vector",
+                                                        "excluded (all dark or all bright)",
                                                         "masked (fill value)",
                                                         "edge (area leaves image)"};
         for (i = 0; i < DRAW_STATUS_COUNT; i++) {
@@ -634,7 +635,8 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
             cairo_stroke(cr);
         }
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text_at(cr, L + 6, WT + 13, 11, 0, "waveform (scaled to its peak)");
+        text_at(cr, L - 8 - text_width(cr, 11, 0, "waveform"), WT + WH / 2 + 4, 11, 0,
+                "waveform");
     }
 
     /* Tracks, clipped to the plot. */
@@ -723,7 +725,8 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
             cairo_line_to(cr, lx + 28, ly + 18);
             cairo_stroke(cr);
             cairo_set_source_rgb(cr, 0, 0, 0);
-            text_at(cr, lx + 36, ly + 22, 12, 0, "reference");
+            text_at(cr, lx + 36, ly + 22, 12, 0,
+                    o->reference_label != NULL ? o->reference_label : "reference");
         }
     }
 #undef PX

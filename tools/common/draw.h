@@ -72,6 +72,7 @@ typedef struct {
     const char *subtitle;       /* NULL for none */
     draw_track_t estimate;      /* drawn as dots joined within voiced runs */
     draw_track_t reference;     /* n = 0 for none; drawn as a wide pale band */
+    const char *reference_label; /* legend text (NULL = "reference") */
     const int16_t *samples;     /* waveform under the plot; NULL for none */
     size_t sample_count;
     uint32_t sample_rate;       /* Hz, needed with samples */
