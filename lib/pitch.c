@@ -55,6 +55,9 @@ int ssda_pitch_reset(ssda_pitch_t *p)
     p->skip = 0u;
     p->frame = 0u;
     p->predict_lag = 0u;
+    p->lp1_q15 = 0;
+    p->lp2_q15 = 0;
+    p->lp_primed = false;
     return SSDA_OK;
 }
 
@@ -68,6 +71,22 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     }
     *info = p->info;
     return SSDA_OK;
+}
+
+/* Pass n samples through the low-pass into out (NULL: filter only). */
+static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, size_t n)
+{
+    size_t i;
+    if (n > 0u && !p->lp_primed) {
+        ssda_pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
+        p->lp_primed = true;
+    }
+    for (i = 0u; i < n; i++) {
+        int16_t y = ssda_pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
+        if (out != NULL) {
+            out[i] = y;
+        }
+    }
 }
 
 int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
@@ -85,19 +104,31 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
     while (used < count) {
         size_t take;
         if (p->skip > 0u) {
-            /* hop > span: samples between two frames are never analysed */
+            /* hop > span: samples between two frames are not analysed, but
+               still pass through the filter so its state stays continuous */
             take = count - used < p->skip ? count - used : p->skip;
+            if (p->info.lowpass_q15 != 0u) {
+                filter_samples(p, samples + used, NULL, take);
+            }
             p->skip -= (uint32_t)take;
             used += take;
             continue;
         }
         take = count - used < span - p->fill ? count - used : span - p->fill;
-        memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
+        if (p->info.lowpass_q15 != 0u) {
+            filter_samples(p, samples + used, p->buf + p->fill, take);
+        } else {
+            memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
+        }
         p->fill += (uint32_t)take;
         used += take;
         if (p->fill == span) {
             ssda_pitch_analyze(&p->info, p->buf, p->predict_lag, est);
-            est->frame = p->frame++;
+            est->frame = p->frame;
+            /* wraps modulo 2^32 by design (unsigned) */
+            est->center = p->frame * p->info.hop +
+                          (est->silent ? span / 2u : (p->info.frame_len + est->lag) / 2u);
+            p->frame++;
             p->predict_lag = est->voiced ? est->lag : 0u;
             if (p->info.hop < span) {
                 p->fill = span - p->info.hop;

@@ -2,7 +2,8 @@
    defaults (shared by ssda_pitch_init and ssda_pitch_buffer_size). */
 #include "pitch_internal.h"
 
-#define KNOWN_FLAGS (SSDA_PITCH_TRACK | SSDA_PITCH_FULL)
+#define KNOWN_FLAGS \
+    (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC)
 
 int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 {
@@ -24,7 +25,7 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
         return SSDA_ERR_ARG;
     }
     if (cfg->threshold_q15 > 32767u || cfg->voicing_q15 > 32767u ||
-        (cfg->flags & ~KNOWN_FLAGS) != 0u) {
+        cfg->lowpass_hz > rate / 4u || (cfg->flags & ~KNOWN_FLAGS) != 0u) {
         return SSDA_ERR_ARG;
     }
 
@@ -49,6 +50,13 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
     r.voicing_q15 = cfg->voicing_q15 != 0u ? cfg->voicing_q15 : r.threshold_q15;
     r.silence_mad = cfg->silence_mad != 0u ? cfg->silence_mad
                                            : (uint16_t)SSDA_PITCH_DEFAULT_SILENCE_MAD;
+    if ((cfg->flags & SSDA_PITCH_NO_FILTER) != 0u) {
+        r.lowpass_hz = 0u;
+        r.lowpass_q15 = 0u;
+    } else {
+        r.lowpass_hz = (uint16_t)(cfg->lowpass_hz != 0u ? cfg->lowpass_hz : f0_max);
+        r.lowpass_q15 = ssda_pitch_lowpass_coef_q15(r.lowpass_hz, rate);
+    }
     r.flags = cfg->flags;
     *info = r;
     return SSDA_OK;

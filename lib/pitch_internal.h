@@ -11,6 +11,20 @@
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
 int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
 
+/* Re-arming level for a threshold (Q15): threshold * 3 / 2, at most 32767. */
+#define ssda_pitch_rearm_q15(thr) \
+    ((uint32_t)(thr) + (uint32_t)(thr) / 2u < 32767u ? (uint32_t)(thr) + (uint32_t)(thr) / 2u : 32767u)
+
+/* Low-pass coefficient a = round(32768 * w / (1 + w)), w = 2 pi fc / rate,
+   with 2 pi taken as 411775 / 65536; fc <= rate / 4 gives 1..20020. */
+uint16_t ssda_pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz);
+
+/* One sample through the two low-pass poles (states in Q15, see pitch.h). */
+int16_t ssda_pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int16_t in);
+
+/* Start both low-pass states at one sample value. */
+void ssda_pitch_lowpass_prime(int32_t *y1_q15, int32_t *y2_q15, int16_t in);
+
 /* Frame mean as defined in pitch.h:
    floor((sum_{i<n} (x[i] + 32768) + floor(n/2)) / n) - 32768, n = 1..8192.
    The offset sum is <= 8192 * 65535 < 2^30. */
@@ -39,10 +53,11 @@ uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
 /*
  * Sub-sample offset of the dip at t*, from the normalised values
  * a = nq(t* - 1), b = nq(t*), c = nq(t* + 1) (Q20, 0..2^20):
- * round_half_away(65536 * (a - c) / (2 * (a - 2b + c))), 0 if
- * a - 2b + c <= 0, clamped to [-32768, 32768]. Q16.16 samples.
+ * round_half_away(65536 * (a - c) / den) with den = 2 (max(a, c) - b) (V
+ * fit) or 2 (a - 2b + c) (parabolic); 0 if den <= 0; clamped to
+ * [-32768, 32768]. Q16.16 samples.
  */
-int32_t ssda_pitch_parabola_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20);
+int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic);
 
 /* floor(2^20 * d / s), s > 0, d <= s: Q20 in 0..2^20. */
 uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s);

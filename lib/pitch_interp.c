@@ -1,5 +1,5 @@
-/* pitch_interp.c - sub-sample period by integer parabolic interpolation,
-   and the period-to-f0 conversion. */
+/* pitch_interp.c - sub-sample period by integer interpolation (V-shaped or
+   parabolic fit), and the period-to-f0 conversion. */
 #include "pitch_internal.h"
 
 uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s)
@@ -8,12 +8,12 @@ uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s)
     return (uint32_t)(((uint64_t)d << 20) / s);
 }
 
-int32_t ssda_pitch_parabola_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20)
+int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic)
 {
-    /* a, b, c <= 2^20: curvature |a - 2b + c| <= 2^22, |a - c| <= 2^20,
-       numerator 65536 * (a - c) <= 2^36 in int64_t. */
+    /* a, b, c <= 2^20: |den| <= 2^23, |a - c| <= 2^20, numerator
+       65536 * (a - c) <= 2^36 in int64_t. */
     int64_t a = (int64_t)a_q20, b = (int64_t)b_q20, c = (int64_t)c_q20;
-    int64_t den = 2 * (a - 2 * b + c);
+    int64_t den = parabolic ? 2 * (a - 2 * b + c) : 2 * ((a > c ? a : c) - b);
     int64_t num = 65536 * (a - c);
     int64_t q;
     if (den <= 0) {

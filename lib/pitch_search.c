@@ -122,7 +122,11 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     /* The open run under the threshold: its minimum and neighbours. */
     lag_value_t run = {0u, 1u, false}, run_left = {0u, 1u, false}, run_right = {0u, 1u, false};
     uint32_t run_lag = 0u;
-    bool in_run = false, run_need_right = false;
+    bool in_run = false, run_need_right = false, run_armed = false;
+    /* Armed: a peak n > rearm was seen since the last run began (at the
+       start: n(lag_min - 1) > threshold), so the next run is a real dip. */
+    const uint32_t rearm = ssda_pitch_rearm_q15(thr);
+    bool armed;
     /* The chosen lag. */
     uint32_t t_lag = 0u;
     lag_value_t t_left = {0u, 1u, false}, t_mid = {0u, 1u, false}, t_right = {0u, 1u, false};
@@ -152,10 +156,12 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
         pred_v = best;
     }
 
-    /* lag_min - 1 is only a neighbour: needed exactly when n <= threshold. */
+    /* lag_min - 1 is only a neighbour and the first arming test: needed
+       exactly when n <= threshold. */
     b_sum = ssda_pitch_level(x + lag_min - 1u, k, mean);
     prev = evaluate(&f, lag_min - 1u, f.level + b_sum,
                     full ? NO_BOUND : threshold_bound(thr, f.level + b_sum));
+    armed = !(prev.exact && n_at_most_q15(&prev, thr));
 
     for (lag = lag_min; lag <= lag_max + 1u; lag++) {
         const bool candidate = lag <= lag_max;
@@ -169,7 +175,9 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
         } else {
             uint32_t bound = NO_BOUND;
             if (!full) {
-                bound = threshold_bound(thr, s);
+                /* Exact when n <= threshold; when not armed, also exact up
+                   to the re-arming level, so a cut proves n > rearm. */
+                bound = threshold_bound(armed || !candidate ? thr : rearm, s);
                 if (candidate) {
                     uint32_t bb;
                     if (best_lag == 0u) {
@@ -213,6 +221,10 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
         }
 
         if (candidate && cur.exact && n_at_most_q15(&cur, thr)) {
+            if (!in_run) {
+                run_armed = armed; /* the run uses up the arming */
+                armed = false;
+            }
             if (!in_run || n_less(&cur, &run)) {
                 run = cur;
                 run_lag = lag;
@@ -221,10 +233,9 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
             }
             in_run = true;
         } else if (in_run) {
-            /* The run ended at lag - 1. Its minimum is a dip unless it is a
-               range edge that is not a minimum (see pitch.h). */
-            bool valid = (run_lag != lag_min || n_less(&run, &run_left)) &&
-                         (run_lag != lag_max || !n_less(&run_right, &run));
+            /* The run ended at lag - 1. It is a dip if it was entered from a
+               peak, and its minimum is not a lag_max that still falls. */
+            bool valid = run_armed && (run_lag != lag_max || !n_less(&run_right, &run));
             in_run = false;
             if (valid && !found) {
                 found = true;
@@ -236,6 +247,9 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                     break; /* no later lag can change the choice */
                 }
             }
+        }
+        if (!in_run && !armed && candidate && !(cur.exact && n_at_most_q15(&cur, rearm))) {
+            armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
         }
         prev = cur;
     }
@@ -253,14 +267,14 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     q_a = ssda_pitch_norm_q20(t_left.d, t_left.s);
     q_b = ssda_pitch_norm_q20(t_mid.d, t_mid.s);
     q_c = ssda_pitch_norm_q20(t_right.d, t_right.s);
-    delta = ssda_pitch_parabola_q16(q_a, q_b, q_c);
+    delta = ssda_pitch_interp_q16(q_a, q_b, q_c, (info->flags & SSDA_PITCH_PARABOLIC) != 0u);
     /* t_lag <= 4800: 65536 * t_lag + delta < 2^29 */
     est->lag = t_lag;
     est->period_q16 = (uint32_t)((int32_t)(t_lag << 16) + delta);
     est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
     n_q15 = (uint32_t)(((uint64_t)t_mid.d << 15) / t_mid.s); /* 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
-    est->voiced = n_at_most_q15(&t_mid, info->voicing_q15);
+    est->voiced = found && n_at_most_q15(&t_mid, info->voicing_q15);
     est->dip = found;
     est->silent = false;
     est->diffs = f.diffs;

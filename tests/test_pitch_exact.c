@@ -42,6 +42,27 @@ static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uin
     return count;
 }
 
+static int16_t g_filtered[SIG_MAX];
+
+/* The input low-pass as include/ssda/pitch.h defines it, written from that
+   text: a = round(32768 w / (1 + w)), w = 2 pi fc / rate (2 pi = 411775 /
+   65536); states start at 32768 x[0]; per pole
+   y += trunc(a (32768 in - y) / 32768); output floor((y2 + 16384) / 32768). */
+static void reference_lowpass(const int16_t *x, int16_t *y, uint32_t n, uint32_t fc,
+                              uint32_t rate)
+{
+    int64_t w = 411775 * (int64_t)fc, den = (int64_t)rate * 65536 + w;
+    int64_t a = (w * 32768 + den / 2) / den, y1 = (int64_t)x[0] * 32768, y2 = y1;
+    uint32_t i;
+    for (i = 0; i < n; i++) {
+        int64_t t;
+        y1 += a * ((int64_t)x[i] * 32768 - y1) / 32768; /* C99 division truncates */
+        y2 += a * (y1 - y2) / 32768;
+        t = y2 + 16384;
+        y[i] = (int16_t)(t >= 0 ? t / 32768 : -((-t + 32767) / 32768));
+    }
+}
+
 /* Every estimate equals the reference on its own span of samples. */
 static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const int16_t *x,
                                         uint32_t n)
@@ -59,8 +80,13 @@ static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const in
     rc.threshold_q15 = info.threshold_q15;
     rc.voicing_q15 = info.voicing_q15;
     rc.silence_mad = info.silence_mad;
+    rc.parabolic = (info.flags & SSDA_PITCH_PARABOLIC) != 0u;
     count = run_stream(cfg, x, n, g_est);
     TEST_ASSERT_EQUAL_UINT32((n - info.span) / info.hop + 1u, count);
+    if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
+        reference_lowpass(x, g_filtered, n, info.lowpass_hz, info.sample_rate_hz);
+        x = g_filtered;
+    }
     for (f = 0; f < count; f++) {
         test_pitch_ref_t r;
         test_pitch_reference(x + f * info.hop, &rc, &r);
@@ -87,8 +113,11 @@ static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const in
 static void check_all_modes(ssda_pitch_config_t cfg, const int16_t *x, uint32_t n)
 {
     static const uint16_t chunks[] = {0u, 1u, 7u, 64u};
-    static const uint8_t flags[] = {0u, SSDA_PITCH_TRACK, SSDA_PITCH_FULL,
-                                    SSDA_PITCH_TRACK | SSDA_PITCH_FULL};
+    static const uint8_t flags[] = {SSDA_PITCH_NO_FILTER, SSDA_PITCH_NO_FILTER | SSDA_PITCH_TRACK,
+                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_FULL,
+                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_TRACK | SSDA_PITCH_FULL,
+                                    0u, SSDA_PITCH_TRACK, SSDA_PITCH_PARABOLIC,
+                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC | SSDA_PITCH_TRACK};
     uint32_t i, j;
     for (i = 0; i < sizeof flags; i++) {
         for (j = 0; j < sizeof chunks / sizeof chunks[0]; j++) {
@@ -165,7 +194,8 @@ static void test_thresholds_and_random_configs_match_reference(void)
         cfg.voicing_q15 = (uint16_t)test_rng_range(&r, 0u, 20000u);
         cfg.silence_mad = (uint16_t)test_rng_range(&r, 0u, 300u);
         cfg.chunk = (uint16_t)test_rng_range(&r, 0u, 16u);
-        cfg.flags = (uint8_t)test_rng_range(&r, 0u, 3u);
+        cfg.flags = (uint8_t)test_rng_range(&r, 0u, 15u);
+        cfg.lowpass_hz = (uint16_t)(test_rng_range(&r, 0u, 1u) * test_rng_range(&r, 100u, 2000u));
         if (trial % 3u == 0u) {
             test_voice_sine(&v, 80.0 + 40.0 * trial, 6000.0);
         } else {
@@ -228,6 +258,7 @@ static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info)
     rc.threshold_q15 = info->threshold_q15;
     rc.voicing_q15 = info->voicing_q15;
     rc.silence_mad = info->silence_mad;
+    rc.parabolic = (info->flags & SSDA_PITCH_PARABOLIC) != 0u;
     return rc;
 }
 

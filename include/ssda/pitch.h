@@ -28,12 +28,18 @@
  *     (ties: the smallest lag).
  * Taking the first dip instead of the global minimum avoids the sub-octave
  * errors of plain AMDF (its minimum also falls on 2T, 3T, ...).
- * Sub-sample period: parabolic interpolation through
- * a, b, c = floor(2^20 * n(t* - 1, t*, t* + 1)):
- *   delta_q16 = round_half_away(65536 * (a - c) / (2 * (a - 2b + c))),
- *   0 if a - 2b + c <= 0, clamped to [-32768, 32768] (half a sample);
+ * Sub-sample period: integer interpolation through the values
+ * a, b, c = floor(2^20 * n(t* - 1, t*, t* + 1)) with
+ *   den = 2 * (max(a, c) - b)   (default: a symmetric V, the shape of an
+ *                                absolute-difference dip; exact for it)
+ *   den = 2 * (a - 2b + c)      (SSDA_PITCH_PARABOLIC: a parabola, the
+ *                                shape of a squared-difference dip)
+ *   delta_q16 = round_half_away(65536 * (a - c) / den), 0 if den <= 0,
+ *   clamped to [-32768, 32768] (half a sample);
  *   period_q16 = 65536 * t* + delta_q16,
- *   f0_q16     = floor((rate << 32) / period_q16 + 1/2).
+ *   f0_q16     = floor(((rate << 32) + floor(period_q16 / 2)) / period_q16).
+ * docs/pitch.md compares the two fits (the V fit has the smaller fine error
+ * on steady tones, they tie on sung voice).
  * Voiced when not silent and n(t*) <= voicing threshold (compared exactly).
  *
  * EXACTNESS: every output except the work counters (lag, period_q16, f0_q16,
@@ -62,8 +68,25 @@
  *   too: a partial sum never exceeds its bound by more than one chunk
  *   (chunk * 65535), so the early exit itself bounds the accumulator.
  *
+ * Input filter: unless SSDA_PITCH_NO_FILTER, pushed samples pass through two
+ * cascaded one-pole low-pass filters before analysis (as the AMDF extractor
+ * of Ross et al. filtered at 900 Hz). High harmonics of bright sources then
+ * no longer spoil the dip at integer lags near a fractional period, which
+ * otherwise makes a multiple of the period win (measured in docs/pitch.md).
+ * Each pole, with y in Q15 (samples * 2^15) and a = lowpass_q15:
+ *   y += trunc(a * (32768 * in - y) / 32768)      (int64 product, exact)
+ *   a  = round(32768 * w / (1 + w)), w = 2 pi lowpass_hz / rate
+ * and the analysed sample is floor((y2 + 16384) / 32768). Both states start
+ * at 32768 * (the first sample after init/reset), so a constant input comes
+ * out unchanged from the start. y stays a convex combination of inputs, so
+ * |y| <= 32768 * 2^15 and the output is int16.
+ * Everything said above about exactness concerns the analysed samples.
+ *
  * Time: estimate number f (from 0 after init/reset) analyses stream samples
  * [f * hop, f * hop + span); its reference segment is the first K of them.
+ * The chosen lag t* compares samples [f * hop, f * hop + K + t*), so the
+ * estimate belongs to their centre, f * hop + (K + t*) / 2 (est->center):
+ * using span / 2 instead costs several cents of fine error under vibrato.
  */
 #ifndef SSDA_PITCH_H
 #define SSDA_PITCH_H
@@ -84,13 +107,15 @@ extern "C" {
 /* Defaults (used where a config field is 0). */
 #define SSDA_PITCH_DEFAULT_F0_MIN 50u           /* Hz */
 #define SSDA_PITCH_DEFAULT_F0_MAX 1000u         /* Hz */
-#define SSDA_PITCH_DEFAULT_THRESHOLD_Q15 6554u  /* 0.20 */
+#define SSDA_PITCH_DEFAULT_THRESHOLD_Q15 9830u  /* 0.30 */
 #define SSDA_PITCH_DEFAULT_SILENCE_MAD 16u      /* mean |x - m| in LSB, about -66 dBFS */
 #define SSDA_PITCH_DEFAULT_CHUNK 32u            /* samples between early-exit tests */
 
 /* Flags. */
-#define SSDA_PITCH_TRACK 0x01u /* predict from the previous voiced lag (less work, same results) */
-#define SSDA_PITCH_FULL  0x02u /* no early exit: every lag summed in full (the reference) */
+#define SSDA_PITCH_TRACK     0x01u /* predict from the previous voiced lag (less work, same results) */
+#define SSDA_PITCH_FULL      0x02u /* no early exit: every lag summed in full (the reference) */
+#define SSDA_PITCH_NO_FILTER 0x04u /* analyse the samples as pushed, without the low-pass */
+#define SSDA_PITCH_PARABOLIC 0x08u /* parabolic instead of V-shaped sub-sample fit */
 
 /* Internal: f0_min after defaulting. */
 #define SSDA_PITCH_F0_MIN_(f0_min_hz) \
@@ -135,7 +160,10 @@ typedef struct {
                                 1..65535 (0 = 16; 1 = only constant frames) */
     uint16_t chunk;          /* samples summed between early-exit tests: 1..K (0 = 32,
                                 or K if smaller). Changes work only, not results */
-    uint8_t flags;           /* SSDA_PITCH_TRACK, SSDA_PITCH_FULL, or 0 */
+    uint16_t lowpass_hz;     /* cutoff of the input low-pass, Hz: 1..rate / 4
+                                (0 = f0_max); see "Input filter" above */
+    uint8_t flags;           /* SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER
+                                | SSDA_PITCH_PARABOLIC */
 } ssda_pitch_config_t;
 
 /* The resolved parameters (every default filled in). */
@@ -152,6 +180,8 @@ typedef struct {
     uint16_t threshold_q15;
     uint16_t voicing_q15;
     uint16_t silence_mad;
+    uint16_t lowpass_hz;     /* 0 when SSDA_PITCH_NO_FILTER */
+    uint16_t lowpass_q15;    /* the filter's coefficient a, Q15 (0 = no filter) */
     uint8_t flags;
 } ssda_pitch_info_t;
 
@@ -159,6 +189,9 @@ typedef struct {
 typedef struct {
     uint32_t frame;          /* estimate number since init/reset: covers stream
                                 samples [frame * hop, frame * hop + span) */
+    uint32_t center;         /* stream sample at the centre of the samples the
+                                chosen lag compares: frame * hop + (K + lag) / 2
+                                (frame * hop + span / 2 when silent), mod 2^32 */
     uint32_t lag;            /* t*, samples; 0 when silent */
     uint32_t period_q16;     /* period, samples, Q16.16; 0 when silent */
     uint32_t f0_q16;         /* rate / period, Hz, Q16.16; 0 when silent */
@@ -180,6 +213,9 @@ typedef struct {
     uint32_t skip;           /* input samples still to drop (when hop > span) */
     uint32_t frame;          /* number of the next estimate */
     uint32_t predict_lag;    /* SSDA_PITCH_TRACK: last voiced lag, 0 = none */
+    int32_t lp1_q15;         /* low-pass states, samples * 2^15, within +-2^30 */
+    int32_t lp2_q15;
+    bool lp_primed;          /* states start at the first sample (no start-up step) */
     uint32_t magic;          /* set by ssda_pitch_init */
 } ssda_pitch_t;
 
@@ -201,7 +237,8 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
  *   SSDA_ERR_NULL    p, cfg or buffer NULL
  *   SSDA_ERR_ARG     sample rate outside 8000..48000; f0_min < 10,
  *                    f0_max > rate / 4, or f0_min >= f0_max (after defaults);
- *                    threshold_q15 or voicing_q15 > 32767; unknown flags
+ *                    threshold_q15 or voicing_q15 > 32767; lowpass_hz >
+ *                    rate / 4; unknown flags
  *   SSDA_ERR_SIZE    frame_len outside 16..8192; chunk > frame_len
  *   SSDA_ERR_BUFFER  buffer_size too small, or buffer not 2-byte aligned
  */

@@ -51,26 +51,40 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
         g_d[t] = d;
         g_s[t] = s;
     }
-    /* Runs of n <= threshold in [lag_min, lag_max]; first valid one wins. */
-    t = c->lag_min;
-    while (t <= c->lag_max && !found) {
-        uint32_t m;
-        if (!under(t, c->threshold_q15)) {
-            t++;
-            continue;
+    /* Runs of n <= threshold in [lag_min, lag_max]. A run counts when a
+       peak n > rearm lies between the previous run and it (for the first
+       run, n(lag_min - 1) > threshold is enough), and its minimum is not a
+       lag_max beyond which n still falls. The first such run wins. */
+    {
+        uint32_t rearm = c->threshold_q15 + c->threshold_q15 / 2u;
+        bool peak = !under(c->lag_min - 1u, c->threshold_q15);
+        if (rearm > 32767u) {
+            rearm = 32767u;
         }
-        run_start = t;
-        m = t;
-        while (t <= c->lag_max && under(t, c->threshold_q15)) {
-            if (less(t, m)) {
-                m = t;
+        t = c->lag_min;
+        while (t <= c->lag_max && !found) {
+            uint32_t m;
+            if (!under(t, c->threshold_q15)) {
+                if (!under(t, rearm)) {
+                    peak = true;
+                }
+                t++;
+                continue;
             }
-            t++;
-        }
-        (void)run_start;
-        if ((m != c->lag_min || less(m, m - 1u)) && (m != c->lag_max || !less(m + 1u, m))) {
-            chosen = m;
-            found = true;
+            run_start = t;
+            m = t;
+            while (t <= c->lag_max && under(t, c->threshold_q15)) {
+                if (less(t, m)) {
+                    m = t;
+                }
+                t++;
+            }
+            (void)run_start;
+            if (peak && (m != c->lag_max || !less(m + 1u, m))) {
+                chosen = m;
+                found = true;
+            }
+            peak = false;
         }
     }
     if (!found) {
@@ -84,7 +98,11 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
     a = q20(chosen - 1u);
     b = q20(chosen);
     cc = q20(chosen + 1u);
-    den = 2 * (a - 2 * b + cc);
+    if (c->parabolic) {
+        den = 2 * (a - 2 * b + cc);
+    } else {
+        den = 2 * ((a > cc ? a : cc) - b);
+    }
     num = 65536 * (a - cc);
     if (den <= 0) {
         delta = 0;
@@ -103,7 +121,7 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
         int64_t nq15 = g_d[chosen] * 32768 / g_s[chosen];
         out->confidence_q15 = (uint16_t)(nq15 >= 32767 ? 0 : 32767 - nq15);
     }
-    out->voiced = under(chosen, c->voicing_q15);
+    out->voiced = found && under(chosen, c->voicing_q15);
     out->dip = found;
     out->silent = false;
 }

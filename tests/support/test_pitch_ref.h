@@ -14,6 +14,7 @@
 typedef struct {
     uint32_t rate, lag_min, lag_max, frame_len;
     uint32_t threshold_q15, voicing_q15, silence_mad;
+    bool parabolic;  /* sub-sample fit: parabola instead of V */
 } test_pitch_ref_cfg_t;
 
 typedef struct {
