@@ -82,6 +82,7 @@ typedef struct {
     png_structp png;
     png_infop info;
     png_bytepp rows;       /* interlaced images: every decoded row */
+    size_t nrows;          /* entries of rows */
     png_bytep row;         /* non-interlaced: one decoded row */
     gray_image_t out;
     png_err_ctx_t ectx;
@@ -202,6 +203,7 @@ static int read_protected(png_reader_t *r, png_gray_depth_t depth)
             snprintf(r->why, sizeof r->why, "out of memory");
             return -1;
         }
+        r->nrows = h;
         for (y = 0; y < h; y++) {
             if ((r->rows[y] = malloc(rowbytes)) == NULL) {
                 snprintf(r->why, sizeof r->why, "out of memory");
@@ -233,7 +235,7 @@ static void reader_release(png_reader_t *r)
 {
     if (r->rows != NULL) {
         size_t y;
-        for (y = 0; y < r->out.height; y++) {
+        for (y = 0; y < r->nrows; y++) {
             free(r->rows[y]);
         }
         free(r->rows);
