@@ -21,12 +21,13 @@ static const char help[] =
     "  --fmax HZ        highest f0 searched (default 1000, at most rate/4)\n"
     "  --hop-ms MS      time between estimates (default 10)\n"
     "  --frame-ms MS    samples summed per lag, as time (default one period of fmin)\n"
-    "  --threshold N    dip threshold on the normalised difference, 0..1 (default 0.2)\n"
+    "  --threshold N    dip threshold on the normalised difference, 0..1 (default 0.3)\n"
     "  --voicing N      voiced when the dip is below N, 0..1 (default: --threshold)\n"
     "  --full           no early exit: every lag summed in full (the reference;\n"
     "                   same results, more work)\n"
-    "  --csv FILE|-     write time_s,f0_hz,voiced,confidence rows (f0 0 when unvoiced;\n"
-    "                   time = centre of each frame's reference segment)\n"
+    "  --csv FILE|-     write time_s,f0_hz,voiced,confidence,center_s rows (f0 0 when\n"
+    "                   unvoiced; time_s = centre of the frame, center_s = centre of\n"
+    "                   the samples its chosen lag compared)\n"
     "  --plot OUT.png   draw the f0 track over time, with the waveform\n"
     "  --ref REF.csv    a reference track (time_s,f0_hz rows after a header): drawn\n"
     "                   in the plot and scored (GPE, VDE, fine error in cents)\n"
@@ -44,10 +45,10 @@ static int cmp_double(const void *a, const void *b)
 static void write_csv(FILE *f, const pitch_track_t *tr)
 {
     size_t i;
-    fprintf(f, "time_s,f0_hz,voiced,confidence\n");
+    fprintf(f, "time_s,f0_hz,voiced,confidence,center_s\n");
     for (i = 0; i < tr->n; i++) {
-        fprintf(f, "%.6f,%.3f,%d,%.4f\n", tr->t[i], tr->f0[i], tr->voiced[i],
-                tr->confidence_q15[i] / 32768.0);
+        fprintf(f, "%.6f,%.3f,%d,%.4f,%.6f\n", tr->t_frame[i], tr->f0[i], tr->voiced[i],
+                tr->confidence_q15[i] / 32768.0, tr->t[i]);
     }
 }
 

@@ -23,6 +23,7 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
 void pitch_track_free(pitch_track_t *tr)
 {
     free(tr->t);
+    free(tr->t_frame);
     free(tr->f0);
     free(tr->f0_raw);
     free(tr->confidence_q15);
@@ -35,6 +36,10 @@ static int track_grow(pitch_track_t *tr, size_t cap)
     double *t = realloc(tr->t, cap * sizeof *t);
     if (t != NULL) {
         tr->t = t;
+    }
+    double *tf = realloc(tr->t_frame, cap * sizeof *tf);
+    if (tf != NULL) {
+        tr->t_frame = tf;
     }
     double *f = realloc(tr->f0, cap * sizeof *f);
     if (f != NULL) {
@@ -52,7 +57,8 @@ static int track_grow(pitch_track_t *tr, size_t cap)
     if (v != NULL) {
         tr->voiced = v;
     }
-    return t != NULL && f != NULL && fr != NULL && c != NULL && v != NULL ? 0 : -1;
+    return t != NULL && tf != NULL && f != NULL && fr != NULL && c != NULL && v != NULL ? 0
+                                                                                     : -1;
 }
 
 int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config_t *cfg,
@@ -133,7 +139,12 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
                     goto done;
                 }
             }
-            tr.t[tr.n] = ((double)est.frame * tr.info.hop + tr.info.frame_len / 2.0) / arate;
+            /* est.center is frame * hop + (its offset) mod 2^32: keep the offset
+               exact and add the frame start in double (long files) */
+            tr.t[tr.n] = ((double)est.frame * tr.info.hop +
+                          (double)(uint32_t)(est.center - est.frame * tr.info.hop)) /
+                         arate;
+            tr.t_frame[tr.n] = ((double)est.frame * tr.info.hop + tr.info.span / 2.0) / arate;
             tr.f0_raw[tr.n] = est.f0_q16 / 65536.0;
             tr.f0[tr.n] = est.voiced ? tr.f0_raw[tr.n] : 0.0;
             tr.voiced[tr.n] = est.voiced ? 1u : 0u;

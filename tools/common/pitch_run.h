@@ -11,10 +11,16 @@
 #include "progress.h"
 #include "ssda/pitch.h"
 
-/* One analysed signal. Frame i is stamped at the centre of its K-sample
-   reference segment: t[i] = (i * hop + K / 2) / rate seconds. */
+/* One analysed signal. Frame i has two time stamps, in seconds:
+   t:       the library's centre of the samples its chosen lag compares,
+            i * hop + (K + lag) / 2 (the span's centre when silent): the most
+            precise, used for scoring and plots, but not always increasing
+            (a lag that drops by more than 2 hops between frames steps back);
+   t_frame: the centre of the frame's span, i * hop + span / 2: increasing,
+            for tables (the CSV's time_s). */
 typedef struct {
     double *t;            /* seconds, n entries (malloc'ed) */
+    double *t_frame;      /* seconds, n entries */
     double *f0;           /* Hz, 0 when unvoiced */
     double *f0_raw;       /* Hz of the chosen lag even when unvoiced; 0 when silent */
     uint16_t *confidence_q15;
