@@ -68,10 +68,11 @@ int demo_write_truth_csv(const char *path, double secs);
 
 /* Track FIRST -> SECOND in several modes, print the table and the
    accuracy (against wind when not NULL), write overlay_name into the output
-   folder. mask >= 0: fill value. Returns 0 or -1. */
+   folder. mask >= 0: fill value. exclude: the seed's texture rule with the
+   mean of SECOND as the level. Returns 0 or -1. */
 int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t *second,
-               const demo_wind_t *wind, long mask, uint32_t step, const char *overlay_name,
-               const char *label);
+               const demo_wind_t *wind, long mask, uint32_t step, int exclude,
+               const char *overlay_name, const char *label);
 
 /* Pitch of a signal; truth from demo_voice_f0 when synthetic, or a reference
    CSV (may be NULL). Prints the results, writes plot_name. Returns 0 or -1. */

@@ -113,7 +113,7 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
              "px\n            plus a vortex of 3.2 px, so the clouds also turn and shear; they "
              "brighten 4 %%;\n            noise sigma 2",
              p1, p2);
-    if (demo_track(c, &a, &b, &wind, -1, 16, "clouds_overlay.png", label) != 0) {
+    if (demo_track(c, &a, &b, &wind, -1, 16, 1, "clouds_overlay.png", label) != 0) {
         goto done;
     }
     demo_heading(c, "2. Pitch with the AMDF and SSDA early exit (the seed's appendix)");
@@ -172,10 +172,13 @@ static int run_files(const demo_ctx_t *c, const char *img1, const char *img2, co
             return 2;
         }
         demo_heading(c, "%d. Tracking your image pair", ++part);
-        snprintf(label, sizeof label, "%s (%u x %u, %s) -> %s (%u x %u, %s), as %u-bit gray",
+        snprintf(label, sizeof label,
+                 "%s (%u x %u, %s)\n         -> %s (%u x %u, %s),\n            read as "
+                 "%u-bit gray; every window searched (no texture exclusion:\n            add "
+                 "it with ssda track --exclude)",
                  img1, a.width, a.height, ia.description, img2, b.width, b.height,
                  ib.description, a.bits);
-        rc = demo_track(c, &a, &b, NULL, mask, step, "overlay.png", label);
+        rc = demo_track(c, &a, &b, NULL, mask, step, 0, "overlay.png", label);
         gray_image_free(&a);
         gray_image_free(&b);
         if (rc != 0) {
@@ -191,7 +194,7 @@ static int run_files(const demo_ctx_t *c, const char *img1, const char *img2, co
             return 1;
         }
         demo_heading(c, "%d. Pitch of your sound", ++part);
-        snprintf(label, sizeof label, "%s: %.2f s at %u Hz, %u channel%s (%s)", snd,
+        snprintf(label, sizeof label, "%s:\n            %.2f s at %u Hz, %u channel%s (%s)", snd,
                  (double)s.count / s.rate, s.rate, wi.channels, wi.channels > 1 ? "s mixed" : "",
                  wi.format_name);
         rc = demo_pitch(c, &s, 0, ref, "pitch_plot.png", label);

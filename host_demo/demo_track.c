@@ -94,8 +94,8 @@ static void error_vs_wind(const demo_wind_t *w, const ssda_track_grid_t *g,
 }
 
 int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t *second,
-               const demo_wind_t *wind, long mask, uint32_t step, const char *overlay_name,
-               const char *label)
+               const demo_wind_t *wind, long mask, uint32_t step, int exclude,
+               const char *overlay_name, const char *label)
 {
     ssda_track_config_t cfg;
     ssda_track_grid_t grid;
@@ -111,10 +111,12 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
     memset(run, 0, sizeof run);
     memset(&cfg, 0, sizeof cfg);
     cfg.step_x = cfg.step_y = (uint16_t)step;
-    cfg.flags = SSDA_TRACK_EXCLUDE;
-    cfg.texture_threshold = (uint16_t)mean_level(second, mask);
-    if (cfg.texture_threshold >= gray_image_max(second)) {
-        cfg.texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
+    if (exclude) {
+        cfg.flags = SSDA_TRACK_EXCLUDE;
+        cfg.texture_threshold = (uint16_t)mean_level(second, mask);
+        if (cfg.texture_threshold >= gray_image_max(second)) {
+            cfg.texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
+        }
     }
     if (mask >= 0) {
         cfg.flags |= SSDA_TRACK_MASK;
@@ -153,16 +155,19 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
             goto done;
         }
     }
-    printf("   windows  %u: %u tracked, %u excluded beforehand as all dark or all bright (the "
-           "seed's\n            texture rule), %u masked, %u at the edge (search area leaves "
-           "the image)\n\n",
-           run[0].stats.windows, run[0].stats.ok, run[0].stats.excluded, run[0].stats.masked,
-           run[0].stats.edge);
+    printf("   windows  %u: %u tracked", run[0].stats.windows, run[0].stats.ok);
+    if (exclude) {
+        printf(", %u excluded beforehand as all dark or all bright\n            (the seed's "
+               "texture rule)", run[0].stats.excluded);
+    }
+    printf(", %u masked, %u at the edge (search area leaves the image)\n\n",
+           run[0].stats.masked, run[0].stats.edge);
 
     brute_ops = (double)run[0].stats.pixel_ops;
-    printf("   %-40s %16s %9s %17s%s\n", "mode", "work (pixel ops)", "time",
-           "same as brute", wind ? "   within 1 px of" : "");
-    printf("   %-40s %16s %9s %17s%s\n", "", "", "", "force", wind ? "   the true wind" : "");
+    /* header columns as wide as the rows' fields below */
+    printf("   %-40s %18s %10s%14s%s\n", "mode", "work (pixel ops)", "time",
+           "same as brute", wind ? "     within 1 px of" : "");
+    printf("   %-40s %18s %10s%14s%s\n", "", "", "", "force", wind ? "      the true wind" : "");
     for (i = 0; i < NMODES; i++) {
         size_t same = 0, near = 0, ok = 0;
         for (k = 0; k < grid.count; k++) {
@@ -178,12 +183,12 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
                 near += ch <= 1.0;
             }
         }
-        printf("   %-40s %8.2f M %5.1f %% %7.2f ms %9.1f %%      ", modes[i].name,
+        printf("   %-40s %8.2f M %5.1f %% %7.2f ms %11.1f %%", modes[i].name,
                run[i].stats.pixel_ops / 1e6,
                brute_ops > 0 ? 100.0 * (double)run[i].stats.pixel_ops / brute_ops : 0.0,
                1e3 * run[i].secs, ok ? 100.0 * (double)same / (double)ok : 0.0);
         if (wind != NULL) {
-            printf("   %5.1f %%", ok ? 100.0 * (double)near / (double)ok : 0.0);
+            printf("%17.1f %%", ok ? 100.0 * (double)near / (double)ok : 0.0);
         }
         printf("\n");
     }
