@@ -19,6 +19,7 @@ typedef struct {
 typedef struct {
     const ssda_pitch_info_t *info;
     const int16_t *x;
+    int32_t mean;     /* m */
     uint32_t level;   /* A */
     uint32_t diffs;   /* absolute differences so far: <= (lag_max + 4) * K < 2^26 */
 } frame_t;
@@ -90,6 +91,90 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
     return v < 0 ? (uint32_t)(-v) : (uint32_t)v;
 }
 
+/* The value of any lag, with its scale computed directly. */
+static lag_value_t value_at(frame_t *f, uint32_t lag, uint32_t bound)
+{
+    uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+    return evaluate(f, lag, s, bound);
+}
+
+/* Sub-sample period of the dip at lag, from exact neighbour values. */
+static uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
+                              const lag_value_t *mid, const lag_value_t *right)
+{
+    int32_t delta = ssda_pitch_interp_q16(ssda_pitch_norm_q20(left->d, left->s),
+                                          ssda_pitch_norm_q20(mid->d, mid->s),
+                                          ssda_pitch_norm_q20(right->d, right->s),
+                                          (f->info->flags & SSDA_PITCH_PARABOLIC) != 0u);
+    /* lag <= 4800: 65536 * lag + delta < 2^29 */
+    return (uint32_t)((int32_t)(lag << 16) + delta);
+}
+
+/* The interpolated minimum of the dip through a, b, c (Q20): b - |a - c| / 2
+   for the V fit, b - (a - c)^2 / (8 (a - 2b + c)) for the parabola; >= 0. */
+static uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
+                              const lag_value_t *right)
+{
+    int64_t a = ssda_pitch_norm_q20(left->d, left->s);
+    int64_t b = ssda_pitch_norm_q20(mid->d, mid->s);
+    int64_t c = ssda_pitch_norm_q20(right->d, right->s);
+    int64_t drop; /* (a - c)^2 <= 2^40 */
+    if ((f->info->flags & SSDA_PITCH_PARABOLIC) != 0u) {
+        int64_t den = 8 * (a - 2 * b + c);
+        drop = den > 0 ? (a - c) * (a - c) / den : 0;
+    } else {
+        drop = (a > c ? a - c : c - a) / 2;
+    }
+    return b > drop ? (uint32_t)(b - drop) : 0u;
+}
+
+/*
+ * Octave check (see pitch.h): with P the sub-sample period of the chosen
+ * dip and F its interpolated floor, look at the lags round(k P) - 1 .. + 1
+ * for k = 2, 3, ... up to lag_max; if the smallest n there is below F by
+ * more than the margin (in Q20: nq(m) + margin < F), the dip was a fraction
+ * of the period: move to that lag and check again. Comparing with the
+ * floor, not with n at the integer lag, keeps a dip that is only shallow
+ * because the period falls between two lags. Only lags that could pass are
+ * summed in full (the bound comes from the test itself): still exact.
+ * Returns true and the new lag and value when it moves.
+ */
+static bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20,
+                      uint32_t *new_lag, lag_value_t *new_v)
+{
+    const uint32_t margin_q20 = ((uint32_t)f->info->threshold_q15 / 3u) << 5;
+    const bool full = (f->info->flags & SSDA_PITCH_FULL) != 0u;
+    uint32_t k, limit;
+    if (floor_q20 <= margin_q20) {
+        return false; /* nothing can be deeper by the margin */
+    }
+    limit = floor_q20 - margin_q20; /* wanted: nq < limit */
+    for (k = 2u;; k++) {
+        /* k * period_q16 <= 1200 * 2^29 < 2^40 */
+        uint32_t c = (uint32_t)(((uint64_t)k * period_q16 + 32768u) >> 16);
+        uint32_t lag, found_lag = 0u;
+        lag_value_t found_v = {0u, 1u, false};
+        if (c - 1u > f->info->lag_max) {
+            return false;
+        }
+        for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
+            uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+            /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
+            uint32_t bound = (uint32_t)(((uint64_t)limit * s - 1u) >> 20);
+            lag_value_t v = evaluate(f, lag, s, full ? NO_BOUND : bound);
+            if (v.exact && (found_lag == 0u || n_less(&v, &found_v))) {
+                found_lag = lag;
+                found_v = v;
+            }
+        }
+        if (found_lag != 0u && ssda_pitch_norm_q20(found_v.d, found_v.s) < limit) {
+            *new_lag = found_lag;
+            *new_v = found_v;
+            return true;
+        }
+    }
+}
+
 static void silent_estimate(ssda_pitch_estimate_t *est)
 {
     est->lag = 0u;
@@ -112,8 +197,7 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     frame_t f;
     int32_t mean;
     uint32_t b_sum, lag, pred = 0u;
-    uint32_t q_a, q_b, q_c, n_q15;
-    int32_t delta;
+    uint32_t period, n_q15;
     lag_value_t prev, cur, pred_v;
     /* The best lag so far (global-minimum fallback), with its neighbours. */
     lag_value_t best = {0u, 1u, false}, best_left = {0u, 1u, false}, best_right = {0u, 1u, false};
@@ -136,6 +220,7 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     f.x = x;
     f.diffs = 0u;
     mean = ssda_pitch_mean(x, k);
+    f.mean = mean;
     f.level = ssda_pitch_level(x, k, mean);
     /* silence_mad * K <= 65535 * 8192 < 2^30 */
     if (f.level < (uint32_t)info->silence_mad * k) {
@@ -263,14 +348,15 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     /* Interpolation needs both neighbours exactly. */
     make_exact(&f, t_lag - 1u, &t_left);
     make_exact(&f, t_lag + 1u, &t_right);
-
-    q_a = ssda_pitch_norm_q20(t_left.d, t_left.s);
-    q_b = ssda_pitch_norm_q20(t_mid.d, t_mid.s);
-    q_c = ssda_pitch_norm_q20(t_right.d, t_right.s);
-    delta = ssda_pitch_interp_q16(q_a, q_b, q_c, (info->flags & SSDA_PITCH_PARABOLIC) != 0u);
-    /* t_lag <= 4800: 65536 * t_lag + delta < 2^29 */
+    period = period_q16_of(&f, t_lag, &t_left, &t_mid, &t_right);
+    while (found && octave_up(&f, period, dip_floor_q20(&f, &t_left, &t_mid, &t_right),
+                              &t_lag, &t_mid)) {
+        t_left = value_at(&f, t_lag - 1u, NO_BOUND);
+        t_right = value_at(&f, t_lag + 1u, NO_BOUND);
+        period = period_q16_of(&f, t_lag, &t_left, &t_mid, &t_right);
+    }
     est->lag = t_lag;
-    est->period_q16 = (uint32_t)((int32_t)(t_lag << 16) + delta);
+    est->period_q16 = period;
     est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
     n_q15 = (uint32_t)(((uint64_t)t_mid.d << 15) / t_mid.s); /* 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);

@@ -43,6 +43,7 @@ static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uin
 }
 
 static int16_t g_filtered[SIG_MAX];
+static uint32_t g_octave_moves; /* frames where the reference's octave check moved */
 
 /* The input low-pass as include/ssda/pitch.h defines it, written from that
    text: a = round(32768 w / (1 + w)), w = 2 pi fc / rate (2 pi = 411775 /
@@ -100,11 +101,17 @@ static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const in
         if (g_est[f].silent) {
             TEST_ASSERT_EQUAL_UINT32(0u, g_est[f].diffs);
         } else if ((cfg->flags & SSDA_PITCH_FULL) != 0u) {
-            /* every lag of [lag_min - 1, lag_max + 1] summed once, in full */
-            TEST_ASSERT_EQUAL_UINT32((info.lag_max - info.lag_min + 3u) * info.frame_len,
-                                     g_est[f].diffs);
+            /* every lag of [lag_min - 1, lag_max + 1] summed in full, plus
+               whole lags for the octave check (a multiple of K) */
+            TEST_ASSERT_TRUE(g_est[f].diffs >= (info.lag_max - info.lag_min + 3u) * info.frame_len);
+            TEST_ASSERT_EQUAL_UINT32(0u, g_est[f].diffs % info.frame_len);
+            if (!g_est[f].dip) { /* no octave check without a dip */
+                TEST_ASSERT_EQUAL_UINT32((info.lag_max - info.lag_min + 3u) * info.frame_len,
+                                         g_est[f].diffs);
+            }
         }
         voiced += g_est[f].voiced ? 1u : 0u;
+        g_octave_moves += (r.first_dip != 0u && r.first_dip != r.lag) ? 1u : 0u;
     }
     return voiced;
 }
@@ -142,6 +149,29 @@ static void test_vowel_with_vibrato_and_noise_matches_reference(void)
     test_signal_add_noise(g_sig, n, 20.0, &r);
     cfg.sample_rate_hz = 16000u;
     cfg.hop = 160u;
+    check_all_modes(cfg, g_sig, n);
+}
+
+static void test_octave_check_matches_reference(void)
+{
+    /* /i/ at 135 Hz: F1 (270 Hz) on the second harmonic puts the first dip
+       at T / 2; the octave check must move to T, in every mode */
+    ssda_pitch_config_t cfg = {0};
+    test_voice_t v;
+    test_rng_t r;
+    uint32_t n = 6000u;
+    test_voice_vowel_i(&v, 135.0, 12000.0);
+    v.vibrato_hz = 5.0;
+    v.vibrato_depth = 0.01;
+    test_signal_voice(g_sig, n, 0u, 16000u, &v);
+    test_rng_seed(&r, 4u);
+    test_signal_add_noise(g_sig, n, 35.0, &r);
+    cfg.sample_rate_hz = 16000u;
+    cfg.hop = 150u;
+    g_octave_moves = 0u;
+    cfg.flags = 0u;
+    check_against_reference(&cfg, g_sig, n);
+    TEST_ASSERT_TRUE(g_octave_moves > 0u); /* the case is really exercised */
     check_all_modes(cfg, g_sig, n);
 }
 
@@ -312,6 +342,17 @@ static void test_any_prediction_gives_the_reference_result(void)
         cfg.threshold_q15 = (uint16_t)(1000u + 2500u * i);
         check_every_prediction(&cfg, g_sig + 97u * i);
     }
+    /* /i/ at 135 Hz: F1 on the second harmonic, the first dip is at T / 2
+       and the octave check must move to T */
+    test_voice_vowel_i(&v, 135.0, 12000.0);
+    test_signal_voice(g_sig, n, 0u, 8000u, &v);
+    test_signal_add_noise(g_sig, n, 30.0, &r);
+    cfg.threshold_q15 = 0u;
+    for (i = 0; i < 3u; i++) {
+        cfg.flags = (uint8_t)(SSDA_PITCH_TRACK | (i == 2u ? SSDA_PITCH_PARABOLIC : 0u));
+        check_every_prediction(&cfg, g_sig + 301u * i);
+    }
+    cfg.flags = SSDA_PITCH_TRACK;
     /* noise: the fallback path */
     test_signal_noise(g_sig, n, 2000.0, &r);
     cfg.threshold_q15 = 0u;
@@ -411,6 +452,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_vowel_with_vibrato_and_noise_matches_reference);
+    RUN_TEST(test_octave_check_matches_reference);
     RUN_TEST(test_noise_fallback_matches_reference);
     RUN_TEST(test_range_edges_match_reference);
     RUN_TEST(test_thresholds_and_random_configs_match_reference);

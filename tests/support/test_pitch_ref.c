@@ -22,10 +22,47 @@ static bool under(uint32_t t, uint32_t q15) { return g_d[t] * 32768 <= (int64_t)
 
 static int64_t q20(uint32_t t) { return (g_d[t] * 1048576) / g_s[t]; }
 
+/* Sub-sample period at lag t (Q16.16), V or parabolic fit. */
+static int64_t interp_period(const test_pitch_ref_cfg_t *c, uint32_t t)
+{
+    int64_t a = q20(t - 1u), b = q20(t), cc = q20(t + 1u), den, num, delta;
+    if (c->parabolic) {
+        den = 2 * (a - 2 * b + cc);
+    } else {
+        den = 2 * ((a > cc ? a : cc) - b);
+    }
+    num = 65536 * (a - cc);
+    if (den <= 0) {
+        delta = 0;
+    } else if (num >= 0) {
+        delta = (num + den / 2) / den;
+    } else {
+        delta = -((-num + den / 2) / den);
+    }
+    if (delta > 32768) delta = 32768;
+    if (delta < -32768) delta = -32768;
+    return (int64_t)t * 65536 + delta;
+}
+
+/* Interpolated floor of the dip at t (Q20): b - |a - c| / 2 (V) or
+   b - (a - c)^2 / (8 (a - 2b + c)) (parabola, 0 drop when flat), >= 0. */
+static int64_t dip_floor(const test_pitch_ref_cfg_t *c, uint32_t t)
+{
+    int64_t a = q20(t - 1u), b = q20(t), cc = q20(t + 1u), drop = 0;
+    if (c->parabolic) {
+        if (a - 2 * b + cc > 0) {
+            drop = (a - cc) * (a - cc) / (8 * (a - 2 * b + cc));
+        }
+    } else {
+        drop = (a > cc ? a - cc : cc - a) / 2;
+    }
+    return b > drop ? b - drop : 0;
+}
+
 void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_pitch_ref_t *out)
 {
     const int64_t k = c->frame_len;
-    int64_t sum = 0, mean, level = 0, a, b, cc, den, num, delta, period;
+    int64_t sum = 0, mean, level = 0, period;
     uint32_t t, i, chosen = 0, run_start;
     bool found = false;
 
@@ -37,7 +74,7 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
     for (i = 0; i < c->frame_len; i++) {
         level += iabs(x[i] - mean);
     }
-    out->lag = 0; out->period_q16 = 0; out->f0_q16 = 0; out->confidence_q15 = 0;
+    out->first_dip = 0; out->lag = 0; out->period_q16 = 0; out->f0_q16 = 0; out->confidence_q15 = 0;
     out->voiced = false; out->dip = false; out->silent = true;
     if (level < (int64_t)c->silence_mad * k) {
         return;
@@ -95,25 +132,34 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
             }
         }
     }
-    a = q20(chosen - 1u);
-    b = q20(chosen);
-    cc = q20(chosen + 1u);
-    if (c->parabolic) {
-        den = 2 * (a - 2 * b + cc);
-    } else {
-        den = 2 * ((a > cc ? a : cc) - b);
+    out->first_dip = found ? chosen : 0u;
+    period = interp_period(c, chosen);
+    /* Octave check: a much deeper value near a multiple of the period means
+       the dip was a fraction of it. */
+    if (found) {
+        int64_t margin = (int64_t)(c->threshold_q15 / 3u) * 32;
+        bool moved = true;
+        while (moved) {
+            uint32_t mult;
+            moved = false;
+            for (mult = 2u; !moved; mult++) {
+                uint32_t centre = (uint32_t)(((int64_t)mult * period + 32768) / 65536), m = 0;
+                if (centre - 1u > c->lag_max) {
+                    break;
+                }
+                for (t = centre - 1u; t <= centre + 1u && t <= c->lag_max; t++) {
+                    if (m == 0u || less(t, m)) {
+                        m = t;
+                    }
+                }
+                if (q20(m) + margin < dip_floor(c, chosen)) {
+                    chosen = m;
+                    period = interp_period(c, chosen);
+                    moved = true;
+                }
+            }
+        }
     }
-    num = 65536 * (a - cc);
-    if (den <= 0) {
-        delta = 0;
-    } else if (num >= 0) {
-        delta = (num + den / 2) / den;
-    } else {
-        delta = -((-num + den / 2) / den);
-    }
-    if (delta > 32768) delta = 32768;
-    if (delta < -32768) delta = -32768;
-    period = (int64_t)chosen * 65536 + delta;
     out->lag = chosen;
     out->period_q16 = (uint32_t)period;
     out->f0_q16 = (uint32_t)((((int64_t)c->rate << 32) + period / 2) / period);

@@ -18,6 +18,7 @@ typedef struct {
 } test_pitch_ref_cfg_t;
 
 typedef struct {
+    uint32_t first_dip;  /* minimum of the first valid run, before the octave check */
     uint32_t lag, period_q16, f0_q16;
     uint16_t confidence_q15;
     bool voiced, dip, silent;

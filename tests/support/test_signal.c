@@ -259,7 +259,7 @@ void test_signal_voice(int16_t *out, uint32_t n, uint32_t start, uint32_t rate,
     for (h = 0; h < nh; h++) {
         double re, im;
         formant_response(v, v->f0_hz * (double)(h + 1u), rate, &re, &im);
-        amp[h] = test_sqrt(re * re + im * im);
+        amp[h] = (h + 1u < v->first_harmonic) ? 0.0 : test_sqrt(re * re + im * im);
         phs[h] = test_atan2(im, re);
         total += amp[h];
     }

@@ -20,6 +20,8 @@ typedef struct {
     double vibrato_depth;  /* relative f0 swing: f0(t) = f0 (1 + depth sin(2 pi v t)) */
     double amplitude;      /* sum of harmonic amplitudes, so |x| <= amplitude */
     uint32_t harmonics;    /* 1 = pure sine; 0 = every harmonic below 0.45 rate */
+    uint32_t first_harmonic; /* lowest harmonic present: 0 or 1 = the fundamental,
+                                2 = a missing fundamental */
     uint32_t n_formants;   /* 0..4 resonators (0 = flat spectrum, a pulse train) */
     double formant_hz[4];  /* centre frequencies */
     double bandwidth_hz[4];/* -3 dB bandwidths */
