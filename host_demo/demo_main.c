@@ -63,11 +63,17 @@ static void tool_path(const char *argv0, char *buf, size_t len)
     if (slash == NULL) {
         return;
     }
+    /* in a build tree: ../tools/cli/ssda; installed: ssda beside ssda-demo */
     snprintf(guess, sizeof guess, "%.*s/../tools/cli/ssda", (int)(slash - argv0), argv0);
     real = realpath(guess, NULL);
     if (real == NULL || access(real, X_OK) != 0) {
         free(real);
-        return;
+        snprintf(guess, sizeof guess, "%.*s/ssda", (int)(slash - argv0), argv0);
+        real = realpath(guess, NULL);
+        if (real == NULL || access(real, X_OK) != 0) {
+            free(real);
+            return;
+        }
     }
     if (getcwd(cwd, sizeof cwd) != NULL && strncmp(real, cwd, strlen(cwd)) == 0 &&
         real[strlen(cwd)] == '/') {
