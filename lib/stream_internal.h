@@ -26,11 +26,13 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w);
  * region width if `rows` rows of it fit (and as many rows as fit, up to the
  * region height), else the widest plate of `rows` rows, else span x (as many
  * rows as fit). Keeps the plate's pixels when its shape does not change.
- * keep: rows kept above a downward miss. Returns SSDA_OK or SSDA_ERR_BUFFER
- * (not even one row of span px fits) with the source unchanged.
+ * q: rows between the starts of the bands the job visits (the plate's row
+ * lattice, see place_y; 0 = 1, at most the plate height).
+ * Returns SSDA_OK or SSDA_ERR_BUFFER (not even one row of span px fits)
+ * with the source unchanged.
  */
 int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                      uint32_t rows, uint32_t keep);
+                      uint32_t rows, uint32_t q);
 
 /* Read-callback source: fetch through the plate (misses move it). Same
    contract as ssda_row_fetch_fn with ctx = the source; the span must lie

@@ -60,8 +60,15 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
     if (area->view == NULL) {
         /* The raster scan revisits a band of window-height rows moving
            down; the other scans jump around the whole area. */
-        uint32_t rows = cfg->scan == (uint8_t)SSDA_SCAN_RASTER ? wr.height : ar.height;
-        (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr), rows, wr.height - 1u);
+        const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
+        (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
+                                raster ? wr.height : ar.height, 1u);
+        /* A raster scan's band of window-height rows moves down one row at
+           a time: a plate with spare rows jumps by them (rows needed are
+           read once, each slide copies the band's rows in the arena). */
+        if (raster && area->ph >= wr.height) {
+            area->qy = (uint16_t)(area->ph - wr.height + 1u);
+        }
     }
     if (window->view == NULL) {
         (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u);

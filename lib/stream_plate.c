@@ -72,7 +72,7 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h)
 }
 
 int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                      uint32_t rows, uint32_t keep)
+                      uint32_t rows, uint32_t q)
 {
     uint32_t w = r->width;
     uint32_t h = stream_plate_fit_h(s, w);
@@ -110,7 +110,7 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
     s->ry = r->y;
     s->rw = r->width;
     s->rh = r->height;
-    s->keep = (uint16_t)(keep < h ? keep : h - 1u);
+    s->qy = (uint16_t)(q == 0u ? 1u : (q < h ? q : h));
     return SSDA_OK;
 }
 
@@ -202,22 +202,42 @@ static int load_tiled(ssda_source_t *s, uint32_t a, uint32_t b)
     return SSDA_OK;
 }
 
-/* Where a plate of cap (px or rows) starts to cover v on one axis; cur and
-   have describe where it is now, [r0, r0 + rlen) is the job's region, keep
-   the room left before v when moving forward, img the image size. */
-static uint32_t place(uint32_t v, uint32_t cur, bool have, uint32_t cap, uint32_t r0,
-                      uint32_t rlen, uint32_t keep, uint32_t img)
+/* Where a plate of cap px starts to cover the span at column v: at the
+   region's left edge if it is as wide as the region, else at v, kept inside
+   the region [r0, r0 + rlen) and the image. */
+static uint32_t place_x(uint32_t v, uint32_t cap, uint32_t r0, uint32_t rlen, uint32_t img)
 {
-    const bool in_region = v - r0 < rlen;
     uint32_t start = v;
-    if (in_region && cap >= rlen) {
-        return r0;
+    if (v - r0 < rlen) {
+        if (cap >= rlen) {
+            return r0;
+        }
+        if (start > r0 + rlen - cap) {
+            start = r0 + rlen - cap;
+        }
     }
-    if (!have || v >= cur) {
-        start = v - (keep < v ? keep : v);
-    }
-    if (in_region) {
-        if (start < r0) {
+    return start > img - cap ? img - cap : start;
+}
+
+/* Where a plate of cap rows starts to cover row v. Starts lie on the
+   lattice r0 + k * q of the region (q = rows between the bands a job
+   visits: a grid step, or the slack of a raster scan's band): moving down
+   (or into an empty plate) to the first lattice start that covers v, which
+   keeps the most rows above; moving up to the last one at or above v. */
+static uint32_t place_y(uint32_t v, uint32_t cur, bool have, uint32_t cap, uint32_t r0,
+                        uint32_t rlen, uint32_t q, uint32_t img)
+{
+    uint32_t start = v;
+    if (v - r0 < rlen) {
+        if (cap >= rlen) {
+            return r0;
+        }
+        if (have && v < cur) {
+            start = r0 + (v - r0) / q * q;
+        } else if (v + 1u > r0 + cap) {
+            uint32_t lift = r0 + (v + 1u - cap - r0 + q - 1u) / q * q;
+            start = lift < v ? lift : v;
+        } else {
             start = r0;
         }
         if (start > r0 + rlen - cap) {
@@ -271,9 +291,9 @@ int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
     }
     s->stats.misses++;
     if (!have || x < x0 || x + n > x0 + s->pw) {
-        x0 = place(x, x0, have, s->pw, s->rx, s->rw, 0u, s->cfg.width);
+        x0 = place_x(x, s->pw, s->rx, s->rw, s->cfg.width);
     }
-    y0 = place(y, s->py0, have, s->ph, s->ry, s->rh, s->keep, s->cfg.height);
+    y0 = place_y(y, s->py0, have, s->ph, s->ry, s->rh, s->qy, s->cfg.height);
     err = move(s, x0, y0);
     if (err != SSDA_OK) {
         return err;

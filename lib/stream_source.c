@@ -183,7 +183,7 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     src->ry = all.y;
     src->rw = all.width;
     src->rh = all.height;
-    src->keep = 0u;
+    src->qy = src->ph; /* a miss jumps a whole plate: reading in order is read once */
     return stream_fetch(src, x, y, n, px);
 }
 

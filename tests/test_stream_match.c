@@ -93,7 +93,6 @@ static void make_source(ssda_source_t *s, bool area, const geometry_t *g, uint8_
     test_source_init(dev, bytes, size, g->read_size);
     c = test_source_config(dev, &v, g->layout, g->tile_w, g->tile_h, g->offset,
                            row + g->stride_pad, 0u, g->read_size, arena, arena_size);
-    dev->size = test_source_extent(&c);
     test_source_store(dev, &c, &v);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(s, &c));
 }
@@ -204,6 +203,9 @@ static void test_equal_to_ram_in_every_mode_layout_and_arena(void)
             w_sizes[1] = SSDA_SOURCE_SIZE(g->layout, 12u, 3u, f, g->read_size, g->tile_w);
             w_sizes[2] = SSDA_SOURCE_SIZE(g->layout, 12u, 10u, f, g->read_size, g->tile_w);
             for (which = 1; which <= 3; which++) {
+                if (gi != 0u && which != 3u) {
+                    continue; /* one streamed operand: first layout only */
+                }
                 for (ai = 0; ai < 3; ai++) {
                     TEST_ASSERT_TRUE(a_sizes[ai] <= sizeof g_aarena);
                     TEST_ASSERT_TRUE(w_sizes[ai] <= sizeof g_warena);
@@ -317,14 +319,15 @@ static void failure_sweep(uint32_t cfg_index, const geometry_t *g, size_t aa, si
 
 static void test_failure_at_every_read_leaves_result_untouched(void)
 {
-    /* AUTO raster with bounds (tiled, small plates); AUTO predict (raster
-       with granularity); coarse with spread order (tiled). */
-    failure_sweep(36u, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 2u, 2u, 64u, 12u),
-                  SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 2u, 2u, 64u, 12u));
-    failure_sweep(6u, &k_geoms[1], SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 40u, 12u, 2u, 16u, 0u),
+    /* AUTO raster with bounds, tiled with granularity, a sliding band of
+       12 rows; AUTO predict, raster with granularity, the whole area;
+       coarse with spread order, tiled, a band of 16 rows. */
+    failure_sweep(36u, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 12u, 2u, 64u, 12u),
+                  SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 10u, 2u, 64u, 12u));
+    failure_sweep(6u, &k_geoms[1], SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 40u, 36u, 2u, 16u, 0u),
                   SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 10u, 2u, 16u, 0u));
-    failure_sweep(30u, &k_geoms[2], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 20u, 3u, 2u, 1u, 16u),
-                  SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 1u, 2u, 1u, 16u));
+    failure_sweep(30u, &k_geoms[2], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 16u, 2u, 1u, 16u),
+                  SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 10u, 2u, 1u, 16u));
 }
 
 /* An arena below the job's minimum is refused before any read. */

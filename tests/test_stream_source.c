@@ -78,7 +78,6 @@ static ssda_source_config_t setup(const geometry_t *g, uint8_t format, size_t ar
     test_source_init(&g_tdev, g_dev, sizeof g_dev, g->read_size);
     c = test_source_config(&g_tdev, &v, g->layout, g->tile_w, g->tile_h, g->offset, stride,
                            tile_stride, g->read_size, g_arena, arena_size);
-    g_tdev.size = test_source_extent(&c);
     test_source_store(&g_tdev, &c, &v);
     return c;
 }
@@ -242,8 +241,9 @@ static void test_odd_read_size_on_8_bit(void)
     check_counts(&s);
 }
 
-/* Plate policy: sliding down keeps `keep` rows above the miss and reads
-   only the new rows; sliding up reads only the rows above. */
+/* Plate policy: on a lattice of 3 rows, sliding down to cover row 8 starts
+   at row 3 (keeping rows 3..7, reading 8..10); sliding up to cover row 2
+   starts at row 0 (keeping 3..7, reading 0..2). */
 static void test_plate_slides_keep_rows(void)
 {
     static const geometry_t g = {SSDA_LAYOUT_RASTER, 0, 0, 0, 2, 0, 1};
@@ -252,7 +252,7 @@ static void test_plate_slides_keep_rows(void)
     ssda_source_t s;
     ssda_rect_t all = {0, 0, IW, IH};
     const uint8_t *px;
-    uint64_t before;
+    uint32_t y;
     make_images(6u);
     c = setup(&g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 8u, 2u, 1u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
@@ -260,21 +260,23 @@ static void test_plate_slides_keep_rows(void)
     TEST_ASSERT_EQUAL_UINT(8, s.ph);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_fetch(&s, 0, 0, IW, &px)); /* rows 0..7 */
     TEST_ASSERT_EQUAL_UINT64(8u * row_bytes, s.stats.bytes_read);
-    before = s.stats.bytes_read;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, 8, IW, &px)); /* rows 5..12 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, 8, IW, &px)); /* rows 3..10 */
     assert_span(SSDA_PIX_U16, px, 0, 8, IW);
-    TEST_ASSERT_EQUAL_UINT(5, s.py0);
-    TEST_ASSERT_EQUAL_UINT64(before + 5u * row_bytes, s.stats.bytes_read);
-    before = s.stats.bytes_read;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 3, 4, 20, &px)); /* up: rows 4..11 */
-    assert_span(SSDA_PIX_U16, px, 3, 4, 20);
-    TEST_ASSERT_EQUAL_UINT(4, s.py0);
-    TEST_ASSERT_EQUAL_UINT64(before + 1u * row_bytes, s.stats.bytes_read);
-    for (before = 4; before < 12; before++) { /* every kept row is intact */
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, (uint32_t)before, IW, &px));
-        assert_span(SSDA_PIX_U16, px, 0, (uint32_t)before, IW);
+    TEST_ASSERT_EQUAL_UINT(3, s.py0);
+    TEST_ASSERT_EQUAL_UINT64(11u * row_bytes, s.stats.bytes_read);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 3, 2, 20, &px)); /* up: rows 0..7 */
+    assert_span(SSDA_PIX_U16, px, 3, 2, 20);
+    TEST_ASSERT_EQUAL_UINT(0, s.py0);
+    TEST_ASSERT_EQUAL_UINT64(14u * row_bytes, s.stats.bytes_read);
+    for (y = 0; y < 8; y++) { /* every kept row is intact */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, y, IW, &px));
+        assert_span(SSDA_PIX_U16, px, 0, y, IW);
     }
     TEST_ASSERT_EQUAL_UINT64(3, s.stats.misses);
+    /* the bottom of the region clamps the start: row 44 -> rows 37..44 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, 44, IW, &px));
+    TEST_ASSERT_EQUAL_UINT(IH - 8u, s.py0);
+    assert_span(SSDA_PIX_U16, px, 0, 44, IW);
     check_counts(&s);
 }
 

@@ -17,9 +17,12 @@
  *     starts at the region's left edge; otherwise at the span's left edge
  *     (kept inside the region and the image);
  *   - rows: if the plate is at least as tall as the region, it starts at the
- *     region's top; otherwise, moving down, it keeps the `keep` rows above
- *     the missed row (a job sets keep = window height - 1, so a raster scan
- *     reads each row once), moving up it starts at the missed row;
+ *     region's top; otherwise its start stays on a lattice of rows q apart
+ *     from the region's top (q: the grid step of a tracking job, the plate's
+ *     spare rows + 1 in a raster-scan search, 1 otherwise): moving down, at
+ *     the first lattice row that covers the missed row (keeping the most
+ *     rows above it, so a band sliding down is read once); moving up, at
+ *     the last lattice row at or above it;
  *   - rows still inside the moved plate (same columns) are copied, not
  *     read again; every other row is read. One read per plate row in the
  *     raster layout (one per plate load when rows are stored contiguously at
@@ -124,7 +127,7 @@ typedef struct {
     uint16_t pw, ph;          /* plate capacity: pixels per row, rows */
     uint16_t px0, py0;        /* image position of the plate's first pixel */
     uint16_t rows;            /* plate rows holding valid pixels: 0 or ph */
-    uint16_t keep;            /* rows kept above a downward miss */
+    uint16_t qy;              /* row lattice of plate starts (1..ph) */
     uint16_t rx, ry, rw, rh;  /* region of the current job */
 } ssda_source_t;
 

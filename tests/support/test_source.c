@@ -2,11 +2,12 @@
 #include "test_source.h"
 #include "unity.h"
 
-void test_source_init(test_source_t *dev, uint8_t *bytes, uint32_t size, uint32_t read_size)
+void test_source_init(test_source_t *dev, uint8_t *bytes, uint32_t capacity, uint32_t read_size)
 {
     memset(dev, 0, sizeof *dev);
     dev->bytes = bytes;
-    dev->size = size;
+    dev->capacity = capacity;
+    dev->size = capacity;
     dev->read_size = read_size != 0u ? read_size : 1u;
     dev->fail_code = SSDA_ERR_IO;
     dev->fail_at_read = -1;
@@ -77,7 +78,8 @@ void test_source_store(test_source_t *dev, const ssda_source_config_t *cfg,
 {
     uint32_t stride, tile_stride, x, y, bpp = cfg->format;
     resolve(cfg, &stride, &tile_stride);
-    TEST_ASSERT_TRUE_MESSAGE(test_source_extent(cfg) <= dev->size, "test device too small");
+    dev->size = test_source_extent(cfg);
+    TEST_ASSERT_TRUE_MESSAGE(dev->size <= dev->capacity, "test device too small");
     TEST_ASSERT_EQUAL_UINT(cfg->width, img->width);
     TEST_ASSERT_EQUAL_UINT(cfg->height, img->height);
     TEST_ASSERT_EQUAL_UINT(cfg->format, img->format);

@@ -17,7 +17,9 @@
 
 typedef struct {
     uint8_t *bytes;         /* device contents */
-    uint32_t size;          /* device bytes */
+    uint32_t capacity;      /* bytes of the array behind it */
+    uint32_t size;          /* device bytes: the capacity, or the stored
+                               image's extent after test_source_store */
     uint32_t read_size;     /* granularity every read must respect (>= 1) */
     int fail_code;          /* negative code returned by an injected failure */
     int64_t fail_at_read;   /* 0-based index of the read to fail; -1 = never */
@@ -29,8 +31,8 @@ typedef struct {
     uint64_t contract_violations; /* misaligned, empty or out-of-device calls */
 } test_source_t;
 
-/* Device over bytes[0 .. size) with granularity read_size; no failures. */
-void test_source_init(test_source_t *dev, uint8_t *bytes, uint32_t size, uint32_t read_size);
+/* Device over bytes[0 .. capacity) with granularity read_size; no failures. */
+void test_source_init(test_source_t *dev, uint8_t *bytes, uint32_t capacity, uint32_t read_size);
 
 /* Reset counters and failure injection (contents unchanged). */
 void test_source_reset(test_source_t *dev);
@@ -45,9 +47,10 @@ uint32_t test_source_extent(const ssda_source_config_t *cfg);
 
 /*
  * Fill dev->bytes with poison, then store the pixels of img in the layout
- * that cfg describes (cfg->stride and cfg->tile_stride may be 0: packed).
- * img must have cfg's width, height and format. Fails the test if the
- * device is too small.
+ * that cfg describes (cfg->stride and cfg->tile_stride may be 0: packed),
+ * and shrink the device to the image's extent (test_source_extent), so a
+ * read beyond the aligned image is a contract violation. img must have
+ * cfg's width, height and format. Fails the test if the array is too small.
  */
 void test_source_store(test_source_t *dev, const ssda_source_config_t *cfg,
                        const ssda_view_t *img);
