@@ -42,6 +42,9 @@ static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uin
     return count;
 }
 
+static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info);
+static void assert_same(const test_pitch_ref_t *r, const ssda_pitch_estimate_t *e);
+
 static int16_t g_filtered[SIG_MAX];
 static uint32_t g_octave_moves; /* frames where the reference's octave check moved */
 
@@ -64,40 +67,41 @@ static void reference_lowpass(const int16_t *x, int16_t *y, uint32_t n, uint32_t
     }
 }
 
-/* Every estimate equals the reference on its own span of samples. */
-static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const int16_t *x,
-                                        uint32_t n)
+static test_pitch_ref_t g_refs[EST_MAX];
+
+/* Reference results for every frame the stream of cfg produces from x;
+   the input low-pass is applied first unless cfg turns it off. */
+static uint32_t reference_frames(const ssda_pitch_config_t *cfg, const int16_t *x, uint32_t n,
+                                 test_pitch_ref_t *refs)
 {
-    ssda_pitch_t p;
     ssda_pitch_info_t info;
     test_pitch_ref_cfg_t rc;
-    uint32_t count, f, voiced = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_init(&p, cfg, g_buf, sizeof g_buf));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_get_info(&p, &info));
-    rc.rate = info.sample_rate_hz;
-    rc.lag_min = info.lag_min;
-    rc.lag_max = info.lag_max;
-    rc.frame_len = info.frame_len;
-    rc.threshold_q15 = info.threshold_q15;
-    rc.voicing_q15 = info.voicing_q15;
-    rc.silence_mad = info.silence_mad;
-    rc.parabolic = (info.flags & SSDA_PITCH_PARABOLIC) != 0u;
-    count = run_stream(cfg, x, n, g_est);
-    TEST_ASSERT_EQUAL_UINT32((n - info.span) / info.hop + 1u, count);
+    uint32_t count, f;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    rc = ref_cfg_of(&info);
+    count = (n - info.span) / info.hop + 1u;
+    TEST_ASSERT_TRUE(count <= EST_MAX);
     if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
         reference_lowpass(x, g_filtered, n, info.lowpass_hz, info.sample_rate_hz);
         x = g_filtered;
     }
     for (f = 0; f < count; f++) {
-        test_pitch_ref_t r;
-        test_pitch_reference(x + f * info.hop, &rc, &r);
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(r.lag, g_est[f].lag, "lag");
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(r.period_q16, g_est[f].period_q16, "period_q16");
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(r.f0_q16, g_est[f].f0_q16, "f0_q16");
-        TEST_ASSERT_EQUAL_UINT16_MESSAGE(r.confidence_q15, g_est[f].confidence_q15, "confidence");
-        TEST_ASSERT_EQUAL_MESSAGE(r.voiced, g_est[f].voiced, "voiced");
-        TEST_ASSERT_EQUAL_MESSAGE(r.dip, g_est[f].dip, "dip");
-        TEST_ASSERT_EQUAL_MESSAGE(r.silent, g_est[f].silent, "silent");
+        test_pitch_reference(x + f * info.hop, &rc, &refs[f]);
+    }
+    return count;
+}
+
+/* The stream's estimates equal refs; returns the number of voiced frames. */
+static uint32_t compare_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uint32_t n,
+                               const test_pitch_ref_t *refs, uint32_t nref)
+{
+    ssda_pitch_info_t info;
+    uint32_t count, f, voiced = 0;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    count = run_stream(cfg, x, n, g_est);
+    TEST_ASSERT_EQUAL_UINT32(nref, count);
+    for (f = 0; f < count; f++) {
+        assert_same(&refs[f], &g_est[f]);
         if (g_est[f].silent) {
             TEST_ASSERT_EQUAL_UINT32(0u, g_est[f].diffs);
         } else if ((cfg->flags & SSDA_PITCH_FULL) != 0u) {
@@ -111,27 +115,44 @@ static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const in
             }
         }
         voiced += g_est[f].voiced ? 1u : 0u;
-        g_octave_moves += (r.first_dip != 0u && r.first_dip != r.lag) ? 1u : 0u;
+        g_octave_moves += (refs[f].first_dip != 0u && refs[f].first_dip != refs[f].lag) ? 1u : 0u;
     }
     return voiced;
 }
 
-/* All modes of one config give the reference's results. */
+/* Every estimate equals the reference on its own span of samples. */
+static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const int16_t *x,
+                                        uint32_t n)
+{
+    uint32_t nref = reference_frames(cfg, x, n, g_refs);
+    return compare_stream(cfg, x, n, g_refs, nref);
+}
+
+/* All modes of one config give the reference's results: for each analysed
+   signal (filtered or not) and fit (V or parabola), early exit with several
+   chunk sizes, tracking, and no early exit. */
 static void check_all_modes(ssda_pitch_config_t cfg, const int16_t *x, uint32_t n)
 {
     static const uint16_t chunks[] = {0u, 1u, 7u, 64u};
-    static const uint8_t flags[] = {SSDA_PITCH_NO_FILTER, SSDA_PITCH_NO_FILTER | SSDA_PITCH_TRACK,
-                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_FULL,
-                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_TRACK | SSDA_PITCH_FULL,
-                                    0u, SSDA_PITCH_TRACK, SSDA_PITCH_PARABOLIC,
-                                    SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC | SSDA_PITCH_TRACK};
-    uint32_t i, j;
-    for (i = 0; i < sizeof flags; i++) {
+    static const uint8_t variants[] = {SSDA_PITCH_NO_FILTER, 0u, SSDA_PITCH_PARABOLIC,
+                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC};
+    uint32_t i, j, nref;
+    for (i = 0; i < sizeof variants; i++) {
+        cfg.flags = variants[i];
+        cfg.chunk = 0u;
+        nref = reference_frames(&cfg, x, n, g_refs);
         for (j = 0; j < sizeof chunks / sizeof chunks[0]; j++) {
-            cfg.flags = flags[i];
             cfg.chunk = chunks[j];
-            check_against_reference(&cfg, x, n);
+            cfg.flags = variants[i];
+            compare_stream(&cfg, x, n, g_refs, nref);
+            cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_TRACK);
+            compare_stream(&cfg, x, n, g_refs, nref);
         }
+        cfg.chunk = 0u;
+        cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_FULL);
+        compare_stream(&cfg, x, n, g_refs, nref);
+        cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_FULL | SSDA_PITCH_TRACK);
+        compare_stream(&cfg, x, n, g_refs, nref);
     }
 }
 
@@ -413,15 +434,38 @@ static void test_runs_after_an_invalid_edge_run_match_reference(void)
     cfg.sample_rate_hz = 8000u;
     cfg.f0_min_hz = 40u;
     test_rng_seed(&r, 99u);
-    for (snr = 10u; snr <= 30u; snr += 4u) {
+    for (snr = 10u; snr <= 30u; snr += 8u) {
         test_voice_sine(&v, 50.0, 8000.0);
         test_signal_voice(g_sig, n, 0u, 8000u, &v);
         test_signal_add_noise(g_sig, n, (double)snr, &r);
-        for (thr = 4000u; thr <= 12000u; thr += 2000u) {
+        for (thr = 4000u; thr <= 12000u; thr += 4000u) {
             cfg.threshold_q15 = (uint16_t)thr;
             check_every_prediction(&cfg, g_sig);
         }
     }
+}
+
+static void test_a_wiggle_under_the_rearm_level_does_not_arm(void)
+{
+    /* A 50 Hz sine plus a ripple of period 6: n climbs from lag 0 with
+       wiggles, so lag_min starts an invalid run and a second short run
+       follows after a lag with threshold < n <= rearm, which is no peak.
+       Only lags summed up to the rearm level can tell that. */
+    static int16_t ripple[2000];
+    ssda_pitch_config_t cfg = {0};
+    test_voice_t v;
+    uint32_t i;
+    cfg.sample_rate_hz = 8000u;
+    cfg.f0_min_hz = 40u;
+    cfg.flags = SSDA_PITCH_TRACK;
+    test_voice_sine(&v, 50.0, 10000.0);
+    test_signal_voice(g_sig, 2000u, 0u, 8000u, &v);
+    test_voice_sine(&v, 8000.0 / 6.0, 3000.0);
+    test_signal_voice(ripple, 2000u, 0u, 8000u, &v);
+    for (i = 0; i < 2000u; i++) {
+        g_sig[i] = (int16_t)(g_sig[i] + ripple[i]);
+    }
+    check_every_prediction(&cfg, g_sig);
 }
 
 static void test_dip_beyond_lag_max_is_not_a_dip(void)
@@ -460,6 +504,7 @@ int main(void)
     RUN_TEST(test_any_prediction_gives_the_reference_result);
     RUN_TEST(test_ties_go_to_the_smaller_lag);
     RUN_TEST(test_runs_after_an_invalid_edge_run_match_reference);
+    RUN_TEST(test_a_wiggle_under_the_rearm_level_does_not_arm);
     RUN_TEST(test_dip_beyond_lag_max_is_not_a_dip);
     return UNITY_END();
 }

@@ -202,7 +202,9 @@ static void usage(void)
             "  --lowpass HZ        input low-pass cutoff (0 = f0 max); --no-filter: none\n"
             "  --voicing V         voicing threshold, 0..1 (0 = the dip threshold)\n"
             "  --no-full-check     skip the no-early-exit run that checks identical results\n"
-            "  --per-file          also print a table row set per file\n");
+            "  --per-file          also print a table row set per file\n"
+            "  --dump M            list the gross and voicing errors of method M (0 ssda,\n"
+            "                      1 ssda + tracking, 2 yin, 3 yinfast) on stderr\n");
 }
 
 static int find_ref(const char *audio, char *out, size_t outlen)
