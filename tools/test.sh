@@ -2,7 +2,7 @@
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror, a host build with ASan + UBSan, the library
-# tests as bare-metal images under qemu-system-arm on three Cortex-M boards,
+# tests as bare-metal images under qemu-system-arm on four Cortex-M boards,
 # and the library alone for six cross targets at -Os and -O2 (-Werror).
 # Usage: tools/test.sh            (build dirs under build/)
 #        SSDA_SKIP_CROSS=1 tools/test.sh   host builds only
@@ -35,8 +35,8 @@ configure_build_test build/host
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
   configure_build_test build/asan -DSSDA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
 
-# Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) under QEMU with
-# semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
+# Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) and M33 (-Os)
+# under QEMU with semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
 # guest that hangs is stopped by the CTest timeout.
 qemu_test() { # <toolchain> <build type>
   local dir=build/qemu-$1
@@ -67,6 +67,7 @@ if [ "$skip_cross" != 1 ]; then
   qemu_test cortex-m3 MinSizeRel
   qemu_test cortex-m4f RelWithDebInfo
   qemu_test cortex-m7 RelWithDebInfo
+  qemu_test cortex-m33 MinSizeRel
   for t in cortex-m0plus cortex-m3 cortex-m4f cortex-m7 cortex-m33 rv32imc; do
     cross_lib "$t"
   done
