@@ -57,10 +57,12 @@ mkdir -p "$out"
 tmp=$(mktemp -d "$out/.run.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
 load_start=$(cut -d' ' -f1-3 /proc/loadavg)
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+git diff --quiet HEAD -- lib include 2>/dev/null || commit="$commit with uncommitted changes in lib/ or include/"
 {
   echo "# ssda side by side with its peers"
   echo
-  echo "Command: \`tools/bench-peers.sh ${quick[*]} ${reps[*]}\` ($(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown))."
+  echo "Command: \`$(echo tools/bench-peers.sh ${quick[*]} ${reps[*]})\` ($(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit)."
   echo "Host: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores, $(${CC:-cc} --version | head -1);"
   echo "every measurement single-threaded. Load average (1/5/15 min) at the start: $load_start."
 } > "$tmp/head.md"
