@@ -77,18 +77,18 @@ uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
         a += 16;
         b += 16;
     }
-    if ((n & 8u) != 0u) {
-        sum = __usada8(load_u32(a), load_u32(b), sum);
-        sum = __usada8(load_u32(a + 4), load_u32(b + 4), sum);
-        a += 8;
-        b += 8;
-    }
-    if ((n & 4u) != 0u) {
-        sum = __usada8(load_u32(a), load_u32(b), sum);
-        a += 4;
-        b += 4;
-    }
-    if ((n & 3u) != 0u) {
+    if ((n & 15u) != 0u) { /* one test on the common path (n = 16, 32, ...) */
+        if ((n & 8u) != 0u) {
+            sum = __usada8(load_u32(a), load_u32(b), sum);
+            sum = __usada8(load_u32(a + 4), load_u32(b + 4), sum);
+            a += 8;
+            b += 8;
+        }
+        if ((n & 4u) != 0u) {
+            sum = __usada8(load_u32(a), load_u32(b), sum);
+            a += 4;
+            b += 4;
+        }
         sum += ssda_portable_sad_row_u8(a, b, n & 3u);
     }
     return sum;
@@ -106,19 +106,19 @@ uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
         a += 8;
         b += 8;
     }
-    if ((n & 4u) != 0u) {
-        sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
-        sum += lanes_sum(absdiff_u16x2(load_u32(a + 2), load_u32(b + 2)));
-        a += 4;
-        b += 4;
-    }
-    if ((n & 2u) != 0u) {
-        sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
-        a += 2;
-        b += 2;
-    }
-    if ((n & 1u) != 0u) {
-        sum += ssda_portable_sad_row_u16(a, b, 1u);
+    if ((n & 7u) != 0u) { /* one test on the common path (n = 8, 16, ...) */
+        if ((n & 4u) != 0u) {
+            sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
+            sum += lanes_sum(absdiff_u16x2(load_u32(a + 2), load_u32(b + 2)));
+            a += 4;
+            b += 4;
+        }
+        if ((n & 2u) != 0u) {
+            sum += lanes_sum(absdiff_u16x2(load_u32(a), load_u32(b)));
+            a += 2;
+            b += 2;
+        }
+        sum += ssda_portable_sad_row_u16(a, b, n & 1u);
     }
     return sum;
 }
@@ -135,19 +135,19 @@ uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
         a += 8;
         b += 8;
     }
-    if ((n & 4u) != 0u) {
-        sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
-        sum += lanes_sum(absdiff_i16x2(load_u32(a + 2), load_u32(b + 2)));
-        a += 4;
-        b += 4;
-    }
-    if ((n & 2u) != 0u) {
-        sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
-        a += 2;
-        b += 2;
-    }
-    if ((n & 1u) != 0u) {
-        sum += ssda_portable_absdiff_row_i16(a, b, 1u);
+    if ((n & 7u) != 0u) { /* one test on the common path (n = 8, 16, ...) */
+        if ((n & 4u) != 0u) {
+            sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
+            sum += lanes_sum(absdiff_i16x2(load_u32(a + 2), load_u32(b + 2)));
+            a += 4;
+            b += 4;
+        }
+        if ((n & 2u) != 0u) {
+            sum += lanes_sum(absdiff_i16x2(load_u32(a), load_u32(b)));
+            a += 2;
+            b += 2;
+        }
+        sum += ssda_portable_absdiff_row_i16(a, b, n & 1u);
     }
     return sum;
 }
