@@ -136,6 +136,15 @@ int cmd_track(int argc, char **argv)
                    brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
                    (unsigned long long)brute, tname, 1e3 * r.secs);
         }
+        if (o.have_mem) {
+            uint64_t images = (uint64_t)r.first.stride * r.first.height +
+                              (uint64_t)r.second.stride * r.second.height;
+            printf("memory:  plates of %zu + %zu bytes (--mem %llu); read %llu bytes in %llu "
+                   "reads = %.2f x the two images\n",
+                   r.arena_first, r.arena_second, (unsigned long long)o.mem,
+                   (unsigned long long)r.bytes_read, (unsigned long long)r.reads,
+                   images ? (double)r.bytes_read / (double)images : 0.0);
+        }
         if (o.json_path != NULL) {
             printf("wrote:   %s\n", o.json_path);
         }

@@ -2,6 +2,7 @@
 #include "track_run.h"
 #include "progress.h"
 #include "ssda/grad.h"
+#include "ssda/stream.h"
 
 #include <errno.h>
 #include <math.h>
@@ -331,6 +332,128 @@ static uint32_t image_mean(const gray_image_t *img, int masked, uint32_t mask)
     return n > 0 ? (uint32_t)(sum / n) : 0u;
 }
 
+/* ---- block-streamed tracking (--mem) ---- */
+
+/* The decoded image stands in for external memory: read() copies from it. */
+typedef struct {
+    const uint8_t *base;
+    size_t size;
+} mem_device_t;
+
+static int device_read(void *context, uint32_t offset, void *buffer, uint32_t size)
+{
+    const mem_device_t *d = context;
+    if ((size_t)offset + size > d->size) {
+        return SSDA_ERR_IO; /* never asked for with read_size 1 */
+    }
+    memcpy(buffer, d->base + offset, size);
+    return 0;
+}
+
+/* Split mem bytes into the two plates: read-once strips of as many grid
+   columns as fit; otherwise SECOND keeps what one strip of windows needs
+   (or its share) and FIRST takes the rest. Returns 0, or -1 when mem is
+   below one row of a search area plus one row of a window (*need set). */
+static int split_arena(const ssda_track_grid_t *g, uint8_t format, uint64_t mem,
+                       size_t *first, size_t *second, size_t *need)
+{
+    size_t min_f = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->search_w, 1, format, 1, 0);
+    size_t min_s = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->win_w, 1, format, 1, 0);
+    uint32_t n;
+    *need = min_f + min_s;
+    if (mem < *need) {
+        return -1;
+    }
+    for (n = g->cols; n >= 1u; n--) {
+        size_t f = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, SSDA_STREAM_STRIP_W(n, g->step_x, g->search_w),
+                                    g->search_h, format, 1, 0);
+        size_t s = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, SSDA_STREAM_STRIP_W(n, g->step_x, g->win_w),
+                                    g->win_h, format, 1, 0);
+        if ((uint64_t)f + s <= mem) {
+            *first = (size_t)(mem - s);
+            *second = s;
+            return 0;
+        }
+    }
+    {
+        size_t s1 = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->win_w, g->win_h, format, 1, 0);
+        double share = (double)g->win_w * g->win_h /
+                       ((double)g->win_w * g->win_h + (double)g->search_w * g->search_h);
+        size_t s = (size_t)((double)mem * share);
+        s = s > s1 ? s1 : s;
+        s = s < min_s ? min_s : s;
+        if (mem - s < min_f) {
+            s = (size_t)mem - min_f;
+        }
+        *second = s;
+        *first = (size_t)mem - s;
+    }
+    return 0;
+}
+
+static int init_source(ssda_source_t *src, mem_device_t *dev, const gray_image_t *img,
+                       void *arena, size_t arena_size)
+{
+    ssda_source_config_t sc;
+    memset(&sc, 0, sizeof sc);
+    dev->base = img->pixels;
+    dev->size = (size_t)img->stride * img->height;
+    sc.read = device_read;
+    sc.context = dev;
+    sc.stride = img->stride;
+    sc.read_size = 1;
+    sc.arena = arena;
+    sc.arena_size = arena_size;
+    sc.width = (uint16_t)img->width;
+    sc.height = (uint16_t)img->height;
+    sc.format = img->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
+    sc.layout = SSDA_LAYOUT_RASTER;
+    return ssda_source_init(src, &sc);
+}
+
+/* Track through two block-streamed sources inside o->mem bytes of plates. */
+static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    ssda_source_t sf, ss;
+    mem_device_t df, ds;
+    size_t af, as, need;
+    void *arena_f = NULL, *arena_s = NULL;
+    uint8_t format = r->first.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
+    int e;
+    if (split_arena(&r->grid, format, o->mem, &af, &as, &need) != 0) {
+        return cli_usage_error(cmd, "--mem %llu is below the %zu bytes one row of a search "
+                               "area and one row of a window need",
+                               (unsigned long long)o->mem, need);
+    }
+    arena_f = malloc(af);
+    arena_s = malloc(as);
+    if (arena_f == NULL || arena_s == NULL) {
+        free(arena_f);
+        free(arena_s);
+        return cli_input_error(cmd, "out of memory for --mem %llu", (unsigned long long)o->mem);
+    }
+    e = init_source(&sf, &df, &r->first, arena_f, af);
+    if (e == SSDA_OK) {
+        e = init_source(&ss, &ds, &r->second, arena_s, as);
+    }
+    if (e == SSDA_OK) {
+        e = ssda_stream_track(&sf, &ss, &r->cfg, r->vec, r->grid.count, &r->stats);
+    }
+    if (e == SSDA_OK) {
+        r->bytes_read = sf.stats.bytes_read + ss.stats.bytes_read;
+        r->reads = sf.stats.reads + ss.stats.reads;
+        r->arena_first = af;
+        r->arena_second = as;
+    }
+    free(arena_f);
+    free(arena_s);
+    if (e != SSDA_OK) {
+        return cli_usage_error(cmd, "streamed tracking refused these options: %s",
+                               ssda_strerror(e));
+    }
+    return CLI_OK;
+}
+
 /* ---- the run ---- */
 
 void track_result_free(track_result_t *r)
@@ -367,10 +490,6 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
 
     memset(r, 0, sizeof *r);
     r->cfg = o->cfg;
-    if (o->have_mem) {
-        return cli_usage_error(cmd, "--mem: block-streamed tracking is not in this build yet; "
-                               "run without --mem (images are read whole)");
-    }
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;
     }
@@ -489,6 +608,17 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     gray_image_view(&r->first, &vf);
     gray_image_view(&r->second, &vs);
 
+    if (o->have_mem) {
+        t0 = progress_now();
+        e = track_streamed(cmd, o, r);
+        r->secs = progress_now() - t0;
+        free(work);
+        r->cfg.match.work = NULL;
+        if (e != CLI_OK) {
+            track_result_free(r);
+        }
+        return e;
+    }
     progress_begin(&prog, "tracking", r->grid.rows, o->quiet);
     t0 = progress_now();
     if (prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1) {
@@ -590,12 +720,19 @@ void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
     fprintf(f, "],\n \"stats\":{\"pixel_ops\":%llu,\"bytes_read\":%llu,"
                "\"brute_force_ops\":%llu,\"positions\":%llu,\"completed\":%llu,"
                "\"check_pixels\":%llu,\"windows\":%u,\"ok\":%u,\"excluded\":%u,"
-               "\"masked\":%u,\"edge\":%u,\"time_s\":%.6f}}\n",
+               "\"masked\":%u,\"edge\":%u,\"time_s\":%.6f",
             (unsigned long long)r->stats.pixel_ops, (unsigned long long)r->bytes_read,
             (unsigned long long)track_brute_ops(r), (unsigned long long)r->stats.positions,
             (unsigned long long)r->stats.completed, (unsigned long long)r->stats.check_pixels,
             r->stats.windows, r->stats.ok, r->stats.excluded, r->stats.masked, r->stats.edge,
             r->secs);
+    if (o->have_mem) {
+        fprintf(f, ",\"mem_bytes\":%llu,\"plate_bytes_first\":%zu,\"plate_bytes_second\":%zu,"
+                   "\"reads\":%llu",
+                (unsigned long long)o->mem, r->arena_first, r->arena_second,
+                (unsigned long long)r->reads);
+    }
+    fprintf(f, "}}\n");
 }
 
 int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,

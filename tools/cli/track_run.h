@@ -49,6 +49,9 @@ typedef struct {
     ssda_track_vector_t *vec;     /* grid.count entries */
     ssda_track_stats_t stats;
     uint64_t bytes_read;          /* image bytes the tracker's sources read */
+    uint64_t reads;               /* --mem: read() calls of both sources */
+    size_t arena_first;           /* --mem: plate memory of FIRST and SECOND, bytes */
+    size_t arena_second;
     double secs;                  /* tracking time only */
 } track_result_t;
 

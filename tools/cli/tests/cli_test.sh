@@ -161,7 +161,16 @@ track)
   run 2 track a.png b.png --mask-value 4095        # beyond 8-bit samples
   run 2 track a.png b.png --roi 100,100,64,64      # outside the image
   run 2 track a.png b.png --window 40 --search 32  # area smaller than window
-  run 2 track a.png b.png --mem 4096               # until streaming lands
+  # block-streamed: same vectors within any plate memory, from one row per plate up
+  for m in 48 600 4K 1M; do
+    run 0 track a.png b.png --mem "$m" --json t.json && chk track-json t.json 3 -2 1.0 --count ok 36 &&
+      grep -q '"plate_bytes_first"' t.json || fail "--mem $m"
+  done
+  run 0 track a.png b.png --threshold auto-ramp --mem 1K --json t.json && chk track-json t.json 3 -2 1.0
+  run 0 track ga.png gb.png --mask-value 4095 --mem 2K --json t.json &&
+    chk track-json t.json 1 2 1.0 --count ok 18 --count masked 18
+  run 0 track a.png b.png --mem 4K && grep -q "^memory: " out.txt || fail "--mem summary"
+  run 2 track a.png b.png --mem 47                  # below one row of area + window
   ;;
 
 compare)
