@@ -189,8 +189,8 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
 /* Status and vector of window k; on OK also runs the search. */
 static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
                         ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
-                        uint32_t row, uint32_t col1, ssda_track_vector_t *v,
-                        ssda_track_stats_t *st)
+                        uint32_t row, uint32_t col1, const ssda_track_origin_t *o,
+                        ssda_track_vector_t *v, ssda_track_stats_t *st)
 {
     const ssda_track_grid_t *g = &p->grid;
     const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
@@ -212,12 +212,13 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     v->y = (uint16_t)wy;
     v->exact = false;
     v->status = (uint8_t)SSDA_TRACK_EDGE;
-    if (wx < hx || wy < hy || wx - hx + g->search_w > first->width ||
-        wy - hy + g->search_h > first->height) {
+    if (wx < hx || wy < hy || wx - hx + g->search_w > o->first_w ||
+        wy - hy + g->search_h > o->first_h) {
         return SSDA_OK;
     }
-    make_sub(&win, &win_ctx, second, wx, wy, g->win_w, g->win_h);
-    make_sub(&area, &area_ctx, first, wx - hx, wy - hy, g->search_w, g->search_h);
+    make_sub(&win, &win_ctx, second, wx - o->second_x, wy - o->second_y, g->win_w, g->win_h);
+    make_sub(&area, &area_ctx, first, wx - hx - o->first_x, wy - hy - o->first_y, g->search_w,
+             g->search_h);
     if (mask || texture) {
         err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
         if (err != SSDA_OK) {
@@ -283,16 +284,27 @@ static void stats_zero(ssda_track_stats_t *st)
     st->edge = 0u;
 }
 
-int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
-                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
+                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
+                    ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
     ssda_track_stats_t st = *acc;
+    ssda_track_origin_t whole;
     uint32_t row, col;
-    for (row = 0u; row < plan->grid.rows; row++) {
+    if (origin == NULL) {
+        whole.first_x = 0u;
+        whole.first_y = 0u;
+        whole.first_w = first->width;
+        whole.first_h = first->height;
+        whole.second_x = 0u;
+        whole.second_y = 0u;
+        origin = &whole;
+    }
+    for (row = row0; row < row1; row++) {
         for (col = col0; col < col1; col++) {
             ssda_track_vector_t v;
-            int err = solve_window(first, second, plan, out, col, row, col1, &v, &st);
+            int err = solve_window(first, second, plan, out, col, row, col1, origin, &v, &st);
             if (err != SSDA_OK) {
                 return err;
             }
@@ -308,6 +320,14 @@ int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
     }
     *acc = st;
     return SSDA_OK;
+}
+
+int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
+                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+{
+    return ssda_track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
+                           acc);
 }
 
 int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,

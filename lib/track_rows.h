@@ -65,4 +65,30 @@ int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
                      ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc);
 
+/*
+ * Where the row sources given to ssda_track_part lie in the images, for a
+ * caller that keeps only a band of each image in RAM (the stream layer's
+ * plates): pixel (0, 0) of first is FIRST's pixel (first_x, first_y) and
+ * pixel (0, 0) of second is SECOND's (second_x, second_y); FIRST is
+ * first_w x first_h pixels (the EDGE test uses these, not first's size).
+ * The search area and window of every non-EDGE window of the part must lie
+ * inside first and second.
+ */
+typedef struct {
+    uint32_t first_x, first_y, first_w, first_h;
+    uint32_t second_x, second_y;
+} ssda_track_origin_t;
+
+/*
+ * ssda_track_strip over grid rows row0 .. row1-1 only (row0 < row1 <=
+ * plan->grid.rows), with row sources placed by origin (NULL: the whole
+ * images). Prediction takes every row above row0 as solved, besides what
+ * ssda_track_strip takes, so calling it row by row, strip by strip, gives
+ * what one ssda_track_strip call per strip gives. Same returns and effects.
+ */
+int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
+                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
+                    ssda_track_vector_t *out, ssda_track_stats_t *acc);
+
 #endif /* SSDA_TRACK_ROWS_H */
