@@ -305,6 +305,54 @@ static double auto_arrow_scale(const draw_vector_t *v, size_t n, double step)
     return fmax(1.0, nice_floor(step / p90));
 }
 
+/* The status legend: one swatch and count per status present (vectors
+   always), then the reference arrows if any; wraps at width W. Draws only
+   when draw != 0. Returns the number of lines used. */
+static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t *counts,
+                        size_t truths, double W, double y, int draw)
+{
+    static const char *names[DRAW_STATUS_COUNT] = {"vector", "excluded (all dark or all bright)",
+                                                    "masked (fill value)",
+                                                    "edge (area leaves image)"};
+    char buf[256];
+    double x = 12.0;
+    int lines = 1;
+    size_t i;
+    for (i = 0; i <= DRAW_STATUS_COUNT; i++) {
+        double w;
+        if (i == DRAW_STATUS_COUNT) { /* the reference arrows */
+            if (truths == 0) {
+                break;
+            }
+            snprintf(buf, sizeof buf, "%s",
+                     o->truth_label != NULL ? o->truth_label : "known motion (truth)");
+        } else if (counts[i] == 0 && i != DRAW_OK) {
+            continue;
+        } else {
+            snprintf(buf, sizeof buf, "%s: %zu", names[i], counts[i]);
+        }
+        w = 34 + text_width(cr, 13, 0, buf);
+        if (x > 12.0 && x + w > W - 8) { /* wrap */
+            x = 12.0;
+            y += 26.0;
+            lines++;
+        }
+        if (draw) {
+            if (i == DRAW_STATUS_COUNT) {
+                arrow(cr, x, y - 4, x + 26, y - 4, truth_rgb, 1.6);
+            } else if (i == DRAW_OK) {
+                arrow(cr, x, y - 4, x + 26, y - 4, status_rgb[DRAW_OK], 2.5);
+            } else {
+                status_mark(cr, x + 12, y - 4, (int)i, 5.0);
+            }
+            cairo_set_source_rgb(cr, 1, 1, 1);
+            text_at(cr, x + 34, y, 13, 0, buf);
+        }
+        x += w + 22;
+    }
+    return lines;
+}
+
 int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const draw_vector_t *v,
                     size_t n, const draw_vectors_opts_t *opts, double *scale_used, char *err,
                     size_t errlen)
@@ -313,7 +361,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     cairo_surface_t *img_s, *out;
     cairo_t *cr;
     double m = bg->width > bg->height ? bg->width : bg->height;
-    double z, scale, top, bottom = 74.0, W, H, ox, lw, ref, y, x;
+    double z, scale, top, bottom, W, H, ox, lw, ref, y;
     size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0;
     char buf[256];
     int rc;
@@ -338,7 +386,12 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     }
     top = (o.title != NULL ? 26.0 : 0.0) + (o.subtitle != NULL ? 20.0 : 0.0) + 8.0;
     W = fmax(ceil(bg->width * z), 720.0);
-    { /* wide enough for the title lines */
+    for (i = 0; i < n; i++) {
+        int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
+        counts[st]++;
+        truths += v[i].has_truth != 0;
+    }
+    { /* wide enough for the title lines; tall enough for the legend */
         cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
         cairo_t *m_cr = cairo_create(scratch);
         if (o.title != NULL) {
@@ -347,6 +400,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
         if (o.subtitle != NULL) {
             W = fmax(W, ceil(text_width(m_cr, 13, 0, o.subtitle)) + 20.0);
         }
+        bottom = 48.0 + 26.0 * legend_items(m_cr, &o, counts, truths, W, 0.0, 0);
         cairo_destroy(m_cr);
         cairo_surface_destroy(scratch);
     }
@@ -374,7 +428,6 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     for (i = 0; i < n; i++) {
         int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
         double tx = ox + (v[i].x + 0.5) * z, ty = top + (v[i].y + 0.5) * z;
-        counts[st]++;
         if (st == DRAW_OK) {
             arrow(cr, tx, ty, tx + v[i].dx * scale * z, ty + v[i].dy * scale * z,
                   status_rgb[DRAW_OK], lw);
@@ -382,7 +435,6 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
             status_mark(cr, tx, ty, st, fmax(3.5, lw * 1.8));
         }
         if (v[i].has_truth) { /* on top and thinner: a cyan core where both agree */
-            truths++;
             arrow(cr, tx, ty, tx + v[i].tdx * scale * z, ty + v[i].tdy * scale * z, truth_rgb,
                   fmax(1.0, lw * 0.45));
         }
@@ -400,38 +452,12 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
         text_at(cr, 10, y + 15, 13, 0, o.subtitle);
     }
 
-    /* Legend: one swatch per status present, then the scale arrow. */
+    /* Legend, then the scale arrow on the last line. */
     y = H - bottom + 24.0;
-    x = 12.0;
-    {
-        static const char *names[DRAW_STATUS_COUNT] = {"vector",
-                                                        "excluded (all dark or all bright)",
-                                                        "masked (fill value)",
-                                                        "edge (area leaves image)"};
-        for (i = 0; i < DRAW_STATUS_COUNT; i++) {
-            if (counts[i] == 0 && i != DRAW_OK) {
-                continue;
-            }
-            if (i == DRAW_OK) {
-                arrow(cr, x, y - 4, x + 26, y - 4, status_rgb[DRAW_OK], 2.5);
-            } else {
-                status_mark(cr, x + 12, y - 4, (int)i, 5.0);
-            }
-            snprintf(buf, sizeof buf, "%s: %zu", names[i], counts[i]);
-            cairo_set_source_rgb(cr, 1, 1, 1);
-            text_at(cr, x + 34, y, 13, 0, buf);
-            x += 34 + text_width(cr, 13, 0, buf) + 22;
-        }
-        if (truths > 0) {
-            arrow(cr, x, y - 4, x + 26, y - 4, truth_rgb, 1.6);
-            cairo_set_source_rgb(cr, 1, 1, 1);
-            text_at(cr, x + 34, y, 13, 0,
-                    o.truth_label != NULL ? o.truth_label : "known motion (truth)");
-        }
-    }
+    y += 26.0 * (legend_items(cr, &o, counts, truths, W, y, 1) - 1);
     /* Scale: a reference arrow of a round motion drawn 60..150 px long. */
     ref = nice_floor(120.0 / (scale * z));
-    y += 30.0;
+    y += 28.0;
     arrow(cr, 12, y - 4, 12 + ref * scale * z, y - 4, status_rgb[DRAW_OK], 2.5);
     if (z != 1.0) {
         snprintf(buf, sizeof buf, "= %g px of motion   (arrows drawn %g x longer than the "
