@@ -80,13 +80,16 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
         return;
     }
     for (t = c->lag_min - 1u; t <= c->lag_max + 1u; t++) {
-        int64_t d = 0, s = level;
+        /* int32 is enough here (d <= 8192 * 65535 < 2^29, and the lagged
+           level likewise) and much faster on 32-bit targets */
+        int32_t d = 0, b = 0, m32 = (int32_t)mean;
         for (i = 0; i < c->frame_len; i++) {
-            d += iabs((int64_t)x[i] - x[i + t]);
-            s += iabs(x[i + t] - mean);
+            int32_t u = (int32_t)x[i] - x[i + t], w = (int32_t)x[i + t] - m32;
+            d += u < 0 ? -u : u;
+            b += w < 0 ? -w : w;
         }
         g_d[t] = d;
-        g_s[t] = s;
+        g_s[t] = level + b;
     }
     /* Runs of n <= threshold in [lag_min, lag_max]. A run counts when a
        peak n > rearm lies between the previous run and it (for the first

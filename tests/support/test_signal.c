@@ -244,7 +244,8 @@ void test_signal_voice(int16_t *out, uint32_t n, uint32_t start, uint32_t rate,
 {
     /* Harmonic amplitudes and phases at the centre f0 (the formants move
        little under vibrato; amplitudes fixed keeps the f0 exact). */
-    double amp[MAX_HARMONICS], phs[MAX_HARMONICS], total = 0.0;
+    double amp[MAX_HARMONICS], phs[MAX_HARMONICS], cph[MAX_HARMONICS], sph[MAX_HARMONICS];
+    double total = 0.0;
     double fmax = v->f0_hz * (1.0 + (v->vibrato_hz > 0.0 ? v->vibrato_depth : 0.0));
     uint32_t nh = v->harmonics, h, i;
     if (nh == 0u) {
@@ -263,11 +264,27 @@ void test_signal_voice(int16_t *out, uint32_t n, uint32_t start, uint32_t rate,
         phs[h] = test_atan2(im, re);
         total += amp[h];
     }
+    for (h = 0; h < nh; h++) {
+        cph[h] = test_cos(phs[h]);
+        sph[h] = test_sin(phs[h]);
+    }
     for (i = 0; i < n; i++) {
         double t = (double)(start + i) / (double)rate;
         double ph = voice_phase(v, t), s = 0.0;
+        /* sin and cos of h * ph by the Chebyshev recurrence
+           f((h + 1) ph) = 2 cos(ph) f(h ph) - f((h - 1) ph): one sin/cos
+           per sample instead of one per harmonic (fast on soft-float targets) */
+        double c1 = test_cos(ph), s1 = test_sin(ph);
+        double sp = 0.0, cp = 1.0, sh = s1, ch = c1; /* h = 0 and h = 1 */
         for (h = 0; h < nh; h++) {
-            s += amp[h] * test_sin((double)(h + 1u) * ph + phs[h]);
+            double sn, cn;
+            s += amp[h] * (sh * cph[h] + ch * sph[h]); /* sin(h ph + phase_h) */
+            sn = 2.0 * c1 * sh - sp;
+            cn = 2.0 * c1 * ch - cp;
+            sp = sh;
+            cp = ch;
+            sh = sn;
+            ch = cn;
         }
         out[i] = to_i16(s * v->amplitude / total);
     }
