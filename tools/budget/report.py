@@ -266,11 +266,15 @@ def main():
                 f, r = section_sizes(tool, elf)
                 sizes[(name, feat)] = (f - base[0], r - base[1])
         w("### Flash and static RAM per feature (bytes, -Os)\n\n")
+        no_ram = all(v is None or v[1] == 0 for v in sizes.values())
         w("Each feature's whole public API linked into an empty firmware "
           "(with `--gc-sections`), minus the empty firmware: library code, "
           "constants, and what it pulls from libgcc and the C library "
-          "(64-bit division, `memcpy`). Static RAM (`.data` + `.bss`) is 0 "
-          "for every feature: all state is in caller buffers.\n\n")
+          "(64-bit division, for instance; `memcpy` and `memset` are in "
+          "every firmware, the empty one included, and so not counted). " +
+          ("Static RAM (`.data` + `.bss`) is 0 for every feature: all state "
+           "is in caller buffers.\n\n" if no_ram else
+           "Static RAM (`.data` + `.bss`), where not 0, in parentheses.\n\n"))
         w("| feature | " + " | ".join(n for n, _ in targets) + " | Cortex-M0+ target |\n")
         w("|---|" + "---:|" * len(targets) + "---|\n")
         order = [f for f in ("match", "pitch", "stream", "track", "grad", "view", "ssda") if f in feats]
@@ -291,6 +295,33 @@ def main():
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
             label = FEATURE_NAMES.get(feat, f"`{feat}.h`") if feat != "all" else "everything"
             w(f"| {label} | " + " | ".join(cells) + f" | {verdict} |\n")
+
+        # Where the bytes go on the first target (the M0+), for the features
+        # with a target: library functions and runtime routines by size.
+        name0, build0 = targets[0]
+        nm = cache_value(build0, "CMAKE_OBJDUMP")[: -len("objdump")] + "nm"
+        lib_syms = set(subprocess.run([nm, "--defined-only", os.path.join(build0, "ssda", "lib", "libssda.a")],
+                                      capture_output=True, text=True).stdout.split())
+        base_syms = set(subprocess.run([nm, os.path.join(build0, "fw_base.elf")],
+                                       capture_output=True, text=True).stdout.split())
+        for feat in [f for f in order if f in M0_FLASH_TARGETS]:
+            elf = os.path.join(build0, f"fw_{feat}.elf")
+            if not os.path.exists(elf):
+                continue
+            out = subprocess.run([nm, "-S", "--size-sort", elf], capture_output=True, text=True).stdout
+            parts, seen = [], set()
+            for line in reversed(out.splitlines()):
+                p = line.split()
+                if len(p) != 4 or p[3] in base_syms or p[0] in seen:
+                    continue
+                seen.add(p[0])  # aliases share an address
+                parts.append((int(p[1], 16), p[3], p[3] in lib_syms))
+            lib = sum(n for n, _, own in parts if own)
+            w(f"\n<details><summary>{name0}, {FEATURE_NAMES.get(feat, feat)}: "
+              f"{fmt(lib)} B library, {fmt(sum(n for n, _, own in parts) - lib)} B runtime "
+              "(libgcc, C library)</summary>\n\n")
+            w(", ".join(f"`{n}` {sz}" + ("" if own else "*") for sz, n, own in parts) +
+              "\n\n(* runtime routine)\n</details>\n")
 
         stacks = {name: stack_worst(build) for name, build in targets}
         w("\n### Worst-case stack per public function (bytes, -Os)\n\n")
