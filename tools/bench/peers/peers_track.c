@@ -54,10 +54,8 @@ static void bare_search(const ssda_view_t *first, const ssda_view_t *second,
     }
 }
 
-/* One timed run of method m; vectors land in run->out + m * count (OpenCV:
-   converted from the best placement). Returns the seconds taken, < 0 on error. */
-static double run_method(const peers_pair_t *p, track_run_t *r, int m, unsigned win,
-                         ssda_track_stats_t *st)
+static double run_timed(const peers_pair_t *p, track_run_t *r, int m, unsigned win,
+                        ssda_track_stats_t *st)
 {
     ssda_track_vector_t *out = r->out + (size_t)m * r->count;
     double t0, t;
@@ -78,9 +76,10 @@ static double run_method(const peers_pair_t *p, track_run_t *r, int m, unsigned 
         for (size_t j = 0; j < r->njobs; j++) {
             bare_search(&p->first, &p->second, &r->jobs[j], win, &r->bx[j], &r->by[j]);
         }
-    } else if (cv_peer_match(p->cv_first, p->cv_second, r->jobs, r->njobs, (uint16_t)win, (uint16_t)win,
-                      (uint16_t)(2 * win), (uint16_t)(2 * win),
-                      m == M_SQDIFF ? CV_PEER_SQDIFF : CV_PEER_CCOEFF_NORMED, r->bx, r->by) != 0) {
+    } else if (cv_peer_match(p->cv_first, p->cv_second, r->jobs, r->njobs, (uint16_t)win,
+                             (uint16_t)win, (uint16_t)(2 * win), (uint16_t)(2 * win),
+                             m == M_SQDIFF ? CV_PEER_SQDIFF : CV_PEER_CCOEFF_NORMED, r->bx,
+                             r->by) != 0) {
         return -1.0;
     }
     t = peers_now() - t0;
@@ -94,6 +93,17 @@ static double run_method(const peers_pair_t *p, track_run_t *r, int m, unsigned 
     return t;
 }
 
+/* One timed run of method m; vectors land in run->out + m * count (OpenCV:
+   converted from the best placement). Returns the wall seconds taken, < 0
+   on error; *cpu receives the thread's processor seconds. */
+static double run_method(const peers_pair_t *p, track_run_t *r, int m, unsigned win,
+                         ssda_track_stats_t *st, double *cpu)
+{
+    double c0 = peers_cpu_now(), t = run_timed(p, r, m, win, st);
+    *cpu = peers_cpu_now() - c0;
+    return t;
+}
+
 int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
 {
     ssda_track_config_t base;
@@ -102,7 +112,8 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
     track_run_t r;
     size_t work_size = SSDA_TRACK_WORK_SIZE(2 * win, 2 * win, win, win);
     void *work = malloc(work_size);
-    double *times = calloc((size_t)reps * M_COUNT, sizeof *times), med[M_COUNT];
+    double *times = calloc((size_t)reps * M_COUNT * 2u, sizeof *times), med[M_COUNT];
+    double *cpu_times = times + (size_t)reps * M_COUNT, med_cpu[M_COUNT], cpu;
     peers_agree_t vs_ref[M_COUNT], vs_truth[M_COUNT];
     uint32_t identical = 0;
     int e, m, rc = -1;
@@ -145,7 +156,7 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
 
     /* The windows every method searches: those brute force finds OK (not at
        the edge, not touching the fill value). Untimed. */
-    if (run_method(p, &r, M_NONE, win, &st_ref) < 0) {
+    if (run_method(p, &r, M_NONE, win, &st_ref, &cpu) < 0) {
         goto done;
     }
     for (size_t k = 0; k < r.count; k++) {
@@ -168,15 +179,17 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
        method alike; the median of each method is kept. */
     for (int k = 0; k < reps; k++) {
         for (m = 0; m < M_COUNT; m++) {
-            double t = run_method(p, &r, m, win, &st[m]);
+            double t = run_method(p, &r, m, win, &st[m], &cpu);
             if (t < 0) {
                 goto done;
             }
             times[(size_t)m * reps + k] = t;
+            cpu_times[(size_t)m * reps + k] = cpu;
         }
     }
     for (m = 0; m < M_COUNT; m++) {
         med[m] = peers_median(times + (size_t)m * reps, (size_t)reps);
+        med_cpu[m] = peers_median(cpu_times + (size_t)m * reps, (size_t)reps);
     }
 
     memset(vs_ref, 0, sizeof vs_ref);
@@ -204,16 +217,17 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
     printf("\n### Grid tracking, %ux%u windows in %ux%u areas (step %u): %s\n\n", win, win, 2 * win,
            2 * win, win, p->name);
     printf("%s. %zu windows searched by every method (of %u: %u at the edge, %u touching the "
-           "fill value). Wall time per searched window, median of %d interleaved runs of the "
-           "whole grid.\n\n",
+           "fill value). Time per searched window, median of %d interleaved runs of the whole "
+           "grid: wall time, and the thread's processor time (which leaves out waits for a "
+           "core on a loaded machine).\n\n",
            p->description, r.njobs, grid.count, st_ref.edge, st_ref.masked, reps);
-    printf("| method | us / window | ssda `auto` faster by | pixel ops / window | vectors vs "
-           "brute force (equal / within 1 / within 2 px) |%s\n",
+    printf("| method | us / window | ssda `auto` faster by | CPU us / window | faster by (CPU) "
+           "| pixel ops / window | vectors vs brute force (equal / within 1 / within 2 px) |%s\n",
            p->synthetic_truth ? " vs known motion (equal / within 1 / within 2 px) |" : "");
-    printf("|---|---:|---:|---:|---:|%s\n", p->synthetic_truth ? "---:|" : "");
+    printf("|---|---:|---:|---:|---:|---:|---:|%s\n", p->synthetic_truth ? "---:|" : "");
     for (m = 0; m < M_COUNT; m++) {
-        printf("| %s | %.2f | %.1fx | ", k_names[m], 1e6 * med[m] / (double)r.njobs,
-               med[m] / med[M_AUTO]);
+        printf("| %s | %.2f | %.1fx | %.2f | %.1fx | ", k_names[m], 1e6 * med[m] / (double)r.njobs,
+               med[m] / med[M_AUTO], 1e6 * med_cpu[m] / (double)r.njobs, med_cpu[m] / med_cpu[M_AUTO]);
         if (m == M_AUTO || m == M_NONE) {
             printf("%.0f | ", (double)st[m].pixel_ops / (double)st[m].ok);
         } else if (m == M_BARE) {
