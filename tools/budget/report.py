@@ -18,11 +18,12 @@ import re
 import subprocess
 import sys
 
-# Targets of the issue (Cortex-M0+, -Os), bytes of flash.
-M0_FLASH_TARGETS = {"match": 2048, "pitch": 1536, "stream": 2048}
+# Targets of the issue (Cortex-M0+, -Os), bytes of flash: the search core
+# (ssda_match), the pitch stream, the streaming layer (the block source).
+M0_FLASH_TARGETS = {"match-match": 2048, "pitch": 1536, "stream-source": 2048}
 STACK_LIMIT = 256
 FEATURE_NAMES = {
-    "match": "SSDA search core (`match.h`)",
+    "match": "SSDA search (`match.h`)",
     "pitch": "AMDF pitch (`pitch.h`)",
     "stream": "block-streamed images (`stream.h`)",
     "track": "grid tracking (`track.h`)",
@@ -40,9 +41,9 @@ def cache_value(build, key):
     raise SystemExit(f"report.py: {key} not in {build}/CMakeCache.txt")
 
 
-def read_features(build):
+def read_features(build, kind="features"):
     feats = {}
-    with open(os.path.join(build, "features.txt")) as f:
+    with open(os.path.join(build, kind + ".txt")) as f:
         for line in f:
             name, _, fns = line.partition(":")
             feats[name.strip()] = fns.split()
@@ -254,11 +255,12 @@ def main():
 
     if targets:
         feats = read_features(targets[0][1])
+        parts = read_features(targets[0][1], "parts")
         sizes = {}
         for name, build in targets:
             tool = cache_value(build, "CMAKE_SIZE")
             base = section_sizes(tool, os.path.join(build, "fw_base.elf"))
-            for feat in list(feats) + ["all"]:
+            for feat in list(feats) + list(parts) + ["all"]:
                 elf = os.path.join(build, f"fw_{feat}.elf")
                 if not os.path.exists(elf):
                     sizes[(name, feat)] = None  # did not link
@@ -279,7 +281,11 @@ def main():
         w("|---|" + "---:|" * len(targets) + "---|\n")
         order = [f for f in ("match", "pitch", "stream", "track", "grad", "view", "ssda") if f in feats]
         order += sorted(f for f in feats if f not in order) + ["all"]
+        rows = []
         for feat in order:
+            rows.append(feat)
+            rows += sorted(p for p in parts if p.startswith(feat + "-"))
+        for feat in rows:
             cells = []
             for name, _ in targets:
                 if sizes[(name, feat)] is None:
@@ -293,7 +299,13 @@ def main():
             verdict = ""
             if goal and m0 is not None:
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
-            label = FEATURE_NAMES.get(feat, f"`{feat}.h`") if feat != "all" else "everything"
+            if feat == "all":
+                label = "everything"
+            elif feat in parts:
+                label = "&nbsp;&nbsp;of which `ssda_" + feat.split("-", 1)[1] + "*`" + \
+                    {"match-match": " (search core)", "stream-source": " (streaming layer)"}.get(feat, "")
+            else:
+                label = FEATURE_NAMES.get(feat, f"`{feat}.h`")
             w(f"| {label} | " + " | ".join(cells) + f" | {verdict} |\n")
 
         # Where the bytes go on the first target (the M0+), for the features
@@ -304,7 +316,7 @@ def main():
                                       capture_output=True, text=True).stdout.split())
         base_syms = set(subprocess.run([nm, os.path.join(build0, "fw_base.elf")],
                                        capture_output=True, text=True).stdout.split())
-        for feat in [f for f in order if f in M0_FLASH_TARGETS]:
+        for feat in [f for f in rows if f in M0_FLASH_TARGETS]:
             elf = os.path.join(build0, f"fw_{feat}.elf")
             if not os.path.exists(elf):
                 continue
@@ -317,7 +329,10 @@ def main():
                 seen.add(p[0])  # aliases share an address
                 parts.append((int(p[1], 16), p[3], p[3] in lib_syms))
             lib = sum(n for n, _, own in parts if own)
-            w(f"\n<details><summary>{name0}, {FEATURE_NAMES.get(feat, feat)}: "
+            title = FEATURE_NAMES.get(feat) or ("`ssda_" + feat.split("-", 1)[-1] + "*` (" +
+                                                {"match-match": "search core",
+                                                 "stream-source": "streaming layer"}.get(feat, feat) + ")")
+            w(f"\n<details><summary>{name0}, {title}: "
               f"{fmt(lib)} B library, {fmt(sum(n for n, _, own in parts) - lib)} B runtime "
               "(libgcc, C library)</summary>\n\n")
             w(", ".join(f"`{n}` {sz}" + ("" if own else "*") for sz, n, own in parts) +
