@@ -70,7 +70,7 @@ uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
  * Analyse one frame x[0 .. info->span - 1] (the rule in pitch.h).
  *   predict_lag: with SSDA_PITCH_TRACK, a lag to sum first (0 or out of
  *                range = none). Changes work only.
- *   est:         written in full except est->frame.
+ *   est:         written in full except est->frame and est->center.
  */
 void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est);

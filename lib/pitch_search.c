@@ -21,7 +21,13 @@ typedef struct {
     const int16_t *x;
     int32_t mean;     /* m */
     uint32_t level;   /* A */
-    uint32_t diffs;   /* absolute differences so far: <= (lag_max + 4) * K < 2^26 */
+    /* Absolute differences so far. Lags summed: the scan and its extras
+       <= lag_max - lag_min + 6 (< 4 810); the octave check <= 3 per multiple
+       k P <= lag_max + 1 plus 2 per move, and a move takes P to at least
+       2 P - 1.5 (P >= 3.5: at most 12 moves, sum of 1/P < 0.7), so it adds
+       < 3 * 4 801 * 0.7 + 3 * 13 + 2 * 12 < 10 200.
+       Under 15 010 lags of K <= 8192: < 2^27. */
+    uint32_t diffs;
 } frame_t;
 
 /* n(p) < n(q), exactly: d_p * s_q < d_q * s_p (products < 2^59). */

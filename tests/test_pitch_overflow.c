@@ -140,8 +140,9 @@ static void test_full_scale_squares_with_dc_offsets_at_max_frame(void)
 
 static void test_largest_geometry_counts_work_exactly(void)
 {
-    /* 48 kHz, f0 10..12000 Hz, K = 8192: 4803 lags of 8192 in full mode,
-       39 346 176 differences, the most one frame can count. */
+    /* 48 kHz, f0 10..12000 Hz, K = 8192: lags 3..4801 (4799 of them) of
+       8192 in full mode, 39 313 408 differences: the most one frame counts
+       without an octave check (which needs a dip). */
     ssda_pitch_config_t cfg;
     ssda_pitch_info_t info;
     ssda_pitch_estimate_t e;

@@ -2,91 +2,100 @@
  * pitch.h - streaming pitch (f0) extraction with the average magnitude
  * difference function (AMDF) and SSDA early exit, in integers only.
  *
- * Seed: Onoe, Maeda, Saito 1976, appendix. For a segment of K samples the
- * AMDF at lag j is Y_j = sum_i |X_i - X_(i-j)|; the pitch period is the lag of
- * its dip. SSDA applies: a lag's sum is abandoned as soon as it passes a
- * threshold, and the threshold bounds every sum.
+ * Seed: Onoe, Maeda, Saito 1976, appendix: Y_j = sum_i |X_i - X_(i-j)|, the
+ * pitch period is the lag of its dip, and SSDA applies: a lag's sum is
+ * abandoned once it passes a threshold, which also bounds every sum.
+ * Design, measurements and the reasons behind each rule: docs/pitch.md.
  *
- * What is computed for one frame (x[0 .. span-1], span = K + lag_max + 1):
+ * THE DEFINITION (one frame x[0 .. span-1], span = K + lag_max + 1):
+ *   m    = floor((sum_{i<K} (x[i] + 32768) + floor(K/2)) / K) - 32768
+ *   A    = sum_{i<K} |x[i] - m|                 the frame's own level
+ *   d(t) = sum_{i<K} |x[i] - x[i+t]|            the AMDF
+ *   s(t) = A + sum_{i<K} |x[i+t] - m|           d(t) <= s(t)
+ *   n(t) = d(t) / s(t) in [0, 1]                normalised (0 = periodic)
+ * for lags t in [lag_min - 1, lag_max + 1]; thr = threshold_q15 / 32768,
+ * rearm = min(32767, 3 * threshold_q15 / 2) / 32768 (integer division).
+ * Silent when A < silence_mad * K: no search, lag 0. Otherwise:
+ *  1. Runs: maximal intervals of lags in [lag_min, lag_max] with n <= thr.
+ *     A run's minimum is its lag of smallest n (ties: the smaller lag).
+ *  2. A run is a dip when (a) a peak precedes it: some lag with n > rearm
+ *     lies between the start of the previous run (or lag_min - 1) and it;
+ *     for the first run n(lag_min - 1) > thr also counts; and (b) its
+ *     minimum is not lag_max with n(lag_max + 1) < n(lag_max). (a) rejects
+ *     the tail of the lag-0 dip and wiggles around thr; (b) a dip below
+ *     f0_min.
+ *  3. t = the minimum of the first dip (YIN's idea: the first dip, not the
+ *     global minimum, so no sub-octave errors as 2T, 3T, ... of plain AMDF).
+ *  4. Octave check (against octave-up errors when a harmonic dominates):
+ *     with P the sub-sample period at t (below) and F = b - |a - c| / 2
+ *     (V fit) or b - (a - c)^2 / (8 (a - 2b + c)) (parabola, 0 drop if
+ *     flat), floored at 0, from the Q20 values below: for k = 2, 3, ...
+ *     while round(k P) - 1 <= lag_max, m = the lag of smallest n among
+ *     round(k P) - 1 .. + 1 (within lag_max; ties: smaller); if
+ *     nq(m) + margin < F with margin = (threshold_q15 / 3) << 5, then
+ *     t = m and the check starts again from k = 2. round(v) =
+ *     floor(v + 1/2) on the Q16 value.
+ *  5. No dip: t = the lag in [lag_min, lag_max] of smallest n (ties:
+ *     smaller), and the frame is unvoiced.
+ * Sub-sample period through a, b, c = nq(t - 1), nq(t), nq(t + 1) with
+ * nq(u) = floor(2^20 d(u) / s(u)):
+ *   den = 2 (max(a, c) - b)  default: a V, the shape of an absolute-
+ *                            difference dip (exact for it)
+ *   den = 2 (a - 2b + c)     SSDA_PITCH_PARABOLIC: a parabola (the shape of
+ *                            a squared-difference dip, as in YIN)
+ *   delta_q16 = round_half_away(65536 (a - c) / den), 0 if den <= 0,
+ *               clamped to [-32768, 32768];
+ *   period_q16 = 65536 t + delta_q16;
+ *   f0_q16 = floor(((rate << 32) + floor(period_q16 / 2)) / period_q16);
+ *   confidence_q15 = 32767 - min(32767, floor(32768 n(t))).
+ * Voiced: a dip was found and n(t) <= voicing_q15 / 32768.
+ * All comparisons of n are exact (cross-multiplied), except those written
+ * with nq.
  *
- *   mean   m = floor((sum_{i<K} (x[i] + 32768) + floor(K/2)) / K) - 32768
- *   level  A = sum_{i<K} |x[i] - m|                (the frame's own level)
- *   AMDF   d(t) = sum_{i<K} |x[i] - x[i+t]|
- *   scale  s(t) = A + sum_{i<K} |x[i+t] - m|       (d(t) <= s(t): triangle inequality)
- *   n(t) = d(t) / s(t), in [0, 1]: the normalised difference (0 = periodic)
+ * EXACTNESS: lag, period_q16, f0_q16, confidence_q15, voiced, dip and
+ * silent are bit-identical to the definition evaluated with every d summed
+ * in full, in every mode (early exit, SSDA_PITCH_FULL, SSDA_PITCH_TRACK),
+ * for every chunk size, kernel set and push pattern; only `diffs` differs.
+ * tests/test_pitch_exact.c checks this against a brute-force reference.
+ * Why early exit keeps it exact:
+ *   - lags are scanned upwards from lag_min - 1, each summed in chunks and
+ *     cut once its partial sum passes its bound: the largest d with
+ *     n <= thr (n <= rearm while no peak has been seen since the last run),
+ *     or the largest d that still beats the best lag so far (the seed's
+ *     automatic threshold, Fig. 9), whichever is larger. So every lag that
+ *     can be in a run, prove a peak, or become the global minimum is summed
+ *     in full, and a cut lag is known to be above all three;
+ *   - |A - (s(t) - A)| <= d(t) rejects some lags before any difference;
+ *   - the scan stops at the end of the first dip: later lags cannot change
+ *     t except through the octave check, which sums its own lags with the
+ *     bound of its own test (nq < F - margin);
+ *   - with SSDA_PITCH_TRACK the previous voiced lag is summed first and
+ *     becomes the best so far (the seed's prediction): it only tightens
+ *     bounds, the rule depends on n alone;
+ *   - t - 1 and t + 1 are re-summed in full when they were cut.
  *
- * for lags t in [lag_min - 1, lag_max + 1]. A frame is silent when
- * A < silence_mad * K. Otherwise the chosen lag t* is (YIN's idea, on n):
- *   - a "run" is a maximal interval of lags in [lag_min, lag_max] with
- *     n(t) <= threshold; its minimum is its lag of smallest n (ties: the
- *     smallest lag). A run's minimum is a dip unless it sits on a range edge
- *     and is not a real minimum there (at lag_min it needs
- *     n(lag_min - 1) > n(lag_min), at lag_max it needs n(lag_max + 1) >=
- *     n(lag_max)): that excludes the tail of the lag-0 dip and dips below
- *     f0_min. t* = the minimum of the first (smallest-lag) dip run;
- *   - if no run qualifies: t* = the lag in [lag_min, lag_max] of smallest n
- *     (ties: the smallest lag).
- * Taking the first dip instead of the global minimum avoids the sub-octave
- * errors of plain AMDF (its minimum also falls on 2T, 3T, ...).
- * Sub-sample period: integer interpolation through the values
- * a, b, c = floor(2^20 * n(t* - 1, t*, t* + 1)) with
- *   den = 2 * (max(a, c) - b)   (default: a symmetric V, the shape of an
- *                                absolute-difference dip; exact for it)
- *   den = 2 * (a - 2b + c)      (SSDA_PITCH_PARABOLIC: a parabola, the
- *                                shape of a squared-difference dip)
- *   delta_q16 = round_half_away(65536 * (a - c) / den), 0 if den <= 0,
- *   clamped to [-32768, 32768] (half a sample);
- *   period_q16 = 65536 * t* + delta_q16,
- *   f0_q16     = floor(((rate << 32) + floor(period_q16 / 2)) / period_q16).
- * docs/pitch.md compares the two fits (the V fit has the smaller fine error
- * on steady tones, they tie on sung voice).
- * Voiced when not silent and n(t*) <= voicing threshold (compared exactly).
- *
- * EXACTNESS: every output except the work counters (lag, period_q16, f0_q16,
- * confidence_q15, voiced, dip) is bit-identical to the definition above
- * evaluated with every d(t) summed in full, in every mode (early exit or
- * SSDA_PITCH_FULL, with or without SSDA_PITCH_TRACK), for every kernel set
- * and every push pattern. Why early exit keeps it exact:
- *   - a lag is summed in chunks and cut once its partial sum exceeds
- *     max(floor(threshold * s(t)), what it must stay under to beat the best
- *     lag so far); every lag with n <= threshold, and every lag better than
- *     the best so far, is therefore summed in full (the automatic threshold
- *     of the seed, Fig. 9), and a cut lag is known to be above both;
- *   - before summing, |A - (s(t) - A)| <= d(t) (a successive-elimination
- *     lower bound) may reject the lag with no differences at all;
- *   - the scan goes up from lag_min and stops after the first dip run: no
- *     later lag can change t*;
- *   - with SSDA_PITCH_TRACK the previous voiced lag is summed first; its n
- *     lowers the best-so-far bound at once (the seed's prediction) but cannot
- *     change t*, because the rule above is a function of n only;
- *   - the neighbours t* +- 1 are re-summed in full when they were cut.
- *
- * Overflow (all proven by the limits below, tested at full scale):
- *   |x[i] - x[i+t]| <= 65535 and |x - m| <= 65535, K <= 8192, so
- *   d(t) <= 8192 * 65535 < 2^29 and s(t) <= 2 * 8192 * 65535 < 2^30 in
- *   uint32_t; cross products d * s < 2^59 in uint64_t. The seed's point holds
- *   too: a partial sum never exceeds its bound by more than one chunk
+ * OVERFLOW (proven by the limits below; each bound tested at full scale):
+ *   |x[i] - x[i+t]| <= 65535, |x - m| <= 65535, K <= 8192:
+ *   d(t) <= 8192 * 65535 < 2^29, s(t) < 2^30 (uint32_t); cross products
+ *   d * s < 2^59 and 2^20 d < 2^49 (uint64_t). The seed's point holds too:
+ *   a partial sum never exceeds its bound by more than one chunk
  *   (chunk * 65535), so the early exit itself bounds the accumulator.
  *
- * Input filter: unless SSDA_PITCH_NO_FILTER, pushed samples pass through two
- * cascaded one-pole low-pass filters before analysis (as the AMDF extractor
- * of Ross et al. filtered at 900 Hz). High harmonics of bright sources then
- * no longer spoil the dip at integer lags near a fractional period, which
- * otherwise makes a multiple of the period win (measured in docs/pitch.md).
- * Each pole, with y in Q15 (samples * 2^15) and a = lowpass_q15:
- *   y += trunc(a * (32768 * in - y) / 32768)      (int64 product, exact)
- *   a  = round(32768 * w / (1 + w)), w = 2 pi lowpass_hz / rate
- * and the analysed sample is floor((y2 + 16384) / 32768). Both states start
- * at 32768 * (the first sample after init/reset), so a constant input comes
- * out unchanged from the start. y stays a convex combination of inputs, so
- * |y| <= 32768 * 2^15 and the output is int16.
- * Everything said above about exactness concerns the analysed samples.
+ * INPUT FILTER: unless SSDA_PITCH_NO_FILTER, pushed samples pass two
+ * cascaded one-pole low-pass filters (Ross et al.'s AMDF extractor filtered
+ * at 900 Hz): high harmonics of bright sources otherwise spoil the dip at
+ * integer lags near a fractional period. Per pole, y in Q15:
+ *   y += trunc(a (32768 in - y) / 32768)        (int64 product)
+ *   a  = round(32768 w / (1 + w)), w = 2 pi lowpass_hz / rate
+ *        (2 pi taken as 411775 / 65536)
+ * the analysed sample is floor((y2 + 16384) / 32768), and both states start
+ * at 32768 * (first sample after init/reset). y is a convex combination of
+ * inputs: |y| <= 2^30, the output is int16. The definition above applies to
+ * the filtered samples.
  *
- * Time: estimate number f (from 0 after init/reset) analyses stream samples
- * [f * hop, f * hop + span); its reference segment is the first K of them.
- * The chosen lag t* compares samples [f * hop, f * hop + K + t*), so the
- * estimate belongs to their centre, f * hop + (K + t*) / 2 (est->center):
- * using span / 2 instead costs several cents of fine error under vibrato.
+ * TIME: estimate f (from 0 after init/reset) analyses stream samples
+ * [f hop, f hop + span); lag t compares [f hop, f hop + K + t), so the
+ * estimate belongs to their centre f hop + (K + t) / 2 (est->center).
  */
 #ifndef SSDA_PITCH_H
 #define SSDA_PITCH_H

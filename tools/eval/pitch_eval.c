@@ -36,7 +36,7 @@ typedef struct {
     double hop_ms;
     uint16_t f0_min, f0_max, frame_len, chunk;
     double threshold, voicing;
-    int synth, full_check, per_file, no_filter;
+    int synth, full_check, per_file, no_filter, parabolic;
     uint16_t lowpass;
     uint32_t synth_notes, synth_rate;
 } options_t;
@@ -58,7 +58,8 @@ static ssda_pitch_config_t make_cfg(const options_t *o, uint32_t rate, uint8_t f
     c.threshold_q15 = (uint16_t)lrint(o->threshold * 32768.0);
     c.voicing_q15 = (uint16_t)lrint(o->voicing * 32768.0);
     c.lowpass_hz = o->lowpass;
-    c.flags = (uint8_t)(flags | (o->no_filter ? SSDA_PITCH_NO_FILTER : 0u));
+    c.flags = (uint8_t)(flags | (o->no_filter ? SSDA_PITCH_NO_FILTER : 0u) |
+                        (o->parabolic ? SSDA_PITCH_PARABOLIC : 0u));
     return c;
 }
 
@@ -200,6 +201,7 @@ static void usage(void)
             "  --chunk N           samples between early-exit tests (0 = default)\n"
             "  --threshold T       dip threshold, 0..1 (0 = library default)\n"
             "  --lowpass HZ        input low-pass cutoff (0 = f0 max); --no-filter: none\n"
+            "  --parabolic         parabolic instead of V-shaped sub-sample fit\n"
             "  --voicing V         voicing threshold, 0..1 (0 = the dip threshold)\n"
             "  --no-full-check     skip the no-early-exit run that checks identical results\n"
             "  --per-file          also print a table row set per file\n"
@@ -226,7 +228,7 @@ static int find_ref(const char *audio, char *out, size_t outlen)
 
 int main(int argc, char **argv)
 {
-    options_t o = {5.8, 50, 1000, 0, 0, 0.0, 0.0, 1, 1, 0, 0, 0, 40, 16000};
+    options_t o = {5.8, 50, 1000, 0, 0, 0.0, 0.0, 1, 1, 0, 0, 0, 0, 40, 16000};
     /* the synthetic set: vowel songs at several SNRs, bright pulse songs */
     static const struct { int bright; double snr; } sets[] = {
         {0, 200.0}, {0, 30.0}, {0, 20.0}, {0, 10.0}, {1, 200.0}, {1, 20.0}};
@@ -253,14 +255,16 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--voicing") && i + 1 < argc) o.voicing = atof(argv[++i]);
         else if (!strcmp(a, "--lowpass") && i + 1 < argc) o.lowpass = (uint16_t)atoi(argv[++i]);
         else if (!strcmp(a, "--no-filter")) o.no_filter = 1;
+        else if (!strcmp(a, "--parabolic")) o.parabolic = 1;
         else if (a[0] == '-') { usage(); return 2; }
         else files[nfiles++] = argv[i];
     }
 
     printf("ssda pitch evaluation: f0 %u-%u Hz, hop %.1f ms, threshold %.2f, low-pass %s, "
-           "kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
+           "%s fit, kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
            o.threshold > 0 ? o.threshold : SSDA_PITCH_DEFAULT_THRESHOLD_Q15 / 32768.0,
-           o.no_filter ? "off" : o.lowpass ? "as given" : "at f0 max", ssda_kernel_name(),
+           o.no_filter ? "off" : o.lowpass ? "as given" : "at f0 max",
+           o.parabolic ? "parabolic" : "V", ssda_kernel_name(),
            have_aubio() ? "" : " (aubio not found: YIN rows missing)");
     print_header();
 
