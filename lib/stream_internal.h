@@ -14,11 +14,13 @@ static inline bool stream_ready(const ssda_source_t *s)
     return s->cfg.width != 0u;
 }
 
-/* Largest plate width (px) of h rows that the arena holds, 0 if none. */
-uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h);
+/* Largest plate width (px) of h rows that the arena holds with `extra`
+   bytes set aside for a larger bounce buffer, 0 if none. */
+uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra);
 
-/* Largest number of plate rows of w px that the arena holds, 0 if none. */
-uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w);
+/* Largest number of plate rows of w px that the arena holds with `extra`
+   bytes set aside, 0 if none. */
+uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra);
 
 /*
  * Shape the plate for a job over region r (inside the image) that fetches
@@ -27,12 +29,19 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w);
  * region height), else the widest plate of `rows` rows, else span x (as many
  * rows as fit). Keeps the plate's pixels when its shape does not change.
  * q: rows between the starts of the bands the job visits (the plate's row
- * lattice, see place_y; 0 = 1, at most the plate height).
+ * lattice, see place_y; 0 = 1, at most the plate height). extra: bytes left
+ * to the bounce buffer beyond its minimum when the plate is shaped for the
+ * region or for `rows` (not in the span x 1 fallback).
  * Returns SSDA_OK or SSDA_ERR_BUFFER (not even one row of span px fits)
  * with the source unchanged.
  */
 int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                      uint32_t rows, uint32_t q);
+                      uint32_t rows, uint32_t q, size_t extra);
+
+/* Put the plate at (x0, y0) (inside the image), reading only the rows it
+   does not hold yet. Counts a hit when it is there already, else a miss.
+   Returns SSDA_OK or a read error (then the plate is empty). */
+int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0);
 
 /* Read-callback source: fetch through the plate (misses move it). Same
    contract as ssda_row_fetch_fn with ctx = the source; the span must lie
@@ -48,7 +57,7 @@ static inline int stream_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_
     uint32_t dx = x - s->px0;
     if (dy < s->rows && dx <= s->pw && n <= s->pw - dx) {
         s->stats.hits++;
-        *px = (const uint8_t *)s->cfg.arena + (size_t)dy * s->pitch + s->head +
+        *px = (const uint8_t *)s->cfg.arena + (size_t)dy * s->pitch +
               (size_t)dx * s->cfg.format;
         return SSDA_OK;
     }

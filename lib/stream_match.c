@@ -12,7 +12,7 @@ static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
 
 static bool fits(const ssda_source_t *s, uint32_t span)
 {
-    return s->view != NULL || stream_plate_fit_h(s, span) >= 1u;
+    return s->view != NULL || stream_plate_fit_h(s, span, 0u) >= 1u;
 }
 
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
@@ -62,7 +62,7 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
            down; the other scans jump around the whole area. */
         const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
         (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
-                                raster ? wr.height : ar.height, 1u);
+                                raster ? wr.height : ar.height, 1u, 0u);
         /* A raster scan's band of window-height rows moves down one row at
            a time: a plate with spare rows jumps by them (rows needed are
            read once, each slide copies the band's rows in the arena). */
@@ -71,7 +71,7 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
         }
     }
     if (window->view == NULL) {
-        (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u);
+        (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u, 0u);
     }
     stream_rows_make(&a, &actx, area, &ar);
     stream_rows_make(&w, &wctx, window, &wr);

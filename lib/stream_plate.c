@@ -3,10 +3,12 @@
  * image held in the arena at a fixed pitch, moved on a miss by the policy
  * written in stream.h, reading only the rows it does not already hold.
  *
- * Arena layout: plate row i at arena + i * pitch, its first pixel `head`
- * bytes in (raster: room for reads aligned down to read_size); tiled sources
- * keep a bounce buffer after the plate, into which runs of tile rows are read
- * and from which the plate's columns are copied.
+ * Arena layout: plate row i at arena + i * pitch (rows 4-byte aligned),
+ * then the bounce buffer. Raster rows with read_size 1 are read straight
+ * into the plate (several rows per read when they are stored at the
+ * plate's pitch). Every other read (widened to read_size, or a run of tile
+ * rows) lands in the bounce buffer, and its pixels are copied into the
+ * plate: the plate itself never holds alignment slack.
  */
 #include <string.h>
 #include "stream_internal.h"
@@ -18,72 +20,81 @@ static bool tiled(const ssda_source_t *s)
     return s->cfg.layout == (uint8_t)SSDA_LAYOUT_TILED;
 }
 
-/* Bytes the arena keeps outside the plate rows (tiled: the bounce buffer). */
-static size_t reserve(const ssda_source_t *s)
+/* Smallest bounce buffer of a plate w px wide (0: reads go to the plate). */
+static size_t bounce_min(const ssda_source_t *s, uint32_t w)
 {
-    return tiled(s) ? SSDA_STREAM_BOUNCE_MIN(s->cfg.tile_w, s->cfg.format, s->cfg.read_size)
-                    : 0u;
+    const ssda_source_config_t *c = &s->cfg;
+    return SSDA_STREAM_BOUNCE(c->layout, w, c->format, c->read_size, c->tile_w);
 }
 
-/* Pitch of a plate w px wide. Raster rows stored at the very pitch the plate
-   would use are read several at a time (one read per plate load), so a
-   stride within the pitch's rounding is taken as the pitch. */
+/* Pitch of a plate w px wide. Raster rows read straight into the plate at
+   the very pitch they are stored at are read several at a time (one read
+   per plate load), so a stride within the pitch's rounding is taken. */
 static size_t pitch_for(const ssda_source_t *s, uint32_t w)
 {
     const ssda_source_config_t *c = &s->cfg;
-    size_t need, pitch;
-    if (tiled(s)) {
-        return SSDA_STREAM_TILED_PITCH(w, c->format);
+    size_t pitch = SSDA_STREAM_PITCH(w, c->format);
+    if (bounce_min(s, w) == 0u && c->stride >= (size_t)w * c->format && c->stride <= pitch) {
+        return c->stride;
     }
-    need = SSDA_STREAM_HEAD(c->format, c->read_size) + (size_t)w * c->format +
-           c->read_size - 1u;
-    pitch = SSDA_STREAM_RASTER_PITCH(w, c->format, c->read_size);
-    return c->stride >= need && c->stride <= pitch ? c->stride : pitch;
+    return pitch;
 }
 
-uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w)
+/* Arena bytes of a w x h plate and its smallest bounce buffer. */
+static size_t plate_bytes(const ssda_source_t *s, uint32_t w, uint32_t h)
+{
+    return (size_t)h * pitch_for(s, w) + bounce_min(s, w);
+}
+
+uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 {
     size_t room = s->cfg.arena_size;
     size_t h;
-    if (room < reserve(s) || w == 0u) {
+    if (w == 0u || room < extra || room - extra < bounce_min(s, w)) {
         return 0u;
     }
-    h = (room - reserve(s)) / pitch_for(s, w);
+    h = (room - extra - bounce_min(s, w)) / pitch_for(s, w);
     return h > SSDA_MAX_DIM ? SSDA_MAX_DIM : (uint32_t)h;
 }
 
-uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h)
+uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
 {
     const ssda_source_config_t *c = &s->cfg;
+    const size_t rows = (size_t)h + (tiled(s) || c->read_size == 1u ? 0u : 1u);
+    const size_t fixed = (tiled(s) ? bounce_min(s, 1u) : 2u * (c->read_size - 1u)) + 3u;
     size_t room = c->arena_size;
-    size_t w, fixed = 0u;
-    if (room < reserve(s) || h == 0u) {
+    size_t w;
+    if (h == 0u || room < extra) {
         return 0u;
     }
-    room = ((room - reserve(s)) / h) & ~(size_t)3u; /* bytes of one row */
-    if (!tiled(s)) {
-        fixed = SSDA_STREAM_HEAD(c->format, c->read_size) + c->read_size - 1u;
+    room -= extra;
+    /* a width whose rounded rows surely fit, then up to the last that fits */
+    w = room > fixed + 3u * rows ? (room - fixed - 3u * rows) / (rows * c->format) : 0u;
+    if (w > SSDA_MAX_DIM) {
+        w = SSDA_MAX_DIM;
     }
-    if (room <= fixed) {
-        return 0u;
+    while (w < SSDA_MAX_DIM && plate_bytes(s, (uint32_t)w + 1u, h) <= room) {
+        w++;
     }
-    w = (room - fixed) / c->format;
-    return w > SSDA_MAX_DIM ? SSDA_MAX_DIM : (uint32_t)w;
+    while (w > 0u && plate_bytes(s, (uint32_t)w, h) > room) {
+        w--;
+    }
+    return (uint32_t)w;
 }
 
 int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                      uint32_t rows, uint32_t q)
+                      uint32_t rows, uint32_t q, size_t extra)
 {
     uint32_t w = r->width;
-    uint32_t h = stream_plate_fit_h(s, w);
+    uint32_t h = stream_plate_fit_h(s, w, extra);
     size_t pitch;
     if (h < rows) {
-        w = stream_plate_fit_w(s, rows);
+        w = stream_plate_fit_w(s, rows, extra);
         if (w >= span) {
             h = rows;
         } else {
             w = span;
-            h = stream_plate_fit_h(s, w);
+            h = stream_plate_fit_h(s, w, 0u);
             if (h == 0u) {
                 return SSDA_ERR_BUFFER;
             }
@@ -102,9 +113,10 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
         s->ph = (uint16_t)h;
         s->pitch = (uint32_t)pitch;
         s->rows = 0u;
-        s->head = tiled(s) ? 0u : (uint32_t)SSDA_STREAM_HEAD(s->cfg.format, s->cfg.read_size);
         s->bounce = (uint32_t)((size_t)h * pitch);
-        s->bounce_size = (uint32_t)((s->cfg.arena_size - s->bounce) & ~(size_t)3u);
+        s->bounce_size = bounce_min(s, w) == 0u
+                             ? 0u
+                             : (uint32_t)((s->cfg.arena_size - s->bounce) & ~(size_t)3u);
     }
     s->rx = r->x;
     s->ry = r->y;
@@ -129,9 +141,9 @@ static int read_span(ssda_source_t *s, uint32_t off, uint64_t len, uint8_t *at)
     return err > 0 ? SSDA_ERR_IO : err;
 }
 
-/* Raster: read plate rows [a, b), one read per row, or one for all of them
-   when rows are stored at the plate's pitch. */
-static int load_raster(ssda_source_t *s, uint32_t a, uint32_t b)
+/* Raster, read_size 1: plate rows [a, b) straight into the plate, one read
+   per row, or one for all of them when rows are stored at the pitch. */
+static int load_direct(ssda_source_t *s, uint32_t a, uint32_t b)
 {
     const ssda_source_config_t *c = &s->cfg;
     const uint32_t len = (uint32_t)s->pw * c->format;
@@ -143,7 +155,7 @@ static int load_raster(ssda_source_t *s, uint32_t a, uint32_t b)
         uint32_t off = c->offset + ((uint32_t)s->py0 + a) * c->stride +
                        (uint32_t)s->px0 * c->format;
         int err = read_span(s, off, (uint64_t)(n - 1u) * c->stride + len,
-                            plate + (size_t)a * s->pitch + s->head);
+                            plate + (size_t)a * s->pitch);
         if (err != SSDA_OK) {
             return err;
         }
@@ -152,19 +164,24 @@ static int load_raster(ssda_source_t *s, uint32_t a, uint32_t b)
     return SSDA_OK;
 }
 
-/* Tiled: for each tile row band and tile column the plate covers, read runs
-   of tile rows (as many as the bounce buffer holds, columns cx0..cx1 only)
-   and copy each row's columns into the plate. */
-static int load_tiled(ssda_source_t *s, uint32_t a, uint32_t b)
+/* Through the bounce buffer: for each band of rows inside one tile row and
+   each tile column the plate covers (raster: the image is one tile), read
+   runs of rows of columns cx0..cx1 (as many rows as the bounce buffer
+   holds; raster rows only when they are whole, so that no gap between
+   them is read) and copy each row's pixels into the plate. */
+static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
 {
     const ssda_source_config_t *c = &s->cfg;
-    const uint32_t tw = c->tile_w, th = c->tile_h, bpp = c->format;
-    const uint32_t across = ((uint32_t)c->width + tw - 1u) / tw;
+    const bool t = tiled(s);
+    const uint32_t bpp = c->format;
+    const uint32_t tw = t ? c->tile_w : c->width;
+    const uint32_t th = t ? c->tile_h : c->height;
+    const uint32_t across = t ? ((uint32_t)c->width + tw - 1u) / tw : 1u;
     const uint32_t x_end = (uint32_t)s->px0 + s->pw;
+    const uint32_t y_end = (uint32_t)s->py0 + b;
     uint8_t *plate = (uint8_t *)c->arena;
     uint8_t *bounce = plate + s->bounce;
     uint32_t y = (uint32_t)s->py0 + a;
-    const uint32_t y_end = (uint32_t)s->py0 + b;
     while (y < y_end) {
         uint32_t ty = y / th;
         uint32_t r0 = y - ty * th;
@@ -175,14 +192,15 @@ static int load_tiled(ssda_source_t *s, uint32_t a, uint32_t b)
             uint32_t cx1 = (tx + 1u) * tw < x_end ? (tx + 1u) * tw : x_end;
             uint32_t cw = (cx1 - cx0) * bpp;
             /* bounce_size >= cw + 2 (rs - 1): at least one row per read */
-            uint32_t max_rows = (s->bounce_size - 2u * (c->read_size - 1u) - cw) / c->stride + 1u;
+            uint32_t max_rows = !t && cw != c->stride
+                                    ? 1u
+                                    : (s->bounce_size - 2u * (c->read_size - 1u) - cw) / c->stride + 1u;
             uint32_t r = 0u;
-            /* tile address < 2^32, checked at init */
-            uint32_t tile = c->offset + (ty * across + tx) * c->tile_stride +
-                            (cx0 - tx * tw) * bpp;
+            /* address < 2^32, checked at init */
+            uint32_t base = c->offset + (ty * across + tx) * c->tile_stride + (cx0 - tx * tw) * bpp;
             while (r < band) {
                 uint32_t n = band - r < max_rows ? band - r : max_rows;
-                uint32_t off = tile + (r0 + r) * c->stride;
+                uint32_t off = base + (r0 + r) * c->stride;
                 uint32_t lead = off % c->read_size;
                 uint32_t i;
                 int err = read_span(s, off, (uint64_t)(n - 1u) * c->stride + cw, bounce + lead);
@@ -273,11 +291,21 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
     s->px0 = (uint16_t)x0;
     s->py0 = (uint16_t)y0;
     s->rows = 0u; /* empty until every row is in */
-    err = tiled(s) ? load_tiled(s, a, b) : load_raster(s, a, b);
+    err = s->bounce_size != 0u ? load_bounced(s, a, b) : load_direct(s, a, b);
     if (err == SSDA_OK) {
         s->rows = (uint16_t)ph;
     }
     return err;
+}
+
+int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
+{
+    if (s->rows != 0u && s->px0 == x0 && s->py0 == y0) {
+        s->stats.hits++;
+        return SSDA_OK;
+    }
+    s->stats.misses++;
+    return move(s, x0, y0);
 }
 
 int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
@@ -298,7 +326,7 @@ int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
     if (err != SSDA_OK) {
         return err;
     }
-    *px = (const uint8_t *)s->cfg.arena + (size_t)(y - y0) * s->pitch + s->head +
+    *px = (const uint8_t *)s->cfg.arena + (size_t)(y - y0) * s->pitch +
           (size_t)(x - x0) * s->cfg.format;
     return SSDA_OK;
 }

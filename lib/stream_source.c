@@ -110,7 +110,7 @@ int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
     all.height = s.cfg.height;
     /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
        plate fits (checked above), so this cannot fail. */
-    err = stream_plate_plan(&s, &all, 1u, 1u, 0u);
+    err = stream_plate_plan(&s, &all, 1u, 1u, 0u, 0u);
     if (err == SSDA_OK) {
         *src = s;
     }
@@ -174,7 +174,7 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     (void)stream_rect(src, NULL, &all);
     if (n > src->pw) {
         /* Reshape for this width: whole rows if they fit, else n px. */
-        int err = stream_plate_plan(src, &all, n, 1u, 0u);
+        int err = stream_plate_plan(src, &all, n, 1u, 0u, 0u);
         if (err != SSDA_OK) {
             return err;
         }

@@ -256,7 +256,7 @@ static void test_plate_slides_keep_rows(void)
     make_images(6u);
     c = setup(&g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 8u, 2u, 1u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_plan(&s, &all, IW, 8u, 3u));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_plan(&s, &all, IW, 8u, 3u, 0u));
     TEST_ASSERT_EQUAL_UINT(8, s.ph);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_fetch(&s, 0, 0, IW, &px)); /* rows 0..7 */
     TEST_ASSERT_EQUAL_UINT64(8u * row_bytes, s.stats.bytes_read);
@@ -479,8 +479,8 @@ static void test_size_macros_are_sufficient(void)
                     continue;
                 }
                 TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
-                TEST_ASSERT_TRUE(stream_plate_fit_h(&s, w) >= h);
-                TEST_ASSERT_TRUE(stream_plate_fit_w(&s, h) >= w);
+                TEST_ASSERT_TRUE(stream_plate_fit_h(&s, w, 0u) >= h);
+                TEST_ASSERT_TRUE(stream_plate_fit_w(&s, h, 0u) >= w);
             }
         }
     }

@@ -24,9 +24,9 @@
  *     rows above it, so a band sliding down is read once); moving up, at
  *     the last lattice row at or above it;
  *   - rows still inside the moved plate (same columns) are copied, not
- *     read again; every other row is read. One read per plate row in the
- *     raster layout (one per plate load when rows are stored contiguously at
- *     the plate's pitch); one read per tile and run of rows in the tiled one.
+ *     read again; every other row is read: one read per plate row in the
+ *     raster layout (one per plate load when whole rows are stored at the
+ *     plate's pitch), one per tile and run of rows in the tiled one.
  * Jobs (ssda_stream_match, ssda_stream_track) shape the plate for their
  * region and order their work so that each byte is read as few times as the
  * arena allows; see docs/streaming.md for the plans and the figures.
@@ -121,9 +121,8 @@ typedef struct {
     ssda_source_stats_t stats;
     const uint8_t *view;      /* in-RAM source: pixel (0, 0); else NULL */
     uint32_t pitch;           /* bytes between plate rows */
-    uint32_t head;            /* bytes before the first pixel of a plate row */
-    uint32_t bounce;          /* tiled: arena offset of the tile bounce buffer */
-    uint32_t bounce_size;     /* tiled: its bytes */
+    uint32_t bounce;          /* arena offset of the bounce buffer */
+    uint32_t bounce_size;     /* its bytes; 0: reads go straight to the plate */
     uint16_t pw, ph;          /* plate capacity: pixels per row, rows */
     uint16_t px0, py0;        /* image position of the plate's first pixel */
     uint16_t rows;            /* plate rows holding valid pixels: 0 or ph */
@@ -142,37 +141,34 @@ typedef struct {
 #define SSDA_STREAM_RS_(rs) ((size_t)(rs) > 1u ? (size_t)(rs) : (size_t)1u)
 #define SSDA_STREAM_ALIGN4_(n) ((((size_t)(n)) + 3u) & ~(size_t)3u)
 
-/* Raster: room before each plate row's first pixel so that a read can start
-   at the aligned address below it: read_size - 1, rounded up to a pixel. */
-#define SSDA_STREAM_HEAD(format, read_size)                                   \
-    (((SSDA_STREAM_RS_(read_size) - 1u + (size_t)(format) - 1u) /             \
-      (size_t)(format)) * (size_t)(format))
-
-/* Bytes of one plate row of w pixels: raster (head, pixels, tail room for
-   alignment) and tiled (pixels only: tiles go through the bounce buffer). */
-#define SSDA_STREAM_RASTER_PITCH(w, format, read_size)                        \
-    SSDA_STREAM_ALIGN4_(SSDA_STREAM_HEAD(format, read_size) +                 \
-                        (size_t)(w) * (size_t)(format) +                      \
-                        SSDA_STREAM_RS_(read_size) - 1u)
-#define SSDA_STREAM_TILED_PITCH(w, format)                                    \
+/* Bytes of one plate row of w pixels. */
+#define SSDA_STREAM_PITCH(w, format)                                          \
     SSDA_STREAM_ALIGN4_((size_t)(w) * (size_t)(format))
 
-/* Tiled: the smallest bounce buffer, one tile row read with its alignment
-   on both sides. A larger one lets a read cover several rows of a tile. */
-#define SSDA_STREAM_BOUNCE_MIN(tile_w, format, read_size)                     \
-    SSDA_STREAM_ALIGN4_((size_t)(tile_w) * (size_t)(format) +                 \
-                        2u * (SSDA_STREAM_RS_(read_size) - 1u))
+/* Bytes of the smallest bounce buffer, where reads that cannot land in the
+   plate go before their pixels are copied into it: tiled, one tile row
+   widened to read_size on both sides; raster with read_size > 1, one plate
+   row (w px) widened likewise; raster with read_size 1, none (rows are read
+   straight into the plate). Any arena beyond the plate enlarges it, so that
+   one read covers several rows of a tile. */
+#define SSDA_STREAM_BOUNCE(layout, w, format, read_size, tile_w)              \
+    ((layout) == SSDA_LAYOUT_TILED                                            \
+         ? SSDA_STREAM_ALIGN4_((size_t)(tile_w) * (size_t)(format) +          \
+                               2u * (SSDA_STREAM_RS_(read_size) - 1u))        \
+         : (SSDA_STREAM_RS_(read_size) > 1u                                   \
+                ? SSDA_STREAM_ALIGN4_((size_t)(w) * (size_t)(format) +        \
+                                      2u * (SSDA_STREAM_RS_(read_size) - 1u)) \
+                : (size_t)0u))
 
 /*
  * Arena bytes for a plate of w x h pixels of a source with this layout,
- * format, read_size and tile width (tile_w unused for raster). The source
- * needs w >= the widest row span a job fetches; h >= 1.
+ * format, read_size and tile width (tile_w unused for raster). A job needs
+ * w >= the widest row span it fetches and h >= 1; more rows and width let
+ * it read less (see the job functions).
  */
 #define SSDA_SOURCE_SIZE(layout, w, h, format, read_size, tile_w)             \
-    ((layout) == SSDA_LAYOUT_TILED                                            \
-         ? (size_t)(h) * SSDA_STREAM_TILED_PITCH(w, format) +                 \
-               SSDA_STREAM_BOUNCE_MIN(tile_w, format, read_size)              \
-         : (size_t)(h) * SSDA_STREAM_RASTER_PITCH(w, format, read_size))
+    ((size_t)(h) * SSDA_STREAM_PITCH(w, format) +                             \
+     SSDA_STREAM_BOUNCE(layout, w, format, read_size, tile_w))
 
 /* Width of the search-area strip of n grid columns in grid tracking:
    (n - 1) * step + search (the windows' strip is (n - 1) * step + win). */
