@@ -4,9 +4,10 @@
  * Reading is done by libsndfile, so every format it knows works: WAV
  * (8/16/24/32-bit PCM, 32/64-bit float, A-law, mu-law), AIFF, FLAC, OGG, ...
  * Several channels are mixed down to one by averaging. Samples are scaled so
- * that full scale is -32768..32767: 16-bit PCM comes through bit-exact, wider
- * formats are rounded to the nearest int16 (halves up), and float samples beyond +-1.0
- * are clipped (and counted, see wav_read_mono_i16_ex).
+ * that full scale is -32768..32767: 16-bit PCM comes through bit-exact,
+ * wider formats and mixed channels are rounded to the nearest int16 (halves
+ * up), and float samples beyond +-1.0 are clipped (and counted, see
+ * wav_read_mono_i16_ex).
  */
 #ifndef SSDA_WAV_IO_H
 #define SSDA_WAV_IO_H
