@@ -203,6 +203,26 @@ static void test_input_filter_between_the_rails(void)
     TEST_ASSERT_EQUAL_INT16(12345, ssda_pitch_lowpass(&y1, &y2, a, 12345));
 }
 
+static void test_interpolation_and_f0_at_their_extremes(void)
+{
+    /* n values at the ends of Q20: numerator 65536 * 2^20 = 2^36 */
+    TEST_ASSERT_EQUAL_INT32(32768, ssda_pitch_interp_q16(1u << 20, 0u, 0u, false));
+    TEST_ASSERT_EQUAL_INT32(-32768, ssda_pitch_interp_q16(0u, 0u, 1u << 20, false));
+    TEST_ASSERT_EQUAL_INT32(32768, ssda_pitch_interp_q16(1u << 20, 0u, 0u, true));
+    TEST_ASSERT_EQUAL_INT32(0, ssda_pitch_interp_q16(1u << 20, 1u << 20, 1u << 20, false));
+    /* halfway rounding away from zero: 65536 * 1 / 4 -> 16384, and
+       65536 * 1 / 3 = 21845.33 -> 21845 */
+    TEST_ASSERT_EQUAL_INT32(16384, ssda_pitch_interp_q16(3u, 1u, 2u, false)); /* (3-2)/(2*2) */
+    TEST_ASSERT_EQUAL_INT32(-16384, ssda_pitch_interp_q16(2u, 1u, 3u, false));
+    /* f0 from the shortest period (lag 4 - 1/2 at 48 kHz) and the longest
+       (lag 4800 + 1/2 at 48 kHz): rate << 32 < 2^48 */
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)((48000ull * 65536u * 2u + 3u) / 7u),
+                             ssda_pitch_f0_q16(48000u, 7u * 32768u));
+    TEST_ASSERT_EQUAL_UINT32((uint32_t)(((48000ull << 32) + 9601u * 32768u / 2u) / (9601u * 32768u)),
+                             ssda_pitch_f0_q16(48000u, 9601u * 32768u));
+    TEST_ASSERT_EQUAL_UINT32(1u << 20, ssda_pitch_norm_q20(8192u * 65535u, 8192u * 65535u));
+}
+
 static void test_full_scale_stream_end_to_end(void)
 {
     /* The whole path (filter, stream buffer, analysis) on a rail-to-rail
@@ -246,6 +266,7 @@ int main(void)
     RUN_TEST(test_full_scale_squares_with_dc_offsets_at_max_frame);
     RUN_TEST(test_largest_geometry_counts_work_exactly);
     RUN_TEST(test_input_filter_between_the_rails);
+    RUN_TEST(test_interpolation_and_f0_at_their_extremes);
     RUN_TEST(test_full_scale_stream_end_to_end);
     return UNITY_END();
 }
