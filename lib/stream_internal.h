@@ -79,4 +79,32 @@ void stream_rows_make(ssda_rows_t *rows, stream_rows_ctx_t *ctx, ssda_source_t *
    SSDA_OK or SSDA_ERR_SIZE. */
 int stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out);
 
+/* ----- grid tracking's bands (stream_band.c) ----- */
+
+/* The rectangle of the search areas in FIRST (first_w x first_h) and of
+   the windows in SECOND of grid columns [c0, c1), over the windows whose
+   areas lie inside FIRST, and the grid rows row_lo..row_hi those are on.
+   Returns false when there is none (nothing will be read). */
+bool stream_grid_rects(const ssda_track_grid_t *g, uint32_t first_w, uint32_t first_h,
+                       uint32_t c0, uint32_t c1, ssda_rect_t *area, ssda_rect_t *win,
+                       uint32_t *row_lo, uint32_t *row_hi);
+
+/* Bounce bytes beyond the minimum for a tiled source to read the rows a
+   band gains per grid step in one read per tile (0 for raster, RAM). */
+size_t stream_run_extra(const ssda_source_t *s, uint32_t step_y);
+
+/* Does a streamed source hold a w x h plate with `extra` bounce bytes?
+   (In-RAM sources: always.) */
+bool stream_holds(const ssda_source_t *s, uint32_t w, uint32_t h, size_t extra);
+
+/* Does the plate, shaped for region r, hold all of it across and `rows`
+   rows of it? (In-RAM sources: always.) */
+bool stream_holds_band(const ssda_source_t *s, const ssda_rect_t *r, uint32_t rows);
+
+/* Row source and origin of the band with top-left (x, y): the plate moved
+   there (kept inside region r), or the whole image of an in-RAM source.
+   Returns SSDA_OK or a read error. */
+int stream_band_rows(ssda_source_t *s, const ssda_rect_t *r, uint32_t x, uint32_t y,
+                     ssda_rows_t *rows, uint32_t *ox, uint32_t *oy);
+
 #endif /* SSDA_STREAM_INTERNAL_H */

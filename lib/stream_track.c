@@ -12,109 +12,6 @@
 #include "stream_internal.h"
 #include "track_rows.h"
 
-/* Grid positions [lo, hi] along one axis whose search areas lie inside
-   FIRST (the others are EDGE windows: neither their areas nor their windows
-   are read). start, step: grid; half: (search - win) / 2; img: FIRST's
-   size. Returns false when there is none. */
-static bool inside_range(uint32_t start, uint32_t step, uint32_t count, uint32_t half,
-                         uint32_t search, uint32_t img, uint32_t *lo, uint32_t *hi)
-{
-    /* first k with start + k step >= half; last with start + k step - half
-       + search <= img */
-    uint32_t first = start >= half ? 0u : (half - start + step - 1u) / step;
-    uint32_t last;
-    if (start + search > img + half) {
-        return false;
-    }
-    last = (img + half - search - start) / step;
-    if (last >= count) {
-        last = count - 1u;
-    }
-    *lo = first;
-    *hi = last;
-    return first <= last;
-}
-
-/* The strip of grid columns [c0, c1): the rectangle of its search areas in
-   FIRST and of its windows in SECOND, over the windows whose areas lie
-   inside FIRST. Returns false when there is none (nothing will be read). */
-static bool strip_rects(const ssda_track_grid_t *g, const ssda_source_t *first,
-                        uint32_t c0, uint32_t c1, ssda_rect_t *area, ssda_rect_t *win,
-                        uint32_t *row_lo, uint32_t *row_hi)
-{
-    const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
-    const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
-    uint32_t x_lo, x_hi, y_lo, y_hi, wx0, wx1, wy0, wy1;
-    if (!inside_range(g->roi_x, g->step_x, g->cols, hx, g->search_w, first->cfg.width,
-                      &x_lo, &x_hi) ||
-        !inside_range(g->roi_y, g->step_y, g->rows, hy, g->search_h, first->cfg.height,
-                      &y_lo, &y_hi)) {
-        return false;
-    }
-    x_lo = x_lo > c0 ? x_lo : c0;
-    x_hi = x_hi < c1 - 1u ? x_hi : c1 - 1u;
-    if (x_lo > x_hi) {
-        return false;
-    }
-    /* all below are inside SECOND or FIRST, so they fit 16 bits */
-    wx0 = g->roi_x + x_lo * g->step_x;
-    wx1 = g->roi_x + x_hi * g->step_x;
-    wy0 = g->roi_y + y_lo * g->step_y;
-    wy1 = g->roi_y + y_hi * g->step_y;
-    win->x = (uint16_t)wx0;
-    win->y = (uint16_t)wy0;
-    win->width = (uint16_t)(wx1 - wx0 + g->win_w);
-    win->height = (uint16_t)(wy1 - wy0 + g->win_h);
-    area->x = (uint16_t)(wx0 - hx);
-    area->y = (uint16_t)(wy0 - hy);
-    area->width = (uint16_t)(wx1 - wx0 + g->search_w);
-    area->height = (uint16_t)(wy1 - wy0 + g->search_h);
-    *row_lo = y_lo;
-    *row_hi = y_hi;
-    return true;
-}
-
-/* Does the plate of a streamed source, shaped for region r, hold all of
-   it across and `rows` rows of it? (In-RAM sources: always.) */
-static bool holds_band(const ssda_source_t *s, const ssda_rect_t *r, uint32_t rows)
-{
-    return s->view != NULL || (s->pw >= r->width && s->ph >= rows);
-}
-
-/* The row source and origin of one image for the band whose top-left is
-   (x, y): the plate moved there (kept inside the region), or the whole
-   image in RAM. Returns SSDA_OK or a read error. */
-static int band_rows(ssda_source_t *s, const ssda_rect_t *r, uint32_t x, uint32_t y,
-                     ssda_rows_t *rows, uint32_t *ox, uint32_t *oy)
-{
-    int err;
-    if (s->view != NULL) {
-        ssda_rect_t all;
-        (void)stream_rect(s, NULL, &all);
-        stream_rows_make(rows, NULL, s, &all);
-        *ox = 0u;
-        *oy = 0u;
-        return SSDA_OK;
-    }
-    if (y > (uint32_t)r->y + r->height - s->ph) {
-        y = (uint32_t)r->y + r->height - s->ph;
-    }
-    err = stream_plate_place(s, x, y);
-    if (err != SSDA_OK) {
-        return err;
-    }
-    rows->base = (const uint8_t *)s->cfg.arena;
-    rows->stride = s->pitch;
-    rows->fetch = NULL;
-    rows->ctx = NULL;
-    rows->width = s->pw;
-    rows->height = s->ph;
-    rows->format = s->cfg.format;
-    *ox = x;
-    *oy = y;
-    return SSDA_OK;
-}
-
 /* Solve the strip [c0, c1) grid row by grid row on bands of the plates. */
 static int strip_on_bands(ssda_source_t *first, ssda_source_t *second,
                           ssda_track_plan_t *plan, uint32_t c0, uint32_t c1,
@@ -134,9 +31,9 @@ static int strip_on_bands(ssda_source_t *first, ssda_source_t *second,
         const uint32_t wy = g->roi_y + r * g->step_y;
         ssda_track_origin_t o;
         ssda_rows_t fr, sr;
-        err = band_rows(first, ar, ar->x, wy - hy, &fr, &o.first_x, &o.first_y);
+        err = stream_band_rows(first, ar, ar->x, wy - hy, &fr, &o.first_x, &o.first_y);
         if (err == SSDA_OK) {
-            err = band_rows(second, wr, wr->x, wy, &sr, &o.second_x, &o.second_y);
+            err = stream_band_rows(second, wr, wr->x, wy, &sr, &o.second_x, &o.second_y);
         }
         if (err == SSDA_OK) {
             o.first_w = first->cfg.width;
@@ -148,26 +45,6 @@ static int strip_on_bands(ssda_source_t *first, ssda_source_t *second,
         err = ssda_track_part(whole_f, whole_s, plan, c0, c1, hi + 1u, g->rows, NULL, out, acc);
     }
     return err;
-}
-
-/* Bounce bytes beyond the minimum that let a tiled source read the rows a
-   band gains at each grid step (up to a tile's height) in one read per
-   tile: (run - 1) rows of a tile. Raster strips read row by row. */
-static size_t run_extra(const ssda_source_t *s, uint32_t step_y)
-{
-    uint32_t run;
-    if (s->view != NULL || s->cfg.layout != (uint8_t)SSDA_LAYOUT_TILED) {
-        return 0u;
-    }
-    run = step_y < s->cfg.tile_h ? step_y : s->cfg.tile_h;
-    return (size_t)(run - 1u) * s->cfg.stride;
-}
-
-/* Does a streamed source hold a plate of w x h (and the bounce room for
-   runs of extra bytes)? In-RAM sources always do. */
-static bool holds(const ssda_source_t *s, uint32_t w, uint32_t h, size_t extra)
-{
-    return s->view != NULL || stream_plate_fit_h(s, w, extra) >= h;
 }
 
 /* Grid columns per strip: as many as keep the strip's areas (search_h rows)
@@ -191,8 +68,8 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
         if (aw > first->cfg.width) {
             aw = first->cfg.width;
         }
-        if (!holds(first, (uint32_t)aw, g->search_h, run_extra(first, g->step_y)) ||
-            !holds(second, (uint32_t)ww, g->win_h, run_extra(second, g->step_y))) {
+        if (!stream_holds(first, (uint32_t)aw, g->search_h, stream_run_extra(first, g->step_y)) ||
+            !stream_holds(second, (uint32_t)ww, g->win_h, stream_run_extra(second, g->step_y))) {
             break;
         }
         k++;
@@ -235,7 +112,7 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     }
     /* The tracker fetches whole area rows (mask test, bounds) and whole
        window rows: the narrowest plates that can serve it. */
-    if (!holds(first, plan.grid.search_w, 1u, 0u) || !holds(second, plan.grid.win_w, 1u, 0u)) {
+    if (!stream_holds(first, plan.grid.search_w, 1u, 0u) || !stream_holds(second, plan.grid.win_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     (void)stream_rect(first, NULL, &all_f);
@@ -258,17 +135,18 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
         uint32_t lo, hi;
         /* Plates as wide as the strip, sliding down one grid step at a
            time (checked above: each holds at least one row). */
-        bool inside = strip_rects(&plan.grid, first, c0, c1, &ar, &wr, &lo, &hi);
+        bool inside = stream_grid_rects(&plan.grid, first->cfg.width, first->cfg.height, c0, c1, &ar, &wr, &lo,
+                                        &hi);
         if (first->view == NULL && inside) {
             (void)stream_plate_plan(first, &ar, plan.grid.search_w, plan.grid.search_h,
-                                    plan.grid.step_y, run_extra(first, plan.grid.step_y));
+                                    plan.grid.step_y, stream_run_extra(first, plan.grid.step_y));
         }
         if (second->view == NULL && inside) {
             (void)stream_plate_plan(second, &wr, plan.grid.win_w, plan.grid.win_h,
-                                    plan.grid.step_y, run_extra(second, plan.grid.step_y));
+                                    plan.grid.step_y, stream_run_extra(second, plan.grid.step_y));
         }
-        if (inside && holds_band(first, &ar, plan.grid.search_h) &&
-            holds_band(second, &wr, plan.grid.win_h)) {
+        if (inside && stream_holds_band(first, &ar, plan.grid.search_h) &&
+            stream_holds_band(second, &wr, plan.grid.win_h)) {
             err = strip_on_bands(first, second, &plan, c0, c1, &ar, &wr, lo, hi, &frows,
                                  &srows, out, &acc);
         } else {

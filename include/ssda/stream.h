@@ -277,6 +277,110 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
                       const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                       size_t out_count, ssda_track_stats_t *stats);
 
+
+/* ----- Push mode: rows arrive one by one (line-streamed cameras) ----- */
+
+/* Which image of a tracking job the pushed rows are. */
+typedef enum {
+    SSDA_PUSH_FIRST = 0,  /* the earlier image: the search areas */
+    SSDA_PUSH_SECOND = 1  /* the later image: the windows */
+} ssda_push_role_t;
+
+/*
+ * A push job: the rows of one image (a frame) are pushed top to bottom,
+ * and each search runs inside the push that brings the last row it needs.
+ * The rows a job still needs are kept in a caller buffer (the ring): only
+ * the columns the job uses, rows in order, so that searches run on them as
+ * on an image in RAM (when the ring is full, the rows still needed move to
+ * its start; a ring taller than the minimum moves them less often).
+ * All fields are private. One job per frame: initialise it again for the
+ * next frame (no read is made at init).
+ */
+typedef struct {
+    uint8_t *ring;               /* kept rows, pitch bytes apart */
+    uint32_t pitch;
+    uint16_t cap;                /* rows the ring holds */
+    uint16_t count;              /* rows held, from image row first_row */
+    uint16_t first_row;
+    uint16_t next_row;           /* image row the next push brings */
+    uint16_t width, height;      /* the pushed image */
+    uint16_t x0, w;              /* columns kept */
+    uint16_t next_grid_row;      /* tracking: first grid row not solved */
+    uint8_t format;
+    uint8_t kind;                /* 1: search, 2: tracking, 0: stopped */
+    uint8_t role;                /* ssda_push_role_t (tracking) */
+    ssda_source_t *other;        /* the window (search) or the other image */
+    ssda_rect_t area;            /* search: the area in the pushed image */
+    ssda_rect_t other_rect;      /* search: the window in its source */
+    ssda_match_config_t match;   /* search: options */
+    ssda_match_result_t *result; /* search: written when it runs */
+    ssda_track_config_t track;   /* tracking: options */
+    ssda_track_vector_t *out;    /* tracking: the grid's vectors */
+    size_t out_count;
+    ssda_track_stats_t acc;      /* tracking: totals so far */
+    ssda_track_stats_t *stats;   /* tracking: written when the grid is done */
+} ssda_push_t;
+
+/* Ring bytes for rows of w pixels: a job needs rows >= the band it
+   searches (see the init functions). */
+#define SSDA_PUSH_SIZE(w, rows, format)                                       \
+    ((size_t)(rows) * SSDA_STREAM_PITCH(w, format))
+
+/*
+ * A search whose area is the rectangle area_rect (NULL = whole) of the
+ * pushed image, width x height pixels of the given format; the window is
+ * window_rect (NULL = whole) of the source `window` (in RAM or streamed,
+ * arena as ssda_stream_match says). The search runs in the push that
+ * brings the area's last row and writes *result (as ssda_match would);
+ * that push returns 1.
+ *   ring, ring_size: 4-byte aligned buffer of at least
+ *                    SSDA_PUSH_SIZE(area width, area height, format) bytes.
+ * Returns SSDA_OK or, with *push untouched: SSDA_ERR_NULL (push, window,
+ * result or ring NULL, or bounds without work buffer), SSDA_ERR_STATE
+ * (window not initialised), SSDA_ERR_FORMAT, SSDA_ERR_SIZE (zero size,
+ * rectangles outside their images, window larger than the area),
+ * SSDA_ERR_ARG (options), SSDA_ERR_BUFFER (ring or window arena short, or
+ * the ring misaligned). The window and result must outlive the job.
+ */
+int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
+                         const ssda_rect_t *area_rect, ssda_source_t *window,
+                         const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
+                         ssda_match_result_t *result, void *ring, size_t ring_size);
+
+/*
+ * Grid tracking with one image pushed (role: FIRST or SECOND) and the other
+ * a source (in RAM or streamed). The pushed image is width x height.
+ * Grid rows are solved in order, each in the push that brings the last row
+ * of its band (FIRST: its search areas, search_h rows; SECOND: its
+ * windows, win_h rows); that push returns how many grid rows it solved.
+ * Results equal ssda_track's in every mode (the order is ssda_track's).
+ * *stats (may be NULL) is written when the last grid row is solved.
+ *   ring, ring_size: at least SSDA_PUSH_SIZE(span, band, format) bytes,
+ *     span = SSDA_STREAM_STRIP_W(grid cols, step_x, search_w) (FIRST) or
+ *     SSDA_STREAM_STRIP_W(grid cols, step_x, win_w) (SECOND), capped at the
+ *     image width; band = search_h (FIRST) or win_h (SECOND).
+ * A streamed other image needs its arena as ssda_stream_track says; with a
+ * whole-width band of it, it is read once.
+ * Returns SSDA_OK or what ssda_stream_track returns for its arguments
+ * (SSDA_ERR_BUFFER also for a short ring), with *push untouched.
+ */
+int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
+                         uint8_t role, ssda_source_t *other, const ssda_track_config_t *cfg,
+                         ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats,
+                         void *ring, size_t ring_size);
+
+/*
+ * Push the next row of the image: row holds its width pixels (uint16_t
+ * aligned for 16-bit images); only the columns the job uses are copied.
+ * Returns how many searches (grid rows) completed in this push (0 or more),
+ * or an error: SSDA_ERR_NULL, SSDA_ERR_STATE (not initialised, every row
+ * already pushed, or stopped by an earlier error), or a read() error of a
+ * streamed source, unchanged: the job then stops (initialise it again);
+ * the search's result stays untouched, tracking's out keeps the windows
+ * solved before the error.
+ */
+int ssda_push_row(ssda_push_t *push, const void *row);
+
 #ifdef __cplusplus
 }
 #endif
