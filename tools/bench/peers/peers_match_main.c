@@ -69,8 +69,8 @@ static int track_both(peers_pair_t *p, const options_t *o, FILE *ratios)
     }
     rc |= peers_track(p, 16, o->reps, ratios);
     rc |= peers_track(p, 32, o->reps, ratios);
-    cv_peer_image_free((cv_peer_image_t *)p->cv_first);
-    cv_peer_image_free((cv_peer_image_t *)p->cv_second);
+    cv_peer_image_free(p->cv_first);
+    cv_peer_image_free(p->cv_second);
     return rc;
 }
 
@@ -86,8 +86,8 @@ static int search_scene(peers_scene_t *s, const options_t *o, FILE *ratios)
     }
     rc = o->quick ? peers_search(s, quick, 2, o->search_reps, ratios)
                   : peers_search(s, full, sizeof full / sizeof full[0], o->search_reps, ratios);
-    cv_peer_image_free((cv_peer_image_t *)s->cv_image);
-    cv_peer_image_free((cv_peer_image_t *)s->cv_moved);
+    cv_peer_image_free(s->cv_image);
+    cv_peer_image_free(s->cv_moved);
     return rc;
 }
 

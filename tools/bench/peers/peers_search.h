@@ -18,8 +18,8 @@ typedef struct {
     const char *name;                /* row label, e.g. "camera" */
     const char *description;         /* one line for the section header */
     ssda_view_t image, moved;
-    const cv_peer_image_t *cv_image; /* the same images for OpenCV */
-    const cv_peer_image_t *cv_moved;
+    cv_peer_image_t *cv_image;       /* the same images for OpenCV */
+    cv_peer_image_t *cv_moved;
     int synthetic_truth;             /* 1: moved = synth_moved(image): known motion */
 } peers_scene_t;
 

@@ -17,8 +17,8 @@ typedef struct {
     const char *name;                 /* row label, e.g. "GOES-16" */
     const char *description;          /* one line for the section header */
     ssda_view_t first, second;        /* FIRST (earlier), SECOND (later) */
-    const cv_peer_image_t *cv_first;  /* the same images for OpenCV */
-    const cv_peer_image_t *cv_second;
+    cv_peer_image_t *cv_first;        /* the same images for OpenCV */
+    cv_peer_image_t *cv_second;
     int use_mask;                     /* 1: windows touching mask_value are */
     uint16_t mask_value;              /*    left out for every method */
     int synthetic_truth;              /* 1: made by synth_moved: known motion */
