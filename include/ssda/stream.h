@@ -239,8 +239,9 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
  * Returns SSDA_OK, or without writing *result:
  *   SSDA_ERR_NULL, _SIZE, _FORMAT, _ARG, _BUFFER as ssda_match (SIZE also
  *   for a rectangle outside its source, BUFFER also for a short arena,
- *   found before any read); SSDA_ERR_STATE for an uninitialised source or
- *   one source used for both streamed operands; any read() error unchanged.
+ *   found before any read; ARG also for one streamed source given as both
+ *   operands: its plate cannot hold both); SSDA_ERR_STATE for an
+ *   uninitialised source; any read() error unchanged.
  */
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
                       ssda_source_t *window, const ssda_rect_t *window_rect,
@@ -251,9 +252,12 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * PLAN: the grid is cut into vertical strips of as many grid columns as the
  * arenas hold with the strip's search areas (search_h rows) in FIRST's plate
  * and its windows (win_h rows) in SECOND's; each strip is solved top to
- * bottom while the plates slide down, so every byte is read about once
- * (strips overlap by search_w - step_x columns). Within a strip windows are
- * solved in raster order. Strips change only the order of the work, so:
+ * bottom while the plates slide down one grid step at a time, so every byte
+ * is read about once (strips overlap by search_w - step_x columns), and
+ * each grid row is searched on the plates as on images in RAM. Within a
+ * strip windows are solved in raster order. An arena too small for a band
+ * still works: rows are then fetched through the plate as the tracker asks
+ * (more reads, same results). Strips change only the order of the work, so:
  *   - vectors, statuses and exact flags equal ssda_track's whenever the
  *     result does not depend on the order: exact modes (AUTO, NONE without
  *     COARSE scan), or no prediction, or SSDA_TRACK_PREDICT_LEFT (whose
@@ -266,10 +270,13 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * Arena: a streamed FIRST needs SSDA_SOURCE_SIZE(.., search_w, 1, ..), a
  * streamed SECOND (.., win_w, 1, ..); read-once strips of n columns need
  * SSDA_STREAM_STRIP_W(n, step_x, search_w) x search_h and
- * SSDA_STREAM_STRIP_W(n, step_x, win_w) x win_h.
+ * SSDA_STREAM_STRIP_W(n, step_x, win_w) x win_h (tiled sources also
+ * (min(tile_h, step_y) - 1) * stride bytes more, so that the rows a band
+ * gains at each step come in one read per tile).
  * Returns what ssda_track returns (every argument error before any read or
- * write), SSDA_ERR_STATE for an uninitialised source or one streamed source
- * used for both images, or a read() error unchanged. On a read error out
+ * write; SSDA_ERR_BUFFER also for an arena below the minimum, SSDA_ERR_ARG
+ * also for one streamed source given as both images), SSDA_ERR_STATE for an
+ * uninitialised source, or a read() error unchanged. On a read error out
  * holds the windows solved before it (the rest of out and *stats are
  * untouched): a streamed call cannot take back what it wrote.
  */
