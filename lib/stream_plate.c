@@ -13,11 +13,16 @@
 #include <string.h>
 #include "stream_internal.h"
 
-#define RS_ALIGN_DOWN(v, rs) ((v) - (v) % (rs))
-
 static bool tiled(const ssda_source_t *s)
 {
     return s->cfg.layout == (uint8_t)SSDA_LAYOUT_TILED;
+}
+
+/* Arena bytes a plan may use: all of it, up to 2^31 (so that every read's
+   size, widened, fits 32 bits). */
+static size_t room_of(const ssda_source_t *s)
+{
+    return s->cfg.arena_size < 0x80000000u ? s->cfg.arena_size : 0x80000000u;
 }
 
 /* Smallest bounce buffer of a plate w px wide (0: reads go to the plate). */
@@ -48,7 +53,7 @@ static size_t plate_bytes(const ssda_source_t *s, uint32_t w, uint32_t h)
 
 uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 {
-    size_t room = s->cfg.arena_size;
+    size_t room = room_of(s);
     size_t h;
     if (w == 0u || room < extra || room - extra < bounce_min(s, w)) {
         return 0u;
@@ -62,7 +67,7 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
     const ssda_source_config_t *c = &s->cfg;
     const size_t rows = (size_t)h + (tiled(s) || c->read_size == 1u ? 0u : 1u);
     const size_t fixed = (tiled(s) ? bounce_min(s, 1u) : 2u * (c->read_size - 1u)) + 3u;
-    size_t room = c->arena_size;
+    size_t room = room_of(s);
     size_t w;
     if (h == 0u || room < extra) {
         return 0u;
@@ -103,11 +108,7 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
     if (h > r->height) {
         h = r->height;
     }
-    pitch = pitch_for(s, w);
-    /* plate bytes stay below 2^32 so that reads' sizes fit read()'s */
-    while ((uint64_t)h * pitch > UINT32_MAX && h > 1u) {
-        h--;
-    }
+    pitch = pitch_for(s, w); /* h * pitch <= room_of(s) <= 2^31 */
     if (w != s->pw || h != s->ph || pitch != s->pitch) {
         s->pw = (uint16_t)w;
         s->ph = (uint16_t)h;
@@ -116,7 +117,7 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
         s->bounce = (uint32_t)((size_t)h * pitch);
         s->bounce_size = bounce_min(s, w) == 0u
                              ? 0u
-                             : (uint32_t)((s->cfg.arena_size - s->bounce) & ~(size_t)3u);
+                             : (uint32_t)((room_of(s) - s->bounce) & ~(size_t)3u);
     }
     s->rx = r->x;
     s->ry = r->y;
@@ -126,14 +127,16 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
     return SSDA_OK;
 }
 
-/* One read of [off, off + len) widened to read_size, into dest so that byte
-   off lands at `at`. Counts it. Returns 0 or the callback's error. */
-static int read_span(ssda_source_t *s, uint32_t off, uint64_t len, uint8_t *at)
+/* One read of [off, off + len) widened to read_size, so that byte off lands
+   at `at`. Counts it. Returns 0 or the callback's error. len <= 2^31 (a
+   plate or bounce buffer) and read_size <= 2^16: the sum cannot wrap, and
+   the widened end stays below 2^32 (checked at init). */
+static int read_span(ssda_source_t *s, uint32_t off, uint32_t len, uint8_t *at)
 {
     const uint32_t rs = s->cfg.read_size;
-    uint32_t lo = RS_ALIGN_DOWN(off, rs);
-    uint64_t hi = ((uint64_t)off + len + rs - 1u) / rs * rs; /* <= 2^32, checked at init */
-    uint32_t size = (uint32_t)(hi - lo);
+    const uint32_t lead = off % rs;
+    const uint32_t lo = off - lead;
+    const uint32_t size = (lead + len + rs - 1u) / rs * rs;
     int err;
     s->stats.reads++;
     s->stats.bytes_read += size;
@@ -154,8 +157,7 @@ static int load_direct(ssda_source_t *s, uint32_t a, uint32_t b)
         /* inside the image, below 2^32 (checked at init) */
         uint32_t off = c->offset + ((uint32_t)s->py0 + a) * c->stride +
                        (uint32_t)s->px0 * c->format;
-        int err = read_span(s, off, (uint64_t)(n - 1u) * c->stride + len,
-                            plate + (size_t)a * s->pitch);
+        int err = read_span(s, off, (n - 1u) * c->stride + len, plate + (size_t)a * s->pitch);
         if (err != SSDA_OK) {
             return err;
         }
@@ -203,7 +205,7 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
                 uint32_t off = base + (r0 + r) * c->stride;
                 uint32_t lead = off % c->read_size;
                 uint32_t i;
-                int err = read_span(s, off, (uint64_t)(n - 1u) * c->stride + cw, bounce + lead);
+                int err = read_span(s, off, (n - 1u) * c->stride + cw, bounce + lead);
                 if (err != SSDA_OK) {
                     return err;
                 }

@@ -3,30 +3,21 @@
 #include <string.h>
 #include "stream_internal.h"
 
-/* Bytes from the first to the last byte of the image as stored, or 0 when
-   that exceeds 2^32 (the device address space of read()). */
-static uint64_t image_extent(const ssda_source_config_t *c)
+/* *out = a * b + c if that fits 32 bits (device addresses are 32-bit). */
+static bool mul_add(uint32_t a, uint32_t b, uint32_t c, uint32_t *out)
 {
-    const uint64_t bpp = c->format;
-    uint64_t last;
-    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
-        uint64_t across = ((uint64_t)c->width + c->tile_w - 1u) / c->tile_w;
-        uint64_t down = ((uint64_t)c->height + c->tile_h - 1u) / c->tile_h;
-        /* (tiles - 1) * tile_stride < 2^32 * 2^32: no wrap */
-        last = (across * down - 1u) * c->tile_stride;
-        if (last > UINT32_MAX) {
-            return 0u;
-        }
-        return last + (uint64_t)(c->tile_h - 1u) * c->stride + c->tile_w * bpp;
+    if (b != 0u && a > (UINT32_MAX - c) / b) {
+        return false;
     }
-    return (uint64_t)(c->height - 1u) * c->stride + c->width * bpp; /* < 2^49 */
+    *out = a * b + c;
+    return true;
 }
 
-/* Resolve defaults in *c and check it; SSDA_OK or the documented error. */
+/* Resolve defaults in *c and check it; SSDA_OK or the documented error.
+   32-bit arithmetic only (no 64-bit division on small cores). */
 static int check_config(ssda_source_config_t *c)
 {
-    uint32_t bpp, row_bytes;
-    uint64_t end;
+    uint32_t bpp, row_bytes, extent, last;
     if (c->read == NULL || c->arena == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -37,7 +28,7 @@ static int check_config(ssda_source_config_t *c)
     if (c->read_size == 0u) {
         c->read_size = 1u;
     }
-    if (c->layout > (uint8_t)SSDA_LAYOUT_TILED ||
+    if (c->layout > (uint8_t)SSDA_LAYOUT_TILED || c->read_size > SSDA_STREAM_MAX_READ_SIZE ||
         (c->read_size != 1u && (c->read_size % bpp) != 0u)) {
         return SSDA_ERR_ARG;
     }
@@ -59,27 +50,31 @@ static int check_config(ssda_source_config_t *c)
         return SSDA_ERR_STRIDE;
     }
     if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
-        uint64_t tile_bytes = (uint64_t)(c->tile_h - 1u) * c->stride + row_bytes;
-        if (c->tile_stride == 0u) {
-            uint64_t ts = (uint64_t)c->stride * c->tile_h;
-            if (ts > UINT32_MAX) {
-                return SSDA_ERR_SIZE;
-            }
-            c->tile_stride = (uint32_t)ts;
+        /* tiles <= 65535^2 < 2^32 */
+        uint32_t tiles = (((uint32_t)c->width + c->tile_w - 1u) / c->tile_w) *
+                         (((uint32_t)c->height + c->tile_h - 1u) / c->tile_h);
+        uint32_t tile_bytes;
+        if (!mul_add(c->tile_h - 1u, c->stride, row_bytes, &tile_bytes) ||
+            (c->tile_stride == 0u && !mul_add(c->stride, c->tile_h, 0u, &c->tile_stride))) {
+            return SSDA_ERR_SIZE;
         }
         if ((c->tile_stride % bpp) != 0u || c->tile_stride < tile_bytes) {
             return SSDA_ERR_STRIDE;
         }
-    }
-    /* Every read stays inside [offset, offset + extent) widened to
-       read_size multiples, which must lie below 2^32. */
-    end = image_extent(c);
-    if (end == 0u) {
+        if (!mul_add(tiles - 1u, c->tile_stride, tile_bytes, &extent)) {
+            return SSDA_ERR_SIZE;
+        }
+    } else if (!mul_add(c->height - 1u, c->stride, row_bytes, &extent)) {
         return SSDA_ERR_SIZE;
     }
-    end += c->offset;
-    end = (end + c->read_size - 1u) / c->read_size * c->read_size;
-    if (end > (uint64_t)UINT32_MAX + 1u) {
+    /* Every read stays inside [offset, offset + extent) widened to
+       read_size multiples, which must lie below 2^32: the last byte, and
+       the last byte of its granule, are addressable. */
+    if (c->offset > UINT32_MAX - (extent - 1u)) {
+        return SSDA_ERR_SIZE;
+    }
+    last = c->offset + (extent - 1u);
+    if (last - last % c->read_size > UINT32_MAX - (c->read_size - 1u)) {
         return SSDA_ERR_SIZE;
     }
     if ((((uintptr_t)c->arena) & 3u) != 0u ||

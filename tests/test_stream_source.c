@@ -392,6 +392,7 @@ static void test_init_rejects_bad_configurations(void)
     c = ok; c.format = 0; expect_init_error(&c, SSDA_ERR_FORMAT);
     c = ok; c.layout = 2; expect_init_error(&c, SSDA_ERR_ARG);
     c = ok; c.read_size = 3; expect_init_error(&c, SSDA_ERR_ARG); /* odd for 16-bit */
+    c = ok; c.read_size = SSDA_STREAM_MAX_READ_SIZE + 2u; expect_init_error(&c, SSDA_ERR_ARG);
     c = ok; c.width = 0; expect_init_error(&c, SSDA_ERR_SIZE);
     c = ok; c.height = 0; expect_init_error(&c, SSDA_ERR_SIZE);
     c = t; c.tile_w = 0; expect_init_error(&c, SSDA_ERR_SIZE);
@@ -417,6 +418,8 @@ static void test_init_rejects_bad_configurations(void)
     expect_init_error(&c, SSDA_ERR_BUFFER);
     c.arena_size += 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
+    c = ok; c.read_size = SSDA_STREAM_MAX_READ_SIZE; /* accepted: only its arena is short */
+    expect_init_error(&c, SSDA_ERR_BUFFER);
     /* largest accepted image end: exactly 2^32 */
     c = ok; c.height = 1; c.width = 64; c.offset = 0xFFFFFF80u; c.format = 2;
     c.stride = 0;

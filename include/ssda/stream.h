@@ -89,8 +89,8 @@ typedef struct {
                              multiple of the pixel size; 0 = stride * tile_h */
     uint32_t read_size;   /* read granularity in bytes: every read's offset
                              and size are multiples of it (flash page, SD
-                             sector); 1 or a multiple of the pixel size;
-                             0 = 1 */
+                             sector); 1 or a multiple of the pixel size, at
+                             most SSDA_STREAM_MAX_READ_SIZE; 0 = 1 */
     void *arena;          /* cache memory, 4-byte aligned, owned by the caller */
     size_t arena_size;    /* bytes; >= SSDA_SOURCE_SIZE(..., 1, 1, ...) to
                              initialise, more per job (see the job functions) */
@@ -135,6 +135,10 @@ typedef struct {
     uint16_t x, y;
     uint16_t width, height;
 } ssda_rect_t;
+
+/* Largest read granularity a source accepts, bytes (64 KiB: NAND pages,
+   SD sectors and flash pages are smaller). */
+#define SSDA_STREAM_MAX_READ_SIZE 65536u
 
 /* ----- Arena sizes. All in bytes; read_size 0 counts as 1. ----- */
 
@@ -185,7 +189,7 @@ typedef struct {
  *   SSDA_ERR_NULL    src, cfg, cfg->read or cfg->arena NULL
  *   SSDA_ERR_FORMAT  unknown format
  *   SSDA_ERR_ARG     unknown layout; read_size neither 1 nor a multiple of
- *                    the pixel size
+ *                    the pixel size, or above SSDA_STREAM_MAX_READ_SIZE
  *   SSDA_ERR_SIZE    zero width, height, tile_w or tile_h; the image (with
  *                    read alignment) does not fit below 2^32 bytes
  *   SSDA_ERR_STRIDE  offset, stride or tile_stride not a multiple of the
