@@ -131,8 +131,16 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             p->frame++;
             p->predict_lag = est->voiced ? est->lag : 0u;
             if (p->info.hop < span) {
+                /* Slide the kept samples down by hop in blocks of at most hop
+                   samples: source and destination of each memcpy never
+                   overlap (memmove is not in the library's freestanding set). */
+                uint32_t moved = 0u;
                 p->fill = span - p->info.hop;
-                memmove(p->buf, p->buf + p->info.hop, p->fill * sizeof(int16_t));
+                while (moved < p->fill) {
+                    uint32_t n = p->fill - moved < p->info.hop ? p->fill - moved : p->info.hop;
+                    memcpy(p->buf + moved, p->buf + moved + p->info.hop, n * sizeof(int16_t));
+                    moved += n;
+                }
             } else {
                 p->fill = 0u;
                 p->skip = p->info.hop - span;
