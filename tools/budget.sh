@@ -26,7 +26,7 @@ bash tools/setup-deps.sh gcc-arm-none-eabi libnewlib-arm-none-eabi \
 
 build() { # <dir> <toolchain> <build type> [cmake args...]
   local dir=$1 tc=$2 bt=$3; shift 3
-  cmake -S tools/budget -B "$dir" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/$tc.cmake" \
+  cmake -S tools/budget -B "$dir" -G "Unix Makefiles" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/$tc.cmake" \
         -DCMAKE_BUILD_TYPE="$bt" "$@" >"$dir.configure.log" 2>&1 \
     || { cat "$dir.configure.log" >&2; exit 1; }
   # Keep going past a feature image that does not link (a feature still
