@@ -426,6 +426,56 @@ static void test_init_rejects_bad_configurations(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
 }
 
+/* Worst case of the 32-bit device addresses: an image whose last byte is
+   the last byte of the address space (offset + extent = 2^32), read through
+   a device that maps [2^32 - 4096, 2^32) onto a small buffer. No address
+   may wrap; every pixel comes back. Raster and tiled, granular reads. */
+static uint8_t g_top[4096];
+static int top_read(void *ctx, uint32_t off, void *buf, uint32_t size)
+{
+    (void)ctx;
+    if (off < 0xFFFFF000u || size > 0u - off) { /* below the window, or wraps */
+        return -99;
+    }
+    memcpy(buf, g_top + (off - 0xFFFFF000u), size);
+    return 0;
+}
+
+static void test_image_ending_at_the_top_of_the_address_space(void)
+{
+    static const uint8_t layouts[2] = {SSDA_LAYOUT_RASTER, SSDA_LAYOUT_TILED};
+    uint32_t li, x, y;
+    make_images(12u);
+    for (li = 0; li < 2; li++) {
+        ssda_view_t v, sub;
+        ssda_source_config_t c;
+        ssda_source_t s;
+        test_source_t dev;
+        uint32_t extent;
+        v = image_view(SSDA_PIX_U16);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&sub, &v, 0, 0, 40, 24));
+        /* lay the image out at offset 0 of g_top, then slide it to the top */
+        test_source_init(&dev, g_top, sizeof g_top, 64u);
+        c = test_source_config(&dev, &sub, layouts[li], 16, 8, 0u, 0u, 0u, 64u, g_arena, 2048u);
+        test_source_store(&dev, &c, &sub);
+        extent = test_source_extent(&c); /* multiple of 64 here */
+        memmove(g_top + sizeof g_top - extent, g_top, extent);
+        c.read = top_read;
+        c.offset = 0u - extent; /* 2^32 - extent */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
+        for (y = 0; y < 24; y++) {
+            for (x = 0; x < 40; x += 13) {
+                const uint8_t *px;
+                uint32_t n = 40u - x < 20u ? 40u - x : 20u;
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_row(&s, x, y, n, &px));
+                assert_span(SSDA_PIX_U16, px, x, y, n);
+            }
+        }
+        c.offset += 2u; /* one pixel further would pass 2^32 */
+        expect_init_error(&c, SSDA_ERR_SIZE);
+    }
+}
+
 static void test_row_rejects_bad_arguments(void)
 {
     static const geometry_t g = {SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 0, 1};
@@ -500,6 +550,7 @@ int main(void)
     RUN_TEST(test_failure_at_every_read);
     RUN_TEST(test_positive_read_return_is_io_error);
     RUN_TEST(test_init_rejects_bad_configurations);
+    RUN_TEST(test_image_ending_at_the_top_of_the_address_space);
     RUN_TEST(test_row_rejects_bad_arguments);
     RUN_TEST(test_view_source_points_into_the_view);
     RUN_TEST(test_size_macros_are_sufficient);
