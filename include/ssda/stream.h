@@ -19,7 +19,8 @@
  *   - rows: if the plate is at least as tall as the region, it starts at the
  *     region's top; otherwise its start stays on a lattice of rows q apart
  *     from the region's top (q: the grid step of a tracking job, the plate's
- *     spare rows + 1 in a raster-scan search, 1 otherwise): moving down, at
+ *     spare rows + 1 in a raster-scan search, the plate's height for
+ *     ssda_source_row, 1 otherwise): moving down, at
  *     the first lattice row that covers the missed row (keeping the most
  *     rows above it, so a band sliding down is read once); moving up, at
  *     the last lattice row at or above it;
