@@ -1,56 +1,18 @@
 /* f0_csv.c - reference f0 CSV reading and sampling. */
 #include "f0_csv.h"
 
-#include <errno.h>
+#include "pitch_run.h"
+
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
-int f0_csv_read(const char *path, f0_track_t *tr, char *err, size_t errlen)
+int f0_track_read(const char *path, f0_track_t *tr, char *err, size_t errlen)
 {
-    FILE *fp = fopen(path, "r");
-    char line[256];
-    size_t cap = 0, n = 0, lineno = 0;
     double *t = NULL, *f = NULL;
-    if (fp == NULL) {
-        snprintf(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+    size_t n = 0;
+    if (f0_csv_read(path, &t, &f, &n, err, errlen) != 0) { /* tools/common/pitch_run.c */
         return -1;
     }
-    while (fgets(line, sizeof line, fp) != NULL) {
-        double a, b;
-        lineno++;
-        if (sscanf(line, "%lf , %lf", &a, &b) != 2) {
-            if (lineno == 1) {
-                continue; /* header */
-            }
-            if (line[0] == '\r' || line[0] == '\n') {
-                continue;
-            }
-            snprintf(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
-            free(t);
-            free(f);
-            fclose(fp);
-            return -1;
-        }
-        if (n == cap) {
-            size_t nc = cap ? cap * 2 : 1024;
-            double *nt = realloc(t, nc * sizeof *nt), *nf;
-            if (nt == NULL) {
-                break;
-            }
-            t = nt;
-            nf = realloc(f, nc * sizeof *nf);
-            if (nf == NULL) {
-                break;
-            }
-            f = nf;
-            cap = nc;
-        }
-        t[n] = a;
-        f[n] = b > 0.0 ? b : 0.0;
-        n++;
-    }
-    fclose(fp);
     if (n < 2) {
         snprintf(err, errlen, "'%s': fewer than 2 rows", path);
         free(t);

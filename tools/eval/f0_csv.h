@@ -11,8 +11,9 @@ typedef struct {
     size_t n;
 } f0_track_t;
 
-/* Returns 0, or -1 with a message in err. The track is malloc'ed. */
-int f0_csv_read(const char *path, f0_track_t *tr, char *err, size_t errlen);
+/* Returns 0, or -1 with a message in err (at least 2 rows; the parser is
+   f0_csv_read of tools/common/pitch_run.h). The track is malloc'ed. */
+int f0_track_read(const char *path, f0_track_t *tr, char *err, size_t errlen);
 void f0_track_free(f0_track_t *tr);
 
 /* Reference f0 at time t: linear between two voiced neighbours; when one

@@ -319,7 +319,7 @@ int main(int argc, char **argv)
             continue;
         }
         if (wav_read_mono_i16(audio, &x, &n, &rate, err, sizeof err) != 0 ||
-            f0_csv_read(refpath, &tr, err, sizeof err) != 0) {
+            f0_track_read(refpath, &tr, err, sizeof err) != 0) {
             fprintf(stderr, "ssda-eval-pitch: %s\n", err);
             status = 1;
             continue;

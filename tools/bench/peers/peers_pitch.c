@@ -247,7 +247,7 @@ int main(int argc, char **argv)
         group_t *gs[2] = {&g, &files_all};
         *eq = '\0';
         if (wav_read_mono_i16(files[i], &x, &n, &rate, err, sizeof err) != 0 ||
-            f0_csv_read(eq + 1, &tr, err, sizeof err) != 0) {
+            f0_track_read(eq + 1, &tr, err, sizeof err) != 0) {
             fprintf(stderr, "ssda-peers-pitch: %s\n", err);
             rc = 1;
             continue;
