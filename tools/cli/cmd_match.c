@@ -25,7 +25,8 @@ static const char help[] =
     "                    coarse (8 px grid, then 1 px descent; may miss the minimum)\n"
     "  --predict X,Y     predicted top-left (implies --scan predict)\n"
     "  --order ROWS      rows (default) or spread (decorrelated row order)\n"
-    "  --bounds          successive-elimination bounds (exact, skips more work)\n"
+    "  --no-bounds       no successive-elimination bounds (default: bounds on;\n"
+    "                    exact either way, bounds skip more work)\n"
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
     "  --json            print one JSON object instead of text:\n"
     "                    {\"x\",\"y\",\"sad\",\"exact\",\"positions\",\"completed\",\"pixel_ops\",...}\n"
@@ -50,6 +51,7 @@ int cmd_match(int argc, char **argv)
     uint64_t npos, brute;
 
     memset(&cfg, 0, sizeof cfg);
+    cfg.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
     cli_args_begin(&a, "match", argc, argv);
     while (cli_next(&a)) {
         if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
@@ -59,6 +61,8 @@ int cmd_match(int argc, char **argv)
             json = 1;
         } else if (cli_flag(&a, "--bounds")) {
             cfg.flags |= SSDA_MATCH_BOUNDS;
+        } else if (cli_flag(&a, "--no-bounds")) {
+            cfg.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
         } else if (cli_flag(&a, "--quiet")) {
             /* one search: nothing to silence */
         } else if (cli_opt(&a, "--threshold", &v)) {

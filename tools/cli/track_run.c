@@ -22,7 +22,8 @@ const char track_opts_help[] =
     "                    up-right vectors), left (the seed's), or none\n"
     "  --scan ORDER      raster, predict or coarse (coarse needs --predict none)\n"
     "  --order ROWS      rows (default) or spread\n"
-    "  --bounds          successive-elimination bounds (exact, less work)\n"
+    "  --no-bounds       no successive-elimination bounds (default: bounds on;\n"
+    "                    exact either way, bounds do less work)\n"
     "windows to skip:\n"
     "  --exclude [LEVEL[:COUNT]]  skip textureless windows (the seed's rule): a window\n"
     "                    is excluded when fewer than COUNT of its pixels lie on one\n"
@@ -41,6 +42,7 @@ void track_opts_init(track_opts_t *o)
 {
     memset(o, 0, sizeof *o);
     o->cfg.predict = SSDA_TRACK_PREDICT_MEDIAN;
+    o->cfg.match.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
 }
 
 /* "N" or "WxH", each 1..65535. */
@@ -172,6 +174,8 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         }
     } else if (cli_flag(a, "--bounds")) {
         o->cfg.match.flags |= SSDA_MATCH_BOUNDS;
+    } else if (cli_flag(a, "--no-bounds")) {
+        o->cfg.match.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
     } else if (cli_opt(a, "--predict", &v)) {
         if (v == NULL) {
             return 1;

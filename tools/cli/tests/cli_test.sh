@@ -130,7 +130,7 @@ track)
   chk track-json t.json 3 -2 1.0 --count ok 36 --count edge 28
   chk png-size o.png 896 1024
   grep -q "median dx=+3 dy=-2" out.txt || fail "track summary"
-  for opts in "--threshold none" "--predict none" "--predict left" "--bounds" "--order spread" \
+  for opts in "--threshold none" "--predict none" "--predict left" "--bounds" "--no-bounds" "--order spread" \
               "--threshold auto-ramp" "--grad" \
               "--window 8 --search 24 --step 8" "--window 12x10 --search 30x20 --step 10x9" \
               "--roi 20,20,80,70"; do
