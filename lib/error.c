@@ -14,6 +14,7 @@ const char *ssda_strerror(int err)
     case SSDA_ERR_BUFFER:   return "buffer too small";
     case SSDA_ERR_IO:       return "i/o error";
     case SSDA_ERR_STATE:    return "wrong state";
+    case SSDA_ERR_UNSUPPORTED: return "feature not in this build";
     default:                return err < 0 ? "error from a callback" : "unknown";
     }
 }

@@ -32,3 +32,26 @@ uint64_t ssda_mul_shr24(uint32_t a, uint64_t b)
     hi = (uint64_t)a * bh;                      /* < 2^64 */
     return hi + (((uint64_t)a * bl) >> 24);     /* a*bl < 2^56; sum < 2^64 - 2^32 + 2^32 */
 }
+
+uint32_t ssda_div64_32(uint64_t n, uint32_t d)
+{
+    uint32_t rem = (uint32_t)(n >> 32); /* the remainder, < d once started */
+    uint32_t lo = (uint32_t)n;
+    uint32_t q = 0u;
+    uint32_t i;
+    if (rem >= d) {
+        return UINT32_MAX; /* the quotient needs more than 32 bits */
+    }
+    for (i = 0u; i < 32u; i++) {
+        /* rem * 2 + next bit: 33 bits, the top one in carry */
+        uint32_t carry = rem >> 31;
+        rem = (rem << 1) | (lo >> 31);
+        lo <<= 1;
+        q <<= 1;
+        if (carry != 0u || rem >= d) {
+            rem -= d; /* modulo 2^32: the true difference is < d */
+            q |= 1u;
+        }
+    }
+    return q;
+}

@@ -12,4 +12,23 @@ uint32_t ssda_isqrt64(uint64_t v);
    bh < 2^32, a*bl < 2^56). Saturates to UINT64_MAX if a*bh would not fit. */
 uint64_t ssda_mul_shr24(uint32_t a, uint64_t b);
 
+/* min(floor(n / d), UINT32_MAX) for d > 0, by restoring shift-and-subtract
+   in 32-bit words (32 steps): no 64-bit division routine from the runtime
+   library, whose generic code costs about 1 KB of flash on cores without
+   a divide instruction (Cortex-M0/M0+/M23). Exact: the caller clamps or
+   knows the quotient is below 2^32. */
+uint32_t ssda_div64_32(uint64_t n, uint32_t d);
+
+/* Cores without a 32-bit divide instruction: there the runtime library's
+   64-bit division is generic C (large, and no faster than the loop above),
+   so hot 64-by-32 divisions take ssda_div64_32; elsewhere the compiler's
+   division is used. Either way the quotient is the same. */
+#if defined(__ARM_ARCH) && !defined(__ARM_FEATURE_IDIV)
+#define SSDA_SOFT_DIV64 1
+#define SSDA_DIV64_32(n, d) ssda_div64_32((n), (d))
+#else
+#define SSDA_SOFT_DIV64 0
+#define SSDA_DIV64_32(n, d) ((uint32_t)((uint64_t)(n) / (uint32_t)(d)))
+#endif
+
 #endif /* SSDA_FIXMATH_H */

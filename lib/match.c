@@ -24,6 +24,42 @@ int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
     if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP && cfg->lambda_q8 == 0u) {
         return SSDA_ERR_ARG;
     }
+    /* Features left out of this build (include/ssda/config.h). */
+#ifdef SSDA_CFG_NO_RAMP
+    if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP ||
+        cfg->threshold == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_FIXED
+    if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_FIXED) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_PREDICT
+    if (cfg->scan == (uint8_t)SSDA_SCAN_PREDICT) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_COARSE
+    if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_SPREAD
+    if (cfg->order == (uint8_t)SSDA_ORDER_SPREAD) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_BOUNDS
+    (void)area_w; /* the geometry only sizes the bounds' work buffer */
+    (void)area_h;
+    (void)win_w;
+    (void)win_h;
+    if ((cfg->flags & SSDA_MATCH_BOUNDS) != 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#else
     if ((cfg->flags & SSDA_MATCH_BOUNDS) != 0u) {
         if (cfg->work == NULL) {
             return SSDA_ERR_NULL;
@@ -33,6 +69,7 @@ int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
             return SSDA_ERR_BUFFER;
         }
     }
+#endif
     return SSDA_OK;
 }
 
@@ -49,6 +86,11 @@ static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
     if (area->format != window->format) {
         return SSDA_ERR_FORMAT;
     }
+#ifdef SSDA_CFG_NO_U16
+    if (area->format != (uint8_t)SSDA_PIX_U8) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
     if (window->width > area->width || window->height > area->height) {
         return SSDA_ERR_SIZE;
     }
@@ -101,12 +143,14 @@ int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
     for (r = 0u; r < window->height; r++) {
         const uint8_t *s = ssda_view_row(area, (uint32_t)y + r) + (size_t)x * area->format;
         const uint8_t *t = ssda_view_row(window, r);
-        if (area->format == (uint8_t)SSDA_PIX_U8) {
-            total += ssda_sad_row_u8(s, t, window->width);
-        } else {
+#ifndef SSDA_CFG_NO_U16
+        if (area->format != (uint8_t)SSDA_PIX_U8) {
             total += ssda_sad_row_u16((const uint16_t *)(const void *)s,
                                       (const uint16_t *)(const void *)t, window->width);
+            continue;
         }
+#endif
+        total += ssda_sad_row_u8(s, t, window->width);
     }
     *sad = total;
     return SSDA_OK;

@@ -11,6 +11,7 @@
 #include "match_rows.h"
 #include "kernel/kernels.h"
 #include "fixmath.h"
+#include "compiler.h"
 
 /* A candidate ordered by the tie rule: (sad, y, x) lexicographically. */
 typedef struct {
@@ -19,6 +20,13 @@ typedef struct {
     uint32_t y;
 } cand_t;
 
+/* Features compiled in (include/ssda/config.h). */
+#if !defined(SSDA_CFG_NO_FIXED) || !defined(SSDA_CFG_NO_RAMP)
+#define ENGINE_FALLBACK 1 /* the all-cut fallback of FIXED and RAMP */
+#endif
+
+/* The search state, kept small: it lives on the caller's stack under the
+   deepest call chain (hill_climb > consider > note_cut). */
 typedef struct {
     const ssda_rows_t *area;
     const ssda_rows_t *win;
@@ -26,29 +34,34 @@ typedef struct {
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
     uint32_t row_step;   /* row order: r -> r + row_step (mod M) */
-    uint32_t k_q8;       /* K of eqs. 3/4, Q8.8 */
+    uint64_t fixed_cut;  /* FIXED: T + 1 (cut when partial > T); else UINT64_MAX */
+    const cand_t *ref;   /* what the current position must beat; NULL: nothing */
+    bool use_ref;        /* positions are cut once they cannot beat ref */
     bool bounds;         /* successive elimination active */
     bool u8;             /* 8-bit samples (else 16-bit) */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
-    uint64_t fixed_cut;  /* FIXED: T + 1 (cut when partial > T); else UINT64_MAX */
-    bool use_ref;        /* positions are cut once they cannot beat ref */
+    bool have_fb;
+    uint8_t n_best;      /* 0, 1 or 2 valid entries */
+#ifndef SSDA_CFG_NO_RAMP
+    uint16_t k_q8;       /* K of eqs. 3/4, Q8.8 */
+#endif
+#ifndef SSDA_CFG_NO_BOUNDS
     uint32_t group;      /* bounds: rows per group (1..4) */
     uint32_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
     uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
-    cand_t ref;          /* what the current position must beat */
-    bool have_ref;
+#endif
     cand_t best, second; /* best two completed, by the tie rule */
-    uint32_t n_best;     /* 0, 1 or 2 valid entries */
+#ifdef ENGINE_FALLBACK
     cand_t fb;           /* all-cut fallback: most pixels before its cut */
-    uint64_t fb_pixels;
-    bool have_fb;
-    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
+    uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
+#endif
     uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
     uint32_t completed;
+    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
 static bool cand_less(const cand_t *a, const cand_t *b)
@@ -62,6 +75,7 @@ static bool cand_less(const cand_t *a, const cand_t *b)
     return a->x < b->x;
 }
 
+#ifndef SSDA_CFG_NO_SPREAD
 static uint32_t gcd_u32(uint32_t a, uint32_t b)
 {
     while (b != 0u) {
@@ -71,7 +85,9 @@ static uint32_t gcd_u32(uint32_t a, uint32_t b)
     }
     return a;
 }
+#endif
 
+#ifndef SSDA_CFG_NO_RAMP
 /* sqrt(r) * (r + K sqrt(r)) helper: f(r) = r + K*sqrt(r) in Q16, r < 2^32.
    r * 2^16 < 2^48, K_q8 * sqrt_q8 < 2^16 * 2^24: sum < 2^49. */
 static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
@@ -111,34 +127,82 @@ static uint64_t ramp_linear(const engine_t *e, uint64_t r)
     return (e->best.sad / ((uint64_t)e->L * e->M)) * r;
 }
 
+/* The ramp cut after `pixels` pixels (kept out of line: a cold path for the
+   exact modes, and its 64-bit temporaries stay off eval_position's frame). */
+static SSDA_NOINLINE bool ramp_cuts(const engine_t *e, uint64_t v, uint32_t pixels)
+{
+    return v > ramp_linear(e, pixels) && v > ramp_threshold(e, pixels);
+}
+#endif
+
 /* Pixels per early-exit test on a placement's first row (a multiple of the
    SIMD widths: 16 bytes of u8, 8 of u16). */
 #define SSDA_FIRST_ROW_CHUNK 8u
 
 static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, uint32_t n)
 {
-    if (e->u8) {
-        return ssda_sad_row_u8(a, w, n);
+#ifndef SSDA_CFG_NO_U16
+    if (!e->u8) {
+        return ssda_sad_row_u16((const uint16_t *)(const void *)a,
+                                (const uint16_t *)(const void *)w, n);
     }
-    return ssda_sad_row_u16((const uint16_t *)(const void *)a, (const uint16_t *)(const void *)w, n);
+#else
+    (void)e;
+#endif
+    return ssda_sad_row_u8(a, w, n);
 }
 
-static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint64_t pixels)
+#ifdef ENGINE_FALLBACK
+/* A position cut after `pixels` pixels with partial SAD `partial`: keep it
+   if it is the fallback so far (most pixels, then the tie rule). */
+static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint32_t pixels)
 {
-    cand_t c;
     if (!e->need_fb) {
         return; /* a mode whose first placement always completes */
     }
-    c.sad = partial;
-    c.x = x;
-    c.y = y;
-    if (!e->have_fb || pixels > e->fb_pixels ||
-        (pixels == e->fb_pixels && cand_less(&c, &e->fb))) {
-        e->fb = c;
-        e->fb_pixels = pixels;
-        e->have_fb = true;
+    if (e->have_fb && pixels == e->fb_pixels) {
+        cand_t c;
+        c.sad = partial;
+        c.x = x;
+        c.y = y;
+        if (!cand_less(&c, &e->fb)) {
+            return;
+        }
+    } else if (e->have_fb && pixels < e->fb_pixels) {
+        return;
     }
+    e->fb.sad = partial;
+    e->fb.x = x;
+    e->fb.y = y;
+    e->fb_pixels = pixels;
+    e->have_fb = true;
 }
+#define NOTE_CUT(e, x, y, partial, pixels) note_cut(e, x, y, partial, pixels)
+#else
+#define NOTE_CUT(e, x, y, partial, pixels) ((void)0)
+#endif
+
+#ifndef SSDA_CFG_NO_BOUNDS
+/* Bound of position (x, y) from its group sums: sum over groups of
+   |area group sum - window group sum| <= SAD; <= 65535^3. The terms are kept
+   in e->term for the row loop. */
+static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t *g = e->gsum + (size_t)y * e->nx + x;
+    const size_t down = (size_t)e->group * e->nx;
+    uint64_t rest = 0u;
+    uint32_t k;
+    for (k = 0u; k < e->ngroups; k++) {
+        uint32_t a = g[k * down];
+        uint32_t b = e->wgrp[k];
+        uint32_t d = a > b ? a - b : b - a;
+        e->term[k] = d;
+        rest += d;
+    }
+    e->ops += e->ngroups;
+    return rest;
+}
+#endif
 
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
@@ -146,47 +210,44 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
  */
 static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
+#ifndef SSDA_CFG_NO_RAMP
     const bool ramp = e->ramp_mode &&
                       (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
+#endif
     uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
     uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
     uint64_t cut_at = e->fixed_cut; /* cut once partial + rest >= cut_at */
     uint32_t k, r = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
     uint32_t next_group = 0u;     /* row order: index of the next group to start */
+#endif
 
     e->positions++;
-    if (e->use_ref && e->have_ref) {
+    if (e->use_ref && e->ref != NULL) {
         /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
-        bool before = y < e->ref.y || (y == e->ref.y && x < e->ref.x);
-        uint64_t lim = e->ref.sad + (before ? 1u : 0u);
+        const cand_t *ref = e->ref;
+        bool before = y < ref->y || (y == ref->y && x < ref->x);
+        uint64_t lim = ref->sad + (before ? 1u : 0u);
         if (lim < cut_at) {
             cut_at = lim;
         }
     }
     if (cut_at == 0u) { /* nothing can beat a perfect match before it */
-        note_cut(e, x, y, 0u, 0u);
+        NOTE_CUT(e, x, y, 0u, 0u);
         return 0;
     }
+#ifndef SSDA_CFG_NO_BOUNDS
     if (e->bounds) {
-        /* sum over groups of |area group sum - window group sum| <= SAD */
-        const uint32_t *g = e->gsum + (size_t)y * e->nx + x;
-        const size_t down = (size_t)e->group * e->nx;
-        for (k = 0u; k < e->ngroups; k++) {
-            uint32_t a = g[k * down];
-            uint32_t b = e->wgrp[k];
-            uint32_t d = a > b ? a - b : b - a;
-            e->term[k] = d;
-            rest += d;
-        }
-        e->ops += e->ngroups;
+        rest = group_bound(e, x, y);
         if (rest >= cut_at) {
-            note_cut(e, x, y, 0u, 0u);
+            NOTE_CUT(e, x, y, 0u, 0u);
             return 0;
         }
         if (e->row_step != 1u) {
             rest = 0u; /* spread order: the bound serves as a pre-check only */
         }
     }
+#endif
     for (k = 0u; k < e->M; k++) {
         const uint8_t *ap;
         const uint8_t *wp;
@@ -198,12 +259,14 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         if (err != SSDA_OK) {
             return err;
         }
+#ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u && r == next_group * e->group && next_group < e->ngroups) {
             /* row order: a group leaves the bound when its first row is summed,
                so rest only covers groups with no row in partial */
             rest -= e->term[next_group];
             next_group++;
         }
+#endif
         if (k == 0u && e->L >= 2u * SSDA_FIRST_ROW_CHUNK) {
             /* Most placements are cut on their first row: test it in chunks. */
             uint32_t done = 0u;
@@ -214,7 +277,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
                 e->ops += n;
                 done += n;
                 if (done < e->L && partial + rest >= cut_at) {
-                    note_cut(e, x, y, partial, done);
+                    NOTE_CUT(e, x, y, partial, done);
                     return 0;
                 }
             }
@@ -228,16 +291,15 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         }
         v = partial + rest;
         if (v >= cut_at) {
-            note_cut(e, x, y, partial, (uint64_t)(k + 1u) * e->L);
+            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
             return 0;
         }
-        if (ramp) {
-            uint64_t pixels = (uint64_t)(k + 1u) * e->L;
-            if (v > ramp_linear(e, pixels) && v > ramp_threshold(e, pixels)) {
-                note_cut(e, x, y, partial, pixels);
-                return 0;
-            }
+#ifndef SSDA_CFG_NO_RAMP
+        if (ramp && ramp_cuts(e, v, (k + 1u) * e->L)) {
+            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
+            return 0;
         }
+#endif
     }
     *sad = partial;
     return 1;
@@ -257,7 +319,7 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     if (e->n_best == 0u || cand_less(c, &e->best)) {
         e->second = e->best;
         e->best = *c;
-        e->n_best = e->n_best < 2u ? e->n_best + 1u : 2u;
+        e->n_best = (uint8_t)(e->n_best < 2u ? e->n_best + 1u : 2u);
     } else if (e->n_best == 1u || cand_less(c, &e->second)) {
         e->second = *c;
         e->n_best = 2u;
@@ -271,8 +333,7 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
     cand_t c;
     int err = consider(e, x, y, &c);
     if (err > 0) {
-        e->ref = e->best;
-        e->have_ref = true;
+        e->ref = &e->best;
     }
     return err < 0 ? err : SSDA_OK;
 }
@@ -291,6 +352,7 @@ static int scan_raster(engine_t *e)
     return SSDA_OK;
 }
 
+#ifndef SSDA_CFG_NO_PREDICT
 static uint32_t clamp_pos(int32_t v, uint32_t n)
 {
     if (v < 0) {
@@ -299,82 +361,73 @@ static uint32_t clamp_pos(int32_t v, uint32_t n)
     return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
 }
 
-/* Visit the positions of row y (if in range) from x0 to x1 inclusive, clipped. */
-static int scan_segment_h(engine_t *e, int64_t y, int64_t x0, int64_t x1)
+/* Visit the positions from (x0, y0) to (x1, y1) inclusive (one row or one
+   column: one of the two ranges is a single value), clipped to the range.
+   Coordinates are int32_t: |p| <= 2 * 65535. */
+static int scan_segment(engine_t *e, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
 {
-    int64_t x;
-    if (y < 0 || y >= (int64_t)e->ny) {
-        return SSDA_OK;
-    }
+    int32_t x, y;
     if (x0 < 0) {
         x0 = 0;
-    }
-    if (x1 >= (int64_t)e->nx) {
-        x1 = (int64_t)e->nx - 1;
-    }
-    for (x = x0; x <= x1; x++) {
-        int err = consider_best(e, (uint32_t)x, (uint32_t)y);
-        if (err != SSDA_OK) {
-            return err;
-        }
-    }
-    return SSDA_OK;
-}
-
-/* Visit the positions of column x (if in range) from y0 to y1 inclusive, clipped. */
-static int scan_segment_v(engine_t *e, int64_t x, int64_t y0, int64_t y1)
-{
-    int64_t y;
-    if (x < 0 || x >= (int64_t)e->nx) {
-        return SSDA_OK;
     }
     if (y0 < 0) {
         y0 = 0;
     }
-    if (y1 >= (int64_t)e->ny) {
-        y1 = (int64_t)e->ny - 1;
+    if (x1 >= (int32_t)e->nx) {
+        x1 = (int32_t)e->nx - 1;
+    }
+    if (y1 >= (int32_t)e->ny) {
+        y1 = (int32_t)e->ny - 1;
     }
     for (y = y0; y <= y1; y++) {
-        int err = consider_best(e, (uint32_t)x, (uint32_t)y);
-        if (err != SSDA_OK) {
-            return err;
+        for (x = x0; x <= x1; x++) {
+            int err = consider_best(e, (uint32_t)x, (uint32_t)y);
+            if (err != SSDA_OK) {
+                return err;
+            }
         }
     }
     return SSDA_OK;
 }
 
-/* Square rings of growing Chebyshev radius around the prediction. */
-static int scan_predict(engine_t *e)
+/* Square rings of growing Chebyshev radius around the prediction: the top
+   and bottom rows of each ring, then its left and right columns. */
+static SSDA_NOINLINE int scan_predict(engine_t *e)
 {
-    int64_t px = clamp_pos(e->cfg->predict_x, e->nx);
-    int64_t py = clamp_pos(e->cfg->predict_y, e->ny);
-    int64_t dmax = px;
-    int64_t d;
+    int32_t px = (int32_t)clamp_pos(e->cfg->predict_x, e->nx);
+    int32_t py = (int32_t)clamp_pos(e->cfg->predict_y, e->ny);
+    int32_t dmax = px;
+    int32_t d;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py);
-    if ((int64_t)e->nx - 1 - px > dmax) {
-        dmax = (int64_t)e->nx - 1 - px;
+    if ((int32_t)e->nx - 1 - px > dmax) {
+        dmax = (int32_t)e->nx - 1 - px;
     }
     if (py > dmax) {
         dmax = py;
     }
-    if ((int64_t)e->ny - 1 - py > dmax) {
-        dmax = (int64_t)e->ny - 1 - py;
+    if ((int32_t)e->ny - 1 - py > dmax) {
+        dmax = (int32_t)e->ny - 1 - py;
     }
     for (d = 1; d <= dmax && err == SSDA_OK; d++) {
-        err = scan_segment_h(e, py - d, px - d, px + d);
-        if (err == SSDA_OK) {
-            err = scan_segment_h(e, py + d, px - d, px + d);
+        /* a ring row or column outside the range is skipped whole */
+        if (py - d >= 0) {
+            err = scan_segment(e, px - d, py - d, px + d, py - d);
         }
-        if (err == SSDA_OK) {
-            err = scan_segment_v(e, px - d, py - d + 1, py + d - 1);
+        if (err == SSDA_OK && py + d < (int32_t)e->ny) {
+            err = scan_segment(e, px - d, py + d, px + d, py + d);
         }
-        if (err == SSDA_OK) {
-            err = scan_segment_v(e, px + d, py - d + 1, py + d - 1);
+        if (err == SSDA_OK && px - d >= 0) {
+            err = scan_segment(e, px - d, py - d + 1, px - d, py + d - 1);
+        }
+        if (err == SSDA_OK && px + d < (int32_t)e->nx) {
+            err = scan_segment(e, px + d, py - d + 1, px + d, py + d - 1);
         }
     }
     return err;
 }
+#endif
 
+#ifndef SSDA_CFG_NO_COARSE
 /* Coarse grid, keeping the best two exactly (reference = second best). */
 static int scan_coarse_grid(engine_t *e, uint32_t step)
 {
@@ -383,8 +436,7 @@ static int scan_coarse_grid(engine_t *e, uint32_t step)
         for (x = 0u; x < e->nx; x += step) {
             cand_t c;
             int err;
-            e->have_ref = e->n_best == 2u;
-            e->ref = e->second;
+            e->ref = e->n_best == 2u ? &e->second : NULL;
             err = consider(e, x, y, &c);
             if (err < 0) {
                 return err;
@@ -397,23 +449,22 @@ static int scan_coarse_grid(engine_t *e, uint32_t step)
 /* From start, move 1 px to the best better neighbour until none improves. */
 static int hill_climb(engine_t *e, cand_t start)
 {
-    static const int8_t dx[4] = {0, 0, -1, 1};
-    static const int8_t dy[4] = {-1, 1, 0, 0};
-    cand_t cur = start;
+    cand_t next = start;
+    uint32_t cx = start.x, cy = start.y; /* the current position */
     for (;;) {
-        cand_t next = cur;
         uint32_t i;
         for (i = 0u; i < 4u; i++) {
-            int64_t nxp = (int64_t)cur.x + dx[i];
-            int64_t nyp = (int64_t)cur.y + dy[i];
+            /* neighbours up, down, left, right; unsigned wrap-around of
+               0 - 1 is out of range too */
+            uint32_t nxp = i < 2u ? cx : (i == 2u ? cx - 1u : cx + 1u);
+            uint32_t nyp = i >= 2u ? cy : (i == 0u ? cy - 1u : cy + 1u);
             cand_t c;
             int done;
-            if (nxp < 0 || nyp < 0 || nxp >= (int64_t)e->nx || nyp >= (int64_t)e->ny) {
+            if (nxp >= e->nx || nyp >= e->ny) {
                 continue;
             }
-            e->ref = next; /* a neighbour must beat the best move so far */
-            e->have_ref = true;
-            done = consider(e, (uint32_t)nxp, (uint32_t)nyp, &c);
+            e->ref = &next; /* a neighbour must beat the best move so far */
+            done = consider(e, nxp, nyp, &c);
             if (done < 0) {
                 return done;
             }
@@ -421,32 +472,35 @@ static int hill_climb(engine_t *e, cand_t start)
                 next = c;
             }
         }
-        if (next.x == cur.x && next.y == cur.y) {
+        if (next.x == cx && next.y == cy) {
             return SSDA_OK;
         }
-        cur = next;
+        cx = next.x;
+        cy = next.y;
     }
 }
 
-static int scan_coarse(engine_t *e)
+static SSDA_NOINLINE int scan_coarse(engine_t *e)
 {
     uint32_t step = e->cfg->coarse_step != 0u ? e->cfg->coarse_step : SSDA_DEFAULT_COARSE_STEP;
-    cand_t s1, s2;
-    uint32_t starts;
+    cand_t s2;
     int err = scan_coarse_grid(e, step);
     if (err != SSDA_OK || e->n_best == 0u) {
         return err;
     }
-    starts = e->n_best;
-    s1 = e->best;
     s2 = e->second;
-    err = hill_climb(e, s1);
-    if (err == SSDA_OK && starts == 2u) {
-        err = hill_climb(e, s2);
+    if (e->n_best == 2u) {
+        err = hill_climb(e, e->best);
+        if (err == SSDA_OK) {
+            err = hill_climb(e, s2);
+        }
+        return err;
     }
-    return err;
+    return hill_climb(e, e->best);
 }
+#endif
 
+#ifndef SSDA_CFG_NO_BOUNDS
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -454,7 +508,7 @@ static int scan_coarse(engine_t *e)
  * Ranges: H <= L * 65535 <= 65535^2 < 2^32. A group sum <= group * L * maxval:
  * group = 4 unless 16-bit windows wider than 16384 px, where group = 1.
  */
-static int build_bounds(engine_t *e)
+static SSDA_NOINLINE int build_bounds(engine_t *e)
 {
     const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
     const uint32_t ah = e->area->height;
@@ -536,12 +590,19 @@ static int build_bounds(engine_t *e)
     return SSDA_OK;
 }
 
+#endif
+
 int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
                     const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
     engine_t e = {0};
     uint8_t mode = cfg->threshold;
     int err;
+#ifdef SSDA_CFG_NO_U16
+    if (area->format != (uint8_t)SSDA_PIX_U8) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
 
     e.area = area;
     e.win = window;
@@ -550,8 +611,11 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
     e.M = window->height;
     e.nx = (uint32_t)area->width - e.L + 1u;
     e.ny = (uint32_t)area->height - e.M + 1u;
-    e.k_q8 = cfg->k_q8 != 0u ? cfg->k_q8 : SSDA_DEFAULT_K_Q8;
+#ifndef SSDA_CFG_NO_RAMP
+    e.k_q8 = cfg->k_q8 != 0u ? cfg->k_q8 : (uint16_t)SSDA_DEFAULT_K_Q8;
+#endif
     e.row_step = 1u;
+#ifndef SSDA_CFG_NO_SPREAD
     if (cfg->order == (uint8_t)SSDA_ORDER_SPREAD) {
         uint32_t s = (e.M * 158u) / 256u; /* ~0.618 M, golden-ratio stride */
         if (s == 0u) {
@@ -562,6 +626,7 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
         }
         e.row_step = s;
     }
+#endif
     e.bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
     e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
@@ -574,23 +639,40 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
                  (e.bounds || cfg->scan == (uint8_t)SSDA_SCAN_COARSE));
+#ifndef SSDA_CFG_NO_BOUNDS
     if (e.bounds) {
         err = build_bounds(&e);
         if (err != SSDA_OK) {
             return err;
         }
     }
+#endif
+#ifndef SSDA_CFG_NO_PREDICT
     if (cfg->scan == (uint8_t)SSDA_SCAN_PREDICT) {
         err = scan_predict(&e);
-    } else if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE) {
+    } else
+#endif
+#ifndef SSDA_CFG_NO_COARSE
+    if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE) {
         err = scan_coarse(&e);
-    } else {
+    } else
+#endif
+    {
         err = scan_raster(&e);
     }
     if (err != SSDA_OK) {
         return err;
     }
-    if (e.n_best > 0u) {
+#ifdef ENGINE_FALLBACK
+    if (e.n_best == 0u) {
+        /* every position cut (FIXED/RAMP): the paper's fallback */
+        result->sad = e.fb.sad;
+        result->x = (uint16_t)e.fb.x;
+        result->y = (uint16_t)e.fb.y;
+        result->exact = false;
+    } else
+#endif
+    {
         result->sad = e.best.sad;
         result->x = (uint16_t)e.best.x;
         result->y = (uint16_t)e.best.y;
@@ -598,12 +680,6 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
                         (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
                          mode == (uint8_t)SSDA_THRESHOLD_NONE ||
                          mode == (uint8_t)SSDA_THRESHOLD_FIXED);
-    } else {
-        /* every position cut (FIXED/RAMP): the paper's fallback */
-        result->sad = e.fb.sad;
-        result->x = (uint16_t)e.fb.x;
-        result->y = (uint16_t)e.fb.y;
-        result->exact = false;
     }
     result->positions = e.positions;
     result->completed = e.completed;

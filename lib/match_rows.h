@@ -50,7 +50,8 @@ int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
 /*
  * ssda_match over row sources (geometry and formats already validated by the
  * caller; cfg already checked by ssda_match_check_config, never NULL).
- * Returns SSDA_OK or a fetch error unchanged; *result written on success only.
+ * Returns SSDA_OK, a fetch error unchanged, or SSDA_ERR_UNSUPPORTED for
+ * 16-bit rows in a build with SSDA_CFG_NO_U16; *result written on success only.
  */
 int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
                     const ssda_match_config_t *cfg, ssda_match_result_t *result);

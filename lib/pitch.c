@@ -73,6 +73,7 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     return SSDA_OK;
 }
 
+#ifndef SSDA_CFG_NO_PITCH_FILTER
 /* Pass n samples through the low-pass into out (NULL: filter only). */
 static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, size_t n)
 {
@@ -88,6 +89,9 @@ static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, siz
         }
     }
 }
+#else
+#define filter_samples(p, in, out, n) ((void)0)
+#endif
 
 int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
                     size_t *consumed, ssda_pitch_estimate_t *est)
@@ -107,7 +111,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             /* hop > span: samples between two frames are not analysed, but
                still pass through the filter so its state stays continuous */
             take = count - used < p->skip ? count - used : p->skip;
-            if (p->info.lowpass_q15 != 0u) {
+            if (SSDA_PITCH_FILTERED(&p->info)) {
                 filter_samples(p, samples + used, NULL, take);
             }
             p->skip -= (uint32_t)take;
@@ -115,7 +119,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             continue;
         }
         take = count - used < span - p->fill ? count - used : span - p->fill;
-        if (p->info.lowpass_q15 != 0u) {
+        if (SSDA_PITCH_FILTERED(&p->info)) {
             filter_samples(p, samples + used, p->buf + p->fill, take);
         } else {
             memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));

@@ -28,6 +28,27 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
         cfg->lowpass_hz > rate / 4u || (cfg->flags & ~KNOWN_FLAGS) != 0u) {
         return SSDA_ERR_ARG;
     }
+    /* Features left out of this build (include/ssda/config.h). */
+#ifdef SSDA_CFG_NO_PITCH_FILTER
+    if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_PITCH_TRACK
+    if ((cfg->flags & SSDA_PITCH_TRACK) != 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_PITCH_FULL
+    if ((cfg->flags & SSDA_PITCH_FULL) != 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_PITCH_PARABOLIC
+    if ((cfg->flags & SSDA_PITCH_PARABOLIC) != 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
 
     r.sample_rate_hz = rate;
     r.lag_min = rate / f0_max;
@@ -50,13 +71,14 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
     r.voicing_q15 = cfg->voicing_q15 != 0u ? cfg->voicing_q15 : r.threshold_q15;
     r.silence_mad = cfg->silence_mad != 0u ? cfg->silence_mad
                                            : (uint16_t)SSDA_PITCH_DEFAULT_SILENCE_MAD;
-    if ((cfg->flags & SSDA_PITCH_NO_FILTER) != 0u) {
-        r.lowpass_hz = 0u;
-        r.lowpass_q15 = 0u;
-    } else {
+    r.lowpass_hz = 0u;
+    r.lowpass_q15 = 0u;
+#ifndef SSDA_CFG_NO_PITCH_FILTER
+    if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
         r.lowpass_hz = (uint16_t)(cfg->lowpass_hz != 0u ? cfg->lowpass_hz : f0_max);
         r.lowpass_q15 = ssda_pitch_lowpass_coef_q15(r.lowpass_hz, rate);
     }
+#endif
     r.flags = cfg->flags;
     *info = r;
     return SSDA_OK;

@@ -7,6 +7,30 @@
 
 #include "ssda/pitch.h"
 
+/* Features compiled in (include/ssda/config.h): a flag left out of the
+   build reads as clear, so the code behind it is dropped as dead. */
+#ifdef SSDA_CFG_NO_PITCH_FULL
+#define SSDA_PITCH_HAS_FULL(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_FULL(flags) (((flags) & SSDA_PITCH_FULL) != 0u)
+#endif
+#ifdef SSDA_CFG_NO_PITCH_TRACK
+#define SSDA_PITCH_HAS_TRACK(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_TRACK(flags) (((flags) & SSDA_PITCH_TRACK) != 0u)
+#endif
+#ifdef SSDA_CFG_NO_PITCH_PARABOLIC
+#define SSDA_PITCH_HAS_PARABOLIC(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_PARABOLIC(flags) (((flags) & SSDA_PITCH_PARABOLIC) != 0u)
+#endif
+/* Input low-pass in use (its coefficient is 0 when off). */
+#ifdef SSDA_CFG_NO_PITCH_FILTER
+#define SSDA_PITCH_FILTERED(info) ((void)(info), false)
+#else
+#define SSDA_PITCH_FILTERED(info) ((info)->lowpass_q15 != 0u)
+#endif
+
 /* Check cfg and fill *info with every default resolved. Writes *info on
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
 int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);

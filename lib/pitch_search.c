@@ -5,6 +5,7 @@
  * (the rule and the argument are in include/ssda/pitch.h).
  */
 #include "pitch_internal.h"
+#include "fixmath.h"
 
 #define NO_BOUND UINT32_MAX /* larger than any sum (K * 65535 < 2^29) */
 
@@ -60,7 +61,7 @@ static bool best_bound(const lag_value_t *best, bool after, uint32_t s, uint32_t
         }
         p -= 1u;
     }
-    *bound = (uint32_t)(p / best->s);
+    *bound = SSDA_DIV64_32(p, best->s); /* <= s < 2^30 */
     return true;
 }
 
@@ -111,7 +112,7 @@ static uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t 
     int32_t delta = ssda_pitch_interp_q16(ssda_pitch_norm_q20(left->d, left->s),
                                           ssda_pitch_norm_q20(mid->d, mid->s),
                                           ssda_pitch_norm_q20(right->d, right->s),
-                                          (f->info->flags & SSDA_PITCH_PARABOLIC) != 0u);
+                                          SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
     /* lag <= 4800: 65536 * lag + delta < 2^29 */
     return (uint32_t)((int32_t)(lag << 16) + delta);
 }
@@ -121,17 +122,20 @@ static uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t 
 static uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
                               const lag_value_t *right)
 {
-    int64_t a = ssda_pitch_norm_q20(left->d, left->s);
-    int64_t b = ssda_pitch_norm_q20(mid->d, mid->s);
-    int64_t c = ssda_pitch_norm_q20(right->d, right->s);
-    int64_t drop; /* (a - c)^2 <= 2^40 */
-    if ((f->info->flags & SSDA_PITCH_PARABOLIC) != 0u) {
-        int64_t den = 8 * (a - 2 * b + c);
-        drop = den > 0 ? (a - c) * (a - c) / den : 0;
+    uint32_t a = ssda_pitch_norm_q20(left->d, left->s);
+    uint32_t b = ssda_pitch_norm_q20(mid->d, mid->s);
+    uint32_t c = ssda_pitch_norm_q20(right->d, right->s);
+    uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
+    uint32_t drop;
+    if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
+        /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
+           quotient (> b) gives 0 as the exact one would */
+        int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
+        drop = den > 0 ? ssda_div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
     } else {
-        drop = (a > c ? a - c : c - a) / 2;
+        drop = diff / 2u;
     }
-    return b > drop ? (uint32_t)(b - drop) : 0u;
+    return b > drop ? b - drop : 0u;
 }
 
 /*
@@ -149,7 +153,7 @@ static bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20,
                       uint32_t *new_lag, lag_value_t *new_v)
 {
     const uint32_t margin_q20 = ((uint32_t)f->info->threshold_q15 / 3u) << 5;
-    const bool full = (f->info->flags & SSDA_PITCH_FULL) != 0u;
+    const bool full = SSDA_PITCH_HAS_FULL(f->info->flags);
     uint32_t k, limit;
     if (floor_q20 <= margin_q20) {
         return false; /* nothing can be deeper by the margin */
@@ -198,7 +202,7 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
 {
     const uint32_t k = info->frame_len;
     const uint32_t lag_min = info->lag_min, lag_max = info->lag_max;
-    const bool full = (info->flags & SSDA_PITCH_FULL) != 0u;
+    const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
     frame_t f;
     int32_t mean;
@@ -235,7 +239,7 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     }
     /* From here A >= K >= 16, so every s(lag) >= A > 0. */
 
-    if (!full && (info->flags & SSDA_PITCH_TRACK) != 0u &&
+    if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
         predict_lag >= lag_min && predict_lag <= lag_max) {
         /* The seed's prediction: sum the predicted lag first, in full; its
            value becomes the best so far and tightens every later bound. */
@@ -364,7 +368,7 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
     est->lag = t_lag;
     est->period_q16 = period;
     est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
-    n_q15 = (uint32_t)(((uint64_t)t_mid.d << 15) / t_mid.s); /* 0..32768 */
+    n_q15 = ssda_div64_32((uint64_t)t_mid.d << 15, t_mid.s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
     est->voiced = found && n_at_most_q15(&t_mid, info->voicing_q15);
     est->dip = found;

@@ -15,7 +15,8 @@ int ssda_view_check(const ssda_view_t *view)
     }
     bpp = view->format;
     /* width * bpp <= 131070: no overflow in uint32_t. */
-    if (view->stride < (uint32_t)view->width * bpp || (view->stride % bpp) != 0u) {
+    /* stride % bpp as a mask (bpp is 1 or 2): no division routine on small cores */
+    if (view->stride < (uint32_t)view->width * bpp || (view->stride & (bpp - 1u)) != 0u) {
         return SSDA_ERR_STRIDE;
     }
     /* uint16_t rows must be aligned; the low address bit is all we need. */

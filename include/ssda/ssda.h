@@ -13,6 +13,8 @@
 #include <stdint.h>
 #include <stdbool.h>
 
+#include "ssda/config.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -43,7 +45,8 @@ enum ssda_error {
     SSDA_ERR_OVERFLOW = -6,  /* a result could not be represented exactly */
     SSDA_ERR_BUFFER   = -7,  /* a caller buffer or arena is smaller than its SSDA_*_SIZE() */
     SSDA_ERR_IO       = -8,  /* an I/O layer failed without a code of its own */
-    SSDA_ERR_STATE    = -9   /* call made in the wrong state (e.g. object not initialised) */
+    SSDA_ERR_STATE    = -9,  /* call made in the wrong state (e.g. object not initialised) */
+    SSDA_ERR_UNSUPPORTED = -10 /* a feature left out of this build (SSDA_CFG_NO_*, ssda/config.h) */
 };
 
 /* A short, constant, English name for an error code ("ok", "null pointer", ...). */
