@@ -15,7 +15,7 @@
 
 static bool tiled(const ssda_source_t *s)
 {
-    return s->cfg.layout == (uint8_t)SSDA_LAYOUT_TILED;
+    return STREAM_LAYOUT(&s->cfg) == (uint8_t)SSDA_LAYOUT_TILED;
 }
 
 /* Arena bytes a plan may use: all of it, up to 2^31 (so that every read's
@@ -29,7 +29,7 @@ static size_t room_of(const ssda_source_t *s)
 static size_t bounce_min(const ssda_source_t *s, uint32_t w)
 {
     const ssda_source_config_t *c = &s->cfg;
-    return SSDA_STREAM_BOUNCE(c->layout, w, c->format, c->read_size, c->tile_w);
+    return SSDA_STREAM_BOUNCE(STREAM_LAYOUT(c), w, c->format, STREAM_READ_SIZE(c), c->tile_w);
 }
 
 /* Pitch of a plate w px wide. Raster rows read straight into the plate at
@@ -65,8 +65,8 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
 {
     const ssda_source_config_t *c = &s->cfg;
-    const size_t rows = (size_t)h + (tiled(s) || c->read_size == 1u ? 0u : 1u);
-    const size_t fixed = (tiled(s) ? bounce_min(s, 1u) : 2u * (c->read_size - 1u)) + 3u;
+    const size_t rows = (size_t)h + (tiled(s) || STREAM_READ_SIZE(c) == 1u ? 0u : 1u);
+    const size_t fixed = (tiled(s) ? bounce_min(s, 1u) : 2u * ((size_t)STREAM_READ_SIZE(c) - 1u)) + 3u;
     size_t room = room_of(s);
     size_t w;
     if (h == 0u || room < extra) {
@@ -133,7 +133,7 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
    the widened end stays below 2^32 (checked at init). */
 static int read_span(ssda_source_t *s, uint32_t off, uint32_t len, uint8_t *at)
 {
-    const uint32_t rs = s->cfg.read_size;
+    const uint32_t rs = STREAM_READ_SIZE(&s->cfg);
     const uint32_t lead = off % rs;
     const uint32_t lo = off - lead;
     const uint32_t size = (lead + len + rs - 1u) / rs * rs;
@@ -196,23 +196,23 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
             /* bounce_size >= cw + 2 (rs - 1): at least one row per read */
             uint32_t max_rows = !t && cw != c->stride
                                     ? 1u
-                                    : (s->bounce_size - 2u * (c->read_size - 1u) - cw) / c->stride + 1u;
+                                    : (s->bounce_size - 2u * (STREAM_READ_SIZE(c) - 1u) - cw) / c->stride + 1u;
             uint32_t r = 0u;
             /* address < 2^32, checked at init */
             uint32_t base = c->offset + (ty * across + tx) * c->tile_stride + (cx0 - tx * tw) * bpp;
             while (r < band) {
                 uint32_t n = band - r < max_rows ? band - r : max_rows;
                 uint32_t off = base + (r0 + r) * c->stride;
-                uint32_t lead = off % c->read_size;
+                uint32_t lead = off % STREAM_READ_SIZE(c);
                 uint32_t i;
                 int err = read_span(s, off, (n - 1u) * c->stride + cw, bounce + lead);
                 if (err != SSDA_OK) {
                     return err;
                 }
                 for (i = 0u; i < n; i++) {
-                    memcpy(plate + (size_t)(y - s->py0 + r + i) * s->pitch +
-                               (size_t)(cx0 - s->px0) * bpp,
-                           bounce + lead + (size_t)i * c->stride, cw);
+                    (void)memcpy(plate + (size_t)(y - s->py0 + r + i) * s->pitch +
+                                     (size_t)(cx0 - s->px0) * bpp,
+                                 bounce + lead + (size_t)i * c->stride, cw);
                 }
                 r += n;
             }
@@ -273,21 +273,26 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
 {
     const uint32_t ph = s->ph;
     uint8_t *plate = (uint8_t *)s->cfg.arena;
-    uint32_t a = 0u, b = ph, i;
+    uint32_t a = 0u, b = ph;
     int err;
     if (s->rows != 0u && x0 == s->px0) {
         if (y0 > s->py0 && y0 - s->py0 < ph) {
             uint32_t d = y0 - s->py0;
+            uint32_t i;
             for (i = 0u; i + d < ph; i++) { /* rows d.. move up to 0.. */
-                memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i + d) * s->pitch, s->pitch);
+                (void)memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i + d) * s->pitch, s->pitch);
             }
             a = ph - d;
         } else if (y0 < s->py0 && s->py0 - y0 < ph) {
             uint32_t d = s->py0 - y0;
-            for (i = ph; i-- > d;) { /* rows ..ph-1-d move down to ..ph-1 */
-                memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i - d) * s->pitch, s->pitch);
+            uint32_t i = ph;
+            while (i > d) { /* rows ..ph-1-d move down to ..ph-1 */
+                i--;
+                (void)memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i - d) * s->pitch, s->pitch);
             }
             b = d;
+        } else {
+            /* no row in common: every row is read */
         }
     }
     s->px0 = (uint16_t)x0;

@@ -40,6 +40,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
                          const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
                          ssda_match_result_t *result, void *ring, size_t ring_size)
 {
+    /* cppcheck-suppress unassignedVariable ; zero-initialised static (C99 6.7.8p10) */
     static const ssda_match_config_t defaults;
     ssda_push_t p;
     ssda_rect_t wr;
@@ -53,7 +54,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (!format_ok(format) || window->cfg.format != format) {
         return SSDA_ERR_FORMAT;
     }
-    memset(&p, 0, sizeof p);
+    (void)memset(&p, 0, sizeof p);
     p.width = width;
     p.height = height;
     p.format = format;
@@ -110,6 +111,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
                          ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats,
                          void *ring, size_t ring_size)
 {
+    /* cppcheck-suppress unassignedVariable ; zero-initialised static (C99 6.7.8p10) */
     static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_rect_t ar, wr;
@@ -132,7 +134,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (width == 0u || height == 0u) {
         return SSDA_ERR_SIZE;
     }
-    memset(&p, 0, sizeof p);
+    (void)memset(&p, 0, sizeof p);
     p.width = width;
     p.height = height;
     p.format = format;
@@ -182,13 +184,13 @@ static void ring_put(ssda_push_t *p, uint32_t y, const uint8_t *row, uint32_t fr
         uint32_t d = from - p->first_row;
         uint32_t i;
         for (i = 0u; i + d < p->count; i++) {
-            memcpy(p->ring + (size_t)i * p->pitch, p->ring + (size_t)(i + d) * p->pitch, p->pitch);
+            (void)memcpy(p->ring + (size_t)i * p->pitch, p->ring + (size_t)(i + d) * p->pitch, p->pitch);
         }
         p->count = (uint16_t)(p->count - d);
         p->first_row = (uint16_t)from;
     }
-    memcpy(p->ring + (size_t)p->count * p->pitch, row + (size_t)p->x0 * p->format,
-           (size_t)p->w * p->format);
+    (void)memcpy(p->ring + (size_t)p->count * p->pitch, row + (size_t)p->x0 * p->format,
+                 (size_t)p->w * p->format);
     p->count++;
 }
 
@@ -339,7 +341,8 @@ int ssda_push_row(ssda_push_t *push, const void *row)
     if (push->kind == KIND_STOPPED || push->next_row >= push->height) {
         return SSDA_ERR_STATE;
     }
-    y = push->next_row++;
+    y = push->next_row;
+    push->next_row++;
     if (push->kind == KIND_DONE) {
         return 0;
     }

@@ -32,10 +32,26 @@ static int check_config(ssda_source_config_t *c)
         (c->read_size != 1u && (c->read_size % bpp) != 0u)) {
         return SSDA_ERR_ARG;
     }
+    /* Features left out of this build (include/ssda/config.h). */
+#ifdef SSDA_CFG_NO_U16
+    if (c->format != (uint8_t)SSDA_PIX_U8) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_TILED
+    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+#ifdef SSDA_CFG_NO_READ_SIZE
+    if (c->read_size != 1u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
     if (c->width == 0u || c->height == 0u) {
         return SSDA_ERR_SIZE;
     }
-    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+    if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
         if (c->tile_w == 0u || c->tile_h == 0u) {
             return SSDA_ERR_SIZE;
         }
@@ -49,7 +65,7 @@ static int check_config(ssda_source_config_t *c)
     if ((c->offset % bpp) != 0u || (c->stride % bpp) != 0u || c->stride < row_bytes) {
         return SSDA_ERR_STRIDE;
     }
-    if (c->layout == (uint8_t)SSDA_LAYOUT_TILED) {
+    if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
         /* tiles <= 65535^2 < 2^32 */
         uint32_t tiles = (((uint32_t)c->width + c->tile_w - 1u) / c->tile_w) *
                          (((uint32_t)c->height + c->tile_h - 1u) / c->tile_h);
@@ -66,6 +82,8 @@ static int check_config(ssda_source_config_t *c)
         }
     } else if (!mul_add(c->height - 1u, c->stride, row_bytes, &extent)) {
         return SSDA_ERR_SIZE;
+    } else {
+        /* raster: extent set by mul_add */
     }
     /* Every read stays inside [offset, offset + extent) widened to
        read_size multiples, which must lie below 2^32: the last byte, and
@@ -74,11 +92,11 @@ static int check_config(ssda_source_config_t *c)
         return SSDA_ERR_SIZE;
     }
     last = c->offset + (extent - 1u);
-    if (last - last % c->read_size > UINT32_MAX - (c->read_size - 1u)) {
+    if (last - last % STREAM_READ_SIZE(c) > UINT32_MAX - (STREAM_READ_SIZE(c) - 1u)) {
         return SSDA_ERR_SIZE;
     }
     if ((((uintptr_t)c->arena) & 3u) != 0u ||
-        c->arena_size < SSDA_SOURCE_SIZE(c->layout, 1u, 1u, c->format, c->read_size,
+        c->arena_size < SSDA_SOURCE_SIZE(STREAM_LAYOUT(c), 1u, 1u, c->format, STREAM_READ_SIZE(c),
                                          c->tile_w)) {
         return SSDA_ERR_BUFFER;
     }
@@ -93,7 +111,7 @@ int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
     if (src == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
     }
-    memset(&s, 0, sizeof s);
+    (void)memset(&s, 0, sizeof s);
     s.cfg = *cfg;
     err = check_config(&s.cfg);
     if (err != SSDA_OK) {
@@ -122,7 +140,12 @@ int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view)
     if (err != SSDA_OK) {
         return err;
     }
-    memset(src, 0, sizeof *src);
+#ifdef SSDA_CFG_NO_U16
+    if (view->format != (uint8_t)SSDA_PIX_U8) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+    (void)memset(src, 0, sizeof *src);
     src->view = (const uint8_t *)view->data;
     src->cfg.stride = view->stride;
     src->cfg.width = view->width;
@@ -184,7 +207,7 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
 
 static int rows_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
 {
-    const stream_rows_ctx_t *c = (const stream_rows_ctx_t *)ctx;
+    const stream_rows_ctx_t *c = ctx;
     return stream_fetch(c->src, c->x0 + x, c->y0 + y, n, px);
 }
 

@@ -174,7 +174,8 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
     }
     for (i = 0u; i < 4u && n < 3u; i++) {
         if (cand[i] != NULL && cand[i]->status == (uint8_t)SSDA_TRACK_OK) {
-            ok[n++] = cand[i];
+            ok[n] = cand[i];
+            n++;
         }
     }
     if (n == 3u) {
@@ -183,6 +184,8 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
     } else if (n > 0u) {
         *pdx = ok[0]->dx;
         *pdy = ok[0]->dy;
+    } else {
+        /* no solved neighbour: the prediction stays (0, 0) */
     }
 }
 

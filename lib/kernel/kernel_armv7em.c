@@ -39,7 +39,7 @@
 static inline uint32_t load_u32(const void *p)
 {
     uint32_t w;
-    memcpy(&w, p, sizeof w);
+    (void)memcpy(&w, p, sizeof w);
     return w;
 }
 
