@@ -312,6 +312,8 @@ static void test_row_source_argument_errors(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = rb; bad.height = 0;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
+    bad = rb; bad.width = 0;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = ra; bad.base = (const uint8_t *)g_first; bad.stride = IMG * 2u - 2u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad.stride = IMG * 2u + 1u;
