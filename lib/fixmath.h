@@ -31,4 +31,22 @@ uint32_t ssda_div64_32(uint64_t n, uint32_t d);
 #define SSDA_DIV64_32(n, d) ((uint32_t)((uint64_t)(n) / (uint32_t)(d)))
 #endif
 
+/* floor(a / b) for a, b below 2^32 (b > 0), for the setup and miss paths:
+   on those cores the loop above, so that the 266-byte 32-bit division
+   routine of the runtime library is not linked; elsewhere plain `/` (same
+   type and value). */
+#if SSDA_SOFT_DIV64 && defined(__GNUC__)
+/* a divisor fixed at compile time (1 when a feature is left out) folds */
+#define SSDA_DIV32(a, b)                                                      \
+    (__builtin_constant_p(b) ? (uint32_t)(a) / (uint32_t)(b)                  \
+                             : ssda_div64_32((uint64_t)(a), (uint32_t)(b)))
+#define SSDA_MOD32(a, b) ((uint32_t)(a) - SSDA_DIV32((a), (b)) * (uint32_t)(b))
+#elif SSDA_SOFT_DIV64
+#define SSDA_DIV32(a, b) ssda_div64_32((uint64_t)(a), (uint32_t)(b))
+#define SSDA_MOD32(a, b) ((uint32_t)(a) - SSDA_DIV32((a), (b)) * (uint32_t)(b))
+#else
+#define SSDA_DIV32(a, b) ((a) / (b))
+#define SSDA_MOD32(a, b) ((a) % (b))
+#endif
+
 #endif /* SSDA_FIXMATH_H */

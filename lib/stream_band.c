@@ -112,7 +112,7 @@ int stream_band_rows(ssda_source_t *s, const ssda_rect_t *r, uint32_t x, uint32_
 size_t stream_run_extra(const ssda_source_t *s, uint32_t step_y)
 {
     uint32_t run;
-    if (s->view != NULL || s->cfg.layout != (uint8_t)SSDA_LAYOUT_TILED) {
+    if (s->view != NULL || STREAM_LAYOUT(&s->cfg) != (uint8_t)SSDA_LAYOUT_TILED) {
         return 0u;
     }
     run = step_y < s->cfg.tile_h ? step_y : s->cfg.tile_h;

@@ -8,6 +8,19 @@
 #include "ssda/stream.h"
 #include "match_rows.h"
 
+/* Features compiled in (include/ssda/config.h): a layout or read size left
+   out reads as its plain value, so the code behind it is dropped as dead. */
+#ifdef SSDA_CFG_NO_TILED
+#define STREAM_LAYOUT(c) ((void)(c), (uint8_t)SSDA_LAYOUT_RASTER)
+#else
+#define STREAM_LAYOUT(c) ((c)->layout)
+#endif
+#ifdef SSDA_CFG_NO_READ_SIZE
+#define STREAM_READ_SIZE(c) ((void)(c), 1u)
+#else
+#define STREAM_READ_SIZE(c) ((uint32_t)(c)->read_size)
+#endif
+
 /* A source is usable once initialised (width 0 only in a zeroed struct). */
 static inline bool stream_ready(const ssda_source_t *s)
 {

@@ -12,6 +12,7 @@
  */
 #include <string.h>
 #include "stream_internal.h"
+#include "fixmath.h"
 
 static bool tiled(const ssda_source_t *s)
 {
@@ -58,7 +59,7 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
     if (w == 0u || room < extra || room - extra < bounce_min(s, w)) {
         return 0u;
     }
-    h = (room - extra - bounce_min(s, w)) / pitch_for(s, w);
+    h = SSDA_DIV32(room - extra - bounce_min(s, w), pitch_for(s, w));
     return h > SSDA_MAX_DIM ? SSDA_MAX_DIM : (uint32_t)h;
 }
 
@@ -74,7 +75,7 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
     }
     room -= extra;
     /* a width whose rounded rows surely fit, then up to the last that fits */
-    w = room > fixed + 3u * rows ? (room - fixed - 3u * rows) / (rows * c->format) : 0u;
+    w = room > fixed + 3u * rows ? SSDA_DIV32(room - fixed - 3u * rows, rows * c->format) : 0u;
     if (w > SSDA_MAX_DIM) {
         w = SSDA_MAX_DIM;
     }
@@ -134,9 +135,9 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
 static int read_span(ssda_source_t *s, uint32_t off, uint32_t len, uint8_t *at)
 {
     const uint32_t rs = STREAM_READ_SIZE(&s->cfg);
-    const uint32_t lead = off % rs;
+    const uint32_t lead = SSDA_MOD32(off, rs);
     const uint32_t lo = off - lead;
-    const uint32_t size = (lead + len + rs - 1u) / rs * rs;
+    const uint32_t size = SSDA_DIV32(lead + len + rs - 1u, rs) * rs;
     int err;
     s->stats.reads++;
     s->stats.bytes_read += size;
@@ -166,6 +167,7 @@ static int load_direct(ssda_source_t *s, uint32_t a, uint32_t b)
     return SSDA_OK;
 }
 
+#if !defined(SSDA_CFG_NO_TILED) || !defined(SSDA_CFG_NO_READ_SIZE)
 /* Through the bounce buffer: for each band of rows inside one tile row and
    each tile column the plate covers (raster: the image is one tile), read
    runs of rows of columns cx0..cx1 (as many rows as the bounce buffer
@@ -178,32 +180,32 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
     const uint32_t bpp = c->format;
     const uint32_t tw = t ? c->tile_w : c->width;
     const uint32_t th = t ? c->tile_h : c->height;
-    const uint32_t across = t ? ((uint32_t)c->width + tw - 1u) / tw : 1u;
+    const uint32_t across = t ? SSDA_DIV32((uint32_t)c->width + tw - 1u, tw) : 1u;
     const uint32_t x_end = (uint32_t)s->px0 + s->pw;
     const uint32_t y_end = (uint32_t)s->py0 + b;
     uint8_t *plate = (uint8_t *)c->arena;
     uint8_t *bounce = plate + s->bounce;
     uint32_t y = (uint32_t)s->py0 + a;
     while (y < y_end) {
-        uint32_t ty = y / th;
+        uint32_t ty = SSDA_DIV32(y, th);
         uint32_t r0 = y - ty * th;
         uint32_t band = th - r0 < y_end - y ? th - r0 : y_end - y;
         uint32_t tx;
-        for (tx = s->px0 / tw; tx * tw < x_end; tx++) {
+        for (tx = SSDA_DIV32(s->px0, tw); tx * tw < x_end; tx++) {
             uint32_t cx0 = tx * tw > s->px0 ? tx * tw : s->px0;
             uint32_t cx1 = (tx + 1u) * tw < x_end ? (tx + 1u) * tw : x_end;
             uint32_t cw = (cx1 - cx0) * bpp;
             /* bounce_size >= cw + 2 (rs - 1): at least one row per read */
             uint32_t max_rows = !t && cw != c->stride
                                     ? 1u
-                                    : (s->bounce_size - 2u * (STREAM_READ_SIZE(c) - 1u) - cw) / c->stride + 1u;
+                                    : SSDA_DIV32(s->bounce_size - 2u * (STREAM_READ_SIZE(c) - 1u) - cw, c->stride) + 1u;
             uint32_t r = 0u;
             /* address < 2^32, checked at init */
             uint32_t base = c->offset + (ty * across + tx) * c->tile_stride + (cx0 - tx * tw) * bpp;
             while (r < band) {
                 uint32_t n = band - r < max_rows ? band - r : max_rows;
                 uint32_t off = base + (r0 + r) * c->stride;
-                uint32_t lead = off % STREAM_READ_SIZE(c);
+                uint32_t lead = SSDA_MOD32(off, STREAM_READ_SIZE(c));
                 uint32_t i;
                 int err = read_span(s, off, (n - 1u) * c->stride + cw, bounce + lead);
                 if (err != SSDA_OK) {
@@ -221,6 +223,8 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
     }
     return SSDA_OK;
 }
+
+#endif
 
 /* Where a plate of cap px starts to cover the span at column v: at the
    region's left edge if it is as wide as the region, else at v, kept inside
@@ -253,9 +257,9 @@ static uint32_t place_y(uint32_t v, uint32_t cur, bool have, uint32_t cap, uint3
             return r0;
         }
         if (have && v < cur) {
-            start = r0 + (v - r0) / q * q;
+            start = r0 + SSDA_DIV32(v - r0, q) * q;
         } else if (v + 1u > r0 + cap) {
-            uint32_t lift = r0 + (v + 1u - cap - r0 + q - 1u) / q * q;
+            uint32_t lift = r0 + SSDA_DIV32(v + 1u - cap - r0 + q - 1u, q) * q;
             start = lift < v ? lift : v;
         } else {
             start = r0;
@@ -298,7 +302,11 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
     s->px0 = (uint16_t)x0;
     s->py0 = (uint16_t)y0;
     s->rows = 0u; /* empty until every row is in */
+#if defined(SSDA_CFG_NO_TILED) && defined(SSDA_CFG_NO_READ_SIZE)
+    err = load_direct(s, a, b); /* no bounce buffer in this build */
+#else
     err = s->bounce_size != 0u ? load_bounced(s, a, b) : load_direct(s, a, b);
+#endif
     if (err == SSDA_OK) {
         s->rows = (uint16_t)ph;
     }

@@ -2,11 +2,12 @@
    sources and their rectangles as row sources. */
 #include <string.h>
 #include "stream_internal.h"
+#include "fixmath.h"
 
 /* *out = a * b + c if that fits 32 bits (device addresses are 32-bit). */
 static bool mul_add(uint32_t a, uint32_t b, uint32_t c, uint32_t *out)
 {
-    if (b != 0u && a > (UINT32_MAX - c) / b) {
+    if (b != 0u && a > SSDA_DIV32(UINT32_MAX - c, b)) {
         return false;
     }
     *out = a * b + c;
@@ -24,12 +25,12 @@ static int check_config(ssda_source_config_t *c)
     if (c->format != (uint8_t)SSDA_PIX_U8 && c->format != (uint8_t)SSDA_PIX_U16) {
         return SSDA_ERR_FORMAT;
     }
-    bpp = c->format;
+    bpp = c->format; /* 1 or 2: "% bpp" below is a mask, no division routine */
     if (c->read_size == 0u) {
         c->read_size = 1u;
     }
     if (c->layout > (uint8_t)SSDA_LAYOUT_TILED || c->read_size > SSDA_STREAM_MAX_READ_SIZE ||
-        (c->read_size != 1u && (c->read_size % bpp) != 0u)) {
+        (c->read_size != 1u && (c->read_size & (bpp - 1u)) != 0u)) {
         return SSDA_ERR_ARG;
     }
     /* Features left out of this build (include/ssda/config.h). */
@@ -62,19 +63,19 @@ static int check_config(ssda_source_config_t *c)
     if (c->stride == 0u) {
         c->stride = row_bytes;
     }
-    if ((c->offset % bpp) != 0u || (c->stride % bpp) != 0u || c->stride < row_bytes) {
+    if ((c->offset & (bpp - 1u)) != 0u || (c->stride & (bpp - 1u)) != 0u || c->stride < row_bytes) {
         return SSDA_ERR_STRIDE;
     }
     if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
         /* tiles <= 65535^2 < 2^32 */
-        uint32_t tiles = (((uint32_t)c->width + c->tile_w - 1u) / c->tile_w) *
-                         (((uint32_t)c->height + c->tile_h - 1u) / c->tile_h);
+        uint32_t tiles = SSDA_DIV32((uint32_t)c->width + c->tile_w - 1u, c->tile_w) *
+                         SSDA_DIV32((uint32_t)c->height + c->tile_h - 1u, c->tile_h);
         uint32_t tile_bytes;
         if (!mul_add(c->tile_h - 1u, c->stride, row_bytes, &tile_bytes) ||
             (c->tile_stride == 0u && !mul_add(c->stride, c->tile_h, 0u, &c->tile_stride))) {
             return SSDA_ERR_SIZE;
         }
-        if ((c->tile_stride % bpp) != 0u || c->tile_stride < tile_bytes) {
+        if ((c->tile_stride & (bpp - 1u)) != 0u || c->tile_stride < tile_bytes) {
             return SSDA_ERR_STRIDE;
         }
         if (!mul_add(tiles - 1u, c->tile_stride, tile_bytes, &extent)) {
@@ -92,7 +93,7 @@ static int check_config(ssda_source_config_t *c)
         return SSDA_ERR_SIZE;
     }
     last = c->offset + (extent - 1u);
-    if (last - last % STREAM_READ_SIZE(c) > UINT32_MAX - (STREAM_READ_SIZE(c) - 1u)) {
+    if (last - SSDA_MOD32(last, STREAM_READ_SIZE(c)) > UINT32_MAX - (STREAM_READ_SIZE(c) - 1u)) {
         return SSDA_ERR_SIZE;
     }
     if ((((uintptr_t)c->arena) & 3u) != 0u ||

@@ -17,8 +17,9 @@
  *   pitch:  all SSDA_CFG_NO_PITCH_* (streamed AMDF with early exit,
  *           voicing, the dip-run choice and its octave check, V-shaped
  *           interpolation)
- *   stream: SSDA_CFG_NO_TILED and SSDA_CFG_NO_U16 (raster 8-bit sources with
- *           the plate cache, the streamed search)
+ *   stream: SSDA_CFG_NO_TILED, SSDA_CFG_NO_READ_SIZE and SSDA_CFG_NO_U16
+ *           (raster 8-bit sources read at byte granularity, the plate cache,
+ *           the streamed search)
  */
 #ifndef SSDA_CONFIG_H
 #define SSDA_CONFIG_H
@@ -50,5 +51,8 @@
 /* ---- streaming (stream.h) ---- */
 
 /* SSDA_CFG_NO_TILED: raster sources only (SSDA_LAYOUT_TILED refused). */
+/* SSDA_CFG_NO_READ_SIZE: byte-granular reads only (read_size must be 0 or
+   1): no bounce buffer. With SSDA_CFG_NO_TILED the plate is read straight
+   from the device. */
 
 #endif /* SSDA_CONFIG_H */
