@@ -1,0 +1,314 @@
+/*
+ * fuzz_track.c - ssda_track with image sizes, pixels, grids and options
+ * from the fuzzer's bytes, checked against track.h read independently:
+ *   - ssda_track_grid agrees with the geometry resolved here (defaults,
+ *     SSDA_TRACK_GRID_COUNT), and errors exactly when the geometry is bad;
+ *   - an input this file finds valid is accepted, any other is refused with
+ *     out and stats untouched; entries past the grid are never written;
+ *   - every window's position and status (EDGE, MASKED, EXCLUDED, OK) follow
+ *     the header's rules; non-OK windows carry zeros;
+ *   - in the exact modes (AUTO or NONE, no coarse scan) the OK windows'
+ *     vectors and SADs equal a brute-force search of their areas (checked
+ *     for every window while cheap, else for a sample);
+ *   - stats count the statuses; a second call gives the same output.
+ */
+#include <string.h>
+
+#include "fuzz_input.h"
+#include "ssda/track.h"
+
+#define MAX_IMG 64u
+#define MAX_OUT 4200u
+#define BRUTE_BUDGET 3000000u /* pixel comparisons of brute force per input */
+
+static uint16_t g_first[MAX_IMG * MAX_IMG], g_second[MAX_IMG * MAX_IMG];
+static ssda_track_vector_t g_out[MAX_OUT + 1u], g_out2[MAX_OUT + 1u];
+static uint32_t g_work[(2u * MAX_IMG + 1u) * 2u * MAX_IMG + 8u * MAX_IMG];
+
+static uint32_t next_rand(uint32_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 17;
+    *s ^= *s << 5;
+    return *s;
+}
+
+typedef struct {
+    const void *data;
+    uint32_t w, h, bpp;
+} img_t;
+
+static uint32_t px(const img_t *im, uint32_t x, uint32_t y)
+{
+    return im->bpp == 1u ? ((const uint8_t *)im->data)[y * im->w + x]
+                         : ((const uint16_t *)im->data)[y * im->w + x];
+}
+
+static void fill(img_t *im, void *buf, fuzz_in_t *in, uint32_t *seed, uint32_t levels,
+                 uint32_t maxv)
+{
+    uint32_t i, n = im->w * im->h;
+    im->data = buf;
+    for (i = 0; i < n; i++) {
+        uint32_t v = in->n > 0 ? fuzz_u16(in) : next_rand(seed) & 0xFFFFu;
+        v = levels <= 1u ? maxv : (v % levels) * (maxv / (levels - 1u));
+        if (im->bpp == 1u) {
+            ((uint8_t *)buf)[i] = (uint8_t)v;
+        } else {
+            ((uint16_t *)buf)[i] = (uint16_t)v;
+        }
+    }
+}
+
+/* The geometry of track.h, resolved from its text. */
+typedef struct {
+    uint32_t win, search, step, start, len, count;
+    int ok;
+} axis_t;
+
+static axis_t axis(uint32_t win, uint32_t search, uint32_t step, uint32_t start, uint32_t len,
+                   uint32_t image)
+{
+    axis_t a;
+    a.win = win ? win : 16u;
+    a.search = search ? search : (2u * a.win > 65535u ? 65535u : 2u * a.win);
+    a.step = step ? step : a.win;
+    a.start = start;
+    a.len = len ? len : (start < image ? image - start : 0u);
+    a.ok = a.search >= a.win && start < image && start + a.len <= image && a.len >= a.win;
+    a.count = a.ok ? (a.len - a.win) / a.step + 1u : 0u;
+    return a;
+}
+
+static uint64_t sad_at(const img_t *f, const img_t *s, uint32_t ax, uint32_t ay, uint32_t wx,
+                       uint32_t wy, uint32_t ww, uint32_t wh)
+{
+    uint64_t t = 0;
+    uint32_t i, j;
+    for (j = 0; j < wh; j++) {
+        for (i = 0; i < ww; i++) {
+            uint32_t p = px(f, ax + i, ay + j), q = px(s, wx + i, wy + j);
+            t += p > q ? p - q : q - p;
+        }
+    }
+    return t;
+}
+
+static int holds(const img_t *im, uint32_t x0, uint32_t y0, uint32_t w, uint32_t h, uint32_t v)
+{
+    uint32_t x, y;
+    for (y = y0; y < y0 + h; y++) {
+        for (x = x0; x < x0 + w; x++) {
+            if (px(im, x, y) == v) {
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_in_t in = {data, size};
+    ssda_track_config_t cfg;
+    ssda_track_grid_t grid;
+    ssda_track_stats_t st, st2, poison_st;
+    ssda_track_vector_t poison_v;
+    ssda_view_t fv, sv;
+    img_t f, s;
+    axis_t axx, axy;
+    uint32_t bpp = fuzz_u8(&in) & 1u ? 2u : 1u, maxv = bpp == 2u ? 65535u : 255u;
+    uint32_t levels, seed, thr, minc, pixels, k, counts[4] = {0, 0, 0, 0};
+    uint32_t exact_mode, valid, out_count, stride_f, stride_s, check_every;
+    uint64_t brute_cost;
+    int rc, grc;
+
+    f.bpp = s.bpp = bpp;
+    f.w = fuzz_range(&in, 1, MAX_IMG);
+    f.h = fuzz_range(&in, 1, MAX_IMG);
+    if (fuzz_u8(&in) & 1u) { /* mostly the same size, as in practice */
+        s.w = f.w;
+        s.h = f.h;
+    } else {
+        s.w = fuzz_range(&in, 1, MAX_IMG);
+        s.h = fuzz_range(&in, 1, MAX_IMG);
+    }
+    memset(&cfg, 0, sizeof cfg);
+    cfg.win_w = (uint16_t)fuzz_range(&in, 0, 24);
+    cfg.win_h = (uint16_t)fuzz_range(&in, 0, 24);
+    cfg.search_w = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 48));
+    cfg.search_h = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 48));
+    cfg.step_x = (uint16_t)fuzz_range(&in, 0, 20);
+    cfg.step_y = (uint16_t)fuzz_range(&in, 0, 20);
+    cfg.roi_x = (uint16_t)fuzz_range(&in, 0, MAX_IMG);
+    cfg.roi_y = (uint16_t)fuzz_range(&in, 0, MAX_IMG);
+    cfg.roi_w = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, MAX_IMG + 1u));
+    cfg.roi_h = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, MAX_IMG + 1u));
+    cfg.predict = (uint8_t)fuzz_range(&in, 0, 3);       /* 3: invalid */
+    cfg.flags = (uint8_t)(fuzz_u8(&in) & (fuzz_one_in(&in, 16) ? 0xFFu : 3u));
+    cfg.mask_value = (uint16_t)(fuzz_u8(&in) & 1u ? fuzz_range(&in, 0, 3) * (maxv / 3u)
+                                                  : fuzz_u16(&in));
+    cfg.texture_threshold = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_u16(&in) % (maxv + 2u));
+    cfg.texture_min_count = fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 300);
+    cfg.match.threshold = (uint8_t)fuzz_range(&in, 0, 5); /* 5: invalid */
+    cfg.match.scan = (uint8_t)fuzz_range(&in, 0, 2);
+    cfg.match.order = (uint8_t)fuzz_range(&in, 0, 1);
+    cfg.match.flags = (uint8_t)(fuzz_u8(&in) & SSDA_MATCH_BOUNDS);
+    cfg.match.k_q8 = (uint16_t)fuzz_u16(&in);
+    cfg.match.coarse_step = (uint16_t)fuzz_range(&in, 0, 10);
+    cfg.match.lambda_q8 = fuzz_range(&in, 0, 5000);
+    cfg.match.fixed_threshold = fuzz_u32(&in) % 100000u;
+    if (cfg.match.flags) {
+        cfg.match.work = fuzz_one_in(&in, 32) ? NULL : g_work;
+        cfg.match.work_size = sizeof g_work - (fuzz_one_in(&in, 32) ? sizeof g_work : 0u);
+    }
+    levels = fuzz_range(&in, 1, 256);
+    seed = fuzz_u32(&in) | 1u;
+    out_count = fuzz_one_in(&in, 16) ? fuzz_range(&in, 0, 8) : MAX_OUT;
+    check_every = fuzz_range(&in, 1, 8);
+    fill(&f, g_first, &in, &seed, levels, maxv);
+    fill(&s, g_second, &in, &seed, levels, maxv);
+    stride_f = f.w * bpp;
+    stride_s = s.w * bpp;
+    FUZZ_CHECK(ssda_view_init(&fv, g_first, (uint16_t)f.w, (uint16_t)f.h, stride_f,
+                              (ssda_pixfmt_t)bpp) == SSDA_OK);
+    FUZZ_CHECK(ssda_view_init(&sv, g_second, (uint16_t)s.w, (uint16_t)s.h, stride_s,
+                              (ssda_pixfmt_t)bpp) == SSDA_OK);
+
+    /* the geometry, and ssda_track_grid's view of it */
+    axx = axis(cfg.win_w, cfg.search_w, cfg.step_x, cfg.roi_x, cfg.roi_w, s.w);
+    axy = axis(cfg.win_h, cfg.search_h, cfg.step_y, cfg.roi_y, cfg.roi_h, s.h);
+    memset(&grid, 0x77, sizeof grid);
+    grc = ssda_track_grid(&cfg, (uint16_t)s.w, (uint16_t)s.h, &grid);
+    FUZZ_CHECK((grc == SSDA_OK) == (axx.ok && axy.ok));
+    if (grc != SSDA_OK) {
+        FUZZ_CHECK(grc == SSDA_ERR_SIZE);
+    } else {
+        FUZZ_CHECK(grid.cols == axx.count && grid.rows == axy.count &&
+                   grid.count == axx.count * axy.count);
+        FUZZ_CHECK(grid.win_w == axx.win && grid.search_w == axx.search &&
+                   grid.step_x == axx.step && grid.roi_w == axx.len);
+        FUZZ_CHECK(grid.win_h == axy.win && grid.search_h == axy.search &&
+                   grid.step_y == axy.step && grid.roi_h == axy.len);
+        FUZZ_CHECK(grid.count == SSDA_TRACK_GRID_COUNT(axx.len, axy.len, axx.win, axy.win,
+                                                       axx.step, axy.step));
+    }
+
+    /* is the whole input valid, by the header? */
+    pixels = axx.win * axy.win;
+    thr = cfg.texture_threshold ? cfg.texture_threshold : (maxv + 1u) / 2u;
+    minc = cfg.texture_min_count ? cfg.texture_min_count
+                                 : (pixels / 16u > 0u ? pixels / 16u : 1u);
+    valid = grc == SSDA_OK && grid.count <= out_count && cfg.predict <= 2u &&
+            (cfg.flags & ~3u) == 0u &&
+            (!(cfg.flags & SSDA_TRACK_MASK) || cfg.mask_value <= maxv) &&
+            (!(cfg.flags & SSDA_TRACK_EXCLUDE) || (thr < maxv && 2u * minc <= pixels)) &&
+            !(cfg.predict != 0u && cfg.match.scan == SSDA_SCAN_COARSE) &&
+            cfg.match.threshold <= 4u &&
+            !(cfg.match.threshold == SSDA_THRESHOLD_RAMP && cfg.match.lambda_q8 == 0u) &&
+            !(cfg.match.flags && (cfg.match.work == NULL ||
+                                  cfg.match.work_size < SSDA_TRACK_WORK_SIZE(axx.search,
+                                      axy.search, axx.win, axy.win)));
+    exact_mode = (cfg.match.threshold == SSDA_THRESHOLD_AUTO ||
+                  cfg.match.threshold == SSDA_THRESHOLD_NONE) &&
+                 cfg.match.scan != SSDA_SCAN_COARSE;
+
+    memset(&poison_v, 0x4D, sizeof poison_v);
+    memset(&poison_st, 0x4D, sizeof poison_st);
+    for (k = 0; k <= MAX_OUT; k++) {
+        g_out[k] = poison_v;
+    }
+    st = poison_st;
+    rc = ssda_track(&fv, &sv, &cfg, g_out, out_count, &st);
+    if (!valid) {
+        FUZZ_CHECK(rc < 0);
+        FUZZ_CHECK(memcmp(&st, &poison_st, sizeof st) == 0);
+        for (k = 0; k <= MAX_OUT; k++) {
+            FUZZ_CHECK(memcmp(&g_out[k], &poison_v, sizeof poison_v) == 0);
+        }
+        return 0;
+    }
+    FUZZ_CHECK(rc == SSDA_OK);
+    for (k = grid.count; k <= MAX_OUT; k++) {
+        FUZZ_CHECK(memcmp(&g_out[k], &poison_v, sizeof poison_v) == 0);
+    }
+    brute_cost = (uint64_t)(axx.search - axx.win + 1u) * (axy.search - axy.win + 1u) * pixels;
+    for (k = 0; k < grid.count; k++) {
+        const ssda_track_vector_t *v = &g_out[k];
+        uint32_t col = k % grid.cols, row = k / grid.cols;
+        uint32_t wx = axx.start + col * axx.step, wy = axy.start + row * axy.step;
+        uint32_t hx = (axx.search - axx.win) / 2u, hy = (axy.search - axy.win) / 2u;
+        int64_t ax = (int64_t)wx - hx, ay = (int64_t)wy - hy;
+        uint32_t want;
+        FUZZ_CHECK(v->x == wx && v->y == wy);
+        FUZZ_CHECK(v->status <= SSDA_TRACK_EDGE);
+        counts[v->status]++;
+        /* the expected status, in the header's order */
+        if (ax < 0 || ay < 0 || ax + axx.search > f.w || ay + axy.search > f.h) {
+            want = SSDA_TRACK_EDGE;
+        } else if ((cfg.flags & SSDA_TRACK_MASK) &&
+                   holds(&s, wx, wy, axx.win, axy.win, cfg.mask_value)) {
+            want = SSDA_TRACK_MASKED;
+        } else if (cfg.flags & SSDA_TRACK_EXCLUDE) {
+            uint32_t bright = 0, x, y;
+            for (y = 0; y < axy.win; y++) {
+                for (x = 0; x < axx.win; x++) {
+                    bright += px(&s, wx + x, wy + y) > thr;
+                }
+            }
+            want = bright < minc || pixels - bright < minc ? SSDA_TRACK_EXCLUDED : SSDA_TRACK_OK;
+        } else {
+            want = SSDA_TRACK_OK;
+        }
+        if (want == SSDA_TRACK_OK && (cfg.flags & SSDA_TRACK_MASK) &&
+            holds(&f, (uint32_t)ax, (uint32_t)ay, axx.search, axy.search, cfg.mask_value)) {
+            want = SSDA_TRACK_MASKED;
+        }
+        FUZZ_CHECK(v->status == want);
+        if (v->status != SSDA_TRACK_OK) {
+            FUZZ_CHECK(v->sad == 0 && v->dx == 0 && v->dy == 0 && !v->exact);
+            continue;
+        }
+        /* the vector stays inside the area; its SAD is the one there when exact */
+        FUZZ_CHECK(v->dx <= (int32_t)hx && v->dx >= (int32_t)hx - (int32_t)(axx.search - axx.win));
+        FUZZ_CHECK(v->dy <= (int32_t)hy && v->dy >= (int32_t)hy - (int32_t)(axy.search - axy.win));
+        if (exact_mode) {
+            FUZZ_CHECK(v->exact);
+        }
+        if (exact_mode && (brute_cost * grid.count <= BRUTE_BUDGET || k % check_every == 0u) &&
+            brute_cost <= BRUTE_BUDGET) {
+            uint64_t best = UINT64_MAX;
+            uint32_t bx = 0, by = 0, x, y;
+            for (y = 0; y + axy.win <= axy.search; y++) {
+                for (x = 0; x + axx.win <= axx.search; x++) {
+                    uint64_t t = sad_at(&f, &s, (uint32_t)ax + x, (uint32_t)ay + y, wx, wy,
+                                        axx.win, axy.win);
+                    if (t < best) {
+                        best = t;
+                        bx = x;
+                        by = y;
+                    }
+                }
+            }
+            FUZZ_CHECK(v->sad == best);
+            FUZZ_CHECK(v->dx == (int32_t)hx - (int32_t)bx && v->dy == (int32_t)hy - (int32_t)by);
+        }
+    }
+    FUZZ_CHECK(st.windows == grid.count);
+    FUZZ_CHECK(st.ok == counts[0] && st.excluded == counts[1] && st.masked == counts[2] &&
+               st.edge == counts[3]);
+    FUZZ_CHECK(st.completed <= st.positions);
+    st2 = poison_st;
+    FUZZ_CHECK(ssda_track(&fv, &sv, &cfg, g_out2, out_count, &st2) == SSDA_OK);
+    FUZZ_CHECK(st.pixel_ops == st2.pixel_ops && st.positions == st2.positions &&
+               st.completed == st2.completed && st.check_pixels == st2.check_pixels &&
+               st.windows == st2.windows && st.ok == st2.ok && st.edge == st2.edge);
+    for (k = 0; k < grid.count; k++) { /* field by field: padding may differ */
+        const ssda_track_vector_t *a = &g_out[k], *b = &g_out2[k];
+        FUZZ_CHECK(a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
+                   a->y == b->y && a->status == b->status && a->exact == b->exact);
+    }
+    return 0;
+}
