@@ -66,7 +66,9 @@ typedef struct {
 
 static bool cand_less(const cand_t *a, const cand_t *b)
 {
-    if (a->sad != b->sad) {
+    /* The analyzer takes a fetch returning > 0 (match_rows.h: 0 or < 0) as
+       a completed position with its sum unset. */
+    if (a->sad != b->sad) { /* NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult) */
         return a->sad < b->sad;
     }
     if (a->y != b->y) {
@@ -101,20 +103,19 @@ static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
 static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
 {
     uint64_t f = ramp_f_q16(e, r);
+    uint64_t t, frac;
     if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
         /* eq. 3: lambda * f(r); lambda Q24.8 times f Q16 -> shift 24 */
         return ssda_mul_shr24(e->cfg->lambda_q8, f);
-    } else {
-        /* eq. 4: min(T_i, T_i * f(r) / (L*M)); frac in Q16, <= 2^16 */
-        uint64_t t = e->best.sad;
-        uint64_t lm = (uint64_t)e->L * e->M;
-        uint64_t frac = f / lm;
-        if (frac >= 65536u) {
-            return t;
-        }
-        /* (t >> 16) * frac < 2^32 * 2^16; (t & 0xFFFF) * frac < 2^32 */
-        return (t >> 16) * frac + (((t & 0xFFFFu) * frac) >> 16);
     }
+    /* eq. 4: min(T_i, T_i * f(r) / (L*M)); frac in Q16, <= 2^16 */
+    t = e->best.sad;
+    frac = f / ((uint64_t)e->L * e->M);
+    if (frac >= 65536u) {
+        return t;
+    }
+    /* (t >> 16) * frac < 2^32 * 2^16; (t & 0xFFFF) * frac < 2^32 */
+    return (t >> 16) * frac + (((t & 0xFFFFu) * frac) >> 16);
 }
 
 /* Lower bound of the ramp after r pixels: its linear part. */
@@ -170,6 +171,8 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
         }
     } else if (e->have_fb && pixels < e->fb_pixels) {
         return;
+    } else {
+        /* the first cut, or one that went further: it becomes the fallback */
     }
     e->fb.sad = partial;
     e->fb.x = x;
@@ -323,6 +326,8 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     } else if (e->n_best == 1u || cand_less(c, &e->second)) {
         e->second = *c;
         e->n_best = 2u;
+    } else {
+        /* behind both kept positions */
     }
     return 1;
 }
@@ -463,9 +468,13 @@ static int hill_climb(engine_t *e, cand_t start)
             if (nxp >= e->nx || nyp >= e->ny) {
                 continue;
             }
-            e->ref = &next; /* a neighbour must beat the best move so far */
+            /* a neighbour must beat the best move so far; ref is cleared
+               before next goes out of scope */
+            /* cppcheck-suppress autoVariables */
+            e->ref = &next;
             done = consider(e, nxp, nyp, &c);
             if (done < 0) {
+                e->ref = NULL; /* next dies here */
                 return done;
             }
             if (done > 0 && cand_less(&c, &next)) {
@@ -473,6 +482,7 @@ static int hill_climb(engine_t *e, cand_t start)
             }
         }
         if (next.x == cx && next.y == cy) {
+            e->ref = NULL; /* next dies here */
             return SSDA_OK;
         }
         cx = next.x;
@@ -518,7 +528,8 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     if (e->group > e->M) {
         e->group = e->M;
     }
-    e->ngroups = e->M / e->group;
+    /* M >= 1: the window height */
+    e->ngroups = e->M / e->group; /* NOLINT(clang-analyzer-core.DivideZero) */
     e->gsum = work;
     e->wgrp = work + (size_t)e->nx * ah;
     e->term = e->wgrp + e->M;
@@ -660,7 +671,8 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
     {
         err = scan_raster(&e);
     }
-    if (err != SSDA_OK) {
+    /* the else-if chain above is cut by the preprocessor: */
+    if (err != SSDA_OK) { /* NOLINT(readability-misleading-indentation) */
         return err;
     }
 #ifdef ENGINE_FALLBACK
