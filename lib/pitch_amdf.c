@@ -3,6 +3,7 @@
 #include "pitch_internal.h"
 
 #include "kernel/kernels.h"
+#include "fixmath.h"
 
 int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
 {
@@ -11,7 +12,7 @@ int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
     for (i = 0u; i < n; i++) {
         sum += (uint32_t)((int32_t)x[i] + 32768);
     }
-    return (int32_t)((sum + n / 2u) / n) - 32768;
+    return (int32_t)SSDA_DIV32(sum + n / 2u, n) - 32768;
 }
 
 uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean)

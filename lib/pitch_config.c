@@ -1,6 +1,7 @@
 /* pitch_config.c - checking a pitch configuration and resolving its
    defaults (shared by ssda_pitch_init and ssda_pitch_buffer_size). */
 #include "pitch_internal.h"
+#include "fixmath.h"
 
 #define KNOWN_FLAGS \
     (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC)
@@ -51,9 +52,12 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 #endif
 
     r.sample_rate_hz = rate;
-    r.lag_min = rate / f0_max;
-    r.lag_max = SSDA_PITCH_LAG_MAX(rate, f0_min);
-    r.frame_len = SSDA_PITCH_FRAME_LEN(rate, f0_min, cfg->frame_len);
+    r.lag_min = SSDA_DIV32(rate, f0_max);
+    /* SSDA_PITCH_LAG_MAX and SSDA_PITCH_FRAME_LEN of pitch.h, with f0_min
+       resolved, through SSDA_DIV32 */
+    r.lag_max = SSDA_DIV32(rate + f0_min - 1u, f0_min);
+    r.frame_len = cfg->frame_len != 0u ? cfg->frame_len
+                  : (r.lag_max > SSDA_PITCH_FRAME_MIN ? r.lag_max : SSDA_PITCH_FRAME_MIN);
     if (r.frame_len < SSDA_PITCH_FRAME_MIN || r.frame_len > SSDA_PITCH_FRAME_MAX) {
         return SSDA_ERR_SIZE;
     }

@@ -10,7 +10,21 @@ uint16_t ssda_pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz)
        W <= 411775 * 12000 < 2^33, R * 65536 <= 48000 * 65536 < 2^32. */
     uint64_t w = (uint64_t)TWO_PI_Q16 * fc_hz;
     uint64_t den = ((uint64_t)rate_hz << 16) + w;
-    return (uint16_t)(((w << 15) + den / 2u) / den);
+    /* round(2^15 W / (R + W)) <= 32768 < 2^16: 16 restoring steps, so no
+       64-bit division routine is linked; den << 15 < 2^49 */
+    uint64_t num = (w << 15) + den / 2u;
+    uint64_t step = den << 15;
+    uint32_t q = 0u;
+    uint32_t bit = 0x8000u;
+    while (bit != 0u) {
+        if (num >= step) {
+            num -= step;
+            q |= bit;
+        }
+        step >>= 1;
+        bit >>= 1;
+    }
+    return (uint16_t)q;
 }
 
 /* y += trunc(a * (32768 * in - y) / 32768): a convex step towards the

@@ -152,14 +152,18 @@ static uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const l
 static bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20,
                       uint32_t *new_lag, lag_value_t *new_v)
 {
-    const uint32_t margin_q20 = ((uint32_t)f->info->threshold_q15 / 3u) << 5;
+    /* threshold / 3 as (t * 43691) >> 17, exact for every t < 2^16 (checked
+       exhaustively): cores without a divide instruction would call the
+       runtime's division routine for a constant 3 */
+    const uint32_t margin_q20 = (((uint32_t)f->info->threshold_q15 * 43691u) >> 17) << 5;
     const bool full = SSDA_PITCH_HAS_FULL(f->info->flags);
     uint32_t k, limit;
     if (floor_q20 <= margin_q20) {
         return false; /* nothing can be deeper by the margin */
     }
     limit = floor_q20 - margin_q20; /* wanted: nq < limit */
-    for (k = 2u;; k++) {
+    k = 2u;
+    for (;;) { /* multiples k of the period until k * period passes lag_max */
         /* k * period_q16 <= 1200 * 2^29 < 2^40 */
         uint32_t c = (uint32_t)(((uint64_t)k * period_q16 + 32768u) >> 16);
         uint32_t lag, found_lag = 0u;
@@ -182,6 +186,7 @@ static bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20,
             *new_v = found_v;
             return true;
         }
+        k++;
     }
 }
 
@@ -279,6 +284,8 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         bound = NO_BOUND; /* first candidate: summed in full (Fig. 9) */
                     } else if (best_bound(&best, lag > best_lag, s, &bb) && bb > bound) {
                         bound = bb;
+                    } else {
+                        /* the threshold's bound is the tighter one */
                     }
                 }
             }
@@ -312,6 +319,8 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
             } else if (lag == best_lag) {
                 best_left = prev; /* the predicted lag, reached by the scan */
                 best_need_right = true;
+            } else {
+                /* not better: the best lag stays */
             }
         }
 
@@ -342,6 +351,8 @@ void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                     break; /* no later lag can change the choice */
                 }
             }
+        } else {
+            /* outside a run, and still outside */
         }
         if (!in_run && !armed && candidate && !(cur.exact && n_at_most_q15(&cur, rearm))) {
             armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */

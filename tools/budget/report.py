@@ -43,7 +43,10 @@ def cache_value(build, key):
 
 def read_features(build, kind="features"):
     feats = {}
-    with open(os.path.join(build, kind + ".txt")) as f:
+    path = os.path.join(build, kind + ".txt")
+    if kind == "min" and not os.path.exists(path):
+        return feats
+    with open(path) as f:
         for line in f:
             name, _, fns = line.partition(":")
             feats[name.strip()] = fns.split()
@@ -256,11 +259,18 @@ def main():
     if targets:
         feats = read_features(targets[0][1])
         parts = read_features(targets[0][1], "parts")
+        # Minimal cores (fw_min-<row>.elf: the library with the switches of
+        # min_config.txt), keyed "min-<row>".
+        mins = {"min-" + k: v for k, v in read_features(targets[0][1], "min").items()}
+        min_config = ""
+        if mins:
+            with open(os.path.join(targets[0][1], "min_config.txt")) as f:
+                min_config = f.read().split()
         sizes = {}
         for name, build in targets:
             tool = cache_value(build, "CMAKE_SIZE")
             base = section_sizes(tool, os.path.join(build, "fw_base.elf"))
-            for feat in list(feats) + list(parts) + ["all"]:
+            for feat in list(feats) + list(parts) + list(mins) + ["all"]:
                 elf = os.path.join(build, f"fw_{feat}.elf")
                 if not os.path.exists(elf):
                     sizes[(name, feat)] = None  # did not link
@@ -277,6 +287,16 @@ def main():
           ("Static RAM (`.data` + `.bss`) is 0 for every feature: all state "
            "is in caller buffers.\n\n" if no_ram else
            "Static RAM (`.data` + `.bss`), where not 0, in parentheses.\n\n"))
+        if mins:
+            w("*Minimal core* rows: the same functions linked against the library "
+              "built with the feature switches of `include/ssda/config.h` (" +
+              ", ".join(f"`{c}`" for c in min_config) + "): the search keeps "
+              "the exact `auto` and brute-force thresholds, the raster scan, row "
+              "order and 8-bit views; the pitch keeps the streamed AMDF with early "
+              "exit, voicing, the dip-run choice with its octave check and the "
+              "V-shaped interpolation; the streaming layer keeps raster 8-bit "
+              "sources read at byte granularity and the plate cache. A feature "
+              "left out returns `SSDA_ERR_UNSUPPORTED`.\n\n")
         w("| feature | " + " | ".join(n for n, _ in targets) + " | Cortex-M0+ target |\n")
         w("|---|" + "---:|" * len(targets) + "---|\n")
         order = [f for f in ("match", "pitch", "stream", "track", "grad", "view", "ssda") if f in feats]
@@ -284,7 +304,11 @@ def main():
         rows = []
         for feat in order:
             rows.append(feat)
-            rows += sorted(p for p in parts if p.startswith(feat + "-"))
+            if "min-" + feat in mins:
+                rows.append("min-" + feat)
+            for p in sorted(p for p in parts if p.startswith(feat + "-")):
+                rows.append(p)
+                rows += sorted(m for m in mins if m == "min-" + p or m.startswith("min-" + p + "+"))
         for feat in rows:
             cells = []
             for name, _ in targets:
@@ -293,7 +317,8 @@ def main():
                     continue
                 fl, ram = sizes[(name, feat)]
                 cells.append(fmt(fl) + ("" if ram == 0 else f" (+{ram} RAM)"))
-            goal = M0_FLASH_TARGETS.get(feat)
+            goal = M0_FLASH_TARGETS.get(feat[4:].split("+")[0] if feat in mins and "+" not in feat
+                                        else feat)
             m0 = next((sizes[(n, feat)][0] for n, _ in targets
                        if "m0" in n.lower() and sizes[(n, feat)] is not None), None)
             verdict = ""
@@ -301,6 +326,11 @@ def main():
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
             if feat == "all":
                 label = "everything"
+            elif feat in mins:
+                pad = "&nbsp;" * (4 if "-" in feat[4:] else 2)
+                label = pad + ("minimal core" if "+" not in feat else
+                               "minimal core + `" + "`, `".join(
+                                   x for x in mins[feat] if x not in mins[feat.split("+")[0]]) + "`")
             elif feat in parts:
                 label = "&nbsp;&nbsp;of which `ssda_" + feat.split("-", 1)[1] + "*`" + \
                     {"match-match": " (search core)", "stream-source": " (streaming layer)"}.get(feat, "")
@@ -312,11 +342,15 @@ def main():
         # with a target: library functions and runtime routines by size.
         name0, build0 = targets[0]
         nm = cache_value(build0, "CMAKE_OBJDUMP")[: -len("objdump")] + "nm"
-        lib_syms = set(subprocess.run([nm, "--defined-only", os.path.join(build0, "ssda", "lib", "libssda.a")],
-                                      capture_output=True, text=True).stdout.split())
+        lib_syms = set()
+        for lib in (os.path.join(build0, "ssda", "lib", "libssda.a"), os.path.join(build0, "libssda_min.a")):
+            if os.path.exists(lib):
+                lib_syms |= set(subprocess.run([nm, "--defined-only", lib],
+                                               capture_output=True, text=True).stdout.split())
         base_syms = set(subprocess.run([nm, os.path.join(build0, "fw_base.elf")],
                                        capture_output=True, text=True).stdout.split())
-        for feat in [f for f in rows if f in M0_FLASH_TARGETS]:
+        for feat in [f for f in rows if f in M0_FLASH_TARGETS or
+                     (f in mins and "+" not in f and f[4:] in M0_FLASH_TARGETS)]:
             elf = os.path.join(build0, f"fw_{feat}.elf")
             if not os.path.exists(elf):
                 continue
@@ -327,11 +361,15 @@ def main():
                 if len(p) != 4 or p[3] in base_syms or p[0] in seen:
                     continue
                 seen.add(p[0])  # aliases share an address
-                parts.append((int(p[1], 16), p[3], p[3] in lib_syms))
+                # GCC's clones (f.constprop.0, f.isra.0, f.part.0) are the library's too
+                parts.append((int(p[1], 16), p[3], p[3] in lib_syms or p[3].split(".")[0] in lib_syms))
             lib = sum(n for n, _, own in parts if own)
-            title = FEATURE_NAMES.get(feat) or ("`ssda_" + feat.split("-", 1)[-1] + "*` (" +
-                                                {"match-match": "search core",
-                                                 "stream-source": "streaming layer"}.get(feat, feat) + ")")
+            key = feat[4:] if feat in mins else feat
+            title = FEATURE_NAMES.get(key) or ("`ssda_" + key.split("-", 1)[-1] + "*` (" +
+                                               {"match-match": "search core",
+                                                "stream-source": "streaming layer"}.get(key, key) + ")")
+            if feat in mins:
+                title += ", minimal core"
             w(f"\n<details><summary>{name0}, {title}: "
               f"{fmt(lib)} B library, {fmt(sum(n for n, _, own in parts) - lib)} B runtime "
               "(libgcc, C library)</summary>\n\n")
