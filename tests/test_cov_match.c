@@ -157,6 +157,7 @@ static void test_search_refusals_leave_outputs_untouched(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_match(&roi, &tall, NULL, &res));
     TEST_ASSERT_EQUAL_MEMORY(&poison, &res, sizeof res);
     /* ssda_sad_at: NULL window or output, then a bad pair */
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_sad_at(NULL, &wv, 0, 0, &sad));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_sad_at(&av, NULL, 0, 0, &sad));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_sad_at(&av, &wv, 0, 0, NULL));
     memset(area16, 0, sizeof area16);

@@ -89,6 +89,10 @@ static void test_match_init_refusals_leave_the_job_untouched(void)
         out.y = (uint16_t)(IH - 8u);
         TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &out, NULL, &res, g_ring, sizeof g_ring));
     }
+    /* window wider than the area, as tall */
+    ar.width = 11;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    ar.width = 20;
     /* window as wide as allowed but taller than the area */
     ar.height = 8;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
@@ -258,6 +262,61 @@ static void test_track_all_edge_either_role(void)
     }
 }
 
+/* Pushing FIRST with SECOND streamed through a plate of one window row
+   (rows fetched as the tracker asks): a read failing at any point stops
+   the job with its code, later pushes are SSDA_ERR_STATE, the windows
+   solved before it are ssda_track's, and stats stay untouched. */
+static void test_fetch_mode_failure_anywhere_stops_tracking(void)
+{
+    ssda_view_t fv = view_of(g_first), sv = view_of(g_second);
+    ssda_source_t other;
+    ssda_push_t p;
+    ssda_track_stats_t st, poison;
+    ssda_track_grid_t g;
+    const size_t arena = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 1u, 4u, 0u);
+    uint64_t reads, k, step;
+    uint32_t y, i;
+    make_images(6u);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(NULL, IW, IH, &g));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, NULL, g_want, MAX_WIN, NULL));
+    make_streamed(&other, &sv, arena);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
+                                                        g_got, MAX_WIN, &st, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT((int)g.rows, push_all(&p, &g_first[0][0], IH, IW));
+    for (i = 0; i < g.count; i++) {
+        TEST_ASSERT_TRUE(same_vector(&g_want[i], &g_got[i]));
+    }
+    reads = g_t.reads;
+    TEST_ASSERT_TRUE(reads > 20u);
+    step = reads / 40u + 1u;
+    memset(&poison, 0x21, sizeof poison);
+    for (k = 0; k < reads; k += step) {
+        int failed = 0;
+        make_streamed(&other, &sv, arena);
+        g_t.fail_at_read = (int64_t)k;
+        g_t.fail_code = -6000 - (int)k;
+        st = poison;
+        memset(g_got, 0x33, sizeof g_got);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
+                                                            g_got, MAX_WIN, &st, g_ring, sizeof g_ring));
+        for (y = 0; y < IH; y++) {
+            int n = ssda_push_row(&p, g_first[y]);
+            if (failed) {
+                TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, n);
+            } else if (n < 0) {
+                TEST_ASSERT_EQUAL_INT(-6000 - (int)k, n);
+                failed = 1;
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(1, failed);
+        TEST_ASSERT_EQUAL_MEMORY(&poison, &st, sizeof st);
+        /* the grid rows completed before the failure hold ssda_track's vectors */
+        for (i = 0; i < g.count && g_got[i].status <= SSDA_TRACK_EDGE; i++) {
+            TEST_ASSERT_TRUE(same_vector(&g_want[i], &g_got[i]));
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -266,5 +325,6 @@ int main(void)
     RUN_TEST(test_null_row_changes_nothing);
     RUN_TEST(test_track_defaults_without_stats);
     RUN_TEST(test_track_all_edge_either_role);
+    RUN_TEST(test_fetch_mode_failure_anywhere_stops_tracking);
     return UNITY_END();
 }

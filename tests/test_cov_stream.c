@@ -22,7 +22,7 @@ void tearDown(void) {}
 #define IH 60u
 static uint8_t g_img[IH][IW];     /* FIRST / area image */
 static uint8_t g_moved[IH][IW];   /* SECOND: g_img moved by (SHIFT_X, SHIFT_Y) */
-static uint8_t g_dev[IW * IH + 64u], g_dev2[IW * IH + 64u];
+static uint8_t g_dev[6144], g_dev2[6144]; /* 72 x 60 as 16 x 16 tiles: 5120 */
 static uint32_t g_arena[1024], g_arena2[1024]; /* 4 KB each */
 static test_source_t g_t, g_t2;
 #define MAX_WIN 64u
@@ -199,6 +199,98 @@ static void test_one_in_ram_source_as_both_operands(void)
     TEST_ASSERT_EQUAL_UINT32((IW - 9u + 1u) * (IH - 7u + 1u), res.positions);
 }
 
+/* Brute-force minimum of window rectangle wr of v over area rectangle ar. */
+static void best_of(const ssda_view_t *v, const ssda_rect_t *ar, const ssda_rect_t *wr,
+                    uint32_t *bx, uint32_t *by, uint64_t *bs)
+{
+    ssda_view_t av, wv;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&av, v, ar->x, ar->y, ar->width, ar->height));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&wv, v, wr->x, wr->y, wr->width, wr->height));
+    test_best(&av, &wv, bx, by, bs);
+}
+
+static void test_wider_window_and_empty_rectangle_are_refused(void)
+{
+    ssda_view_t v = view_of(g_img);
+    ssda_source_t a, w;
+    ssda_match_result_t res, poison;
+    ssda_rect_t ar = {4, 6, 10, 20}, wr = {0, 0, 11, 8};
+    make_images(9u);
+    (void)streamed(&a, &g_t, g_dev, sizeof g_dev, &v, 1u, g_arena, sizeof g_arena);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&w, &v));
+    memset(&poison, 0x3C, sizeof poison);
+    res = poison;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_stream_match(&a, &ar, &w, &wr, NULL, &res));
+    wr.width = 0;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_stream_match(&a, &ar, &w, &wr, NULL, &res));
+    TEST_ASSERT_EQUAL_MEMORY(&poison, &res, sizeof res);
+    TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads);
+}
+
+/* After a job shaped the plate as narrow as its window, a wider row span
+   reshapes it (the arena allows) and reads the right pixels. */
+static void test_row_span_wider_than_a_jobs_plate(void)
+{
+    ssda_view_t v = view_of(g_img);
+    ssda_source_t a, w;
+    ssda_match_result_t res;
+    const ssda_rect_t ar = {0, 0, IW, IH}, wr = {20, 30, 8, 6};
+    const uint8_t *px;
+    uint32_t bx, by;
+    uint64_t bs;
+    make_images(10u);
+    /* room for 4 whole rows, so the raster scan's plate is 8 px wide */
+    (void)streamed(&a, &g_t, g_dev, sizeof g_dev, &v, 1u, g_arena, 4u * IW);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&w, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&a, NULL, &w, &wr, NULL, &res));
+    best_of(&v, &ar, &wr, &bx, &by, &bs);
+    TEST_ASSERT_EQUAL_UINT32(bx, res.x);
+    TEST_ASSERT_EQUAL_UINT32(by, res.y);
+    TEST_ASSERT_EQUAL_UINT64(0u, res.sad);
+    TEST_ASSERT_TRUE(a.pw < IW);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_row(&a, 1u, 33u, IW - 1u, &px));
+    TEST_ASSERT_EQUAL_MEMORY(&g_img[33][1], px, IW - 1u);
+}
+
+/* The same job twice reads nothing the second time (its plate already
+   holds the area: every span is a hit); a shorter area of the same width
+   reshapes the plate and is still brute-force right. */
+static void test_repeated_and_shorter_jobs(void)
+{
+    ssda_view_t v = view_of(g_img);
+    ssda_source_t a, w;
+    ssda_match_result_t r1, r2;
+    ssda_rect_t ar = {6, 10, 40, 30};
+    const ssda_rect_t wr = {30, 22, 9, 7};
+    uint64_t bytes;
+    uint32_t bx, by;
+    uint64_t bs;
+    make_images(11u);
+    (void)streamed(&a, &g_t, g_dev, sizeof g_dev, &v, 4u, g_arena, sizeof g_arena);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&w, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&a, &ar, &w, &wr, NULL, &r1));
+    bytes = a.stats.bytes_read;
+    TEST_ASSERT_TRUE(bytes > 0u);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&a, &ar, &w, &wr, NULL, &r2));
+    TEST_ASSERT_EQUAL_UINT64(bytes, a.stats.bytes_read);
+    TEST_ASSERT_EQUAL_UINT64(r1.sad, r2.sad);
+    TEST_ASSERT_EQUAL_UINT64(r1.pixel_ops, r2.pixel_ops);
+    TEST_ASSERT_EQUAL_UINT32(r1.x, r2.x);
+    TEST_ASSERT_EQUAL_UINT32(r1.y, r2.y);
+    best_of(&v, &ar, &wr, &bx, &by, &bs);
+    TEST_ASSERT_EQUAL_UINT32(bx, r1.x);
+    TEST_ASSERT_EQUAL_UINT32(by, r1.y);
+    TEST_ASSERT_EQUAL_UINT64(bs, r1.sad);
+    ar.height = 14;
+    ar.y = 19;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&a, &ar, &w, &wr, NULL, &r2));
+    best_of(&v, &ar, &wr, &bx, &by, &bs);
+    TEST_ASSERT_EQUAL_UINT32(bx, r2.x);
+    TEST_ASSERT_EQUAL_UINT32(by, r2.y);
+    TEST_ASSERT_EQUAL_UINT64(bs, r2.sad);
+    TEST_ASSERT_EQUAL_UINT64(0u, g_t.contract_violations);
+}
+
 static bool same_vector(const ssda_track_vector_t *a, const ssda_track_vector_t *b)
 {
     return a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
@@ -301,6 +393,64 @@ static void test_track_with_every_area_outside_first(void)
         TEST_ASSERT_EQUAL_UINT8(SSDA_TRACK_EDGE, g_got[k].status);
     }
     TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads + g_t2.reads);
+    /* FIRST as wide as SECOND but 20 rows tall: areas fit across, never down */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&fv, g_img, IW, 20, IW, SSDA_PIX_U8));
+    test_source_init(&g_t, g_dev, sizeof g_dev, 1u);
+    {
+        ssda_source_config_t c = test_source_config(&g_t, &fv, SSDA_LAYOUT_RASTER, 0, 0, 0u, 0u,
+                                                    0u, 1u, g_arena, sizeof g_arena);
+        test_source_store(&g_t, &c, &fv);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&f, &c));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_track(&f, &s, NULL, g_got, MAX_WIN, &st));
+    TEST_ASSERT_EQUAL_UINT32(12u, st.edge);
+    TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads + g_t2.reads);
+}
+
+/* Tiled sources with the smallest arenas: a plate cannot keep a band (nor
+   the bytes a band gains per step), so rows are fetched as the tracker
+   asks: still ssda_track's vectors, and the known shift. */
+static void test_track_tiled_minimal_arenas(void)
+{
+    ssda_view_t fv = view_of(g_img), sv = view_of(g_moved);
+    ssda_source_t f, s;
+    ssda_track_config_t c;
+    ssda_track_grid_t g;
+    uint32_t k, ok = 0;
+    make_images(12u);
+    memset(&c, 0, sizeof c);
+    c.win_w = c.win_h = 12;
+    c.search_w = c.search_h = 20;
+    c.step_x = c.step_y = 12;
+    c.roi_x = c.roi_y = 4;
+    c.roi_w = IW - 8u;
+    c.roi_h = IH - 8u;
+    {
+        ssda_source_config_t fc, sc;
+        test_source_init(&g_t, g_dev, sizeof g_dev, 1u);
+        fc = test_source_config(&g_t, &fv, SSDA_LAYOUT_TILED, 16, 16, 0u, 0u, 0u, 1u, g_arena,
+                                SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 20u, 1u, 1u, 1u, 16u));
+        test_source_store(&g_t, &fc, &fv);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&f, &fc));
+        test_source_init(&g_t2, g_dev2, sizeof g_dev2, 1u);
+        sc = test_source_config(&g_t2, &sv, SSDA_LAYOUT_TILED, 16, 16, 0u, 0u, 0u, 1u, g_arena2,
+                                SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 1u, 1u, 1u, 16u));
+        test_source_store(&g_t2, &sc, &sv);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &sc));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &g));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, &c, g_want, MAX_WIN, NULL));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, NULL));
+    for (k = 0; k < g.count; k++) {
+        TEST_ASSERT_TRUE(same_vector(&g_want[k], &g_got[k]));
+        if (g_got[k].status == SSDA_TRACK_OK) {
+            TEST_ASSERT_EQUAL_INT32(SHIFT_X, g_got[k].dx);
+            TEST_ASSERT_EQUAL_INT32(SHIFT_Y, g_got[k].dy);
+            ok++;
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32(g.count, ok);
+    TEST_ASSERT_EQUAL_UINT64(0u, g_t.contract_violations + g_t2.contract_violations);
 }
 
 static void test_track_refusals_leave_outputs_untouched(void)
@@ -332,9 +482,13 @@ int main(void)
     RUN_TEST(test_rectangles_outside_or_taller_are_refused);
     RUN_TEST(test_row_wider_than_the_arena_is_a_buffer_error);
     RUN_TEST(test_one_in_ram_source_as_both_operands);
+    RUN_TEST(test_wider_window_and_empty_rectangle_are_refused);
+    RUN_TEST(test_row_span_wider_than_a_jobs_plate);
+    RUN_TEST(test_repeated_and_shorter_jobs);
     RUN_TEST(test_track_grid_without_edge_rows);
     RUN_TEST(test_track_coarse_scan_with_auto_threshold);
     RUN_TEST(test_track_with_every_area_outside_first);
+    RUN_TEST(test_track_tiled_minimal_arenas);
     RUN_TEST(test_track_refusals_leave_outputs_untouched);
     return UNITY_END();
 }
