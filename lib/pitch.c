@@ -122,7 +122,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         if (SSDA_PITCH_FILTERED(&p->info)) {
             filter_samples(p, samples + used, p->buf + p->fill, take);
         } else {
-            memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
+            (void)memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
         }
         p->fill += (uint32_t)take;
         used += take;
@@ -142,7 +142,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
                 p->fill = span - p->info.hop;
                 while (moved < p->fill) {
                     uint32_t n = p->fill - moved < p->info.hop ? p->fill - moved : p->info.hop;
-                    memcpy(p->buf + moved, p->buf + moved + p->info.hop, n * sizeof(int16_t));
+                    (void)memcpy(p->buf + moved, p->buf + moved + p->info.hop, n * sizeof(int16_t));
                     moved += n;
                 }
             } else {

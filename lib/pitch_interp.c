@@ -21,7 +21,7 @@ int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bo
         return 0; /* flat or not a minimum: no offset */
     }
     /* round half away from zero; a quotient that saturates is clamped anyway */
-    q = ssda_div64_32(num + (uint32_t)den / 2u, (uint32_t)den);
+    q = ssda_div64_32(num + (uint64_t)(uint32_t)den / 2u, (uint32_t)den);
     if (q > 32768u) {
         q = 32768u;
     }
@@ -31,5 +31,5 @@ int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bo
 uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16)
 {
     /* rate << 32 < 2^48; the quotient saturates at UINT32_MAX */
-    return ssda_div64_32(((uint64_t)rate_hz << 32) + period_q16 / 2u, period_q16);
+    return ssda_div64_32(((uint64_t)rate_hz << 32) + (uint64_t)period_q16 / 2u, period_q16);
 }
