@@ -37,7 +37,12 @@ static void describe_subtype(int format, wav_info_t *info)
 /* One mixed-down sample, full scale +-1.0, to int16 with rounding and clipping. */
 static int16_t to_i16(double v, size_t *clipped)
 {
-    double s = floor(v * 32768.0 + 0.5);
+    double s;
+    if (v != v) { /* NaN (a float file may hold one): 0, counted with the clipped */
+        (*clipped)++;
+        return 0;
+    }
+    s = floor(v * 32768.0 + 0.5);
     if (s > 32767.0) {
         (*clipped)++;
         return 32767;

@@ -7,7 +7,8 @@
  * that full scale is -32768..32767: 16-bit PCM comes through bit-exact,
  * wider formats and mixed channels are rounded to the nearest int16 (halves
  * up), and float samples beyond +-1.0 are clipped (and counted, see
- * wav_read_mono_i16_ex).
+ * wav_read_mono_i16_ex); a NaN sample (after mixing) reads as 0 and is
+ * counted with the clipped ones.
  */
 #ifndef SSDA_WAV_IO_H
 #define SSDA_WAV_IO_H
@@ -20,7 +21,7 @@ typedef struct {
     uint32_t channels;      /* channels in the file (mixed down to 1) */
     uint32_t source_bits;   /* 8, 16, 24, 32 for PCM; 32/64 for float; 0 if unknown */
     int is_float;           /* 1 for float/double sample formats */
-    size_t clipped;         /* samples clipped to -32768..32767 after mixing */
+    size_t clipped;         /* samples clipped to -32768..32767 after mixing, or NaN (read as 0) */
     char format_name[64];   /* libsndfile's name of the major format, e.g. "WAV (Microsoft)" */
 } wav_info_t;
 

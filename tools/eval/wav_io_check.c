@@ -149,6 +149,29 @@ static void check_float_clipping_and_stereo(const char *dir)
     free(got);
 }
 
+/* A float file holding NaN (found by fuzz_wav: the conversion to int16 was
+   undefined): NaN reads as 0 and is counted; infinities clip. */
+static void check_float_nan(const char *dir)
+{
+    const double nan = strtod("nan", NULL), inf = strtod("inf", NULL);
+    const double xf[] = {0.5, nan, -nan, inf, -inf, 0.25};
+    static const int16_t want[] = {16384, 0, 0, 32767, -32768, 8192};
+    char path[512], err[256];
+    int16_t *got = NULL;
+    size_t n = 0, i;
+    uint32_t rate = 0;
+    wav_info_t info;
+    snprintf(path, sizeof path, "%s/nan.wav", dir);
+    CHECK(write_file(path, SF_FORMAT_WAV | SF_FORMAT_FLOAT, 1, 8000, xf, NULL, NULL, 6) == 0,
+          "write %s", path);
+    CHECK(wav_read_mono_i16_ex(path, &got, &n, &rate, &info, err, sizeof err) == 0, "%s", err);
+    CHECK(n == 6 && info.clipped == 4, "nan: n %zu clipped %zu", n, info.clipped);
+    for (i = 0; i < n && i < 6; i++) {
+        CHECK(got[i] == want[i], "nan[%zu] %d != %d", i, got[i], want[i]);
+    }
+    free(got);
+}
+
 static void check_flac(const char *dir)
 {
     static const short v[] = {3, -3, 30000, -30000};
@@ -203,6 +226,7 @@ int main(int argc, char **argv)
     check_pcm16_bit_exact(dir);
     check_pcm24_rounding_and_pcm8(dir);
     check_float_clipping_and_stereo(dir);
+    check_float_nan(dir);
     check_flac(dir);
     check_errors(dir);
     if (g_failures != 0) {
