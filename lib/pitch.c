@@ -74,11 +74,13 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
 }
 
 #ifndef SSDA_CFG_NO_PITCH_FILTER
-/* Pass n samples through the low-pass into out (NULL: filter only). */
+/* Pass n >= 1 samples through the low-pass into out (NULL: filter only).
+   Both calls pass n >= 1: a take while used < count, bounded by skip > 0 or
+   by span - fill > 0. */
 static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, size_t n)
 {
     size_t i;
-    if (n > 0u && !p->lp_primed) {
+    if (!p->lp_primed) {
         ssda_pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
         p->lp_primed = true;
     }

@@ -66,7 +66,7 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
     }
     r.chunk = cfg->chunk != 0u ? cfg->chunk
               : (SSDA_PITCH_DEFAULT_CHUNK < r.frame_len ? SSDA_PITCH_DEFAULT_CHUNK : r.frame_len);
-    r.hop = cfg->hop != 0u ? cfg->hop : (r.frame_len / 4u > 0u ? r.frame_len / 4u : 1u);
+    r.hop = cfg->hop != 0u ? cfg->hop : r.frame_len / 4u; /* K >= 16: max(1, K / 4) = K / 4 */
     r.span = r.frame_len + r.lag_max + 1u;
     /* <= 4800 * 8192 < 2^26 */
     r.full_diffs = (r.lag_max - r.lag_min + 1u) * r.frame_len;
