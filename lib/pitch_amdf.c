@@ -12,7 +12,8 @@ int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
     for (i = 0u; i < n; i++) {
         sum += (uint32_t)((int32_t)x[i] + 32768);
     }
-    return (int32_t)SSDA_DIV32(sum + n / 2u, n) - 32768;
+    /* n = 1..8192 (pitch_internal.h): the frame length */
+    return (int32_t)SSDA_DIV32(sum + n / 2u, n) - 32768; /* NOLINT(clang-analyzer-core.DivideZero) */
 }
 
 uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean)
