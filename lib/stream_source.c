@@ -4,10 +4,12 @@
 #include "stream_internal.h"
 #include "fixmath.h"
 
-/* *out = a * b + c if that fits 32 bits (device addresses are 32-bit). */
+/* *out = a * b + c if that fits 32 bits (device addresses are 32-bit).
+   b >= 1: every call passes a stride, tile height or tile stride, each
+   checked to be >= 1 before. */
 static bool mul_add(uint32_t a, uint32_t b, uint32_t c, uint32_t *out)
 {
-    if (b != 0u && a > SSDA_DIV32(UINT32_MAX - c, b)) {
+    if (a > SSDA_DIV32(UINT32_MAX - c, b)) {
         return false;
     }
     *out = a * b + c;
@@ -124,11 +126,9 @@ int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
     all.height = s.cfg.height;
     /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
        plate fits (checked above), so this cannot fail. */
-    err = stream_plate_plan(&s, &all, 1u, 1u, 0u, 0u);
-    if (err == SSDA_OK) {
-        *src = s;
-    }
-    return err;
+    (void)stream_plate_plan(&s, &all, 1u, 1u, 0u, 0u);
+    *src = s;
+    return SSDA_OK;
 }
 
 int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view)
