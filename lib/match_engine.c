@@ -263,9 +263,11 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
             return err;
         }
 #ifndef SSDA_CFG_NO_BOUNDS
-        if (rest != 0u && r == next_group * e->group && next_group < e->ngroups) {
+        if (rest != 0u && r == next_group * e->group) {
             /* row order: a group leaves the bound when its first row is summed,
-               so rest only covers groups with no row in partial */
+               so rest only covers groups with no row in partial. rest is the
+               sum of term[next_group .. ngroups - 1]: rest != 0 implies
+               next_group < ngroups. */
             rest -= e->term[next_group];
             next_group++;
         }
