@@ -110,7 +110,9 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
         h = r->height;
     }
     pitch = pitch_for(s, w); /* h * pitch <= room_of(s) <= 2^31 */
-    if (w != s->pw || h != s->ph || pitch != s->pitch) {
+    /* pitch_for depends on w and the source's fixed config only: the same
+       w gives the same pitch */
+    if (w != s->pw || h != s->ph) {
         s->pw = (uint16_t)w;
         s->ph = (uint16_t)h;
         s->pitch = (uint32_t)pitch;
