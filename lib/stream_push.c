@@ -10,6 +10,7 @@
 #include <string.h>
 #include "stream_internal.h"
 #include "track_rows.h"
+#include "compiler.h"
 
 enum { KIND_STOPPED = 0, KIND_MATCH = 1, KIND_TRACK = 2, KIND_DONE = 3 };
 
@@ -18,23 +19,33 @@ static bool format_ok(uint8_t format)
     return format == (uint8_t)SSDA_PIX_U8 || format == (uint8_t)SSDA_PIX_U16;
 }
 
-/* Ring of rows of columns x0 .. x0+w-1 holding at least `band` rows. */
-static int ring_setup(ssda_push_t *p, uint32_t x0, uint32_t w, uint32_t band, void *ring,
-                      size_t ring_size)
+/* Whether ring (ring_size bytes) holds `band` rows of w px: SSDA_OK or
+   SSDA_ERR_BUFFER (also for a misaligned ring). */
+static int ring_fits(uint8_t format, uint32_t w, uint32_t band, const void *ring,
+                     size_t ring_size)
+{
+    size_t pitch = SSDA_STREAM_PITCH(w, format);
+    if ((((uintptr_t)ring) & 3u) != 0u || ring_size / pitch < band) {
+        return SSDA_ERR_BUFFER;
+    }
+    return SSDA_OK;
+}
+
+/* Ring of rows of columns x0 .. x0+w-1 (checked by ring_fits; p->format set). */
+static void ring_setup(ssda_push_t *p, uint32_t x0, uint32_t w, void *ring, size_t ring_size)
 {
     size_t pitch = SSDA_STREAM_PITCH(w, p->format);
     size_t cap = ring_size / pitch;
-    if ((((uintptr_t)ring) & 3u) != 0u || cap < band) {
-        return SSDA_ERR_BUFFER;
-    }
     p->ring = (uint8_t *)ring;
     p->pitch = (uint32_t)pitch; /* <= 4 * 65535 */
     p->cap = (uint16_t)(cap > SSDA_MAX_DIM ? SSDA_MAX_DIM : cap);
     p->x0 = (uint16_t)x0;
     p->w = (uint16_t)w;
-    return SSDA_OK;
 }
 
+/* The init functions check everything before they write *push (outputs
+   untouched on error) and then fill it in place: no copy of the push
+   state on the stack. */
 int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
                          const ssda_rect_t *area_rect, ssda_source_t *window,
                          const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
@@ -42,8 +53,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
 {
     /* cppcheck-suppress unassignedVariable ; zero-initialised static (C99 6.7.8p10) */
     static const ssda_match_config_t defaults;
-    ssda_push_t p;
-    ssda_rect_t wr;
+    ssda_rect_t area, wr;
     int err;
     if (push == NULL || window == NULL || result == NULL || ring == NULL) {
         return SSDA_ERR_NULL;
@@ -54,44 +64,50 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (!format_ok(format) || window->cfg.format != format) {
         return SSDA_ERR_FORMAT;
     }
-    (void)memset(&p, 0, sizeof p);
-    p.width = width;
-    p.height = height;
-    p.format = format;
-    p.area.width = width;
-    p.area.height = height;
+    area.x = 0u;
+    area.y = 0u;
+    area.width = width;
+    area.height = height;
     if (area_rect != NULL) {
-        p.area = *area_rect;
+        area = *area_rect;
     }
-    if (width == 0u || height == 0u || p.area.width == 0u || p.area.height == 0u ||
-        (uint32_t)p.area.x + p.area.width > width ||
-        (uint32_t)p.area.y + p.area.height > height) {
+    if (width == 0u || height == 0u || area.width == 0u || area.height == 0u ||
+        (uint32_t)area.x + area.width > width ||
+        (uint32_t)area.y + area.height > height) {
         return SSDA_ERR_SIZE;
     }
     err = stream_rect(window, window_rect, &wr);
     if (err != SSDA_OK) {
         return err;
     }
-    if (wr.width > p.area.width || wr.height > p.area.height) {
+    if (wr.width > area.width || wr.height > area.height) {
         return SSDA_ERR_SIZE;
     }
-    p.match = cfg != NULL ? *cfg : defaults;
-    err = ssda_match_check_config(&p.match, p.area.width, p.area.height, wr.width, wr.height);
+    if (cfg == NULL) {
+        cfg = &defaults;
+    }
+    err = ssda_match_check_config(cfg, area.width, area.height, wr.width, wr.height);
     if (err != SSDA_OK) {
         return err;
     }
     if (!stream_holds(window, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    err = ring_setup(&p, p.area.x, p.area.width, p.area.height, ring, ring_size);
+    err = ring_fits(format, area.width, area.height, ring, ring_size);
     if (err != SSDA_OK) {
         return err;
     }
-    p.other = window;
-    p.other_rect = wr;
-    p.result = result;
-    p.kind = KIND_MATCH;
-    *push = p;
+    (void)memset(push, 0, sizeof *push);
+    push->width = width;
+    push->height = height;
+    push->format = format;
+    push->area = area;
+    push->match = *cfg;
+    ring_setup(push, area.x, area.width, ring, ring_size);
+    push->other = window;
+    push->other_rect = wr;
+    push->result = result;
+    push->kind = KIND_MATCH;
     return SSDA_OK;
 }
 
@@ -115,8 +131,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_rect_t ar, wr;
-    ssda_push_t p;
-    uint32_t fw, fh, sw, sh, lo, hi;
+    uint32_t fw, fh, sw, sh, lo, hi, x0 = 0u, w = 1u, band = 1u;
     bool first;
     int err;
     if (push == NULL || other == NULL || out == NULL || ring == NULL) {
@@ -134,38 +149,44 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (width == 0u || height == 0u) {
         return SSDA_ERR_SIZE;
     }
-    (void)memset(&p, 0, sizeof p);
-    p.width = width;
-    p.height = height;
-    p.format = format;
-    p.role = role;
-    p.other = other;
-    p.track = cfg != NULL ? *cfg : defaults;
-    image_sizes(&p, &fw, &fh, &sw, &sh);
-    err = ssda_track_plan(&p.track, format, sw, sh, &plan);
+    if (cfg == NULL) {
+        cfg = &defaults;
+    }
+    first = role == (uint8_t)SSDA_PUSH_FIRST;
+    fw = first ? width : other->cfg.width;
+    fh = first ? height : other->cfg.height;
+    sw = first ? other->cfg.width : width;
+    sh = first ? other->cfg.height : height;
+    err = ssda_track_plan(cfg, format, sw, sh, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    first = role == (uint8_t)SSDA_PUSH_FIRST;
     if (out_count < plan.grid.count ||
         !stream_holds(other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     if (stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
         const ssda_rect_t *kept = first ? &ar : &wr;
-        err = ring_setup(&p, kept->x, kept->width, first ? plan.grid.search_h : plan.grid.win_h,
-                         ring, ring_size);
-    } else {
-        err = ring_setup(&p, 0u, 1u, 1u, ring, ring_size); /* every window is EDGE */
-    }
+        x0 = kept->x;
+        w = kept->width;
+        band = first ? plan.grid.search_h : plan.grid.win_h;
+    } /* else every window is EDGE: a one-pixel ring */
+    err = ring_fits(format, w, band, ring, ring_size);
     if (err != SSDA_OK) {
         return err;
     }
-    p.out = out;
-    p.out_count = out_count;
-    p.stats = stats;
-    p.kind = KIND_TRACK;
-    *push = p;
+    (void)memset(push, 0, sizeof *push);
+    push->width = width;
+    push->height = height;
+    push->format = format;
+    push->role = role;
+    push->other = other;
+    push->track = *cfg;
+    ring_setup(push, x0, w, ring, ring_size);
+    push->out = out;
+    push->out_count = out_count;
+    push->stats = stats;
+    push->kind = KIND_TRACK;
     return SSDA_OK;
 }
 
@@ -206,8 +227,11 @@ static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda_ro
     rows->format = p->format;
 }
 
-/* The search, once the area's last row is in. Returns 1 or a read error. */
-static int run_match(ssda_push_t *p)
+/* The search, once the area's last row is in. Returns 1 or a read error.
+   run_match, run_track and needed_from stay out of ssda_push_row: each
+   has its own locals (a plan, row sources), which would otherwise add up
+   on the frame above the search. */
+static SSDA_NOINLINE int run_match(ssda_push_t *p)
 {
     ssda_rows_t a, w;
     stream_rows_ctx_t wctx;
@@ -225,7 +249,7 @@ static int run_match(ssda_push_t *p)
 
 /* Solve the grid rows whose bands are complete, in order. Returns how many
    were solved, or a read error. */
-static int run_track(ssda_push_t *p, uint32_t rows_in)
+static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
 {
     const bool first = p->role == (uint8_t)SSDA_PUSH_FIRST;
     ssda_track_plan_t plan;
@@ -314,7 +338,7 @@ static int run_track(ssda_push_t *p, uint32_t rows_in)
 
 /* First image row any unsolved part of the job needs (tracking: the
    pending grid row's band; search: the area's top). */
-static uint32_t needed_from(const ssda_push_t *p)
+static SSDA_NOINLINE uint32_t needed_from(const ssda_push_t *p)
 {
     if (p->kind == KIND_TRACK) {
         ssda_track_plan_t plan;

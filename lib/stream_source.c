@@ -108,26 +108,28 @@ static int check_config(ssda_source_config_t *c)
 
 int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
 {
-    ssda_source_t s;
+    ssda_source_config_t c;
     ssda_rect_t all;
     int err;
     if (src == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
     }
-    (void)memset(&s, 0, sizeof s);
-    s.cfg = *cfg;
-    err = check_config(&s.cfg);
+    c = *cfg;
+    err = check_config(&c);
     if (err != SSDA_OK) {
         return err;
     }
+    /* Checked: *src is filled in place from here (no copy of the whole
+       source on the stack). */
+    (void)memset(src, 0, sizeof *src);
+    src->cfg = c;
     all.x = 0u;
     all.y = 0u;
-    all.width = s.cfg.width;
-    all.height = s.cfg.height;
+    all.width = c.width;
+    all.height = c.height;
     /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
        plate fits (checked above), so this cannot fail. */
-    (void)stream_plate_plan(&s, &all, 1u, 1u, 0u, 0u);
-    *src = s;
+    (void)stream_plate_plan(src, &all, 1u, 1u, 0u, 0u);
     return SSDA_OK;
 }
 

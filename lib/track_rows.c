@@ -215,13 +215,16 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     v->y = (uint16_t)wy;
     v->exact = false;
     v->status = (uint8_t)SSDA_TRACK_EDGE;
-    if (wx < hx || wy < hy || wx - hx + g->search_w > o->first_w ||
-        wy - hy + g->search_h > o->first_h) {
+    /* o NULL: the sources are the whole images */
+    if (wx < hx || wy < hy ||
+        wx - hx + g->search_w > (o != NULL ? o->first_w : first->width) ||
+        wy - hy + g->search_h > (o != NULL ? o->first_h : first->height)) {
         return SSDA_OK;
     }
-    make_sub(&win, &win_ctx, second, wx - o->second_x, wy - o->second_y, g->win_w, g->win_h);
-    make_sub(&area, &area_ctx, first, wx - hx - o->first_x, wy - hy - o->first_y, g->search_w,
-             g->search_h);
+    make_sub(&win, &win_ctx, second, wx - (o != NULL ? o->second_x : 0u),
+             wy - (o != NULL ? o->second_y : 0u), g->win_w, g->win_h);
+    make_sub(&area, &area_ctx, first, wx - hx - (o != NULL ? o->first_x : 0u),
+             wy - hy - (o != NULL ? o->first_y : 0u), g->search_w, g->search_h);
     if (mask || texture) {
         err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
         if (err != SSDA_OK) {
@@ -292,45 +295,25 @@ int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
                     uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    ssda_track_stats_t st = *acc;
-    ssda_track_origin_t whole;
     uint32_t row, col;
-    if (origin == NULL) {
-        whole.first_x = 0u;
-        whole.first_y = 0u;
-        whole.first_w = first->width;
-        whole.first_h = first->height;
-        whole.second_x = 0u;
-        whole.second_y = 0u;
-        origin = &whole;
-    }
     for (row = row0; row < row1; row++) {
         for (col = col0; col < col1; col++) {
             ssda_track_vector_t v;
-            int err = solve_window(first, second, plan, out, col, row, col1, origin, &v, &st);
+            int err = solve_window(first, second, plan, out, col, row, col1, origin, &v, acc);
             if (err != SSDA_OK) {
                 return err;
             }
             out[(size_t)row * plan->grid.cols + col] = v;
-            st.windows++;
+            acc->windows++;
             switch (v.status) {
-            case SSDA_TRACK_OK: st.ok++; break;
-            case SSDA_TRACK_EXCLUDED: st.excluded++; break;
-            case SSDA_TRACK_MASKED: st.masked++; break;
-            default: st.edge++; break;
+            case SSDA_TRACK_OK: acc->ok++; break;
+            case SSDA_TRACK_EXCLUDED: acc->excluded++; break;
+            case SSDA_TRACK_MASKED: acc->masked++; break;
+            default: acc->edge++; break;
             }
         }
     }
-    *acc = st;
     return SSDA_OK;
-}
-
-int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
-                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
-{
-    return ssda_track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
-                           acc);
 }
 
 int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,

@@ -47,25 +47,6 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
                     size_t out_count, ssda_track_stats_t *stats);
 
 /*
- * For callers that cut the grid into vertical strips (the stream layer):
- * solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of
- * every grid row, row by row, left to right within the strip. plan comes
- * from ssda_track_plan (its match.predict_x/y are scratch); first and second
- * must already satisfy ssda_track_rows' checks and out must hold the whole
- * grid (entry row * cols + col). Prediction takes as solved every window
- * left of col0 (so solve strips left to right) and the strip's windows
- * solved before; up-right neighbours in column col1 are not solved yet, so
- * with prediction on, the work (not the vectors, in exact modes) can differ
- * from one whole-grid call. Counts are added to *acc (zero it before the
- * first strip; windows counts the strip's windows). Returns SSDA_OK or a
- * fetch error unchanged, in which case *acc is untouched and out holds the
- * strip's windows solved before the failing one.
- */
-int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
-                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                     ssda_track_vector_t *out, ssda_track_stats_t *acc);
-
-/*
  * Where the row sources given to ssda_track_part lie in the images, for a
  * caller that keeps only a band of each image in RAM (the stream layer's
  * plates): pixel (0, 0) of first is FIRST's pixel (first_x, first_y) and
@@ -90,5 +71,32 @@ int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
                     ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
                     uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
                     ssda_track_vector_t *out, ssda_track_stats_t *acc);
+
+/*
+ * For callers that cut the grid into vertical strips (the stream layer):
+ * solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of
+ * every grid row, row by row, left to right within the strip. plan comes
+ * from ssda_track_plan (its match.predict_x/y are scratch); first and second
+ * must already satisfy ssda_track_rows' checks and out must hold the whole
+ * grid (entry row * cols + col). Prediction takes as solved every window
+ * left of col0 (so solve strips left to right) and the strip's windows
+ * solved before; up-right neighbours in column col1 are not solved yet, so
+ * with prediction on, the work (not the vectors, in exact modes) can differ
+ * from one whole-grid call. Counts are added to *acc (zero it before the
+ * first strip; windows counts the strip's windows). Returns SSDA_OK or a
+ * fetch error unchanged, in which case *acc holds partial counts (the
+ * callers discard it; it is not copied onto the caller's stack, to keep
+ * the deepest call chain short) and out holds the strip's windows solved
+ * before the failing one.
+ * Inline, as ssda_track_part over every grid row of whole images: a frame
+ * less on the deepest call chain.
+ */
+static inline int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
+                                   ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                                   ssda_track_vector_t *out, ssda_track_stats_t *acc)
+{
+    return ssda_track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
+                           acc);
+}
 
 #endif /* SSDA_TRACK_ROWS_H */
