@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
-# test: host build with -Werror, a host build with ASan + UBSan, the library
+# test: host build with -Werror, a host build with ASan + UBSan, the line and
+# branch coverage of lib/ (gcov/lcov, >= 95 % of branches), the library
 # tests as bare-metal images under qemu-system-arm on four Cortex-M boards,
 # and the library alone for six cross targets at -Os and -O2 (-Werror).
 # Usage: tools/test.sh            (build dirs under build/)
@@ -34,6 +35,12 @@ configure_build_test() { # <dir> <cmake args...>
 configure_build_test build/host
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
   configure_build_test build/asan -DSSDA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+
+# Coverage of lib/ from the Unity tests (gcov + lcov; docs/coverage.md):
+# line and branch figures per file, portable and SSE2 kernels merged; fails
+# if lib/'s branch coverage drops below 95 %.
+echo "==> build/coverage (gcov/lcov)" >&2
+bash tools/coverage.sh build/coverage
 
 # Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) and M33 (-Os)
 # under QEMU with semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
