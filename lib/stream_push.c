@@ -371,7 +371,9 @@ int ssda_push_row(ssda_push_t *push, const void *row)
         return 0;
     }
     from = needed_from(push);
-    if (y >= from && (push->kind != KIND_MATCH || y < (uint32_t)push->area.y + push->area.height)) {
+    /* A search ends in the push of its area's last row (DONE or STOPPED
+       above), so here y is never below the area in KIND_MATCH. */
+    if (y >= from) {
         ring_put(push, y, (const uint8_t *)row, from);
     }
     if (push->kind == KIND_MATCH) {
