@@ -63,7 +63,7 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
     wav_info_t inf;
     int16_t *out;
     double *block;
-    size_t frames, done = 0, nch;
+    size_t frames, done = 0, nch, cap;
     enum { BLOCK_FRAMES = 4096 };
 
     if (path == NULL || samples == NULL || count == NULL || rate == NULL) {
@@ -103,7 +103,10 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
 
     frames = (size_t)sfi.frames;
     nch = (size_t)sfi.channels;
-    out = malloc(frames * sizeof *out);
+    /* The header's frame count is a claim (a 1 KB FLAC may announce 2^36
+       frames): the output grows as frames actually arrive. */
+    cap = frames < (size_t)BLOCK_FRAMES ? frames : (size_t)BLOCK_FRAMES;
+    out = malloc(cap * sizeof *out);
     block = malloc((size_t)BLOCK_FRAMES * nch * sizeof *block);
     if (out == NULL || block == NULL) {
         set_err(err, errlen, "'%s': out of memory for %zu frames", path, frames);
@@ -121,6 +124,19 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
         size_t f, c;
         if (got <= 0) {
             break;
+        }
+        if (done + (size_t)got > cap) {
+            size_t grown = cap > frames / 2u ? frames : 2u * cap;
+            int16_t *more = realloc(out, grown * sizeof *out);
+            if (more == NULL) {
+                set_err(err, errlen, "'%s': out of memory after %zu frames", path, done);
+                free(out);
+                free(block);
+                sf_close(sf);
+                return -1;
+            }
+            out = more;
+            cap = grown;
         }
         for (f = 0; f < (size_t)got; f++) {
             double acc = 0.0;
