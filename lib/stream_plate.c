@@ -56,7 +56,10 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 {
     size_t room = room_of(s);
     size_t h;
-    if (w == 0u || room < extra || room - extra < bounce_min(s, w)) {
+    if (w == 0u) { /* LCOV_EXCL_BR_LINE callers pass w >= 1; guards the division by pitch_for(s, 0) = 0 */
+        return 0u; /* LCOV_EXCL_LINE (the guard above) */
+    }
+    if (room < extra || room - extra < bounce_min(s, w)) {
         return 0u;
     }
     h = SSDA_DIV32(room - extra - bounce_min(s, w), pitch_for(s, w));
@@ -70,7 +73,10 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
     const size_t fixed = (tiled(s) ? bounce_min(s, 1u) : 2u * ((size_t)STREAM_READ_SIZE(c) - 1u)) + 3u;
     size_t room = room_of(s);
     size_t w;
-    if (h == 0u || room < extra) {
+    if (h == 0u) { /* LCOV_EXCL_BR_LINE callers pass h >= 1; guards the division by rows * format = 0 */
+        return 0u; /* LCOV_EXCL_LINE (the guard above) */
+    }
+    if (room < extra) {
         return 0u;
     }
     room -= extra;
