@@ -51,6 +51,8 @@ rm -rf "$build/seeds"
 mkdir -p "$build/logs" "$build/tmp"
 
 declare -A max_len=([png]=16384 [wav]=16384 [cli]=8192)
+# The CLI and libsndfile talk on stderr; libFuzzer keeps its own reports.
+declare -A extra=([cli]=-close_fd_mask=2 [wav]=-close_fd_mask=2)
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$root/tools/cli/tests/lsan.supp
@@ -63,7 +65,7 @@ for t in "${targets[@]}"; do
   log=$build/logs/$t.log
   rc=0
   "$build/tools/fuzz/fuzz_$t" -max_total_time="$secs" -timeout=30 -rss_limit_mb=3072 \
-      -max_len="${max_len[$t]:-4096}" -print_final_stats=1 \
+      -max_len="${max_len[$t]:-4096}" -print_final_stats=1 ${extra[$t]:-} \
       -artifact_prefix="$build/crashes/$t/" \
       "$build/corpus/$t" "$build/seeds/$t" >"$log" 2>&1 || rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
