@@ -34,10 +34,13 @@ for t in "${targets[@]}"; do
   case " ${all[*]} " in *" $t "*) ;; *) echo "fuzz.sh: unknown target '$t' (${all[*]})" >&2; exit 2 ;; esac
 done
 
+mkdir -p "$build"
+build=$(cd "$build" && pwd)
+
 # clang and its runtimes (libFuzzer, ASan, UBSan) come from Debian.
 bash tools/setup-deps.sh clang-14 libclang-rt-14-dev
 
-echo "==> $build (clang-14, libFuzzer, ASan + UBSan)" >&2
+echo "==> ${build#"$root"/} (clang-14, libFuzzer, ASan + UBSan)" >&2
 CC=clang-14 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSSDA_FUZZ=ON \
       -DSSDA_SANITIZE=ON -DSSDA_BUILD_TESTS=OFF -DSSDA_BUILD_BENCH=OFF -DSSDA_INSTALL=OFF >/dev/null
 build_targets=(fuzz_seeds)
@@ -48,6 +51,7 @@ fi
 
 rm -rf "$build/seeds"
 "$build/tools/fuzz/fuzz_seeds" "$build/seeds"
+rm -rf "$build/tmp"  # private folders left by crashed runs
 mkdir -p "$build/logs" "$build/tmp"
 
 declare -A max_len=([png]=16384 [wav]=16384 [cli]=8192)
@@ -56,7 +60,7 @@ declare -A extra=([cli]=-close_fd_mask=2 [wav]=-close_fd_mask=2)
 export ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$root/tools/cli/tests/lsan.supp
-export TMPDIR=$root/$build/tmp  # the file targets' private folders
+export TMPDIR=$build/tmp  # the file targets' private folders (fuzz_cli works in one)
 
 failed=0
 printf '%-8s %12s %8s  %s\n' target executions corpus result
@@ -64,10 +68,10 @@ for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/crashes/$t"
   log=$build/logs/$t.log
   rc=0
-  "$build/tools/fuzz/fuzz_$t" -max_total_time="$secs" -timeout=30 -rss_limit_mb=3072 \
-      -max_len="${max_len[$t]:-4096}" -print_final_stats=1 ${extra[$t]:-} \
+  (cd "$build/tmp" && exec "$build/tools/fuzz/fuzz_$t" -max_total_time="$secs" -timeout=30 \
+      -rss_limit_mb=3072 -max_len="${max_len[$t]:-4096}" -print_final_stats=1 ${extra[$t]:-} \
       -artifact_prefix="$build/crashes/$t/" \
-      "$build/corpus/$t" "$build/seeds/$t" >"$log" 2>&1 || rc=$?
+      "$build/corpus/$t" "$build/seeds/$t") >"$log" 2>&1 || rc=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   corpus=$(find "$build/corpus/$t" -type f | wc -l)
   if [ "$rc" -eq 0 ]; then
