@@ -2,11 +2,12 @@
 # Static analysis of the library (lib/ and include/), with the project's real
 # compile flags (compile_commands.json of a lib-only CMake configure):
 #   cppcheck 2.10 + MISRA C 2012 addon, warning/style/performance/portability,
-#     on the portable kernel configuration at 64 and 32 bits, and on the SSE2
-#     and ARMv7E-M kernels through their feature macros;
-#   clang-tidy 14 with the repository's .clang-tidy, on the portable
-#     configuration, the SSE2 kernel (x86-64) and the ARMv7E-M kernel
-#     (thumbv7em, Cortex-M4, freestanding).
+#     on the portable kernel configuration at 64 and 32 bits, the minimal
+#     configuration (every SSDA_CFG_NO_* switch), and the SSE2 and ARMv7E-M
+#     kernels through their feature macros;
+#   clang-tidy 14 with the repository's .clang-tidy, on the portable and
+#     minimal configurations, the SSE2 kernel (x86-64) and the ARMv7E-M
+#     kernel (thumbv7em, Cortex-M4, freestanding).
 # Installs cppcheck and clang-tidy from Debian if missing. Exits non-zero on
 # any finding that is not a documented deviation: the deviations are the
 # rules listed in tools/cppcheck-suppressions.txt, the checks excluded in
@@ -34,13 +35,21 @@ cmake -S . -B "$out/portable" -DSSDA_KERNEL=portable -DCMAKE_EXPORT_COMPILE_COMM
       -DSSDA_BUILD_TESTS=OFF -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF \
       -DSSDA_INSTALL=OFF >/dev/null
 db="$out/portable/compile_commands.json"
+# The minimal cores of docs/target.md: every feature switch of
+# include/ssda/config.h set, so the code that replaces a left-out feature is
+# checked too.
+minimal=$(grep -o 'SSDA_CFG_NO_[A-Z0-9_]*' include/ssda/config.h | sort -u | paste -sd';' -)
+cmake -S . -B "$out/minimal" -DSSDA_KERNEL=portable -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+      -DSSDA_BUILD_TESTS=OFF -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF \
+      -DSSDA_INSTALL=OFF -DSSDA_CONFIG="$minimal" >/dev/null
 
 # The accelerated kernels: the portable command line of the kernel file, with
 # the other kernel's file and macro, and for ARM the target flags and the
 # freestanding string.h of the rv32 build (no Arm C library on the host).
 portable_cmd=$(grep -o '"command": "[^"]*kernel_portable.c"' "$db" | sed 's/^"command": "//; s/"$//')
 kernel_cmd() { # <kernel> <extra flags>
-  printf '%s' "$portable_cmd" | sed "s/kernel_portable/kernel_$1/g; s/SSDA_KERNEL_portable/SSDA_KERNEL_$1/; s|/cc |/cc $2 |"
+  printf '%s' "$portable_cmd" |
+    sed "s/kernel_portable/kernel_$1/g; s/SSDA_KERNEL_portable/SSDA_KERNEL_$1/; s|^\([^ ]*\) |\1 $2 |"
 }
 mkdir -p "$out/kernels"
 cc_dir=$(grep -o '"directory": "[^"]*"' "$db" | head -1 | sed 's/^"directory": "//; s/"$//')
@@ -72,6 +81,12 @@ cppcheck_pass() { # <name> <cppcheck args...>
 kernel_inc=(-I include -I lib)
 cppcheck_pass portable64 --platform=unix64 --project="$db"
 cppcheck_pass portable32 --platform=unix32 --project="$db"
+minimal_supp=()
+if [ "$audit" != 1 ]; then
+  minimal_supp=(--suppressions-list=tools/cppcheck-suppressions-minimal.txt)
+fi
+cppcheck_pass minimal --platform=unix32 "${minimal_supp[@]}" \
+              --project="$out/minimal/compile_commands.json"
 cppcheck_pass sse2 --platform=unix64 "${kernel_inc[@]}" -DSSDA_KERNEL_sse2=1 -D__SSE2__=1 \
               lib/kernel/kernel_sse2.c
 cppcheck_pass armv7em --platform=unix32 "${kernel_inc[@]}" -DSSDA_KERNEL_armv7em=1 \
@@ -85,7 +100,7 @@ tidy_files() { # <compile db dir>
   grep -o '"file": "[^"]*"' "$1/compile_commands.json" | sed 's/^"file": "//; s/"$//'
 }
 : >"$out/clang-tidy.raw"
-for d in "$out/portable" "$out/kernels"; do
+for d in "$out/portable" "$out/minimal" "$out/kernels"; do
   tidy_files "$d" | xargs -P "$jobs" -n 1 "$tidy" -p "$d" --quiet --extra-arg=-Wcomma \
     >>"$out/clang-tidy.raw" 2>/dev/null || true
 done
