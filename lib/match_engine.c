@@ -454,10 +454,10 @@ static int scan_coarse_grid(engine_t *e, uint32_t step)
 }
 
 /* From start, move 1 px to the best better neighbour until none improves. */
-static int hill_climb(engine_t *e, cand_t start)
+static int hill_climb(engine_t *e, const cand_t *start)
 {
-    cand_t next = start;
-    uint32_t cx = start.x, cy = start.y; /* the current position */
+    cand_t next = *start;
+    uint32_t cx = start->x, cy = start->y; /* the current position */
     for (;;) {
         uint32_t i;
         for (i = 0u; i < 4u; i++) {
@@ -500,15 +500,15 @@ static SSDA_NOINLINE int scan_coarse(engine_t *e)
     if (err != SSDA_OK || e->n_best == 0u) {
         return err;
     }
-    s2 = e->second;
+    s2 = e->second; /* the climbs change best and second */
     if (e->n_best == 2u) {
-        err = hill_climb(e, e->best);
+        err = hill_climb(e, &e->best);
         if (err == SSDA_OK) {
-            err = hill_climb(e, s2);
+            err = hill_climb(e, &s2);
         }
         return err;
     }
-    return hill_climb(e, e->best);
+    return hill_climb(e, &e->best);
 }
 #endif
 

@@ -129,7 +129,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         p->fill += (uint32_t)take;
         used += take;
         if (p->fill == span) {
-            ssda_pitch_analyze(&p->info, p->buf, p->predict_lag, est);
+            ssda_pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
             est->frame = p->frame;
             /* wraps modulo 2^32 by design (unsigned) */
             est->center = p->frame * p->info.hop +

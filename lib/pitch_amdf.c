@@ -1,8 +1,7 @@
-/* pitch_amdf.c - the difference function: frame mean and level, and one
-   lag's AMDF sum with SSDA early exit. */
+/* pitch_amdf.c - the difference function: frame mean and level (one
+   lag's AMDF sum with SSDA early exit is inline, in pitch_internal.h). */
 #include "pitch_internal.h"
 
-#include "kernel/kernels.h"
 #include "fixmath.h"
 
 int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
@@ -24,26 +23,5 @@ uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean)
         int32_t v = (int32_t)x[i] - mean; /* -65535..65535 */
         sum += (v < 0) ? (uint32_t)(-v) : (uint32_t)v;
     }
-    return sum;
-}
-
-uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
-                             uint32_t chunk, uint32_t bound, bool *complete,
-                             uint32_t *diffs)
-{
-    /* sum <= bound + chunk * 65535 while running, and <= K * 65535 < 2^29
-       in any case: no overflow in uint32_t even without the bound. */
-    uint32_t sum = 0u;
-    uint32_t i = 0u;
-    while (i < frame_len) {
-        uint32_t n = frame_len - i < chunk ? frame_len - i : chunk;
-        sum += ssda_absdiff_row_i16(x + i, x + i + lag, n);
-        i += n;
-        if (sum > bound) {
-            break;
-        }
-    }
-    *diffs += i;
-    *complete = (i == frame_len);
     return sum;
 }

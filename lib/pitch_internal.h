@@ -6,6 +6,7 @@
 #define SSDA_PITCH_INTERNAL_H
 
 #include "ssda/pitch.h"
+#include "kernel/kernels.h"
 
 /* Features compiled in (include/ssda/config.h): a flag left out of the
    build reads as clear, so the code behind it is dropped as dead. */
@@ -69,10 +70,28 @@ uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean);
  *   *diffs is increased by the number of absolute differences computed.
  * Worst case: the partial sum before the last chunk is <= bound, and any
  * sum is <= K * 65535 < 2^29 (K <= 8192).
+ * Inline: a frame less under the lag scan (worst-case stack, docs/target.md).
  */
-uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
-                             uint32_t chunk, uint32_t bound, bool *complete,
-                             uint32_t *diffs);
+static inline uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
+                                           uint32_t chunk, uint32_t bound, bool *complete,
+                                           uint32_t *diffs)
+{
+    /* sum <= bound + chunk * 65535 while running, and <= K * 65535 < 2^29
+       in any case: no overflow in uint32_t even without the bound. */
+    uint32_t sum = 0u;
+    uint32_t i = 0u;
+    while (i < frame_len) {
+        uint32_t n = frame_len - i < chunk ? frame_len - i : chunk;
+        sum += ssda_absdiff_row_i16(x + i, x + i + lag, n);
+        i += n;
+        if (sum > bound) {
+            break;
+        }
+    }
+    *diffs += i;
+    *complete = (i == frame_len);
+    return sum;
+}
 
 /*
  * Sub-sample offset of the dip at t*, from the normalised values
@@ -98,5 +117,10 @@ uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
  */
 void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est);
+
+/* ssda_pitch_analyze with its working state in *w (the stream keeps it in
+   ssda_pitch_t; ssda_pitch_analyze puts it on the stack). */
+void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
+                           const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est);
 
 #endif /* SSDA_PITCH_INTERNAL_H */

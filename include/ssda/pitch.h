@@ -213,6 +213,33 @@ typedef struct {
     bool silent;             /* level below silence_mad: no search was made */
 } ssda_pitch_estimate_t;
 
+/* Private: one lag's AMDF value in 8 bytes: bits 0..30 of d the sum (or,
+   when cut, a lower bound above the cut), bit 31 set when exact; s the
+   scale A + B(lag). */
+typedef struct {
+    uint32_t d;
+    uint32_t s;
+} ssda_pitch_lag_value_t;
+
+/* Private: the working state of one frame's analysis (the frame and its
+   level, the best lag so far, the open dip run and the chosen lag, each
+   with its neighbours). It lives
+   in ssda_pitch_t, not on the stack, so that ssda_pitch_push needs little
+   stack (docs/target.md). */
+typedef struct {
+    const ssda_pitch_info_t *info;
+    const int16_t *x;        /* the frame */
+    int32_t mean;            /* m */
+    uint32_t level;          /* A */
+    uint32_t diffs;          /* absolute differences so far */
+    ssda_pitch_lag_value_t prev, cur;
+    ssda_pitch_lag_value_t best, best_left, best_right;
+    ssda_pitch_lag_value_t run, run_left, run_right;
+    ssda_pitch_lag_value_t pred;
+    ssda_pitch_lag_value_t t_left, t_mid, t_right;
+    uint32_t best_lag, run_lag, t_lag;
+} ssda_pitch_work_t;
+
 /* The stream state. Caller-allocated; fields are private (read them through
    ssda_pitch_get_info). */
 typedef struct {
@@ -226,6 +253,7 @@ typedef struct {
     int32_t lp2_q15;
     bool lp_primed;          /* states start at the first sample (no start-up step) */
     uint32_t magic;          /* set by ssda_pitch_init */
+    ssda_pitch_work_t work;  /* scratch of each analysis */
 } ssda_pitch_t;
 
 /*

@@ -112,6 +112,7 @@ def read_disassembly(objdump, elf):
     out = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], check=True,
                          capture_output=True, text=True).stdout
     frames, edges, indirect, labels = {}, {}, set(), {}
+    tails, linked = set(), set()  # (caller, callee) by a plain jump / by a call
     fn = None
     push = sub = 0
     for line in out.splitlines():
@@ -142,6 +143,10 @@ def read_disassembly(objdump, elf):
             t = CALL_TARGET_RE.search(m.group(2))
             if t and t.group(1) != fn:
                 edges.setdefault(fn, set()).add(t.group(1))  # a call, or a tail call
+                if op in ("b", "b.w", "b.n", "j", "c.j", "tail") and ".cold" not in t.group(1):
+                    tails.add((fn, t.group(1)))
+                else:
+                    linked.add((fn, t.group(1)))
             elif not t and op in ("blx", "jalr", "c.jalr"):
                 indirect.add(fn)  # through a register
     if fn:
@@ -162,20 +167,26 @@ def read_disassembly(objdump, elf):
                 edges[alias] = edges.get(name, set())
                 if name in indirect:
                     indirect.add(alias)
-    return frames, edges, indirect
+    return frames, edges, indirect, tails, linked
 
 
 def stack_worst(build):
     """Worst-case stack of every public function: {name: (bytes, flags, path)}."""
     objdump = cache_value(build, "CMAKE_OBJDUMP")
     frames, edges, qual, builtins = read_callgraphs(build)
-    dframes, dedges, dindirect = {}, {}, set()
+    dframes, dedges, dindirect, dtails, dlinked = {}, {}, set(), set(), set()
     for elf in sorted(glob.glob(os.path.join(build, "fw_*.elf"))):
-        f, e, i = read_disassembly(objdump, elf)
+        f, e, i, t, l = read_disassembly(objdump, elf)
         dframes.update(f)
         for k, v in e.items():
             dedges.setdefault(k, set()).update(v)
         dindirect |= i
+        dtails |= t
+        dlinked |= l
+    # Tail calls (a plain jump after the caller's epilogue, in every image):
+    # the callee runs on the caller's caller's stack, not on top of the
+    # caller's frame.
+    tail_only = dtails - dlinked
     memo = {}
 
     def resolve(name):
@@ -206,13 +217,18 @@ def stack_worst(build):
             return (0, set(), [])
         else:
             return (0, {"unknown:" + node}, [node])
-        best = (0, set(), [])
+        best = (own, set(), [node.split(":")[-1]])
         for callee in sorted(calls):
             r = worst(resolve(callee), active)
             flags |= r[1]
-            if r[0] > best[0]:
-                best = r
-        result = (own + best[0], flags, [node.split(":")[-1]] + best[2])
+            base = node.split(":")[-1]
+            if (base, resolve(callee).split(":")[-1]) in tail_only:
+                total, path = r[0], [base] + ["(tail) " + r[2][0]] + r[2][1:] if r[2] else [base]
+            else:
+                total, path = own + r[0], [base] + r[2]
+            if total > best[0]:
+                best = (total, set(), path)
+        result = (best[0], flags, best[2])
         memo[node] = result
         return result
 
