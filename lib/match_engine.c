@@ -40,8 +40,10 @@ typedef struct {
     bool bounds;         /* successive elimination active */
     bool u8;             /* 8-bit samples (else 16-bit) */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
+#ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
+#endif
     uint8_t n_best;      /* 0, 1 or 2 valid entries */
 #ifndef SSDA_CFG_NO_RAMP
     uint16_t k_q8;       /* K of eqs. 3/4, Q8.8 */
@@ -522,84 +524,96 @@ static SSDA_NOINLINE int scan_coarse(engine_t *e)
  */
 static SSDA_NOINLINE int build_bounds(engine_t *e)
 {
+    /* The engine's fields in locals: the stores into the tables below could
+       alias them (uint32_t), which would reload them in every iteration. */
     const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
     const uint32_t ah = e->area->height;
+    const uint32_t L = e->L, nx = e->nx;
     uint32_t *work = (uint32_t *)e->cfg->work;
+    uint32_t *gsum = work;
+    uint32_t *wgrp = work + (size_t)nx * ah;
+    uint32_t group = (!u8 && L > 16384u) ? 1u : 4u;
+    uint32_t ngroups;
+    uint64_t ops = 0u;
     uint32_t yy, i;
-    e->group = (!u8 && e->L > 16384u) ? 1u : 4u;
-    if (e->group > e->M) {
-        e->group = e->M;
+    if (group > e->M) {
+        group = e->M;
     }
     /* M >= 1: the window height */
-    e->ngroups = e->M / e->group; /* NOLINT(clang-analyzer-core.DivideZero) */
-    e->gsum = work;
-    e->wgrp = work + (size_t)e->nx * ah;
-    e->term = e->wgrp + e->M;
+    ngroups = e->M / group; /* NOLINT(clang-analyzer-core.DivideZero) */
+    e->group = group;
+    e->ngroups = ngroups;
+    e->gsum = gsum;
+    e->wgrp = wgrp;
+    e->term = wgrp + e->M;
     for (yy = 0u; yy < ah; yy++) {
         const uint8_t *p;
-        uint32_t *h = e->gsum + (size_t)yy * e->nx;
+        uint32_t *h = gsum + (size_t)yy * nx;
         uint32_t s = 0u; /* <= L * 65535 <= 65535^2 < 2^32 */
         int err = ssda_rows_get(e->area, 0u, yy, e->area->width, &p);
         if (err != SSDA_OK) {
+            e->ops += ops;
             return err;
         }
         if (u8) {
-            for (i = 0u; i < e->L; i++) {
+            for (i = 0u; i < L; i++) {
                 s += p[i];
             }
             h[0] = s;
-            for (i = 1u; i < e->nx; i++) {
-                s = s + p[i + e->L - 1u] - p[i - 1u];
+            for (i = 1u; i < nx; i++) {
+                s = s + p[i + L - 1u] - p[i - 1u];
                 h[i] = s;
             }
         } else {
             const uint16_t *q = (const uint16_t *)(const void *)p;
-            for (i = 0u; i < e->L; i++) {
+            for (i = 0u; i < L; i++) {
                 s += q[i];
             }
             h[0] = s;
-            for (i = 1u; i < e->nx; i++) {
-                s = s + q[i + e->L - 1u] - q[i - 1u]; /* < 65535^2 + 65535 < 2^32 */
+            for (i = 1u; i < nx; i++) {
+                s = s + q[i + L - 1u] - q[i - 1u]; /* < 65535^2 + 65535 < 2^32 */
                 h[i] = s;
             }
         }
-        e->ops += e->L + 2u * ((uint64_t)e->nx - 1u);
+        ops += L + 2u * ((uint64_t)nx - 1u);
     }
-    if (e->group > 1u) {
+    if (group > 1u) {
         /* in place, top-down: row yy becomes H(yy) + ... + H(yy + group - 1);
            rows past ah - group are never read afterwards */
-        for (i = 0u; i < e->nx; i++) {
-            uint32_t *c = e->gsum + i;
+        for (i = 0u; i < nx; i++) {
+            uint32_t *c = gsum + i;
             uint32_t s = 0u; /* a group sum, range above */
-            for (yy = 0u; yy < e->group; yy++) {
-                s += c[(size_t)yy * e->nx];
+            for (yy = 0u; yy < group; yy++) {
+                s += c[(size_t)yy * nx];
             }
-            for (yy = 0u; yy + e->group <= ah; yy++) {
-                uint32_t top = c[(size_t)yy * e->nx];
-                c[(size_t)yy * e->nx] = s;
-                if (yy + e->group < ah) {
-                    s = s - top + c[(size_t)(yy + e->group) * e->nx];
+            for (yy = 0u; yy + group <= ah; yy++) {
+                uint32_t top = c[(size_t)yy * nx];
+                c[(size_t)yy * nx] = s;
+                if (yy + group < ah) {
+                    s = s - top + c[(size_t)(yy + group) * nx];
                 }
             }
-            e->ops += e->group + 2u * ((uint64_t)ah - e->group);
+            ops += group + 2u * ((uint64_t)ah - group);
         }
     }
-    for (i = 0u; i < e->ngroups; i++) {
+    for (i = 0u; i < ngroups; i++) {
         uint32_t s = 0u;
-        for (yy = i * e->group; yy < (i + 1u) * e->group; yy++) {
+        for (yy = i * group; yy < (i + 1u) * group; yy++) {
             const uint8_t *p;
             uint32_t c;
-            int err = ssda_rows_get(e->win, 0u, yy, e->L, &p);
+            int err = ssda_rows_get(e->win, 0u, yy, L, &p);
             if (err != SSDA_OK) {
+                e->ops += ops;
                 return err;
             }
-            for (c = 0u; c < e->L; c++) {
+            for (c = 0u; c < L; c++) {
                 s += u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
             }
         }
-        e->wgrp[i] = s;
-        e->ops += (uint64_t)e->group * e->L;
+        wgrp[i] = s;
+        ops += (uint64_t)group * L;
     }
+    e->ops += ops;
     return SSDA_OK;
 }
 
@@ -643,7 +657,9 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
     e.bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
     e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
+#ifdef ENGINE_FALLBACK
     e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
+#endif
     e.fixed_cut = UINT64_MAX;
     if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
         e.fixed_cut = cfg->fixed_threshold + 1u;
