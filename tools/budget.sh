@@ -50,7 +50,7 @@ cycles=()
 for k in armv7em portable; do
   echo "budget.sh: cortex-m4f cycles, $k kernels (-O2)" >&2
   build "$out/cycles-m4f-$k" cortex-m4f RelWithDebInfo -DSSDA_KERNEL="$k"
-  [ -f "$out/cycles-m4f-$k/budget_cycles.elf" ] \
+  [ -f "$out/cycles-m4f-$k/budget_cycles.elf" ] && [ -f "$out/cycles-m4f-$k/min_check.elf" ] \
     || { cat "$out/cycles-m4f-$k.build.log" >&2; exit 1; }
   if ! qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
        -semihosting-config enable=on,target=native -icount shift=0 \
@@ -58,6 +58,14 @@ for k in armv7em portable; do
     cat "$out/cycles-m4f-$k.txt" >&2; echo "budget.sh: cycle run failed ($k)" >&2; exit 1
   fi
   cycles+=(--cycles "M4F=$out/cycles-m4f-$k.txt")
+  # The minimal cores at work (tools/budget/min_check.c, library built with
+  # every SSDA_CFG_NO_* switch): must pass before their sizes are reported.
+  if ! qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+       -semihosting-config enable=on,target=native -icount shift=0 \
+       -kernel "$out/cycles-m4f-$k/min_check.elf" >"$out/min-check-$k.txt"; then
+    cat "$out/min-check-$k.txt" >&2; echo "budget.sh: minimal-core check failed ($k)" >&2; exit 1
+  fi
+  cycles+=(--min-check "$out/min-check-$k.txt")
 done
 
 gcc_v=$(arm-none-eabi-gcc -dumpversion)
