@@ -2,7 +2,8 @@
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror, a host build with ASan + UBSan, the line and
-# branch coverage of lib/ (gcov/lcov, >= 95 % of branches), the library
+# branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
+# of lib/ (cppcheck + MISRA C 2012, clang-tidy), the library
 # tests as bare-metal images under qemu-system-arm on four Cortex-M boards,
 # and the library alone for six cross targets at -Os and -O2 (-Werror).
 # Usage: tools/test.sh            (build dirs under build/)
@@ -41,6 +42,12 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
 # if lib/'s branch coverage drops below 95 %.
 echo "==> build/coverage (gcov/lcov)" >&2
 bash tools/coverage.sh build/coverage
+
+# Static analysis of lib/ and include/: cppcheck with the MISRA C 2012 addon
+# and clang-tidy (tools/lint.sh, docs/static-analysis.md); fails on any
+# finding that is not a documented deviation. About a minute.
+echo "==> build/lint (cppcheck + MISRA, clang-tidy)" >&2
+bash tools/lint.sh build/lint
 
 # Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) and M33 (-Os)
 # under QEMU with semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
