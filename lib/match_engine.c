@@ -587,10 +587,11 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
                 s += c[(size_t)yy * nx];
             }
             for (yy = 0u; yy + group <= ah; yy++) {
+                const uint32_t below = yy + group; /* <= ah */
                 uint32_t top = c[(size_t)yy * nx];
                 c[(size_t)yy * nx] = s;
-                if (yy + group < ah) {
-                    s = s - top + c[(size_t)(yy + group) * nx];
+                if (below < ah) {
+                    s = s - top + c[(size_t)below * nx];
                 }
             }
             ops += group + 2u * ((uint64_t)ah - group);

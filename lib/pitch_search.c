@@ -114,7 +114,7 @@ static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
 }
 
 /* Sub-sample period of the dip at lag, from exact neighbour values. */
-static uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
+static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
                               const lag_value_t *mid, const lag_value_t *right)
 {
     int32_t delta = ssda_pitch_interp_q16(ssda_pitch_norm_q20(d_of(left), left->s),
@@ -127,7 +127,7 @@ static uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t 
 
 /* The interpolated minimum of the dip through a, b, c (Q20): b - |a - c| / 2
    for the V fit, b - (a - c)^2 / (8 (a - 2b + c)) for the parabola; >= 0. */
-static uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
+static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
                               const lag_value_t *right)
 {
     uint32_t a = ssda_pitch_norm_q20(d_of(left), left->s);
@@ -246,14 +246,21 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     est->diffs = w->diffs;
 }
 
-void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
-                           const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est)
+/*
+ * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
+ * (w set up by ssda_pitch_analyze_in): the first valid dip run's minimum in
+ * w->t_* (returns true), else the global minimum (false). Out of line, so
+ * that its locals are gone when refine() runs.
+ */
+static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 {
+    const ssda_pitch_info_t *info = w->info;
+    const int16_t *x = w->x;
     const uint32_t k = info->frame_len;
     const uint32_t lag_min = info->lag_min, lag_max = info->lag_max;
     const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
-    int32_t mean;
+    const int32_t mean = w->mean;
     uint32_t b_sum, lag, pred = 0u;
     /* In *w: the best lag so far (the global-minimum fallback) and the open
        run under the threshold (its minimum), each with its neighbours; the
@@ -265,32 +272,6 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     const uint32_t rearm = ssda_pitch_rearm_q15(thr);
     bool armed;
     bool found = false;
-
-    w->info = info;
-    w->x = x;
-    w->diffs = 0u;
-    mean = ssda_pitch_mean(x, k);
-    w->mean = mean;
-    w->level = ssda_pitch_level(x, k, mean);
-    /* silence_mad * K <= 65535 * 8192 < 2^30 */
-    if (w->level < (uint32_t)info->silence_mad * k) {
-        silent_estimate(est);
-        return;
-    }
-    /* From here A >= K >= 16, so every s(lag) >= A > 0. */
-    w->best.d = 0u;
-    w->best.s = 1u;
-    w->best_left = w->best;
-    w->best_right = w->best;
-    w->run = w->best;
-    w->run_left = w->best;
-    w->run_right = w->best;
-    w->t_left = w->best;
-    w->t_mid = w->best;
-    w->t_right = w->best;
-    w->best_lag = 0u;
-    w->run_lag = 0u;
-    w->t_lag = 0u;
 
     if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
         predict_lag >= lag_min && predict_lag <= lag_max) {
@@ -414,7 +395,42 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
         w->t_mid = w->best;
         w->t_right = w->best_right;
     }
-    refine(w, found, est);
+    return found;
+}
+
+void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
+                           const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est)
+{
+    const uint32_t k = info->frame_len;
+    int32_t mean;
+
+    w->info = info;
+    w->x = x;
+    w->diffs = 0u;
+    mean = ssda_pitch_mean(x, k);
+    w->mean = mean;
+    w->level = ssda_pitch_level(x, k, mean);
+    /* silence_mad * K <= 65535 * 8192 < 2^30 */
+    if (w->level < (uint32_t)info->silence_mad * k) {
+        silent_estimate(est);
+        return;
+    }
+    /* From here A >= K >= 16, so every s(lag) >= A > 0. */
+    w->best.d = 0u;
+    w->best.s = 1u;
+    w->best_left = w->best;
+    w->best_right = w->best;
+    w->run = w->best;
+    w->run_left = w->best;
+    w->run_right = w->best;
+    w->t_left = w->best;
+    w->t_mid = w->best;
+    w->t_right = w->best;
+    w->best_lag = 0u;
+    w->run_lag = 0u;
+    w->t_lag = 0u;
+
+    refine(w, scan_lags(w, predict_lag), est);
 }
 
 void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
