@@ -1,5 +1,4 @@
 #include "test_image.h"
-#include "unity.h"
 
 uint32_t test_px(const ssda_view_t *v, uint32_t x, uint32_t y)
 {
@@ -42,51 +41,56 @@ void test_best(const ssda_view_t *area, const ssda_view_t *win,
     }
 }
 
-static void smooth_fill(uint32_t *tmp, uint32_t w, uint32_t h, uint32_t maxval, test_rng_t *r)
+/* Pixel i of a u8 (bpp 1) or u16 (bpp 2) buffer. */
+static uint32_t px_get(const void *p, uint32_t bpp, size_t i)
+{
+    return bpp == 1u ? ((const uint8_t *)p)[i] : ((const uint16_t *)p)[i];
+}
+
+static void px_set(void *p, uint32_t bpp, size_t i, uint32_t v)
+{
+    if (bpp == 1u) {
+        ((uint8_t *)p)[i] = (uint8_t)v;
+    } else {
+        ((uint16_t *)p)[i] = (uint16_t)v;
+    }
+}
+
+/* Random values 0..maxval, then two passes of a 3-tap box blur (horizontal,
+   then vertical), each in place in reading order. Every value stays
+   <= maxval, so the pixels hold them exactly: no scratch buffer, any size
+   (the same pixels as the former 256 x 256 uint32_t scratch version). */
+static void smooth_fill(void *p, uint32_t bpp, uint32_t w, uint32_t h, uint32_t stride,
+                        uint32_t maxval, test_rng_t *r)
 {
     uint32_t i, j;
-    if (w * h > 256u * 256u) { /* caller error in a test: fail loudly */
-        TEST_FAIL_MESSAGE("test texture larger than 256 x 256");
+    for (j = 0; j < h; j++) {
+        for (i = 0; i < w; i++) {
+            px_set(p, bpp, (size_t)j * stride + i, test_rng_range(r, 0, maxval));
+        }
     }
-    for (i = 0; i < w * h; i++) {
-        tmp[i] = test_rng_range(r, 0, maxval);
-    }
-    /* two passes of a 3-tap horizontal and vertical box blur */
     for (j = 0; j < h; j++) {
         for (i = 1; i + 1 < w; i++) {
-            tmp[j * w + i] = (tmp[j * w + i - 1] + tmp[j * w + i] + tmp[j * w + i + 1]) / 3u;
+            size_t k = (size_t)j * stride + i;
+            px_set(p, bpp, k, (px_get(p, bpp, k - 1u) + px_get(p, bpp, k) + px_get(p, bpp, k + 1u)) / 3u);
         }
     }
     for (j = 1; j + 1 < h; j++) {
         for (i = 0; i < w; i++) {
-            tmp[j * w + i] = (tmp[(j - 1) * w + i] + tmp[j * w + i] + tmp[(j + 1) * w + i]) / 3u;
+            size_t k = (size_t)j * stride + i;
+            px_set(p, bpp, k,
+                   (px_get(p, bpp, k - stride) + px_get(p, bpp, k) + px_get(p, bpp, k + stride)) / 3u);
         }
     }
 }
 
-/* Static scratch: tests are single-threaded; 256 x 256 pixels at most
-   (small enough for the emulated boards' RAM). */
-static uint32_t g_tmp[256u * 256u];
-
 void test_fill_texture_u8(uint8_t *p, uint32_t w, uint32_t h, uint32_t stride, test_rng_t *r)
 {
-    uint32_t i, j;
-    smooth_fill(g_tmp, w, h, 255u, r);
-    for (j = 0; j < h; j++) {
-        for (i = 0; i < w; i++) {
-            p[j * stride + i] = (uint8_t)g_tmp[j * w + i];
-        }
-    }
+    smooth_fill(p, 1u, w, h, stride, 255u, r);
 }
 
 void test_fill_texture_u16(uint16_t *p, uint32_t w, uint32_t h, uint32_t stride,
                            uint32_t maxval, test_rng_t *r)
 {
-    uint32_t i, j;
-    smooth_fill(g_tmp, w, h, maxval, r);
-    for (j = 0; j < h; j++) {
-        for (i = 0; i < w; i++) {
-            p[j * stride + i] = (uint16_t)g_tmp[j * w + i];
-        }
-    }
+    smooth_fill(p, 2u, w, h, stride, maxval, r);
 }
