@@ -51,7 +51,6 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
                          const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
                          ssda_match_result_t *result, void *ring, size_t ring_size)
 {
-    /* cppcheck-suppress unassignedVariable ; zero-initialised static (C99 6.7.8p10) */
     static const ssda_match_config_t defaults;
     ssda_rect_t area, wr;
     int err;
@@ -127,7 +126,6 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
                          ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats,
                          void *ring, size_t ring_size)
 {
-    /* cppcheck-suppress unassignedVariable ; zero-initialised static (C99 6.7.8p10) */
     static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_rect_t ar, wr;
