@@ -7,6 +7,7 @@
 
 #include "ssda/stream.h"
 #include "match_rows.h"
+#include "compiler.h"
 
 /* Features compiled in (include/ssda/config.h): a layout or read size left
    out reads as its plain value, so the code behind it is dropped as dead. */
@@ -62,8 +63,9 @@ int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0);
 int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
                        const uint8_t **px);
 
-/* Fast path of stream_plate_fetch, inlined where it pays. */
-static inline int stream_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
+/* Fast path of stream_plate_fetch, always inlined (a frame less under
+   ssda_source_row and the engine's fetches). */
+static SSDA_ALWAYS_INLINE int stream_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
                                const uint8_t **px)
 {
     uint32_t dy = y - s->py0; /* wraps above the plate: then >= rows */
