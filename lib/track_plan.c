@@ -31,30 +31,32 @@ static int resolve_axis(axis_t *a, uint16_t win, uint16_t search, uint16_t step,
 static int resolve_grid(const ssda_track_config_t *cfg, uint32_t width, uint32_t height,
                         ssda_track_grid_t *grid)
 {
-    axis_t ax, ay;
-    int err = resolve_axis(&ax, cfg->win_w, cfg->search_w, cfg->step_x, cfg->roi_x,
+    axis_t a; /* one axis at a time: x, then y (every value <= 65535) */
+    uint32_t cols;
+    int err = resolve_axis(&a, cfg->win_w, cfg->search_w, cfg->step_x, cfg->roi_x,
                            cfg->roi_w, width);
-    if (err == SSDA_OK) {
-        err = resolve_axis(&ay, cfg->win_h, cfg->search_h, cfg->step_y, cfg->roi_y,
-                           cfg->roi_h, height);
-    }
     if (err != SSDA_OK) {
         return err;
     }
-    /* every value below is <= 65535 by construction */
-    grid->cols = (uint16_t)ax.count;
-    grid->rows = (uint16_t)ay.count;
-    grid->count = ax.count * ay.count; /* <= 65535^2 < 2^32 */
-    grid->win_w = (uint16_t)ax.win;
-    grid->win_h = (uint16_t)ay.win;
-    grid->search_w = (uint16_t)ax.search;
-    grid->search_h = (uint16_t)ay.search;
-    grid->step_x = (uint16_t)ax.step;
-    grid->step_y = (uint16_t)ay.step;
-    grid->roi_x = (uint16_t)ax.start;
-    grid->roi_y = (uint16_t)ay.start;
-    grid->roi_w = (uint16_t)ax.len;
-    grid->roi_h = (uint16_t)ay.len;
+    cols = a.count;
+    grid->cols = (uint16_t)a.count;
+    grid->win_w = (uint16_t)a.win;
+    grid->search_w = (uint16_t)a.search;
+    grid->step_x = (uint16_t)a.step;
+    grid->roi_x = (uint16_t)a.start;
+    grid->roi_w = (uint16_t)a.len;
+    err = resolve_axis(&a, cfg->win_h, cfg->search_h, cfg->step_y, cfg->roi_y,
+                       cfg->roi_h, height);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    grid->rows = (uint16_t)a.count;
+    grid->count = cols * a.count; /* <= 65535^2 < 2^32 */
+    grid->win_h = (uint16_t)a.win;
+    grid->search_h = (uint16_t)a.search;
+    grid->step_y = (uint16_t)a.step;
+    grid->roi_y = (uint16_t)a.start;
+    grid->roi_h = (uint16_t)a.len;
     return SSDA_OK;
 }
 
@@ -78,9 +80,10 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
                     uint32_t second_h, ssda_track_plan_t *plan)
 {
     const uint32_t maxval = format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
-    ssda_track_plan_t p;
+    /* built in *plan directly (no copy of a plan on the stack): on error it
+       is scratch, which every caller discards */
     uint32_t pixels; /* win_w * win_h <= 65535^2 < 2^32 */
-    int err = resolve_grid(cfg, second_w, second_h, &p.grid);
+    int err = resolve_grid(cfg, second_w, second_h, &plan->grid);
     if (err != SSDA_OK) {
         return err;
     }
@@ -88,39 +91,35 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
         (cfg->flags & (uint8_t)~(SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK)) != 0u) {
         return SSDA_ERR_ARG;
     }
-    p.predict = cfg->predict;
-    p.flags = cfg->flags;
-    p.mask_value = cfg->mask_value;
-    if ((p.flags & SSDA_TRACK_MASK) != 0u && p.mask_value > maxval) {
+    plan->predict = cfg->predict;
+    plan->flags = cfg->flags;
+    plan->mask_value = cfg->mask_value;
+    if ((plan->flags & SSDA_TRACK_MASK) != 0u && plan->mask_value > maxval) {
         return SSDA_ERR_ARG;
     }
-    pixels = (uint32_t)p.grid.win_w * p.grid.win_h;
-    p.texture_threshold = cfg->texture_threshold != 0u ? cfg->texture_threshold
+    pixels = (uint32_t)plan->grid.win_w * plan->grid.win_h;
+    plan->texture_threshold = cfg->texture_threshold != 0u ? cfg->texture_threshold
                                                        : (maxval + 1u) / 2u;
-    p.texture_min_count = cfg->texture_min_count;
-    if (p.texture_min_count == 0u) {
-        p.texture_min_count = pixels / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV;
-        if (p.texture_min_count == 0u) {
-            p.texture_min_count = 1u;
+    plan->texture_min_count = cfg->texture_min_count;
+    if (plan->texture_min_count == 0u) {
+        plan->texture_min_count = pixels / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV;
+        if (plan->texture_min_count == 0u) {
+            plan->texture_min_count = 1u;
         }
     }
-    if ((p.flags & SSDA_TRACK_EXCLUDE) != 0u &&
-        (p.texture_threshold >= maxval || p.texture_min_count > pixels / 2u)) {
+    if ((plan->flags & SSDA_TRACK_EXCLUDE) != 0u &&
+        (plan->texture_threshold >= maxval || plan->texture_min_count > pixels / 2u)) {
         return SSDA_ERR_ARG;
     }
-    p.match = cfg->match;
-    if (p.predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
-        if (p.match.scan == (uint8_t)SSDA_SCAN_COARSE) {
+    plan->match = cfg->match;
+    if (plan->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
+        if (plan->match.scan == (uint8_t)SSDA_SCAN_COARSE) {
             return SSDA_ERR_ARG;
         }
-        if (p.match.scan == (uint8_t)SSDA_SCAN_RASTER) {
-            p.match.scan = (uint8_t)SSDA_SCAN_PREDICT;
+        if (plan->match.scan == (uint8_t)SSDA_SCAN_RASTER) {
+            plan->match.scan = (uint8_t)SSDA_SCAN_PREDICT;
         }
     }
-    err = ssda_match_check_config(&p.match, p.grid.search_w, p.grid.search_h,
-                                  p.grid.win_w, p.grid.win_h);
-    if (err == SSDA_OK) {
-        *plan = p;
-    }
-    return err;
+    return ssda_match_check_config(&plan->match, plan->grid.search_w, plan->grid.search_h,
+                                   plan->grid.win_w, plan->grid.win_h);
 }

@@ -25,7 +25,7 @@ typedef struct {
  * Resolve and check cfg (never NULL) for images of the given format whose
  * SECOND is second_w x second_h: every error ssda_track documents for the
  * configuration (SSDA_ERR_SIZE, _ARG, _NULL, _BUFFER of the match options).
- * *plan written on success only.
+ * On error *plan holds scratch (the callers discard it).
  */
 int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
                     uint32_t second_h, ssda_track_plan_t *plan);
