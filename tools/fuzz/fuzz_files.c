@@ -26,8 +26,9 @@ static int kept(const char *name, const char *const *keep)
     return 0;
 }
 
-/* Visit every entry not in keep: print it, remove it, or both. */
-static size_t sweep(const char *const *keep, int print, int remove_it)
+/* Visit every entry not in keep (and, if part is given, whose name
+   contains it): print it, remove it, or both. */
+static size_t sweep(const char *const *keep, const char *part, int print, int remove_it)
 {
     DIR *d = opendir(fuzz_dir());
     struct dirent *e;
@@ -35,7 +36,7 @@ static size_t sweep(const char *const *keep, int print, int remove_it)
     char path[4200];
     FUZZ_CHECK(d != NULL);
     while ((e = readdir(d)) != NULL) {
-        if (kept(e->d_name, keep)) {
+        if (kept(e->d_name, keep) || (part != NULL && strstr(e->d_name, part) == NULL)) {
             continue;
         }
         n++;
@@ -54,7 +55,7 @@ static size_t sweep(const char *const *keep, int print, int remove_it)
 static void remove_dir(void)
 {
     if (g_dir[0] != '\0') {
-        sweep(NULL, 0, 1);
+        sweep(NULL, NULL, 0, 1);
         rmdir(g_dir);
         g_dir[0] = '\0';
     }
@@ -89,10 +90,15 @@ char *fuzz_write(const char *name, const uint8_t *data, size_t n, char *buf, siz
 
 size_t fuzz_strays(const char *const *keep)
 {
-    return sweep(keep, 1, 0);
+    return sweep(keep, NULL, 1, 0);
+}
+
+size_t fuzz_strays_named(const char *part)
+{
+    return sweep(NULL, part, 1, 0);
 }
 
 void fuzz_clean(const char *const *keep)
 {
-    sweep(keep, 0, 1);
+    sweep(keep, NULL, 0, 1);
 }

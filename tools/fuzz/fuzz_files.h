@@ -23,6 +23,9 @@ char *fuzz_write(const char *name, const uint8_t *data, size_t n, char *buf, siz
    printed to stderr. */
 size_t fuzz_strays(const char *const *keep);
 
+/* Entries whose name contains part (e.g. atomic_file's ".tmp."), printed. */
+size_t fuzz_strays_named(const char *part);
+
 /* Remove every entry of the folder except those named in keep. */
 void fuzz_clean(const char *const *keep);
 
