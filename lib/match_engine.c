@@ -83,7 +83,7 @@ static bool cand_less(const cand_t *a, const cand_t *b)
 static uint32_t gcd_u32(uint32_t a, uint32_t b)
 {
     while (b != 0u) {
-        uint32_t t = a % b;
+        uint32_t t = SSDA_MOD32(a, b); /* setup only: no runtime division on the M0+ */
         a = b;
         b = t;
     }
@@ -540,7 +540,7 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
         group = e->M;
     }
     /* M >= 1: the window height */
-    ngroups = e->M / group; /* NOLINT(clang-analyzer-core.DivideZero) */
+    ngroups = SSDA_DIV32(e->M, group); /* NOLINT(clang-analyzer-core.DivideZero) */
     e->group = group;
     e->ngroups = ngroups;
     e->gsum = gsum;
