@@ -3,8 +3,9 @@
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror, a host build with ASan + UBSan, the line and
 # branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
-# of lib/ (cppcheck + MISRA C 2012, clang-tidy), the library
-# tests as bare-metal images under qemu-system-arm on four Cortex-M boards,
+# of lib/ (cppcheck + MISRA C 2012, clang-tidy), a 5-second run of every fuzz
+# target (libFuzzer), the library tests as bare-metal images under
+# qemu-system-arm on four Cortex-M boards,
 # and the library alone for six cross targets at -Os and -O2 (-Werror).
 # Usage: tools/test.sh            (build dirs under build/)
 #        SSDA_SKIP_CROSS=1 tools/test.sh   host builds only
@@ -48,6 +49,11 @@ bash tools/coverage.sh build/coverage
 # finding that is not a documented deviation. About a minute.
 echo "==> build/lint (cppcheck + MISRA, clang-tidy)" >&2
 bash tools/lint.sh build/lint
+
+# Fuzz smoke run: every libFuzzer target of tools/fuzz for 5 s (clang,
+# ASan + UBSan; tools/fuzz.sh, docs/fuzzing.md); fails on any crash.
+echo "==> build/fuzz (libFuzzer smoke run)" >&2
+bash tools/fuzz.sh --time 5 --build build/fuzz
 
 # Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) and M33 (-Os)
 # under QEMU with semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
