@@ -10,8 +10,11 @@
  *   - ssda_source_row spans == the image's pixels;
  *   - push-mode search (ssda_push_init_match / ssda_push_row) == ssda_match.
  * Arenas: below SSDA_SOURCE_SIZE(.., 1, 1, ..) init refuses (SSDA_ERR_BUFFER,
- * source untouched); below the job's documented minimum the job refuses
- * before any read; at or above it the job succeeds. A failed read's code
+ * source untouched); at or above the job's documented minimum the job
+ * succeeds; SSDA_ERR_BUFFER comes only below it, before any read, with
+ * the result untouched (below it a job may also succeed: the macros are
+ * sufficient sizes, and a raster source whose stride lies within the
+ * 4-byte rounding of a row is held at its own stride). A failed read's code
  * comes back unchanged with the result untouched, and the same job on the
  * same sources succeeds right after.
  */
@@ -243,7 +246,7 @@ static void job_match(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     ssda_match_config_t c;
     ssda_match_result_t want, got, poison;
     size_t need_a, need_w, arena_a, arena_w;
-    int rc, ra, rw;
+    int rc, ra, rw, short_arena;
     uint64_t before;
 
     fuzz_rect(in, &v[0], &ar, 1, 1);
@@ -269,14 +272,15 @@ static void job_match(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     memset(&poison, 0x6B, sizeof poison);
     got = poison;
     before = total_reads();
-    if ((st[0].streamed && arena_a < need_a) || (st[1].streamed && arena_w < need_w)) {
-        FUZZ_CHECK(ssda_stream_match(&as, &ar, &ws, &wr, &c, &got) == SSDA_ERR_BUFFER);
+    short_arena = (st[0].streamed && arena_a < need_a) || (st[1].streamed && arena_w < need_w);
+    arm(fail_dev, fail_k, code);
+    rc = ssda_stream_match(&as, &ar, &ws, &wr, &c, &got);
+    if (rc == SSDA_ERR_BUFFER) { /* only below the documented size, before any read */
+        FUZZ_CHECK(short_arena);
         FUZZ_CHECK(memcmp(&got, &poison, sizeof got) == 0);
         FUZZ_CHECK(total_reads() == before);
         return;
     }
-    arm(fail_dev, fail_k, code);
-    rc = ssda_stream_match(&as, &ar, &ws, &wr, &c, &got);
     if (rc == code) {
         FUZZ_CHECK(g_dev[fail_dev].failures == 1u);
         FUZZ_CHECK(memcmp(&got, &poison, sizeof got) == 0);
@@ -303,7 +307,7 @@ static void job_track(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     ssda_track_vector_t pv;
     size_t need_f, need_s, arena_f, arena_s;
     uint32_t k;
-    int rc;
+    int rc, short_arena;
     uint64_t before;
 
     memset(&c, 0, sizeof c);
@@ -344,14 +348,18 @@ static void job_track(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     }
     got = poison;
     before = total_reads();
-    if ((st[0].streamed && arena_f < need_f) || (st[1].streamed && arena_s < need_s)) {
-        FUZZ_CHECK(ssda_stream_track(&fs, &ss, &c, g_got, MAX_OUT, &got) == SSDA_ERR_BUFFER);
-        FUZZ_CHECK(memcmp(&got, &poison, sizeof got) == 0);
-        FUZZ_CHECK(total_reads() == before);
-        return;
-    }
+    short_arena = (st[0].streamed && arena_f < need_f) || (st[1].streamed && arena_s < need_s);
     arm(fail_dev, fail_k, code);
     rc = ssda_stream_track(&fs, &ss, &c, g_got, MAX_OUT, &got);
+    if (rc == SSDA_ERR_BUFFER) { /* only below the documented size, before any read */
+        FUZZ_CHECK(short_arena);
+        FUZZ_CHECK(memcmp(&got, &poison, sizeof got) == 0);
+        FUZZ_CHECK(total_reads() == before);
+        for (k = 0; k < MAX_OUT; k++) {
+            FUZZ_CHECK(memcmp(&g_got[k], &pv, sizeof pv) == 0);
+        }
+        return;
+    }
     if (rc == code) {
         FUZZ_CHECK(g_dev[fail_dev].failures == 1u);
         FUZZ_CHECK(memcmp(&got, &poison, sizeof got) == 0);
@@ -440,8 +448,8 @@ static void job_push(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t f
     got = poison;
     rc = ssda_push_init_match(&p, v[0].width, v[0].height, v[0].format, &ar, &ws, &wr, &c, &got,
                               g_ring, ring);
-    if (ring < ring_need || (st[1].streamed && arena_w < need_w)) {
-        FUZZ_CHECK(rc == SSDA_ERR_BUFFER);
+    if (rc == SSDA_ERR_BUFFER) { /* only below the documented sizes */
+        FUZZ_CHECK(ring < ring_need || (st[1].streamed && arena_w < need_w));
         FUZZ_CHECK(memcmp(&p, &pp, sizeof p) == 0);
         return;
     }
