@@ -599,6 +599,12 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
         track_result_free(r);
         return cli_input_error(cmd, "out of memory for %u windows", r->grid.count);
     }
+    /* A search area larger than FIRST leaves every window EDGE: nothing is
+       searched, and the bounds buffer for such an area (17 GB for 65535 x
+       65535) would be allocated for nothing (found by fuzz_cli). */
+    if (r->grid.search_w > r->first.width || r->grid.search_h > r->first.height) {
+        r->cfg.match.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
+    }
     if (r->cfg.match.flags & SSDA_MATCH_BOUNDS) {
         r->cfg.match.work_size = SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
                                                       r->grid.win_w, r->grid.win_h);

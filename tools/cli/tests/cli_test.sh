@@ -161,6 +161,18 @@ track)
   run 2 track a.png b.png --mask-value 4095        # beyond 8-bit samples
   run 2 track a.png b.png --roi 100,100,64,64      # outside the image
   run 2 track a.png b.png --window 40 --search 32  # area smaller than window
+  # an area larger than FIRST: every window is EDGE, nothing is searched, and
+  # no bounds buffer for it (17 GB for 65535 x 65535 was allocated; found by
+  # fuzz_cli). Checked under a 4 GB address-space limit unless ASan (whose
+  # shadow memory needs far more) is in the binary.
+  limit=unlimited
+  nm "$ssda" 2>/dev/null | grep -q __asan_init || limit=4000000
+  if (ulimit -v "$limit" && "$ssda" track a.png b.png --search 65535 --json t.json >out.txt 2>err.txt); then
+    chk track-json t.json 0 0 0 --no-ok --count edge 64 && grep -q '"bounds":false' t.json ||
+      fail "--search 65535: bounds still on"
+  else
+    fail "--search 65535 failed: $(cat err.txt)"
+  fi
   # block-streamed: same vectors within any plate memory, from one row per plate up
   for m in 48 600 4K 1M; do
     run 0 track a.png b.png --mem "$m" --json t.json && chk track-json t.json 3 -2 1.0 --count ok 36 &&
