@@ -58,9 +58,7 @@ static int fail_code(uint64_t k)
 
 /* SECOND is FIRST moved by (+2, -1) with a little noise (8-bit). */
 /* A textured 12-bit image (random values, each averaged with its right,
-   lower and lower-right neighbours) and its 8-bit copy (v >> 4). Kept
-   here instead of test_image.c's generator, whose 256 KB work buffer
-   would be most of this test's static data. */
+   lower and lower-right neighbours) and its 8-bit copy (v >> 4). */
 static void fill_texture(uint16_t *p16, uint8_t *p8, uint32_t w, uint32_t h, test_rng_t *r)
 {
     uint32_t x, y;
