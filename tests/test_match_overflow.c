@@ -14,7 +14,7 @@ void tearDown(void) {}
 /* Two rows of zeros and two rows of 65535, 65535 pixels each (512 KiB). */
 static uint16_t g_zero[2][W];
 static uint16_t g_max[2][W];
-static uint32_t g_work[1024]; /* >= SSDA_MATCH_WORK_SIZE(W, 258, W, 258) */
+static uint32_t g_work[2048]; /* >= SSDA_MATCH_WORK_SIZE(W, 258, W, 258) and (261, 259, 257, 256) */
 
 static void fill_max(void)
 {
@@ -110,6 +110,67 @@ static void test_u16_bounds_tables_at_maximum(void)
     g_zero[0][0] = 0u;
 }
 
+/* Bounds that pass 2^32: a 16-bit window of 257 x 256 pixels (group terms
+   up to 4 * 257 * 65535, their sum up to 256 * 257 * 65535 > 2^32, summed
+   in 64 bits). Against brute force, in both exact scans; with the
+   prediction on the answer, every other position is rejected by its bound
+   alone (a steep ramp makes every group sum differ). */
+#define BW 257u
+#define BH 256u
+#define BAW (BW + 4u) /* 5 x 4 positions */
+#define BAH (BH + 3u)
+static void test_u16_bounds_beyond_32_bits(void)
+{
+    uint16_t *a = &g_zero[0][0]; /* BAW * BAH = 67 599 <= 2 * W samples */
+    uint16_t *w = &g_max[0][0];
+    ssda_view_t area, win;
+    ssda_match_config_t cfg;
+    ssda_match_result_t brute, res;
+    uint32_t x, y;
+    uint8_t scan;
+    for (y = 0; y < BAH; y++) {
+        for (x = 0; x < BAW; x++) {
+            a[y * BAW + x] = (uint16_t)(x * 251u + y * 7u + (x * y) % 5u);
+        }
+    }
+    for (y = 0; y < BH; y++) {
+        for (x = 0; x < BW; x++) {
+            w[y * BW + x] = a[(y + 2u) * BAW + x + 3u];
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&area, a, BAW, BAH, BAW * 2u, SSDA_PIX_U16));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&win, w, BW, BH, BW * 2u, SSDA_PIX_U16));
+    memset(&cfg, 0, sizeof cfg);
+    cfg.threshold = SSDA_THRESHOLD_NONE;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &brute));
+    TEST_ASSERT_EQUAL_UINT32(3, brute.x);
+    TEST_ASSERT_EQUAL_UINT32(2, brute.y);
+    TEST_ASSERT_EQUAL_UINT64(0, brute.sad);
+    TEST_ASSERT_TRUE(SSDA_MATCH_WORK_SIZE(BAW, BAH, BW, BH) <= sizeof g_work);
+    for (scan = SSDA_SCAN_RASTER; scan <= SSDA_SCAN_PREDICT; scan++) {
+        memset(&cfg, 0, sizeof cfg);
+        cfg.scan = scan;
+        cfg.predict_x = 3;
+        cfg.predict_y = 2;
+        cfg.flags = SSDA_MATCH_BOUNDS;
+        cfg.work = g_work;
+        cfg.work_size = sizeof g_work;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_EQUAL_UINT32(brute.x, res.x);
+        TEST_ASSERT_EQUAL_UINT32(brute.y, res.y);
+        TEST_ASSERT_EQUAL_UINT64(brute.sad, res.sad);
+        TEST_ASSERT_TRUE(res.exact);
+        TEST_ASSERT_EQUAL_UINT32(20, res.positions);
+        TEST_ASSERT_TRUE(res.pixel_ops < brute.pixel_ops);
+        if (scan == SSDA_SCAN_PREDICT) {
+            /* one full sum, the tables and 19 bound checks */
+            TEST_ASSERT_EQUAL_UINT32(1, res.completed);
+            TEST_ASSERT_TRUE(res.pixel_ops < brute.pixel_ops / 4u);
+        }
+    }
+    memset(g_zero, 0, sizeof g_zero);
+}
+
 #ifndef SSDA_TEST_SMALL
 /* 8-bit: 65535 x 258 pixels of difference 255 = 4 311 640 350 > 2^32. */
 #define H8 258u
@@ -136,6 +197,7 @@ int main(void)
     RUN_TEST(test_u16_full_row_fits_uint32);
     RUN_TEST(test_u16_total_crosses_2_pow_32);
     RUN_TEST(test_u16_bounds_tables_at_maximum);
+    RUN_TEST(test_u16_bounds_beyond_32_bits);
 #ifndef SSDA_TEST_SMALL
     RUN_TEST(test_u8_total_crosses_2_pow_32);
 #endif
