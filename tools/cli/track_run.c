@@ -680,6 +680,10 @@ uint64_t track_brute_ops(const track_result_t *r)
 
 /* ---- outputs ---- */
 
+/* Least distance between drawn windows on the overlay, output px: closer,
+   arrowheads and marks run together. */
+#define OVERLAY_MIN_SPACING 22.0
+
 void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
                       const int32_t (*ref)[2], const char *extra_top)
 {
@@ -755,7 +759,8 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     const gray_image_t *src = &r->second_orig;
     const ssda_track_grid_t *g = &r->grid;
     char err[512];
-    uint32_t k, x0, y0, x1, y1, y;
+    uint32_t k, x0, y0, x1, y1, y, step, every = 1, off_c, off_r, n = 0;
+    double zstep;
     int rc;
     /* Show the part of SECOND the grid covers, plus the search margin: a
        small --roi is drawn large instead of lost in a reduced whole image. */
@@ -775,31 +780,52 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
                (const uint8_t *)src->pixels + (size_t)y * src->stride + (size_t)x0 * (src->bits / 8u),
                bg.stride);
     }
+    /* A dense grid on a reduced picture is a carpet of arrowheads: draw only
+       every k-th column and row (centred), so drawn windows are at least
+       OVERLAY_MIN_SPACING output px apart. The JSON keeps every window. */
+    step = g->step_x < g->step_y ? g->step_x : g->step_y;
+    zstep = step * draw_vectors_zoom(bg.width, bg.height);
+    while (zstep * every < OVERLAY_MIN_SPACING) {
+        every++;
+    }
+    off_c = ((g->cols - 1u) % every) / 2u;
+    off_r = ((g->rows - 1u) % every) / 2u;
     for (k = 0; k < r->grid.count; k++) {
         const ssda_track_vector_t *v = &r->vec[k];
-        dv[k].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
-        dv[k].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
-        dv[k].dx = v->dx;
-        dv[k].dy = v->dy;
-        dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
+        if ((k % g->cols) % every != off_c || (k / g->cols) % every != off_r) {
+            continue;
+        }
+        dv[n].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
+        dv[n].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
+        dv[n].dx = v->dx;
+        dv[n].dy = v->dy;
+        dv[n].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
                        : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
                        : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
                                                           : DRAW_EDGE;
         if (truth != NULL && v->status == SSDA_TRACK_OK) {
-            dv[k].has_truth = 1;
-            dv[k].tdx = truth[k][0];
-            dv[k].tdy = truth[k][1];
+            dv[n].has_truth = 1;
+            dv[n].tdx = truth[k][0];
+            dv[n].tdy = truth[k][1];
         }
+        n++;
+    }
+    if (every > 1) {
+        fprintf(stderr, "ssda %s: note: the overlay draws every %u%s vector of each grid row "
+                "and column (all %u would be %.0f px apart); --roi X,Y,W,H or a larger "
+                "--step shows more detail, the JSON has every window\n",
+                cmd, every, ordinal_suffix(every), g->count, zstep);
     }
     memset(&dopt, 0, sizeof dopt);
     dopt.title = title;
     dopt.truth_label = truth_label;
     dopt.subtitle = subtitle;
     dopt.arrow_scale = o->arrow_scale;
-    dopt.grid_step = r->grid.step_x < r->grid.step_y ? r->grid.step_x : r->grid.step_y;
+    dopt.grid_step = (double)step * every; /* arrows scale to the drawn spacing */
+    dopt.every = every;
     dopt.have_mask = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
     dopt.mask_value = o->cfg.mask_value;
-    rc = draw_vectors_to(f, name, &bg, dv, r->grid.count, &dopt, NULL, err, sizeof err);
+    rc = draw_vectors_to(f, name, &bg, dv, n, &dopt, NULL, err, sizeof err);
     free(dv);
     gray_image_free(&bg);
     if (rc != 0) {

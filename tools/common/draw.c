@@ -305,6 +305,15 @@ static double auto_arrow_scale(const draw_vector_t *v, size_t n, double step)
     return fmax(1.0, nice_floor(step / p90));
 }
 
+/* "st", "nd", "rd" or "th" after n (1st, 22nd, 13th). */
+const char *ordinal_suffix(unsigned n)
+{
+    if (n % 100u >= 11u && n % 100u <= 13u) {
+        return "th";
+    }
+    return n % 10u == 1u ? "st" : n % 10u == 2u ? "nd" : n % 10u == 3u ? "rd" : "th";
+}
+
 /* The status legend: one swatch and count per status present (vectors
    always), then the reference arrows if any; wraps at width W. Draws only
    when draw != 0. Returns the number of lines used. */
@@ -328,6 +337,9 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
                      o->truth_label != NULL ? o->truth_label : "known motion (truth)");
         } else if (counts[i] == 0 && i != DRAW_OK) {
             continue;
+        } else if (i == DRAW_OK && o->every > 1) {
+            snprintf(buf, sizeof buf, "vector (every %u%s of grid rows and columns drawn): %zu",
+                     o->every, ordinal_suffix(o->every), counts[i]);
         } else {
             snprintf(buf, sizeof buf, "%s: %zu", names[i], counts[i]);
         }
@@ -353,6 +365,18 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
     return lines;
 }
 
+double draw_vectors_zoom(uint32_t w, uint32_t h)
+{
+    double m = w > h ? w : h, z;
+    /* Enlarge small images (integer zoom from 2x keeps pixels crisp), reduce
+       huge ones, so the longer side shows at about 900..1600 px. */
+    z = m < 900.0 ? 960.0 / m : m > 1600.0 ? 1600.0 / m : 1.0;
+    if (z >= 2.0) {
+        z = floor(z);
+    }
+    return z > 12.0 ? 12.0 : z;
+}
+
 int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const draw_vector_t *v,
                     size_t n, const draw_vectors_opts_t *opts, double *scale_used, char *err,
                     size_t errlen)
@@ -360,7 +384,6 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     draw_vectors_opts_t o;
     cairo_surface_t *img_s, *out;
     cairo_t *cr;
-    double m = bg->width > bg->height ? bg->width : bg->height;
     double z, scale, top, bottom, W, H, ox, lw, ref, y;
     size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0;
     char buf[256];
@@ -371,15 +394,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     } else {
         memset(&o, 0, sizeof o);
     }
-    /* Enlarge small images (integer zoom from 2x keeps pixels crisp), reduce
-       huge ones, so the longer side shows at about 900..1600 px. */
-    z = m < 900.0 ? 960.0 / m : m > 1600.0 ? 1600.0 / m : 1.0;
-    if (z >= 2.0) {
-        z = floor(z);
-    }
-    if (z > 12.0) {
-        z = 12.0;
-    }
+    z = draw_vectors_zoom(bg->width, bg->height);
     scale = o.arrow_scale > 0.0 ? o.arrow_scale : auto_arrow_scale(v, n, o.grid_step);
     if (scale_used != NULL) {
         *scale_used = scale;

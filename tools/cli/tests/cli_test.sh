@@ -130,6 +130,14 @@ track)
   chk track-json t.json 3 -2 1.0 --count ok 36 --count edge 28
   chk png-size o.png 896 1024
   grep -q "median dx=+3 dy=-2" out.txt || fail "track summary"
+  grep -q "every" err.txt && fail "a sparse grid's overlay was thinned: $(cat err.txt)"
+  # a grid too dense for the picture (8 px steps at 2x zoom = 16 output px):
+  # every 2nd vector of each row and column is drawn, said on stderr; the JSON has all
+  "$gen" texture wa.png --size 400x96 --seed 3
+  "$gen" texture wb.png --size 400x96 --seed 3 --shift 3,-2
+  run 0 track wa.png wb.png --step 8 --json t.json --overlay ow.png --quiet &&
+    stderr_has "overlay draws every 2nd vector" && chk png-size ow.png 800 320 &&
+    chk track-json t.json 3 -2 1.0 && grep -q '"windows":539,' t.json || fail "dense grid JSON"
   for opts in "--threshold none" "--predict none" "--predict left" "--bounds" "--no-bounds" "--order spread" \
               "--threshold auto-ramp" "--grad" \
               "--window 8 --search 24 --step 8" "--window 12x10 --search 30x20 --step 10x9" \
