@@ -213,6 +213,14 @@ grad)
   run 0 grad g8.png o.png --shift 0 && chk grad-same g8.png o.png 0   # saturates at 255
   stderr_has "saturated"
   run 0 grad g8.png c.png --crop && chk png-size c.png 38 28 8
+  # 12-bit counts in a 16-bit PNG (max 3511 here): the default scale comes from
+  # the data's maximum (4 x 3511 x 4 fits 16 bits), not from the depth (E' >> 2,
+  # 16 times darker, used at most 1/16 of the range: a near-black picture)
+  "$gen" texture g12.png --size 40x30 --seed 8 --kind gray16 --max 4095
+  run 0 grad g12.png o.png && chk grad-same g12.png o.png -2 && chk png-max o.png 16384 &&
+    grep -qF "E' x 4 (input maximum 3511)" out.txt || fail "12-bit grad scaling: $(cat out.txt)"
+  run 0 grad g12.png o.png --bits 8 && chk grad-same g12.png o.png 6 && chk png-max o.png 64
+  run 0 grad g12.png o.png --shift 2 && chk grad-same g12.png o.png 2   # explicit shift kept
   "$gen" texture tiny.png --size 2x9 --seed 1
   run 1 grad tiny.png x.png && absent x.png
   ;;
