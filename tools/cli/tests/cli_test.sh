@@ -272,6 +272,16 @@ errors)
   # an output in a missing folder: exit 1, and the other output is not written either
   "$gen" texture b.png --size 64x64 --seed 1 --shift 1,1
   run 1 track good.png b.png --json t.json --overlay no/such/dir/o.png && absent t.json
+  # output modes: a new file gets what fopen would give (0666 minus the umask,
+  # not mkstemp's 0600); a replaced file keeps its own mode
+  (umask 022 && "$ssda" track good.png b.png --json m.json --overlay m.png >/dev/null) &&
+    [ "$(stat -c %a m.json)" = 644 ] && [ "$(stat -c %a m.png)" = 644 ] ||
+    fail "new output mode $(stat -c %a m.json m.png)"
+  (umask 027 && "$ssda" grad good.png g.png >/dev/null) && [ "$(stat -c %a g.png)" = 640 ] ||
+    fail "grad output mode under umask 027: $(stat -c %a g.png)"
+  chmod 604 m.json
+  (umask 022 && "$ssda" track good.png b.png --json m.json >/dev/null) &&
+    [ "$(stat -c %a m.json)" = 604 ] || fail "replaced output mode $(stat -c %a m.json)"
   # a failed run leaves an existing output untouched
   echo old >keep.json
   run 1 track good.png bad_truncated.png --json keep.json
