@@ -493,6 +493,11 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     double t0;
 
     memset(r, 0, sizeof *r);
+    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
+    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
+        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
+                               "every window is searched outward from its predicted vector)");
+    }
     r->cfg = o->cfg;
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;

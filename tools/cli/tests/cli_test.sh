@@ -62,6 +62,8 @@ usage)
   run 2 track a.png b.png --predict sideways
   run 2 track a.png b.png --mem lots
   run 2 track a.png b.png --json                  # needs a value
+  run 2 track a.png b.png --scan coarse && stderr_has "--scan coarse needs --predict none"
+  run 2 compare a.png b.png --scan coarse --predict left && stderr_has "--scan coarse needs --predict none"
   run 2 pitch a.wav --fmin 300 --fmax 200
   run 2 pitch a.wav --hop-ms -1
   run 2 grad a.png b.png --bits 12
