@@ -56,6 +56,7 @@ usage)
   run 2 match a.png b.png --scan predict          # needs --predict
   run 2 match a.png b.png --predict 3
   run 2 match a.png b.png --json=yes              # a flag takes no value
+  run 2 match a.png b.png --json x.json && stderr_has "unexpected argument 'x.json' (match --json prints to stdout"
   run 2 track a.png b.png --window 0
   run 2 track a.png b.png --window 16x
   run 2 track a.png b.png --roi 1,2,3
