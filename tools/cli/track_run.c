@@ -502,6 +502,13 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;
     }
+    if (r->first.width != r->second.width || r->first.height != r->second.height) {
+        /* allowed (the library lays both in one pixel coordinate system), but
+           more often a wrong pair than a deliberate one */
+        fprintf(stderr, "ssda %s: note: the images differ in size (FIRST %u x %u, SECOND "
+                "%u x %u); windows of SECOND are searched at the same coordinates in FIRST\n",
+                cmd, r->first.width, r->first.height, r->second.width, r->second.height);
+    }
     maxval = gray_image_max(&r->second);
     if (masked && o->cfg.mask_value > maxval) {
         track_result_free(r);
@@ -577,15 +584,30 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     e = ssda_track_grid(&r->cfg, (uint16_t)r->second.width, (uint16_t)r->second.height,
                         &r->grid);
     if (e != SSDA_OK) {
+        /* the sizes as resolved: 0 in the config means the library's default */
         const ssda_track_config_t *c = &r->cfg;
+        uint32_t ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
+        uint32_t wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
+        uint32_t sw = c->search_w ? c->search_w : 2u * ww;
+        uint32_t sh = c->search_h ? c->search_h : 2u * wh;
+        sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
+        sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
         cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
                         "(the search area must be at least the window, the window inside "
                         "the region)",
-                        c->win_w ? c->win_w : 16, c->win_h ? c->win_h : 16, c->search_w,
-                        c->search_h, c->roi_w ? c->roi_w : r->second.width,
+                        ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
                         c->roi_h ? c->roi_h : r->second.height);
         track_result_free(r);
         return CLI_USAGE;
+    }
+    if (r->grid.search_w == r->grid.win_w || r->grid.search_h == r->grid.win_h) {
+        int both = r->grid.search_w == r->grid.win_w && r->grid.search_h == r->grid.win_h;
+        const char *what = both ? "dx and dy" : r->grid.search_w == r->grid.win_w ? "dx" : "dy";
+        fprintf(stderr, "ssda %s: warning: search area %ux%u leaves the %ux%u window no room "
+                "to move: every %s is 0 (vectors range over +-(search - window) / 2; "
+                "e.g. --search %ux%u)\n",
+                cmd, r->grid.search_w, r->grid.search_h, r->grid.win_w, r->grid.win_h, what,
+                2u * r->grid.win_w, 2u * r->grid.win_h);
     }
     if (o->exclude) {
         r->texture_min_count = o->exclude_count != 0

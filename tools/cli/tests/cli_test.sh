@@ -172,6 +172,15 @@ track)
   run 2 track a.png b.png --mask-value 4095        # beyond 8-bit samples
   run 2 track a.png b.png --roi 100,100,64,64      # outside the image
   run 2 track a.png b.png --window 40 --search 32  # area smaller than window
+  run 2 track a.png b.png --window 500 && stderr_has "window 500x500, search 1000x1000"  # the default search, resolved
+  # a search area equal to the window cannot move: warned (every vector is 0)
+  run 0 track a.png b.png --window 16 --search 16 && stderr_has "no room to move: every dx and dy is 0"
+  run 0 track a.png b.png --search 32x16 && stderr_has "every dy is 0"
+  run 0 track a.png b.png && grep -qE "no room|differ in size" err.txt && fail "warning without cause: $(cat err.txt)"
+  # images of different sizes share one coordinate system: accepted with a note
+  "$gen" texture bs.png --size 100x90 --seed 3 --shift 3,-2
+  run 0 track a.png bs.png --json t.json && stderr_has "images differ in size (FIRST 128 x 128, SECOND 100 x 90)" &&
+    chk track-json t.json 3 -2 1.0
   # an area larger than FIRST: every window is EDGE, nothing is searched, and
   # no bounds buffer for it (17 GB for 65535 x 65535 was allocated; found by
   # fuzz_cli). Checked under a 4 GB address-space limit unless ASan (whose
