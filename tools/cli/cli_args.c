@@ -1,6 +1,7 @@
 /* cli_args.c - option scanning, value parsing and messages for `ssda`. */
 #include "cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -374,6 +375,23 @@ void cli_outputs_abort(cli_outputs_t *o)
         atomic_file_abort(&o->f[i]);
     }
     o->n = 0;
+}
+
+void cli_warn_png_name(const char *cmd, const char *what, const char *path)
+{
+    static const char ext[] = ".png";
+    size_t n = path != NULL ? strlen(path) : 0, i;
+    int match = n >= 4;
+    if (path == NULL || strcmp(path, "-") == 0) {
+        return;
+    }
+    for (i = 0; match && i < 4; i++) {
+        match = tolower((unsigned char)path[n - 4 + i]) == ext[i];
+    }
+    if (!match) { /* a viewer going by the name would misread the file */
+        fprintf(stderr, "ssda %s: warning: %s '%s' does not end in .png; it is written as "
+                "PNG data all the same\n", cmd, what, path);
+    }
 }
 
 const char *cli_basename(const char *path)

@@ -61,6 +61,7 @@ int cmd_compare(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
     }
+    cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
     cli_outputs_begin(&out, a.cmd);
     rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
     if (rc != CLI_OK) {

@@ -87,6 +87,7 @@ int cmd_grad(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need IN.png and OUT.png");
     }
+    cli_warn_png_name(a.cmd, "output", a.pos[1]);
     if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &in) != 0) {
         return CLI_INPUT;
     }

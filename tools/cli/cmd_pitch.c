@@ -131,6 +131,7 @@ int cmd_pitch(int argc, char **argv)
     if (csv != NULL && plot != NULL && strcmp(csv, "-") == 0 && strcmp(plot, "-") == 0) {
         return cli_usage_error(a.cmd, "--csv and --plot cannot both go to stdout");
     }
+    cli_warn_png_name(a.cmd, "--plot", plot);
     if (wav_read_mono_i16_ex(a.pos[0], &x, &n, &rate, &winfo, err, sizeof err) != 0) {
         return cli_input_error(a.cmd, "%s", err);
     }

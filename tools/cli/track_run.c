@@ -34,7 +34,8 @@ const char track_opts_help[] =
     "  --mem BYTES       track from block-streamed images within BYTES of memory\n"
     "outputs:\n"
     "  --json FILE|-     write the vectors as JSON (- = stdout)\n"
-    "  --overlay OUT.png draw the vectors over SECOND\n"
+    "  --overlay OUT.png draw the vectors over SECOND (a grid too dense to read is\n"
+    "                    drawn every k-th row and column; stderr says so)\n"
     "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
     "  --quiet           no progress bar\n";
 

@@ -151,6 +151,10 @@ track)
   # coarse-to-fine may miss the minimum (the seed's caveat): most windows, not all
   run 0 track a.png b.png --predict none --scan coarse --json t.json && chk track-json t.json 3 -2 0.5
   run 0 track a.png b.png --json - && cp out.txt t2.json && chk track-json t2.json 3 -2 1.0
+  # a picture named other than .png: written as PNG all the same, with a warning
+  run 0 track a.png b.png --overlay o.jpg && stderr_has "--overlay 'o.jpg' does not end in .png" &&
+    chk png-size o.jpg 896 1024
+  run 0 track a.png b.png --overlay O.PNG && grep -q "warning" err.txt && fail "warned about O.PNG"
   # --roi and --step together select the grid: 3 x 2 windows, all inside
   run 0 track a.png b.png --roi 40,40,48,40 --step 16x24 --json t.json &&
     chk track-json t.json 3 -2 1.0 --count ok 6
@@ -243,6 +247,7 @@ pitch)
   run 0 pitch v.wav --csv p.csv --plot p.png --quiet &&
     chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2 --silent-before 0.25 --tol 0.01
   grep -q "median 200" out.txt || fail "pitch summary: $(cat out.txt)"
+  run 0 pitch v.wav --plot p.jpeg && stderr_has "--plot 'p.jpeg' does not end in .png" && chk png-size p.jpeg 1100 560
   run 0 pitch v.wav --csv - && cp out.txt p2.csv && chk pitch-csv p2.csv --f0 200 --voiced 0.4:1.2
   run 0 pitch v.wav --full --csv pf.csv && cmp -s <(cut -d, -f1-3 p.csv) <(cut -d, -f1-3 pf.csv) ||
     fail "early exit changed the track"
