@@ -46,7 +46,7 @@ static void write_csv(FILE *f, const pitch_track_t *tr)
 {
     size_t i;
     fprintf(f, "time_s,f0_hz,voiced,confidence,center_s\n");
-    for (i = 0; i < tr->n; i++) {
+    for (i = 0; i < tr->n && !ferror(f); i++) { /* stop at a closed pipe */
         fprintf(f, "%.6f,%.3f,%d,%.4f,%.6f\n", tr->t_frame[i], tr->f0[i], tr->voiced[i],
                 tr->confidence_q15[i] / 32768.0, tr->t[i]);
     }

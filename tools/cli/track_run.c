@@ -748,7 +748,7 @@ void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
         fprintf(f, " %s,\n", extra_top);
     }
     fprintf(f, " \"windows\":[");
-    for (k = 0; k < g->count; k++) {
+    for (k = 0; k < g->count && !ferror(f); k++) { /* stop at a closed pipe */
         const ssda_track_vector_t *v = &r->vec[k];
         fprintf(f, "%s\n  {\"x\":%u,\"y\":%u,\"dx\":%d,\"dy\":%d,\"sad\":%llu,"
                    "\"status\":\"%s\",\"exact\":%s",

@@ -3,6 +3,7 @@
 #include "atomic_file.h"
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -59,11 +60,29 @@ int atomic_file_open(atomic_file_t *af, const char *path)
     return 0;
 }
 
+/* Is standard output a pipe whose reader has gone? stdio keeps no errno of
+   an earlier failed write (fflush may then return 0 with the error flag
+   set), so ask the descriptor: poll reports POLLERR for such a pipe. */
+static int stdout_pipe_closed(void)
+{
+    struct pollfd p;
+    p.fd = STDOUT_FILENO;
+    p.events = POLLOUT;
+    p.revents = 0;
+    return poll(&p, 1, 0) == 1 && (p.revents & POLLERR) != 0;
+}
+
 int atomic_file_commit(atomic_file_t *af)
 {
     int bad;
     if (af->fp == stdout) {
-        return fflush(stdout) == 0 ? 0 : -1;
+        /* EPIPE: the reader closed the pipe (| head) and wants no more; not a
+           failure (the tools ignore SIGPIPE to get here) */
+        errno = 0;
+        if (fflush(stdout) == 0 && !ferror(stdout)) {
+            return 0;
+        }
+        return errno == EPIPE || stdout_pipe_closed() ? 0 : -1;
     }
     bad = ferror(af->fp) != 0;
     bad |= fclose(af->fp) != 0;

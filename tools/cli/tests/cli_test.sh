@@ -249,6 +249,21 @@ pitch)
   grep -q "median 200" out.txt || fail "pitch summary: $(cat out.txt)"
   run 0 pitch v.wav --plot p.jpeg && stderr_has "--plot 'p.jpeg' does not end in .png" && chk png-size p.jpeg 1100 560
   run 0 pitch v.wav --csv - && cp out.txt p2.csv && chk pitch-csv p2.csv --f0 200 --voiced 0.4:1.2
+  # a reader that stops early (| head) closes stdout: a quiet end (exit 0, no
+  # message, no SIGPIPE death), and the file outputs are complete. 1-sample
+  # hops make the CSV (~700 KB) far larger than the pipe's buffer.
+  "$ssda" pitch v.wav --hop-ms 0.0625 --plot ph.png --csv - --quiet 2>err.txt | head -1 >head.txt
+  st=${PIPESTATUS[0]}
+  [ "$st" = 0 ] || fail "pitch --csv - | head -1 exited $st: $(cat err.txt)"
+  [ -s err.txt ] && fail "pitch --csv - | head -1 complained: $(cat err.txt)"
+  grep -q "^time_s,f0_hz" head.txt || fail "pitch --csv - | head -1: no header"
+  chk png-size ph.png 1100 560
+  "$gen" texture big1.png --size 640x480 --seed 3
+  "$gen" texture big2.png --size 640x480 --seed 3 --shift 1,1
+  "$ssda" track big1.png big2.png --step 4 --json - --overlay th.png --quiet 2>err.txt | head -1 >/dev/null
+  st=${PIPESTATUS[0]}
+  [ "$st" = 0 ] || fail "track --json - | head -1 exited $st: $(cat err.txt)"
+  chk png-size th.png 960 848
   run 0 pitch v.wav --full --csv pf.csv && cmp -s <(cut -d, -f1-3 p.csv) <(cut -d, -f1-3 pf.csv) ||
     fail "early exit changed the track"
   run 0 pitch v.wav --hop-ms 5 --csv p.csv && chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2
