@@ -300,7 +300,12 @@ errors)
     "$gen" bad "$k" "bad_$k.wav"
     run 1 pitch "bad_$k.wav" --csv p.csv --plot p.png && stderr_has "bad_$k.wav" && absent p.csv p.png
   done
-  run 1 pitch missing.wav --csv p.csv && absent p.csv
+  run 1 pitch missing.wav --csv p.csv && absent p.csv &&
+    stderr_has "cannot open 'missing.wav': No such file or directory"
+  grep -q "System error" err.txt && fail "libsndfile's wording: $(cat err.txt)"
+  run 1 pitch bad_wav-empty.wav && stderr_has "'bad_wav-empty.wav' is empty, not a sound file"
+  run 1 pitch bad_wav-text.wav && stderr_has "'bad_wav-text.wav' is not a sound file libsndfile reads"
+  run 1 pitch . && stderr_has "cannot read '.'"
   # an output in a missing folder: exit 1, and the other output is not written either
   "$gen" texture b.png --size 64x64 --seed 1 --shift 1,1
   run 1 track good.png b.png --json t.json --overlay no/such/dir/o.png && absent t.json
