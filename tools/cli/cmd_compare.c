@@ -17,7 +17,8 @@ static void help(void)
           "of windows whose SSDA vector is within 0, 1 and 2 px of the NCC vector\n"
           "(largest of |ddx|, |ddy|) and the time of each method (the seed's Table 1).\n"
           "--json adds ref_dx, ref_dy to each window and a \"compare\" object;\n"
-          "--overlay draws the NCC vectors as thin cyan arrows under the SSDA ones.\n"
+          "--overlay draws the NCC vectors as thin cyan arrows on top of the yellow\n"
+          "SSDA ones (a cyan core where both agree).\n"
           "\n",
           stdout);
     fputs(track_opts_help, stdout);
@@ -162,6 +163,12 @@ int cmd_compare(int argc, char **argv)
             printf(" (%.0fx the SSDA time)", ncc_secs / r.secs);
         }
         printf("\n");
+        if (o.json_path != NULL) { /* as track reports its files */
+            printf("wrote:   %s\n", o.json_path);
+        }
+        if (o.overlay_path != NULL) {
+            printf("wrote:   %s\n", o.overlay_path);
+        }
     }
 #undef PCT
 done:

@@ -215,6 +215,8 @@ compare)
   run 0 compare a.png b.png --json c.json --overlay co.png --quiet && chk compare-json c.json 100
   chk track-json c.json -3 4 1.0
   grep -q "within 1 px: " out.txt || fail "compare summary"
+  grep -q "^wrote:   c.json" out.txt && grep -q "^wrote:   co.png" out.txt || fail "compare wrote: lines"
+  grep -q '"reference":"ncc"' c.json || fail "compare JSON reference"
   run 0 compare a.png b.png --threshold auto-ramp:0.5 --window 8 --search 24 --step 8 --json c.json &&
     chk compare-json c.json 0
   ;;
@@ -272,6 +274,9 @@ pitch)
   run 0 pitch g.wav --csv g.csv && chk pitch-csv g.csv --f0 150:300 --glide-secs 0.3:1.3 --voiced 0.4:1.2 --tol 0.03
   awk 'BEGIN { print "time_s,f0_hz"; for (t = 0; t < 1.3; t += 0.005) printf "%.3f,%.3f\n", t, (t < 0.3 ? 0 : 150 + 150 * (t - 0.3)) }' >ref.csv
   run 0 pitch g.wav --ref ref.csv --plot gp.png && grep -q "GPE 0.00 %" out.txt || fail "reference score: $(cat out.txt)"
+  # the header line is optional (the shared reference CSVs have none)
+  tail -n +2 ref.csv >ref_nohdr.csv
+  run 0 pitch g.wav --ref ref_nohdr.csv && grep -q "GPE 0.00 %" out.txt || fail "headerless reference: $(cat out.txt)"
   # 96 kHz 24-bit: analysed at 48 kHz
   "$gen" wav h.wav --f0 440 --rate 96000 --secs 0.5 --format pcm24
   run 0 pitch h.wav --csv h.csv && chk pitch-csv h.csv --f0 440 --voiced 0.1:0.4
