@@ -405,6 +405,33 @@ static int check_png_max(int argc, char **argv)
     return rc;
 }
 
+/* png-count FILE LO HI X0 Y0 X1 Y1: print how many pixels of the rectangle
+   [X0, X1) x [Y0, Y1) (clipped) have a gray value in LO..HI (RGB is read as
+   luma: a colour mark in a legend is counted by its gray level). */
+static int check_png_count(int argc, char **argv)
+{
+    gray_image_t a;
+    uint32_t x, y, lo, hi, x0, y0, x1, y1;
+    unsigned long n = 0;
+    if (argc != 7) return 2;
+    lo = (uint32_t)atol(argv[1]);
+    hi = (uint32_t)atol(argv[2]);
+    x0 = (uint32_t)atol(argv[3]);
+    y0 = (uint32_t)atol(argv[4]);
+    x1 = (uint32_t)atol(argv[5]);
+    y1 = (uint32_t)atol(argv[6]);
+    if (load_png(argv[0], &a) != 0) return 1;
+    for (y = y0; y < y1 && y < a.height; y++) {
+        for (x = x0; x < x1 && x < a.width; x++) {
+            uint32_t v = gray_image_get(&a, x, y);
+            n += v >= lo && v <= hi;
+        }
+    }
+    printf("%lu\n", n);
+    gray_image_free(&a);
+    return 0;
+}
+
 static int check_grad(int argc, char **argv)
 {
     gray_image_t in, out;
@@ -452,6 +479,7 @@ int main(int argc, char **argv)
         else if (strcmp(argv[1], "png-size") == 0) rc = check_png_size(argc - 2, argv + 2);
         else if (strcmp(argv[1], "grad-same") == 0) rc = check_grad(argc - 2, argv + 2);
         else if (strcmp(argv[1], "png-max") == 0) rc = check_png_max(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "png-count") == 0) rc = check_png_count(argc - 2, argv + 2);
     }
     if (rc == 2) fprintf(stderr, "check_outputs: bad command line\n");
     return rc;

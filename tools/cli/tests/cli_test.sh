@@ -151,6 +151,12 @@ track)
   # coarse-to-fine may miss the minimum (the seed's caveat): most windows, not all
   run 0 track a.png b.png --predict none --scan coarse --json t.json && chk track-json t.json 3 -2 0.5
   run 0 track a.png b.png --json - && cp out.txt t2.json && chk track-json t2.json 3 -2 1.0
+  # zero motion is drawn as yellow dots, which the legend shows too: at one
+  # arrow scale, a still pair's legend band (below the 896 px image) holds more
+  # yellow (luma ~204) than a moving pair's, by the dot swatch
+  run 0 track a.png a.png --overlay still.png --arrow-scale 4 && run 0 track a.png b.png --overlay moving.png --arrow-scale 4 &&
+    ys=$("$check" png-count still.png 200 208 0 950 896 1024) && ym=$("$check" png-count moving.png 200 208 0 950 896 1024) &&
+    [ "$ys" -gt $((ym + 10)) ] || fail "no zero-motion dot in the legend ($ys vs $ym yellow pixels)"
   # a picture named other than .png: written as PNG all the same, with a warning
   run 0 track a.png b.png --overlay o.jpg && stderr_has "--overlay 'o.jpg' does not end in .png" &&
     chk png-size o.jpg 896 1024
@@ -249,6 +255,12 @@ pitch)
   run 0 pitch v.wav --csv p.csv --plot p.png --quiet &&
     chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2 --silent-before 0.25 --tol 0.01
   grep -q "median 200" out.txt || fail "pitch summary: $(cat out.txt)"
+  # frames beyond the plot's f0 range are marked by triangles, named in a legend
+  # at the bottom right (nothing is drawn there otherwise)
+  "$gen" wav jump.wav --f0 200 --secs 2 --silence 0.3 --jump 500:0.06
+  run 0 pitch jump.wav --plot pj.png && n=$("$check" png-count pj.png 0 249 700 515 1100 560) &&
+    [ "$n" -gt 100 ] || fail "no legend for the out-of-range triangles ($n)"
+  n=$("$check" png-count p.png 0 249 700 515 1100 560) && [ "$n" = 0 ] || fail "out-of-range legend without such frames"
   run 0 pitch v.wav --plot p.jpeg && stderr_has "--plot 'p.jpeg' does not end in .png" && chk png-size p.jpeg 1100 560
   run 0 pitch v.wav --csv - && cp out.txt p2.csv && chk pitch-csv p2.csv --f0 200 --voiced 0.4:1.2
   # a reader that stops early (| head) closes stdout: a quiet end (exit 0, no
