@@ -318,7 +318,8 @@ const char *ordinal_suffix(unsigned n)
 /* The status legend: one swatch and count per status present (vectors
    always), the dots of vectors too short to draw as arrows, then the
    reference arrows if any; wraps at width W. Draws only when draw != 0.
-   dot_below: motion (px) under which a vector is drawn as a dot. Returns
+   dot_below: motion (px) under which a vector is drawn as a dot, 0 when
+   every dot is a zero motion. Returns
    the number of lines used. */
 static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t *counts,
                         size_t dots, double dot_below, size_t truths, double W, double y,
@@ -347,7 +348,7 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
             if (dots == 0) {
                 continue;
             }
-            if (dot_below <= 1.0) { /* motions are whole pixels: only 0 is a dot */
+            if (dot_below <= 0.0) {
                 snprintf(buf, sizeof buf, "no motion: %zu", dots);
             } else {
                 snprintf(buf, sizeof buf, "motion under %.2g px (too short to draw): %zu",
@@ -405,7 +406,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     cairo_surface_t *img_s, *out;
     cairo_t *cr;
     double z, scale, top, bottom, W, H, ox, lw, ref, y;
-    size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0, dots = 0;
+    size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0, dots = 0, moving_dots = 0;
     double dot_below;
     char buf[256];
     int rc;
@@ -428,6 +429,11 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
         counts[st]++;
         truths += v[i].has_truth != 0;
         dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below;
+        moving_dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below &&
+                       (v[i].dx != 0.0 || v[i].dy != 0.0);
+    }
+    if (moving_dots == 0) { /* the legend then says "no motion" */
+        dot_below = 0.0;
     }
     { /* wide enough for the title lines; tall enough for the legend */
         cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
