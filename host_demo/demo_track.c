@@ -157,11 +157,17 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
     }
     printf("   windows  %u: %u tracked", run[0].stats.windows, run[0].stats.ok);
     if (exclude) {
-        printf(", %u excluded beforehand as all dark or all bright\n            (the seed's "
-               "texture rule)", run[0].stats.excluded);
+        printf(", %u excluded beforehand as all dark or all bright", run[0].stats.excluded);
     }
-    printf(", %u masked, %u at the edge (search area leaves the image)\n\n",
+    printf(", %u masked,\n            %u at the edge (search area leaves the image)\n",
            run[0].stats.masked, run[0].stats.edge);
+    if (exclude) { /* many grey crosses look like failures; they are the paper's rule */
+        printf("   excluded = by design (the seed's texture rule), not a failure: fewer than %u "
+               "of a window's %u pixels on one side of brightness %u (the image mean)\n",
+               grid.win_w * grid.win_h / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV,
+               grid.win_w * grid.win_h, cfg.texture_threshold);
+    }
+    printf("\n");
 
     brute_ops = (double)run[0].stats.pixel_ops;
     /* header columns as wide as the rows' fields below */

@@ -82,6 +82,10 @@ int cli_parse_order(const char *s, ssda_match_config_t *cfg);
 void cli_threshold_name(const ssda_match_config_t *cfg, char *buf, size_t len);
 const char *cli_scan_name(const ssda_match_config_t *cfg);
 
+/* Warn on stderr when path (an output written as PNG; what names it, e.g.
+   "--overlay") does not end in .png, any case. "-" and NULL are fine. */
+void cli_warn_png_name(const char *cmd, const char *what, const char *path);
+
 /* The file name of a path, without its folders (for picture titles). */
 const char *cli_basename(const char *path);
 

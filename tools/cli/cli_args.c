@@ -1,6 +1,7 @@
 /* cli_args.c - option scanning, value parsing and messages for `ssda`. */
 #include "cli.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -346,7 +347,7 @@ FILE *cli_outputs_open(cli_outputs_t *o, const char *path)
 
 int cli_outputs_commit(cli_outputs_t *o)
 {
-    int i, rc = CLI_OK;
+    int i, pass, rc = CLI_OK;
     for (i = 0; i < o->n; i++) { /* write errors first: nothing renamed if any */
         if (o->f[i].fp != stdout && (fflush(o->f[i].fp) != 0 || ferror(o->f[i].fp))) {
             cli_input_error(o->cmd, "cannot write '%s': %s", o->f[i].final_path,
@@ -355,12 +356,19 @@ int cli_outputs_commit(cli_outputs_t *o)
             return CLI_INPUT;
         }
     }
-    for (i = 0; i < o->n; i++) {
-        const char *name = o->f[i].final_path != NULL ? o->f[i].final_path : "stdout";
-        char shown[512];
-        snprintf(shown, sizeof shown, "%s", name);
-        if (atomic_file_commit(&o->f[i]) != 0 && rc == CLI_OK) {
-            rc = cli_input_error(o->cmd, "cannot write '%s': %s", shown, strerror(errno));
+    /* files first, standard output last: a reader of stdout that stops early
+       (| head) still finds the files complete */
+    for (pass = 0; pass < 2; pass++) {
+        for (i = 0; i < o->n; i++) {
+            const char *name = o->f[i].final_path != NULL ? o->f[i].final_path : "stdout";
+            char shown[512];
+            if ((o->f[i].fp == stdout) != (pass == 1)) {
+                continue;
+            }
+            snprintf(shown, sizeof shown, "%s", name);
+            if (atomic_file_commit(&o->f[i]) != 0 && rc == CLI_OK) {
+                rc = cli_input_error(o->cmd, "cannot write '%s': %s", shown, strerror(errno));
+            }
         }
     }
     o->n = 0;
@@ -374,6 +382,23 @@ void cli_outputs_abort(cli_outputs_t *o)
         atomic_file_abort(&o->f[i]);
     }
     o->n = 0;
+}
+
+void cli_warn_png_name(const char *cmd, const char *what, const char *path)
+{
+    static const char ext[] = ".png";
+    size_t n = path != NULL ? strlen(path) : 0, i;
+    int match = n >= 4;
+    if (path == NULL || strcmp(path, "-") == 0) {
+        return;
+    }
+    for (i = 0; match && i < 4; i++) {
+        match = tolower((unsigned char)path[n - 4 + i]) == ext[i];
+    }
+    if (!match) { /* a viewer going by the name would misread the file */
+        fprintf(stderr, "ssda %s: warning: %s '%s' does not end in .png; it is written as "
+                "PNG data all the same\n", cmd, what, path);
+    }
 }
 
 const char *cli_basename(const char *path)

@@ -17,7 +17,8 @@ static void help(void)
           "of windows whose SSDA vector is within 0, 1 and 2 px of the NCC vector\n"
           "(largest of |ddx|, |ddy|) and the time of each method (the seed's Table 1).\n"
           "--json adds ref_dx, ref_dy to each window and a \"compare\" object;\n"
-          "--overlay draws the NCC vectors as thin cyan arrows under the SSDA ones.\n"
+          "--overlay draws the NCC vectors as thin cyan arrows on top of the yellow\n"
+          "SSDA ones (a cyan core where both agree).\n"
           "\n",
           stdout);
     fputs(track_opts_help, stdout);
@@ -61,6 +62,7 @@ int cmd_compare(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
     }
+    cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
     cli_outputs_begin(&out, a.cmd);
     rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
     if (rc != CLI_OK) {
@@ -161,6 +163,12 @@ int cmd_compare(int argc, char **argv)
             printf(" (%.0fx the SSDA time)", ncc_secs / r.secs);
         }
         printf("\n");
+        if (o.json_path != NULL) { /* as track reports its files */
+            printf("wrote:   %s\n", o.json_path);
+        }
+        if (o.overlay_path != NULL) {
+            printf("wrote:   %s\n", o.overlay_path);
+        }
     }
 #undef PCT
 done:

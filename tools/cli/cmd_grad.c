@@ -11,13 +11,20 @@ static const char help[] =
     "      A B C\n"
     "      D E F      E' = |A+B+C-G-H-I| + |A+D+G-C-F-I|\n"
     "      G H I\n"
-    "written as a gray PNG. E' <= 4 x the input maximum; E' >> SHIFT is stored.\n"
+    "written as a gray PNG, scaled by a power of two (see --shift).\n"
+    "E' <= 4 x M, M = the largest pixel value in IN.\n"
     "\n"
     "options:\n"
     "  --bits 8|16   output depth (default: the input's)\n"
-    "  --shift N     store E' >> N, 0..31 (default: the smallest that never\n"
-    "                saturates: 8->8 2, 8->16 0, 16->16 2, 16->8 10); values\n"
-    "                above the output maximum are stored as the maximum (counted)\n"
+    "  --shift N     store E' >> N, 0..31; values above the output maximum are\n"
+    "                stored as the maximum (counted). Default: scale by the power\n"
+    "                of two that brings 4 x M closest to the output maximum without\n"
+    "                exceeding it, so nothing saturates and data using only part\n"
+    "                of its depth is not left dark: E' >> N with the smallest such\n"
+    "                N (full-range 8->8: 2, 16->16: 2, 16->8: 10, 8->16: 0), or\n"
+    "                E' x 2^U when the depth is kept and even N = 0 leaves room\n"
+    "                (12-bit counts, M 4095, in a 16-bit PNG -> 16-bit: E' x 4;\n"
+    "                -> 8-bit: E' >> 6)\n"
     "  --crop        write only the (W-2) x (H-2) pixels that have a full\n"
     "                neighbourhood (default: same size as IN, 1-pixel border 0,\n"
     "                so coordinates match IN)\n"
@@ -25,11 +32,24 @@ static const char help[] =
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
 
+/* The largest pixel value actually present. */
+static uint32_t data_max(const gray_image_t *img)
+{
+    uint32_t x, y, m = 0;
+    for (y = 0; y < img->height; y++) {
+        for (x = 0; x < img->width; x++) {
+            uint32_t v = gray_image_get(img, x, y);
+            m = v > m ? v : m;
+        }
+    }
+    return m;
+}
+
 int cmd_grad(int argc, char **argv)
 {
     cli_args_t a;
     const char *v;
-    uint32_t bits = 0, shift = 0, sat = 0;
+    uint32_t bits = 0, shift = 0, sat = 0, in_max, up = 0, x, y;
     int have_shift = 0, crop = 0, rc = CLI_INPUT, e;
     gray_image_t in = {0}, out = {0};
     ssda_view_t src;
@@ -67,6 +87,7 @@ int cmd_grad(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need IN.png and OUT.png");
     }
+    cli_warn_png_name(a.cmd, "output", a.pos[1]);
     if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &in) != 0) {
         return CLI_INPUT;
     }
@@ -78,11 +99,22 @@ int cmd_grad(int argc, char **argv)
     if (bits == 0) {
         bits = in.bits;
     }
+    in_max = data_max(&in);
     go.format = bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
-    go.shift = (uint8_t)(have_shift ? shift
-                                    : SSDA_GRAD_SAFE_SHIFT(in.bits == 16 ? SSDA_PIX_U16
-                                                                          : SSDA_PIX_U8,
-                                                           go.format));
+    if (!have_shift) {
+        /* From the data's own maximum, not its depth: 12-bit counts in a 16-bit
+           PNG would otherwise be shifted as if they reached 65535 (near black). */
+        uint32_t out_max = bits == 16 ? 65535u : 255u;
+        uint64_t top = 4u * (uint64_t)in_max;
+        while ((top >> shift) > out_max) {
+            shift++;
+        }
+        /* scale up only data that uses part of its own depth; 8 -> 16 keeps E' as is */
+        while (shift == 0 && bits == in.bits && top > 0 && (top << (up + 1u)) <= out_max) {
+            up++;
+        }
+    }
+    go.shift = (uint8_t)shift;
     if (gray_image_alloc(&out, crop ? in.width - 2 : in.width, crop ? in.height - 2 : in.height,
                          (int)bits) != 0) {
         cli_input_error(a.cmd, "out of memory");
@@ -103,6 +135,16 @@ int cmd_grad(int argc, char **argv)
         cli_input_error(a.cmd, "operator failed: %s", ssda_strerror(e));
         goto done;
     }
+    for (y = 0; up > 0 && y < out.height; y++) { /* E' x 2^up: cannot overflow (see above) */
+        uint8_t *row = (uint8_t *)out.pixels + (size_t)y * out.stride;
+        for (x = 0; x < out.width; x++) {
+            if (bits == 16) {
+                ((uint16_t *)(void *)row)[x] = (uint16_t)(((uint16_t *)(void *)row)[x] << up);
+            } else {
+                row[x] = (uint8_t)(row[x] << up);
+            }
+        }
+    }
     if (png_write_gray(a.pos[1], &out, err, sizeof err) != 0) {
         cli_input_error(a.cmd, "%s", err);
         goto done;
@@ -113,8 +155,9 @@ int cmd_grad(int argc, char **argv)
                 sat, gray_image_max(&out), (unsigned)go.shift);
     }
     if (strcmp(a.pos[1], "-") != 0) {
-        printf("wrote %s: %u x %u, %u-bit, E' >> %u%s\n", a.pos[1], out.width, out.height,
-               bits, (unsigned)go.shift, crop ? " (cropped)" : ", 1-pixel border 0");
+        printf("wrote %s: %u x %u, %u-bit, E' %s %u (input maximum %u)%s\n", a.pos[1],
+               out.width, out.height, bits, up ? "x" : ">>", up ? 1u << up : shift, in_max,
+               crop ? " (cropped)" : ", 1-pixel border 0");
     }
     rc = CLI_OK;
 done:

@@ -28,7 +28,8 @@ static const char help[] =
     "  --no-bounds       no successive-elimination bounds (default: bounds on;\n"
     "                    exact either way, bounds skip more work)\n"
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
-    "  --json            print one JSON object instead of text:\n"
+    "  --json            print one JSON object instead of text (stdout; no FILE:\n"
+    "                    redirect it):\n"
     "                    {\"x\",\"y\",\"sad\",\"exact\",\"positions\",\"completed\",\"pixel_ops\",...}\n"
     "  -h, --help        this text\n"
     "\n"
@@ -98,6 +99,13 @@ int cmd_match(int argc, char **argv)
     }
     if (a.bad) {
         return CLI_USAGE;
+    }
+    if (a.npos > 2) {
+        /* often "--json FILE" as track and compare take it */
+        return cli_usage_error(a.cmd, "unexpected argument '%s'%s", a.pos[2],
+                               json ? " (match --json prints to stdout; redirect it: "
+                                      "--json > FILE)"
+                                    : "");
     }
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need SEARCH.png and WINDOW.png");

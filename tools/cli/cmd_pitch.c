@@ -22,15 +22,21 @@ static const char help[] =
     "  --hop-ms MS      time between estimates (default 10)\n"
     "  --frame-ms MS    samples summed per lag, as time (default one period of fmin)\n"
     "  --threshold N    dip threshold on the normalised difference, 0..1 (default 0.3)\n"
-    "  --voicing N      voiced when the dip is below N, 0..1 (default: --threshold)\n"
+    "  --voicing N      voiced when the dip is at or below N, 0..1 (default:\n"
+    "                   --threshold)\n"
     "  --full           no early exit: every lag summed in full (the reference;\n"
     "                   same results, more work)\n"
     "  --csv FILE|-     write time_s,f0_hz,voiced,confidence,center_s rows (f0 0 when\n"
     "                   unvoiced; time_s = centre of the frame, center_s = centre of\n"
-    "                   the samples its chosen lag compared)\n"
+    "                   the samples its chosen lag compared; confidence = 1 - the\n"
+    "                   normalised difference at that lag, 0 when silent: an\n"
+    "                   unvoiced frame can score high when no accepted dip was\n"
+    "                   found (slow breath or hum with no peak after lag 0, a period\n"
+    "                   outside fmin..fmax); select frames by voiced)\n"
     "  --plot OUT.png   draw the f0 track over time, with the waveform\n"
-    "  --ref REF.csv    a reference track (time_s,f0_hz rows after a header): drawn\n"
-    "                   in the plot and scored (GPE, VDE, fine error in cents)\n"
+    "  --ref REF.csv    a reference track (time_s,f0_hz rows, f0 0 = unvoiced; a\n"
+    "                   header line is optional): drawn in the plot and scored\n"
+    "                   (GPE, VDE, fine error in cents)\n"
     "  --quiet          no progress bar\n"
     "  -h, --help       this text\n"
     "\n"
@@ -46,7 +52,7 @@ static void write_csv(FILE *f, const pitch_track_t *tr)
 {
     size_t i;
     fprintf(f, "time_s,f0_hz,voiced,confidence,center_s\n");
-    for (i = 0; i < tr->n; i++) {
+    for (i = 0; i < tr->n && !ferror(f); i++) { /* stop at a closed pipe */
         fprintf(f, "%.6f,%.3f,%d,%.4f,%.6f\n", tr->t_frame[i], tr->f0[i], tr->voiced[i],
                 tr->confidence_q15[i] / 32768.0, tr->t[i]);
     }
@@ -131,6 +137,7 @@ int cmd_pitch(int argc, char **argv)
     if (csv != NULL && plot != NULL && strcmp(csv, "-") == 0 && strcmp(plot, "-") == 0) {
         return cli_usage_error(a.cmd, "--csv and --plot cannot both go to stdout");
     }
+    cli_warn_png_name(a.cmd, "--plot", plot);
     if (wav_read_mono_i16_ex(a.pos[0], &x, &n, &rate, &winfo, err, sizeof err) != 0) {
         return cli_input_error(a.cmd, "%s", err);
     }

@@ -87,6 +87,7 @@ int cmd_track(int argc, char **argv)
         strcmp(o.json_path, "-") == 0) {
         return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
     }
+    cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
     rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
     if (rc != CLI_OK) {
         return rc;

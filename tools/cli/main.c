@@ -1,7 +1,9 @@
 /* main.c - `ssda`: exact SSDA template matching, grid tracking and AMDF pitch
    on PNG and WAV files. Dispatches to one file per subcommand (cmd_*.c). */
+#define _POSIX_C_SOURCE 200809L /* SIGPIPE */
 #include "cli.h"
 
+#include <signal.h>
 #include <string.h>
 
 static const struct {
@@ -32,6 +34,11 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     size_t i;
+    /* A reader that stops early (ssda ... --csv - | head) must not kill the
+       tool before its file outputs are renamed into place: writes to the
+       closed pipe fail with EPIPE instead, which the output code treats as
+       the quiet end of standard output. */
+    signal(SIGPIPE, SIG_IGN);
     if (argc < 2) {
         usage(stderr);
         return CLI_USAGE;

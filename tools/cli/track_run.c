@@ -34,7 +34,8 @@ const char track_opts_help[] =
     "  --mem BYTES       track from block-streamed images within BYTES of memory\n"
     "outputs:\n"
     "  --json FILE|-     write the vectors as JSON (- = stdout)\n"
-    "  --overlay OUT.png draw the vectors over SECOND\n"
+    "  --overlay OUT.png draw the vectors over SECOND (a grid too dense to read is\n"
+    "                    drawn every k-th row and column; stderr says so)\n"
     "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
     "  --quiet           no progress bar\n";
 
@@ -493,9 +494,21 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     double t0;
 
     memset(r, 0, sizeof *r);
+    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
+    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
+        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
+                               "every window is searched outward from its predicted vector)");
+    }
     r->cfg = o->cfg;
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;
+    }
+    if (r->first.width != r->second.width || r->first.height != r->second.height) {
+        /* allowed (the library lays both in one pixel coordinate system), but
+           more often a wrong pair than a deliberate one */
+        fprintf(stderr, "ssda %s: note: the images differ in size (FIRST %u x %u, SECOND "
+                "%u x %u); windows of SECOND are searched at the same coordinates in FIRST\n",
+                cmd, r->first.width, r->first.height, r->second.width, r->second.height);
     }
     maxval = gray_image_max(&r->second);
     if (masked && o->cfg.mask_value > maxval) {
@@ -572,15 +585,30 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     e = ssda_track_grid(&r->cfg, (uint16_t)r->second.width, (uint16_t)r->second.height,
                         &r->grid);
     if (e != SSDA_OK) {
+        /* the sizes as resolved: 0 in the config means the library's default */
         const ssda_track_config_t *c = &r->cfg;
+        uint32_t ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
+        uint32_t wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
+        uint32_t sw = c->search_w ? c->search_w : 2u * ww;
+        uint32_t sh = c->search_h ? c->search_h : 2u * wh;
+        sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
+        sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
         cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
                         "(the search area must be at least the window, the window inside "
                         "the region)",
-                        c->win_w ? c->win_w : 16, c->win_h ? c->win_h : 16, c->search_w,
-                        c->search_h, c->roi_w ? c->roi_w : r->second.width,
+                        ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
                         c->roi_h ? c->roi_h : r->second.height);
         track_result_free(r);
         return CLI_USAGE;
+    }
+    if (r->grid.search_w == r->grid.win_w || r->grid.search_h == r->grid.win_h) {
+        int both = r->grid.search_w == r->grid.win_w && r->grid.search_h == r->grid.win_h;
+        const char *what = both ? "dx and dy" : r->grid.search_w == r->grid.win_w ? "dx" : "dy";
+        fprintf(stderr, "ssda %s: warning: search area %ux%u leaves the %ux%u window no room "
+                "to move: every %s is 0 (vectors range over +-(search - window) / 2; "
+                "e.g. --search %ux%u)\n",
+                cmd, r->grid.search_w, r->grid.search_h, r->grid.win_w, r->grid.win_h, what,
+                2u * r->grid.win_w, 2u * r->grid.win_h);
     }
     if (o->exclude) {
         r->texture_min_count = o->exclude_count != 0
@@ -680,6 +708,10 @@ uint64_t track_brute_ops(const track_result_t *r)
 
 /* ---- outputs ---- */
 
+/* Least distance between drawn windows on the overlay, output px: closer,
+   arrowheads and marks run together. */
+#define OVERLAY_MIN_SPACING 22.0
+
 void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
                       const int32_t (*ref)[2], const char *extra_top)
 {
@@ -716,7 +748,7 @@ void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
         fprintf(f, " %s,\n", extra_top);
     }
     fprintf(f, " \"windows\":[");
-    for (k = 0; k < g->count; k++) {
+    for (k = 0; k < g->count && !ferror(f); k++) { /* stop at a closed pipe */
         const ssda_track_vector_t *v = &r->vec[k];
         fprintf(f, "%s\n  {\"x\":%u,\"y\":%u,\"dx\":%d,\"dy\":%d,\"sad\":%llu,"
                    "\"status\":\"%s\",\"exact\":%s",
@@ -755,7 +787,8 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     const gray_image_t *src = &r->second_orig;
     const ssda_track_grid_t *g = &r->grid;
     char err[512];
-    uint32_t k, x0, y0, x1, y1, y;
+    uint32_t k, x0, y0, x1, y1, y, step, every = 1, off_c, off_r, n = 0;
+    double zstep;
     int rc;
     /* Show the part of SECOND the grid covers, plus the search margin: a
        small --roi is drawn large instead of lost in a reduced whole image. */
@@ -775,31 +808,52 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
                (const uint8_t *)src->pixels + (size_t)y * src->stride + (size_t)x0 * (src->bits / 8u),
                bg.stride);
     }
+    /* A dense grid on a reduced picture is a carpet of arrowheads: draw only
+       every k-th column and row (centred), so drawn windows are at least
+       OVERLAY_MIN_SPACING output px apart. The JSON keeps every window. */
+    step = g->step_x < g->step_y ? g->step_x : g->step_y;
+    zstep = step * draw_vectors_zoom(bg.width, bg.height);
+    while (zstep * every < OVERLAY_MIN_SPACING) {
+        every++;
+    }
+    off_c = ((g->cols - 1u) % every) / 2u;
+    off_r = ((g->rows - 1u) % every) / 2u;
     for (k = 0; k < r->grid.count; k++) {
         const ssda_track_vector_t *v = &r->vec[k];
-        dv[k].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
-        dv[k].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
-        dv[k].dx = v->dx;
-        dv[k].dy = v->dy;
-        dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
+        if ((k % g->cols) % every != off_c || (k / g->cols) % every != off_r) {
+            continue;
+        }
+        dv[n].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
+        dv[n].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
+        dv[n].dx = v->dx;
+        dv[n].dy = v->dy;
+        dv[n].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
                        : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
                        : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
                                                           : DRAW_EDGE;
         if (truth != NULL && v->status == SSDA_TRACK_OK) {
-            dv[k].has_truth = 1;
-            dv[k].tdx = truth[k][0];
-            dv[k].tdy = truth[k][1];
+            dv[n].has_truth = 1;
+            dv[n].tdx = truth[k][0];
+            dv[n].tdy = truth[k][1];
         }
+        n++;
+    }
+    if (every > 1) {
+        fprintf(stderr, "ssda %s: note: the overlay draws every %u%s vector of each grid row "
+                "and column (all %u would be %.0f px apart); --roi X,Y,W,H or a larger "
+                "--step shows more detail, the JSON has every window\n",
+                cmd, every, ordinal_suffix(every), g->count, zstep);
     }
     memset(&dopt, 0, sizeof dopt);
     dopt.title = title;
     dopt.truth_label = truth_label;
     dopt.subtitle = subtitle;
     dopt.arrow_scale = o->arrow_scale;
-    dopt.grid_step = r->grid.step_x < r->grid.step_y ? r->grid.step_x : r->grid.step_y;
+    dopt.grid_step = (double)step * every; /* arrows scale to the drawn spacing */
+    dopt.every = every;
     dopt.have_mask = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
     dopt.mask_value = o->cfg.mask_value;
-    rc = draw_vectors_to(f, name, &bg, dv, r->grid.count, &dopt, NULL, err, sizeof err);
+    rc = draw_vectors_to(f, name, &bg, dv, n, &dopt, NULL, err, sizeof err);
     free(dv);
     gray_image_free(&bg);
     if (rc != 0) {

@@ -201,6 +201,7 @@ static void arrow(cairo_t *cr, double x0, double y0, double x1, double y1, const
     double head = fmin(fmax(3.2 * width, 0.35 * len), 4.5 * width);
     double ux, uy, bx, by, pass;
     if (len < 1.5) { /* no visible motion: a dot */
+        cairo_new_path(cr); /* no line in from a current point (after text) */
         cairo_arc(cr, x0, y0, width * 1.1, 0, 2 * PI);
         cairo_set_source_rgb(cr, 0, 0, 0);
         cairo_set_line_width(cr, 1.5);
@@ -305,29 +306,59 @@ static double auto_arrow_scale(const draw_vector_t *v, size_t n, double step)
     return fmax(1.0, nice_floor(step / p90));
 }
 
-/* The status legend: one swatch and count per status present (vectors
-   always), then the reference arrows if any; wraps at width W. Draws only
-   when draw != 0. Returns the number of lines used. */
-static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t *counts,
-                        size_t truths, double W, double y, int draw)
+/* "st", "nd", "rd" or "th" after n (1st, 22nd, 13th). */
+const char *ordinal_suffix(unsigned n)
 {
+    if (n % 100u >= 11u && n % 100u <= 13u) {
+        return "th";
+    }
+    return n % 10u == 1u ? "st" : n % 10u == 2u ? "nd" : n % 10u == 3u ? "rd" : "th";
+}
+
+/* The status legend: one swatch and count per status present (vectors
+   always), the dots of vectors too short to draw as arrows, then the
+   reference arrows if any; wraps at width W. Draws only when draw != 0.
+   dot_below: motion (px) under which a vector is drawn as a dot, 0 when
+   every dot is a zero motion. Returns
+   the number of lines used. */
+static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t *counts,
+                        size_t dots, double dot_below, size_t truths, double W, double y,
+                        int draw)
+{
+    enum { ITEM_TRUTH = DRAW_STATUS_COUNT, ITEM_DOT, ITEM_COUNT };
+    static const int order[ITEM_COUNT] = {DRAW_OK,   ITEM_DOT,  DRAW_EXCLUDED,
+                                          DRAW_MASKED, DRAW_EDGE, ITEM_TRUTH};
     static const char *names[DRAW_STATUS_COUNT] = {"vector", "excluded (all dark or all bright)",
                                                     "masked (fill value)",
                                                     "edge (area leaves image)"};
     char buf[256];
     double x = 12.0;
     int lines = 1;
-    size_t i;
-    for (i = 0; i <= DRAW_STATUS_COUNT; i++) {
+    size_t k;
+    for (k = 0; k < ITEM_COUNT; k++) {
+        int i = order[k];
         double w;
-        if (i == DRAW_STATUS_COUNT) { /* the reference arrows */
+        if (i == ITEM_TRUTH) { /* the reference arrows */
             if (truths == 0) {
-                break;
+                continue;
             }
             snprintf(buf, sizeof buf, "%s",
                      o->truth_label != NULL ? o->truth_label : "known motion (truth)");
+        } else if (i == ITEM_DOT) { /* yellow dots are vectors, not another status */
+            if (dots == 0) {
+                continue;
+            }
+            if (dot_below <= 0.0) {
+                snprintf(buf, sizeof buf, "no motion: %zu", dots);
+            } else {
+                snprintf(buf, sizeof buf, "motion under %.2g px (too short to draw): %zu",
+                         dot_below, dots);
+            }
         } else if (counts[i] == 0 && i != DRAW_OK) {
             continue;
+        } else if (i == DRAW_OK && o->every > 1) {
+            snprintf(buf, sizeof buf, "vector (every %u%s of grid rows and columns drawn): %zu",
+                     o->every, ordinal_suffix(o->every), counts[i]);
         } else {
             snprintf(buf, sizeof buf, "%s: %zu", names[i], counts[i]);
         }
@@ -338,12 +369,14 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
             lines++;
         }
         if (draw) {
-            if (i == DRAW_STATUS_COUNT) {
+            if (i == ITEM_TRUTH) {
                 arrow(cr, x, y - 4, x + 26, y - 4, truth_rgb, 1.6);
+            } else if (i == ITEM_DOT) {
+                arrow(cr, x + 12, y - 4, x + 12, y - 4, status_rgb[DRAW_OK], 2.5);
             } else if (i == DRAW_OK) {
                 arrow(cr, x, y - 4, x + 26, y - 4, status_rgb[DRAW_OK], 2.5);
             } else {
-                status_mark(cr, x + 12, y - 4, (int)i, 5.0);
+                status_mark(cr, x + 12, y - 4, i, 5.0);
             }
             cairo_set_source_rgb(cr, 1, 1, 1);
             text_at(cr, x + 34, y, 13, 0, buf);
@@ -353,6 +386,18 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
     return lines;
 }
 
+double draw_vectors_zoom(uint32_t w, uint32_t h)
+{
+    double m = w > h ? w : h, z;
+    /* Enlarge small images (integer zoom from 2x keeps pixels crisp), reduce
+       huge ones, so the longer side shows at about 900..1600 px. */
+    z = m < 900.0 ? 960.0 / m : m > 1600.0 ? 1600.0 / m : 1.0;
+    if (z >= 2.0) {
+        z = floor(z);
+    }
+    return z > 12.0 ? 12.0 : z;
+}
+
 int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const draw_vector_t *v,
                     size_t n, const draw_vectors_opts_t *opts, double *scale_used, char *err,
                     size_t errlen)
@@ -360,9 +405,9 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     draw_vectors_opts_t o;
     cairo_surface_t *img_s, *out;
     cairo_t *cr;
-    double m = bg->width > bg->height ? bg->width : bg->height;
     double z, scale, top, bottom, W, H, ox, lw, ref, y;
-    size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0;
+    size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0, dots = 0, moving_dots = 0;
+    double dot_below;
     char buf[256];
     int rc;
 
@@ -371,25 +416,24 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     } else {
         memset(&o, 0, sizeof o);
     }
-    /* Enlarge small images (integer zoom from 2x keeps pixels crisp), reduce
-       huge ones, so the longer side shows at about 900..1600 px. */
-    z = m < 900.0 ? 960.0 / m : m > 1600.0 ? 1600.0 / m : 1.0;
-    if (z >= 2.0) {
-        z = floor(z);
-    }
-    if (z > 12.0) {
-        z = 12.0;
-    }
+    z = draw_vectors_zoom(bg->width, bg->height);
     scale = o.arrow_scale > 0.0 ? o.arrow_scale : auto_arrow_scale(v, n, o.grid_step);
     if (scale_used != NULL) {
         *scale_used = scale;
     }
     top = (o.title != NULL ? 26.0 : 0.0) + (o.subtitle != NULL ? 20.0 : 0.0) + 8.0;
     W = fmax(ceil(bg->width * z), 720.0);
+    dot_below = 1.5 / (scale * z); /* arrow() draws a dot under 1.5 output px */
     for (i = 0; i < n; i++) {
         int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
         counts[st]++;
         truths += v[i].has_truth != 0;
+        dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below;
+        moving_dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below &&
+                       (v[i].dx != 0.0 || v[i].dy != 0.0);
+    }
+    if (moving_dots == 0) { /* the legend then says "no motion" */
+        dot_below = 0.0;
     }
     { /* wide enough for the title lines; tall enough for the legend */
         cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
@@ -400,7 +444,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
         if (o.subtitle != NULL) {
             W = fmax(W, ceil(text_width(m_cr, 13, 0, o.subtitle)) + 20.0);
         }
-        bottom = 48.0 + 26.0 * legend_items(m_cr, &o, counts, truths, W, 0.0, 0);
+        bottom = 48.0 + 26.0 * legend_items(m_cr, &o, counts, dots, dot_below, truths, W, 0.0, 0);
         cairo_destroy(m_cr);
         cairo_surface_destroy(scratch);
     }
@@ -454,7 +498,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
 
     /* Legend, then the scale arrow on the last line. */
     y = H - bottom + 24.0;
-    y += 26.0 * (legend_items(cr, &o, counts, truths, W, y, 1) - 1);
+    y += 26.0 * (legend_items(cr, &o, counts, dots, dot_below, truths, W, y, 1) - 1);
     /* Scale: a reference arrow of a round motion drawn 60..150 px long. */
     ref = nice_floor(120.0 / (scale * z));
     y += 28.0;
@@ -521,6 +565,18 @@ static double frame_spacing(const draw_track_t *t)
     return (t->t[t->n - 1] - t->t[0]) / (double)(t->n - 1);
 }
 
+/* The mark of an estimate beyond the y range: a triangle with its base at
+   y pointing up (above the range) or down (below it). */
+static void pitch_triangle(cairo_t *cr, double x, double y, int up)
+{
+    double tip = up ? y - 6 : y + 6;
+    cairo_move_to(cr, x, tip);
+    cairo_line_to(cr, x - 3.5, y);
+    cairo_line_to(cr, x + 3.5, y);
+    cairo_close_path(cr);
+    cairo_fill(cr);
+}
+
 int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *err,
                   size_t errlen)
 {
@@ -530,7 +586,7 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
     double tmax = 0.0, f_lo = o->fmin, f_hi = o->fmax, step, v;
     cairo_surface_t *s;
     cairo_t *cr;
-    size_t i;
+    size_t i, beyond = 0;
     int pass, rc;
     char buf[64];
 
@@ -714,17 +770,18 @@ int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *
         if (f <= 0.0 || (f >= f_lo && f <= f_hi)) {
             continue;
         }
-        if (f > f_hi) {
-            cairo_move_to(cr, x, T - 7);
-            cairo_line_to(cr, x - 3.5, T - 1);
-            cairo_line_to(cr, x + 3.5, T - 1);
-        } else {
-            cairo_move_to(cr, x, T + PH + 7);
-            cairo_line_to(cr, x - 3.5, T + PH + 1);
-            cairo_line_to(cr, x + 3.5, T + PH + 1);
-        }
-        cairo_close_path(cr);
-        cairo_fill(cr);
+        beyond++;
+        pitch_triangle(cr, x, f > f_hi ? T - 1 : T + PH + 1, f > f_hi);
+    }
+    if (beyond > 0) { /* their legend: bottom right, clear of the data and the axis title */
+        snprintf(buf, sizeof buf, "f0 beyond the axis range: %zu frame%s", beyond,
+                 beyond == 1 ? "" : "s");
+        v = L + PW - text_width(cr, 12, 0, buf);
+        cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
+        pitch_triangle(cr, v - 24, WT + WH + 38 - 10, 1);
+        pitch_triangle(cr, v - 12, WT + WH + 38 - 10, 0);
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        text_at(cr, v, WT + WH + 38, 12, 0, buf);
     }
 
     /* Frame and legend. */

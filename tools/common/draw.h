@@ -42,7 +42,15 @@ typedef struct {
                               (NULL = "known motion (truth)") */
     int have_mask;         /* 1: pixels equal to mask_value are ignored when */
     uint32_t mask_value;   /*    stretching the background's contrast */
+    unsigned every;        /* > 1: the caller passes only every k-th grid column
+                              and row (a dense grid); the legend says so */
 } draw_vectors_opts_t;
+
+/* The zoom draw_vectors_to uses for a w x h background (output px per
+   image px), so a caller can thin a grid too dense to read. */
+double draw_vectors_zoom(uint32_t w, uint32_t h);
+/* "st", "nd", "rd" or "th": the ordinal suffix of n (for "every 3rd"). */
+const char *ordinal_suffix(unsigned n);
 
 /*
  * Draw the n vectors over bg (contrast-stretched between its 0.5 % and

@@ -1,6 +1,7 @@
 /* wav_io.c - mono int16 audio reading through libsndfile. */
 #include "wav_io.h"
 
+#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
@@ -54,6 +55,32 @@ static int16_t to_i16(double v, size_t *clipped)
     return (int16_t)s;
 }
 
+/* libsndfile words a missing file "System error : No such file or directory."
+   and an empty one "Format not recognised.": say what is wrong with the file
+   itself first, as the PNG reader does. Returns 0 when it has content. */
+static int probe_file(const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    int c;
+    if (f == NULL) {
+        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    errno = 0;
+    c = fgetc(f);
+    if (c == EOF) {
+        if (ferror(f)) { /* e.g. a directory */
+            set_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+        } else {
+            set_err(err, errlen, "'%s' is empty, not a sound file", path);
+        }
+        fclose(f);
+        return -1;
+    }
+    fclose(f);
+    return 0;
+}
+
 int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
                          uint32_t *rate, wav_info_t *info, char *err, size_t errlen)
 {
@@ -70,10 +97,20 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
         set_err(err, errlen, "wav_read_mono_i16: NULL argument");
         return -1;
     }
+    if (probe_file(path, err, errlen) != 0) {
+        return -1;
+    }
     memset(&sfi, 0, sizeof sfi);
     sf = sf_open(path, SFM_READ, &sfi);
-    if (sf == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, sf_strerror(NULL));
+    if (sf == NULL) { /* readable and not empty: the content is the problem */
+        char why[256];
+        size_t k;
+        snprintf(why, sizeof why, "%s", sf_strerror(NULL));
+        k = strlen(why);
+        while (k > 0 && (why[k - 1] == '.' || why[k - 1] == ' ' || why[k - 1] == '\n')) {
+            why[--k] = '\0';
+        }
+        set_err(err, errlen, "'%s' is not a sound file libsndfile reads (%s)", path, why);
         return -1;
     }
     if (sfi.channels < 1 || sfi.samplerate < 1) {

@@ -385,13 +385,60 @@ static int check_png_size(int argc, char **argv)
     return rc;
 }
 
+/* png-max FILE MIN: the largest pixel value is at least MIN. */
+static int check_png_max(int argc, char **argv)
+{
+    gray_image_t a;
+    uint32_t x, y, m = 0;
+    int rc = 0;
+    if (argc != 2) return 2;
+    if (load_png(argv[0], &a) != 0) return 1;
+    for (y = 0; y < a.height; y++) {
+        for (x = 0; x < a.width; x++) {
+            m = gray_image_get(&a, x, y) > m ? gray_image_get(&a, x, y) : m;
+        }
+    }
+    if (m < (uint32_t)atol(argv[1])) {
+        rc = fail("%s: largest value %u, expected at least %s", argv[0], m, argv[1]);
+    }
+    gray_image_free(&a);
+    return rc;
+}
+
+/* png-count FILE LO HI X0 Y0 X1 Y1: print how many pixels of the rectangle
+   [X0, X1) x [Y0, Y1) (clipped) have a gray value in LO..HI (RGB is read as
+   luma: a colour mark in a legend is counted by its gray level). */
+static int check_png_count(int argc, char **argv)
+{
+    gray_image_t a;
+    uint32_t x, y, lo, hi, x0, y0, x1, y1;
+    unsigned long n = 0;
+    if (argc != 7) return 2;
+    lo = (uint32_t)atol(argv[1]);
+    hi = (uint32_t)atol(argv[2]);
+    x0 = (uint32_t)atol(argv[3]);
+    y0 = (uint32_t)atol(argv[4]);
+    x1 = (uint32_t)atol(argv[5]);
+    y1 = (uint32_t)atol(argv[6]);
+    if (load_png(argv[0], &a) != 0) return 1;
+    for (y = y0; y < y1 && y < a.height; y++) {
+        for (x = x0; x < x1 && x < a.width; x++) {
+            uint32_t v = gray_image_get(&a, x, y);
+            n += v >= lo && v <= hi;
+        }
+    }
+    printf("%lu\n", n);
+    gray_image_free(&a);
+    return 0;
+}
+
 static int check_grad(int argc, char **argv)
 {
     gray_image_t in, out;
-    uint32_t x, y, shift, maxv;
-    int rc = 0;
+    uint32_t x, y, maxv;
+    int rc = 0, shift;
     if (argc != 3) return 2;
-    shift = (uint32_t)atoi(argv[2]);
+    shift = atoi(argv[2]); /* negative: E' << -shift */
     if (load_png(argv[0], &in) != 0 || load_png(argv[1], &out) != 0) return 1;
     maxv = gray_image_max(&out);
     if (in.width != out.width || in.height != out.height) {
@@ -406,7 +453,7 @@ static int check_grad(int argc, char **argv)
                 long g = P(-1, 1), h = P(0, 1), i = P(1, 1);
 #undef P
                 want = labs(a + b + c - g - h - i) + labs(a + d + g - c - f - i);
-                want >>= shift;
+                want = shift >= 0 ? want >> shift : want << -shift;
                 if (want > (long)maxv) want = (long)maxv;
             }
             if ((long)gray_image_get(&out, x, y) != want) {
@@ -431,6 +478,8 @@ int main(int argc, char **argv)
         else if (strcmp(argv[1], "png-same") == 0) rc = check_png_same(argc - 2, argv + 2);
         else if (strcmp(argv[1], "png-size") == 0) rc = check_png_size(argc - 2, argv + 2);
         else if (strcmp(argv[1], "grad-same") == 0) rc = check_grad(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "png-max") == 0) rc = check_png_max(argc - 2, argv + 2);
+        else if (strcmp(argv[1], "png-count") == 0) rc = check_png_count(argc - 2, argv + 2);
     }
     if (rc == 2) fprintf(stderr, "check_outputs: bad command line\n");
     return rc;

@@ -56,12 +56,15 @@ usage)
   run 2 match a.png b.png --scan predict          # needs --predict
   run 2 match a.png b.png --predict 3
   run 2 match a.png b.png --json=yes              # a flag takes no value
+  run 2 match a.png b.png --json x.json && stderr_has "unexpected argument 'x.json' (match --json prints to stdout"
   run 2 track a.png b.png --window 0
   run 2 track a.png b.png --window 16x
   run 2 track a.png b.png --roi 1,2,3
   run 2 track a.png b.png --predict sideways
   run 2 track a.png b.png --mem lots
   run 2 track a.png b.png --json                  # needs a value
+  run 2 track a.png b.png --scan coarse && stderr_has "--scan coarse needs --predict none"
+  run 2 compare a.png b.png --scan coarse --predict left && stderr_has "--scan coarse needs --predict none"
   run 2 pitch a.wav --fmin 300 --fmax 200
   run 2 pitch a.wav --hop-ms -1
   run 2 grad a.png b.png --bits 12
@@ -130,6 +133,14 @@ track)
   chk track-json t.json 3 -2 1.0 --count ok 36 --count edge 28
   chk png-size o.png 896 1024
   grep -q "median dx=+3 dy=-2" out.txt || fail "track summary"
+  grep -q "every" err.txt && fail "a sparse grid's overlay was thinned: $(cat err.txt)"
+  # a grid too dense for the picture (8 px steps at 2x zoom = 16 output px):
+  # every 2nd vector of each row and column is drawn, said on stderr; the JSON has all
+  "$gen" texture wa.png --size 400x96 --seed 3
+  "$gen" texture wb.png --size 400x96 --seed 3 --shift 3,-2
+  run 0 track wa.png wb.png --step 8 --json t.json --overlay ow.png --quiet &&
+    stderr_has "overlay draws every 2nd vector" && chk png-size ow.png 800 320 &&
+    chk track-json t.json 3 -2 1.0 && grep -q '"windows":539,' t.json || fail "dense grid JSON"
   for opts in "--threshold none" "--predict none" "--predict left" "--bounds" "--no-bounds" "--order spread" \
               "--threshold auto-ramp" "--grad" \
               "--window 8 --search 24 --step 8" "--window 12x10 --search 30x20 --step 10x9" \
@@ -140,6 +151,16 @@ track)
   # coarse-to-fine may miss the minimum (the seed's caveat): most windows, not all
   run 0 track a.png b.png --predict none --scan coarse --json t.json && chk track-json t.json 3 -2 0.5
   run 0 track a.png b.png --json - && cp out.txt t2.json && chk track-json t2.json 3 -2 1.0
+  # zero motion is drawn as yellow dots, which the legend shows too: at one
+  # arrow scale, a still pair's legend band (below the 896 px image) holds more
+  # yellow (luma ~204) than a moving pair's, by the dot swatch
+  run 0 track a.png a.png --overlay still.png --arrow-scale 4 && run 0 track a.png b.png --overlay moving.png --arrow-scale 4 &&
+    ys=$("$check" png-count still.png 200 208 0 950 896 1024) && ym=$("$check" png-count moving.png 200 208 0 950 896 1024) &&
+    [ "$ys" -gt $((ym + 10)) ] || fail "no zero-motion dot in the legend ($ys vs $ym yellow pixels)"
+  # a picture named other than .png: written as PNG all the same, with a warning
+  run 0 track a.png b.png --overlay o.jpg && stderr_has "--overlay 'o.jpg' does not end in .png" &&
+    chk png-size o.jpg 896 1024
+  run 0 track a.png b.png --overlay O.PNG && grep -q "warning" err.txt && fail "warned about O.PNG"
   # --roi and --step together select the grid: 3 x 2 windows, all inside
   run 0 track a.png b.png --roi 40,40,48,40 --step 16x24 --json t.json &&
     chk track-json t.json 3 -2 1.0 --count ok 6
@@ -161,6 +182,15 @@ track)
   run 2 track a.png b.png --mask-value 4095        # beyond 8-bit samples
   run 2 track a.png b.png --roi 100,100,64,64      # outside the image
   run 2 track a.png b.png --window 40 --search 32  # area smaller than window
+  run 2 track a.png b.png --window 500 && stderr_has "window 500x500, search 1000x1000"  # the default search, resolved
+  # a search area equal to the window cannot move: warned (every vector is 0)
+  run 0 track a.png b.png --window 16 --search 16 && stderr_has "no room to move: every dx and dy is 0"
+  run 0 track a.png b.png --search 32x16 && stderr_has "every dy is 0"
+  run 0 track a.png b.png && grep -qE "no room|differ in size" err.txt && fail "warning without cause: $(cat err.txt)"
+  # images of different sizes share one coordinate system: accepted with a note
+  "$gen" texture bs.png --size 100x90 --seed 3 --shift 3,-2
+  run 0 track a.png bs.png --json t.json && stderr_has "images differ in size (FIRST 128 x 128, SECOND 100 x 90)" &&
+    chk track-json t.json 3 -2 1.0
   # an area larger than FIRST: every window is EDGE, nothing is searched, and
   # no bounds buffer for it (17 GB for 65535 x 65535 was allocated; found by
   # fuzz_cli). Checked under a 4 GB address-space limit unless ASan (whose
@@ -191,6 +221,8 @@ compare)
   run 0 compare a.png b.png --json c.json --overlay co.png --quiet && chk compare-json c.json 100
   chk track-json c.json -3 4 1.0
   grep -q "within 1 px: " out.txt || fail "compare summary"
+  grep -q "^wrote:   c.json" out.txt && grep -q "^wrote:   co.png" out.txt || fail "compare wrote: lines"
+  grep -q '"reference":"ncc"' c.json || fail "compare JSON reference"
   run 0 compare a.png b.png --threshold auto-ramp:0.5 --window 8 --search 24 --step 8 --json c.json &&
     chk compare-json c.json 0
   ;;
@@ -205,6 +237,14 @@ grad)
   run 0 grad g8.png o.png --shift 0 && chk grad-same g8.png o.png 0   # saturates at 255
   stderr_has "saturated"
   run 0 grad g8.png c.png --crop && chk png-size c.png 38 28 8
+  # 12-bit counts in a 16-bit PNG (max 3511 here): the default scale comes from
+  # the data's maximum (4 x 3511 x 4 fits 16 bits), not from the depth (E' >> 2,
+  # 16 times darker, used at most 1/16 of the range: a near-black picture)
+  "$gen" texture g12.png --size 40x30 --seed 8 --kind gray16 --max 4095
+  run 0 grad g12.png o.png && chk grad-same g12.png o.png -2 && chk png-max o.png 16384 &&
+    grep -qF "E' x 4 (input maximum 3511)" out.txt || fail "12-bit grad scaling: $(cat out.txt)"
+  run 0 grad g12.png o.png --bits 8 && chk grad-same g12.png o.png 6 && chk png-max o.png 64
+  run 0 grad g12.png o.png --shift 2 && chk grad-same g12.png o.png 2   # explicit shift kept
   "$gen" texture tiny.png --size 2x9 --seed 1
   run 1 grad tiny.png x.png && absent x.png
   ;;
@@ -215,7 +255,29 @@ pitch)
   run 0 pitch v.wav --csv p.csv --plot p.png --quiet &&
     chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2 --silent-before 0.25 --tol 0.01
   grep -q "median 200" out.txt || fail "pitch summary: $(cat out.txt)"
+  # frames beyond the plot's f0 range are marked by triangles, named in a legend
+  # at the bottom right (nothing is drawn there otherwise)
+  "$gen" wav jump.wav --f0 200 --secs 2 --silence 0.3 --jump 500:0.06
+  run 0 pitch jump.wav --plot pj.png && n=$("$check" png-count pj.png 0 249 700 515 1100 560) &&
+    [ "$n" -gt 100 ] || fail "no legend for the out-of-range triangles ($n)"
+  n=$("$check" png-count p.png 0 249 700 515 1100 560) && [ "$n" = 0 ] || fail "out-of-range legend without such frames"
+  run 0 pitch v.wav --plot p.jpeg && stderr_has "--plot 'p.jpeg' does not end in .png" && chk png-size p.jpeg 1100 560
   run 0 pitch v.wav --csv - && cp out.txt p2.csv && chk pitch-csv p2.csv --f0 200 --voiced 0.4:1.2
+  # a reader that stops early (| head) closes stdout: a quiet end (exit 0, no
+  # message, no SIGPIPE death), and the file outputs are complete. 1-sample
+  # hops make the CSV (~700 KB) far larger than the pipe's buffer.
+  "$ssda" pitch v.wav --hop-ms 0.0625 --plot ph.png --csv - --quiet 2>err.txt | head -1 >head.txt
+  st=${PIPESTATUS[0]}
+  [ "$st" = 0 ] || fail "pitch --csv - | head -1 exited $st: $(cat err.txt)"
+  grep -q "^ssda" err.txt && fail "pitch --csv - | head -1 complained: $(cat err.txt)"   # (LSan may report its suppressions)
+  grep -q "^time_s,f0_hz" head.txt || fail "pitch --csv - | head -1: no header"
+  chk png-size ph.png 1100 560
+  "$gen" texture big1.png --size 640x480 --seed 3
+  "$gen" texture big2.png --size 640x480 --seed 3 --shift 1,1
+  "$ssda" track big1.png big2.png --step 4 --json - --overlay th.png --quiet 2>err.txt | head -1 >/dev/null
+  st=${PIPESTATUS[0]}
+  [ "$st" = 0 ] || fail "track --json - | head -1 exited $st: $(cat err.txt)"
+  chk png-size th.png 960 848
   run 0 pitch v.wav --full --csv pf.csv && cmp -s <(cut -d, -f1-3 p.csv) <(cut -d, -f1-3 pf.csv) ||
     fail "early exit changed the track"
   run 0 pitch v.wav --hop-ms 5 --csv p.csv && chk pitch-csv p.csv --f0 200 --voiced 0.4:1.2
@@ -224,6 +286,9 @@ pitch)
   run 0 pitch g.wav --csv g.csv && chk pitch-csv g.csv --f0 150:300 --glide-secs 0.3:1.3 --voiced 0.4:1.2 --tol 0.03
   awk 'BEGIN { print "time_s,f0_hz"; for (t = 0; t < 1.3; t += 0.005) printf "%.3f,%.3f\n", t, (t < 0.3 ? 0 : 150 + 150 * (t - 0.3)) }' >ref.csv
   run 0 pitch g.wav --ref ref.csv --plot gp.png && grep -q "GPE 0.00 %" out.txt || fail "reference score: $(cat out.txt)"
+  # the header line is optional (the shared reference CSVs have none)
+  tail -n +2 ref.csv >ref_nohdr.csv
+  run 0 pitch g.wav --ref ref_nohdr.csv && grep -q "GPE 0.00 %" out.txt || fail "headerless reference: $(cat out.txt)"
   # 96 kHz 24-bit: analysed at 48 kHz
   "$gen" wav h.wav --f0 440 --rate 96000 --secs 0.5 --format pcm24
   run 0 pitch h.wav --csv h.csv && chk pitch-csv h.csv --f0 440 --voiced 0.1:0.4
@@ -252,10 +317,25 @@ errors)
     "$gen" bad "$k" "bad_$k.wav"
     run 1 pitch "bad_$k.wav" --csv p.csv --plot p.png && stderr_has "bad_$k.wav" && absent p.csv p.png
   done
-  run 1 pitch missing.wav --csv p.csv && absent p.csv
+  run 1 pitch missing.wav --csv p.csv && absent p.csv &&
+    stderr_has "cannot open 'missing.wav': No such file or directory"
+  grep -q "System error" err.txt && fail "libsndfile's wording: $(cat err.txt)"
+  run 1 pitch bad_wav-empty.wav && stderr_has "'bad_wav-empty.wav' is empty, not a sound file"
+  run 1 pitch bad_wav-text.wav && stderr_has "'bad_wav-text.wav' is not a sound file libsndfile reads"
+  run 1 pitch . && stderr_has "cannot read '.'"
   # an output in a missing folder: exit 1, and the other output is not written either
   "$gen" texture b.png --size 64x64 --seed 1 --shift 1,1
   run 1 track good.png b.png --json t.json --overlay no/such/dir/o.png && absent t.json
+  # output modes: a new file gets what fopen would give (0666 minus the umask,
+  # not mkstemp's 0600); a replaced file keeps its own mode
+  (umask 022 && "$ssda" track good.png b.png --json m.json --overlay m.png >/dev/null) &&
+    [ "$(stat -c %a m.json)" = 644 ] && [ "$(stat -c %a m.png)" = 644 ] ||
+    fail "new output mode $(stat -c %a m.json m.png)"
+  (umask 027 && "$ssda" grad good.png g.png >/dev/null) && [ "$(stat -c %a g.png)" = 640 ] ||
+    fail "grad output mode under umask 027: $(stat -c %a g.png)"
+  chmod 604 m.json
+  (umask 022 && "$ssda" track good.png b.png --json m.json >/dev/null) &&
+    [ "$(stat -c %a m.json)" = 604 ] || fail "replaced output mode $(stat -c %a m.json)"
   # a failed run leaves an existing output untouched
   echo old >keep.json
   run 1 track good.png bad_truncated.png --json keep.json

@@ -14,8 +14,9 @@
  *       conversion must give, computed here independently.
  *   crop IN.png OUT.png X,Y,W,H: a gray8/16 crop.
  *   wav OUT.wav [--f0 HZ | --glide HZ0:HZ1] [--rate R] [--secs S] [--silence S]
- *       [--channels C] [--format pcm16|pcm24|float]: a voiced harmonic signal;
- *       with --silence S, that many seconds of silence first.
+ *       [--channels C] [--format pcm16|pcm24|float] [--jump HZ:S]: a voiced
+ *       harmonic signal; with --silence S, that many seconds of silence first;
+ *       with --jump, its last S seconds at HZ (frames off the plot's range).
  *   bad KIND OUT: malformed inputs: empty, text, truncated (a PNG cut inside
  *       its data), crc (IDAT checksum wrong), huge (IHDR 70000 x 8),
  *       toomuch (IHDR 40000 x 40000 16-bit RGBA), wav-empty, wav-text,
@@ -391,6 +392,7 @@ static int cmd_wav(int argc, char **argv)
 {
     const char *out = NULL, *format = "pcm16";
     double f0a = 200.0, f0b = 200.0, secs = 1.0, silence = 0.0, phase = 0.0;
+    double jf = 0.0, jsecs = 0.0; /* --jump F:SECS: the last SECS at f0 F (an outlier) */
     int rate = 16000, channels = 1, i, c;
     SF_INFO info;
     SNDFILE *sf;
@@ -401,6 +403,8 @@ static int cmd_wav(int argc, char **argv)
             f0a = f0b = atof(argv[++i]);
         } else if (strcmp(argv[i], "--glide") == 0 && i + 1 < argc) {
             if (sscanf(argv[++i], "%lf:%lf", &f0a, &f0b) != 2) die("bad --glide", argv[i]);
+        } else if (strcmp(argv[i], "--jump") == 0 && i + 1 < argc) {
+            if (sscanf(argv[++i], "%lf:%lf", &jf, &jsecs) != 2) die("bad --jump", argv[i]);
         } else if (strcmp(argv[i], "--rate") == 0 && i + 1 < argc) {
             rate = atoi(argv[++i]);
         } else if (strcmp(argv[i], "--secs") == 0 && i + 1 < argc) {
@@ -430,7 +434,7 @@ static int cmd_wav(int argc, char **argv)
         double t = (double)k / rate - silence, f, v = 0.0;
         int hmn;
         if (t < 0) continue;
-        f = f0a + (f0b - f0a) * t / secs;
+        f = t >= secs - jsecs ? jf : f0a + (f0b - f0a) * t / secs;
         phase += 2 * PI * f / rate;
         for (hmn = 1; hmn <= 6; hmn++) { /* a voiced source: harmonics falling 1/h */
             v += sin(hmn * phase) / hmn;
