@@ -134,7 +134,7 @@ static int parse_bytes(const char *s, uint64_t *out)
 int track_opts_take(cli_args_t *a, track_opts_t *o)
 {
     const char *v;
-    uint32_t u;
+    uint32_t u = 0; /* read below only after a parsed value */
     if (cli_opt(a, "--window", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.win_w, &o->cfg.win_h) != 0) {
             cli_usage_error(a->cmd, "bad --window '%s' (N or WxH, 1..65535)", v);
@@ -421,7 +421,7 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
 {
     ssda_source_t sf, ss;
     mem_device_t df, ds;
-    size_t af, as, need;
+    size_t af, as, need, whole;
     void *arena_f = NULL, *arena_s = NULL;
     uint8_t format = r->first.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
     int e;
@@ -430,6 +430,12 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
                                "area and one row of a window need",
                                (unsigned long long)o->mem, need);
     }
+    /* A plate never needs more than its whole image: --mem 10G on a small
+       pair allocates what the images need, not 10 GB. */
+    whole = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, r->first.width, r->first.height, format, 1, 0);
+    af = af < whole ? af : whole;
+    whole = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, r->second.width, r->second.height, format, 1, 0);
+    as = as < whole ? as : whole;
     arena_f = malloc(af);
     arena_s = malloc(as);
     if (arena_f == NULL || arena_s == NULL) {

@@ -213,6 +213,16 @@ track)
     chk track-json t.json 1 2 1.0 --count ok 18 --count masked 18
   run 0 track a.png b.png --mem 4K && grep -q "^memory: " out.txt || fail "--mem summary"
   run 2 track a.png b.png --mem 47                  # below one row of area + window
+  # a plate is never larger than its image: --mem 10G on 128 x 128 images
+  # (8-bit: FIRST's plate at most 16384 bytes) allocates what they need (it
+  # asked for 10 GB for FIRST's plate),
+  # under the same 4 GB limit as above
+  if (ulimit -v "$limit" && "$ssda" track a.png b.png --mem 10G --json t.json >out.txt 2>err.txt); then
+    chk track-json t.json 3 -2 1.0 --count ok 36 && grep -q '"plate_bytes_first":16384,' t.json ||
+      fail "--mem 10G: plates not capped at the images: $(grep -o '"plate_bytes[^,]*' t.json)"
+  else
+    fail "--mem 10G failed: $(cat err.txt)"
+  fi
   ;;
 
 compare)
