@@ -94,7 +94,11 @@ int ssda_grad(const ssda_view_t *src, const ssda_grad_out_t *out, uint32_t *satu
         (obpp == 2u && (((uintptr_t)out->data) & 1u) != 0u)) {
         return SSDA_ERR_STRIDE;
     }
-    if (out->size < SSDA_GRAD_SIZE_STRIDED(w, h, ostride, obpp)) {
+    /* SSDA_GRAD_SIZE_STRIDED in 64 bits: in a 32-bit size_t a large stride
+       would wrap it (h = 5, stride 2^31: 2^32 + 3 bytes read as 3).
+       (h - 3) * stride < 2^16 * 2^32; the total < 2^49. */
+    if ((uint64_t)out->size <
+        ((uint64_t)h - 3u) * ostride + ((uint64_t)w - 2u) * obpp) {
         return SSDA_ERR_BUFFER;
     }
     u16 = src->format == (uint8_t)SSDA_PIX_U16;

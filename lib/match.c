@@ -64,7 +64,15 @@ int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
         if (cfg->work == NULL) {
             return SSDA_ERR_NULL;
         }
-        if (cfg->work_size < SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h) ||
+        /* The macro's size in 64 bits: in a 32-bit size_t it wraps for
+           areas near 65535 x 65535 (over 4 GB of work, e.g. 32783 x 32768
+           with a 16 x 16 window gives 128 bytes), and a wrapped size would
+           let the bounds tables run past the buffer.
+           (area_w - win_w + 1) * area_h < 2^32; the total < 2^35. */
+        const uint64_t need =
+            ((((uint64_t)area_w - win_w + 1u) * area_h) + 2u * (uint64_t)win_h) *
+            sizeof(uint32_t);
+        if ((uint64_t)cfg->work_size < need ||
             (((uintptr_t)cfg->work) & (sizeof(uint32_t) - 1u)) != 0u) {
             return SSDA_ERR_BUFFER;
         }

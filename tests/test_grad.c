@@ -240,6 +240,10 @@ static void test_bad_arguments_write_nothing(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_grad(&v, &o, &sat));
     o = out; o.size = SSDA_GRAD_SIZE(W, H, SSDA_PIX_U16) - 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_grad(&v, &o, &sat));
+    /* a stride of 2^31: (H - 3) rows of it pass 2^32 bytes, which a 32-bit
+       size_t would wrap to a few bytes (checked in 64 bits; nothing written) */
+    o = out; o.stride = 0x80000000u;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_grad(&v, &o, &sat));
     o = out; o.stride = OSTRIDE * 2u; o.size = SSDA_GRAD_SIZE_STRIDED(W, H, OSTRIDE * 2u, 2u) - 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_grad(&v, &o, &sat));
     TEST_ASSERT_EQUAL_MEMORY(before, g_out16, sizeof before);

@@ -348,6 +348,20 @@ static void test_invalid_arguments_write_nothing(void)
     cfg.work_size = sizeof g_work - 4u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_match(&g_av, &g_wv, &cfg, &res));
     TEST_ASSERT_EQUAL_MEMORY(&before, &res, sizeof res);
+    /* an area whose work passes 4 GB: 32783 x 32768 with a 16 x 16 window
+       needs (2^30 + 32) * 4 bytes, which a 32-bit size_t wraps to 128; the
+       search is refused before any pixel is read (the view's memory is
+       never touched, so a small buffer stands in for it) */
+    {
+        ssda_view_t huge, w16;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&huge, g_work, 32783u, 32768u, 32783u,
+                                                      SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&w16, g_work, 16u, 16u, 16u, SSDA_PIX_U8));
+        cfg.work = g_work;
+        cfg.work_size = sizeof g_work;
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_match(&huge, &w16, &cfg, &res));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &res, sizeof res);
+    }
     /* exactly the macro's size is enough */
     cfg.work = g_work;
     cfg.work_size = SSDA_MATCH_WORK_SIZE(AW, AH, WW, WH);

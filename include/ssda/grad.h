@@ -56,7 +56,9 @@ extern "C" {
 #define SSDA_GRAD_SIZE(w, h, out_format)                                     \
     (((size_t)(w) - 2u) * ((size_t)(h) - 2u) * (size_t)(out_format))
 
-/* Bytes needed when output rows are stride bytes apart. */
+/* Bytes needed when output rows are stride bytes apart. Where size_t is
+   32 bits this wraps for outputs of 4 GB or more; ssda_grad checks the size
+   in 64 bits and refuses those with SSDA_ERR_BUFFER. */
 #define SSDA_GRAD_SIZE_STRIDED(w, h, stride, out_format)                     \
     (((size_t)(h) - 3u) * (size_t)(stride) + ((size_t)(w) - 2u) * (size_t)(out_format))
 

@@ -103,7 +103,10 @@ typedef enum {
 #define SSDA_MATCH_BOUNDS 0x01u
 
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
-   area_w x area_h and a window of win_w x win_h (win_* <= area_*). */
+   area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
+   size_t is 32 bits the macro wraps for jobs needing 4 GB or more (areas
+   near 65535 x 65535); the library checks the size in 64 bits and refuses
+   such a job with SSDA_ERR_BUFFER whatever the buffer. */
 #define SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h)                   \
     (((((size_t)(area_w) - (size_t)(win_w)) + 1u) * (size_t)(area_h) +       \
       2u * (size_t)(win_h)) * sizeof(uint32_t))
