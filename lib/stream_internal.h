@@ -28,6 +28,27 @@ static inline bool stream_ready(const ssda_source_t *s)
     return s->cfg.width != 0u;
 }
 
+/* Do the n bytes at p and the m bytes at q overlap (n, m > 0: arenas and
+   rings are checked to hold at least a row before)? Compared as addresses:
+   they are parts of the caller's memory, each in one object. */
+static inline bool stream_mem_overlap(const void *p, size_t n, const void *q, size_t m)
+{
+    const uintptr_t a = (uintptr_t)p;
+    const uintptr_t b = (uintptr_t)q;
+    return a < b + m && b < a + n;
+}
+
+/* Would two sources of one job overwrite each other's plate? Only
+   streamed sources have one (an in-RAM source reads its view); one source
+   given twice, or two whose arenas overlap, cannot hold both operands'
+   rows, and the search would run on the wrong pixels. */
+static inline bool stream_plates_clash(const ssda_source_t *a, const ssda_source_t *b)
+{
+    return a->view == NULL && b->view == NULL &&
+           stream_mem_overlap(a->cfg.arena, a->cfg.arena_size, b->cfg.arena,
+                              b->cfg.arena_size);
+}
+
 /* Largest plate width (px) of h rows that the arena holds with `extra`
    bytes set aside for a larger bounce buffer, 0 if none. */
 uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra);

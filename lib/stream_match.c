@@ -31,8 +31,8 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
     if (!stream_ready(area) || !stream_ready(window)) {
         return SSDA_ERR_STATE;
     }
-    if (area == window && area->view == NULL) {
-        return SSDA_ERR_ARG; /* one plate cannot hold both operands' rows */
+    if (stream_plates_clash(area, window)) {
+        return SSDA_ERR_ARG;
     }
     err = stream_rect(area, area_rect, &ar);
     if (err == SSDA_OK) {

@@ -20,13 +20,18 @@ static bool format_ok(uint8_t format)
 }
 
 /* Whether ring (ring_size bytes) holds `band` rows of w px: SSDA_OK or
-   SSDA_ERR_BUFFER (also for a misaligned ring). */
+   SSDA_ERR_BUFFER (also for a misaligned ring); SSDA_ERR_ARG when it
+   overlaps the other source's plate (each would overwrite the other). */
 static int ring_fits(uint8_t format, uint32_t w, uint32_t band, const void *ring,
-                     size_t ring_size)
+                     size_t ring_size, const ssda_source_t *other)
 {
     size_t pitch = SSDA_STREAM_PITCH(w, format);
     if ((((uintptr_t)ring) & 3u) != 0u || ring_size / pitch < band) {
         return SSDA_ERR_BUFFER;
+    }
+    if (other->view == NULL &&
+        stream_mem_overlap(ring, ring_size, other->cfg.arena, other->cfg.arena_size)) {
+        return SSDA_ERR_ARG;
     }
     return SSDA_OK;
 }
@@ -92,7 +97,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (!stream_holds(window, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    err = ring_fits(format, area.width, area.height, ring, ring_size);
+    err = ring_fits(format, area.width, area.height, ring, ring_size, window);
     if (err != SSDA_OK) {
         return err;
     }
@@ -169,7 +174,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
         w = kept->width;
         band = first ? plan.grid.search_h : plan.grid.win_h;
     } /* else every window is EDGE: a one-pixel ring */
-    err = ring_fits(format, w, band, ring, ring_size);
+    err = ring_fits(format, w, band, ring, ring_size, other);
     if (err != SSDA_OK) {
         return err;
     }

@@ -96,8 +96,8 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     if (!stream_ready(first) || !stream_ready(second)) {
         return SSDA_ERR_STATE;
     }
-    if (first == second && first->view == NULL) {
-        return SSDA_ERR_ARG; /* one plate cannot hold both images' rows */
+    if (stream_plates_clash(first, second)) {
+        return SSDA_ERR_ARG;
     }
     if (first->cfg.format != second->cfg.format) {
         return SSDA_ERR_FORMAT;

@@ -415,6 +415,40 @@ static void test_bad_arguments_are_refused(void)
     }
 }
 
+/* Two streamed sources whose arenas overlap would overwrite each other's
+   plate and search the wrong pixels (an answer flagged exact): refused
+   before any read, result untouched. Halves of one buffer that do not
+   overlap are two plates and give the answer of separate arenas. */
+static void test_overlapping_arenas_are_refused(void)
+{
+    static const geometry_t g = {SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 1};
+    const size_t half = sizeof g_aarena / 2u;
+    ssda_source_t as, ws, other;
+    ssda_source_config_t c;
+    ssda_match_result_t want, got, poison;
+    make_images(31u);
+    make_source(&as, true, &g, SSDA_PIX_U16, half);
+    make_source(&ws, false, &g, SSDA_PIX_U16, sizeof g_warena);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &k_win, NULL, &want));
+    memset(&poison, 0x5A, sizeof poison);
+    c = ws.cfg;
+    c.arena = (uint8_t *)g_aarena + half - 4u; /* its first word is the area's last */
+    c.arena_size = sizeof g_warena;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &c));
+    g_ta.reads = 0;
+    g_tw.reads = 0;
+    got = poison;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_stream_match(&as, &k_area, &other, &k_win, NULL, &got));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_stream_match(&other, &k_win, &as, &k_win, NULL, &got));
+    TEST_ASSERT_EQUAL_MEMORY(&poison, &got, sizeof got);
+    TEST_ASSERT_EQUAL_UINT64(0, g_ta.reads + g_tw.reads);
+    /* the next word on: two plates in one buffer */
+    c.arena = (uint8_t *)g_aarena + half;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &c));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &other, &k_win, NULL, &got));
+    TEST_ASSERT_TRUE(same_result(&want, &got));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -424,5 +458,6 @@ int main(void)
     RUN_TEST(test_failure_at_every_read_leaves_result_untouched);
     RUN_TEST(test_short_arena_is_refused_before_reading);
     RUN_TEST(test_bad_arguments_are_refused);
+    RUN_TEST(test_overlapping_arenas_are_refused);
     return UNITY_END();
 }

@@ -421,6 +421,37 @@ static void test_bad_arguments(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_push_row(&p, g_first[0]));
 }
 
+/* A ring that overlaps the streamed other image's arena would overwrite
+   its plate: refused at init for both jobs, *push untouched; the same
+   buffer split without overlap is accepted. */
+static void test_ring_overlapping_the_other_arena(void)
+{
+    ssda_view_t w = view16(false);
+    uint8_t *tail = (uint8_t *)g_ring + sizeof g_ring - 2048u;
+    ssda_source_t os, other;
+    ssda_source_config_t c;
+    ssda_push_t p, before;
+    ssda_match_result_t res;
+    ssda_track_config_t tc;
+    make_other(&os, &w, true, 2048u);
+    c = os.cfg;
+    c.arena = tail;
+    c.arena_size = 2048u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &c));
+    memset(&tc, 0, sizeof tc);
+    memset(&p, 0x66, sizeof p);
+    before = p;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL,
+                                                             &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc,
+                                                             g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
+                                                        g_ring, sizeof g_ring - 2048u));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc, g_got,
+                                                        MAX_WIN, NULL, g_ring, sizeof g_ring - 2048u));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -429,5 +460,6 @@ int main(void)
     RUN_TEST(test_tracking_equals_ram_for_both_roles);
     RUN_TEST(test_failure_at_every_read_stops_the_job);
     RUN_TEST(test_bad_arguments);
+    RUN_TEST(test_ring_overlapping_the_other_arena);
     return UNITY_END();
 }

@@ -350,6 +350,41 @@ static void test_short_arenas_and_bad_arguments(void)
     }
 }
 
+/* FIRST and SECOND streamed with overlapping arenas would overwrite each
+   other's plate: refused before any read, out and stats untouched; halves
+   of one buffer that do not overlap give ssda_track's vectors. */
+static void test_overlapping_arenas_are_refused(void)
+{
+    const size_t half = sizeof g_farena / 2u;
+    ssda_source_t f, s, other;
+    ssda_source_config_t cs;
+    ssda_track_config_t c;
+    ssda_track_stats_t st, poison;
+    make_images(36u);
+    memset(&c, 0, sizeof c);
+    memset(&poison, 0x4E, sizeof poison);
+    make_source(&f, true, &k_raster, half);
+    make_source(&s, false, &k_raster, sizeof g_sarena);
+    cs = s.cfg;
+    cs.arena = (uint8_t *)g_farena + half - 4u; /* its first word is FIRST's last */
+    cs.arena_size = half;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &cs));
+    g_tf.reads = 0;
+    g_ts.reads = 0;
+    memset(g_got, 0x3C, sizeof g_got);
+    memcpy(g_want, g_got, sizeof g_got);
+    st = poison;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_stream_track(&f, &other, &c, g_got, MAX_WIN, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_stream_track(&other, &f, &c, g_got, MAX_WIN, &st));
+    TEST_ASSERT_EQUAL_MEMORY(&poison, &st, sizeof st);
+    TEST_ASSERT_EQUAL_MEMORY(g_want, g_got, sizeof g_got);
+    TEST_ASSERT_EQUAL_UINT64(0, g_tf.reads + g_ts.reads);
+    /* the next word on: two plates in one buffer */
+    cs.arena = (uint8_t *)g_farena + half;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &cs));
+    check_against_ram(&f, &other, &c, false);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -358,5 +393,6 @@ int main(void)
     RUN_TEST(test_each_strip_reads_its_areas_and_windows_once);
     RUN_TEST(test_failure_at_every_read);
     RUN_TEST(test_short_arenas_and_bad_arguments);
+    RUN_TEST(test_overlapping_arenas_are_refused);
     return UNITY_END();
 }

@@ -231,7 +231,8 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
  * result is the one ssda_match gives on the same pixels in RAM, field for
  * field, in every mode.
  *   area, window: initialised sources of the same format (may be the same
- *             source only if it is in RAM).
+ *             source only if it is in RAM; two streamed sources need arenas
+ *             that do not overlap).
  *   area_rect, window_rect: rectangles inside them; NULL = the whole image.
  *             The window rectangle is no larger than the area's.
  *   cfg:      as ssda_match (NULL = defaults).
@@ -245,7 +246,8 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
  *   SSDA_ERR_NULL, _SIZE, _FORMAT, _ARG, _BUFFER as ssda_match (SIZE also
  *   for a rectangle outside its source, BUFFER also for a short arena,
  *   found before any read; ARG also for one streamed source given as both
- *   operands: its plate cannot hold both); SSDA_ERR_STATE for an
+ *   operands, or two whose arenas overlap: one plate cannot hold both);
+ *   SSDA_ERR_STATE for an
  *   uninitialised source; any read() error unchanged.
  */
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
@@ -280,7 +282,8 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * gains at each step come in one read per tile).
  * Returns what ssda_track returns (every argument error before any read or
  * write; SSDA_ERR_BUFFER also for an arena below the minimum, SSDA_ERR_ARG
- * also for one streamed source given as both images), SSDA_ERR_STATE for an
+ * also for one streamed source given as both images or two whose arenas
+ * overlap), SSDA_ERR_STATE for an
  * uninitialised source, or a read() error unchanged. On a read error out
  * holds the windows solved before it (the rest of out and *stats are
  * untouched): a streamed call cannot take back what it wrote.
@@ -351,7 +354,8 @@ typedef struct {
  * result or ring NULL, or bounds without work buffer), SSDA_ERR_STATE
  * (window not initialised), SSDA_ERR_FORMAT, SSDA_ERR_SIZE (zero size,
  * rectangles outside their images, window larger than the area),
- * SSDA_ERR_ARG (options), SSDA_ERR_BUFFER (ring or window arena short, or
+ * SSDA_ERR_ARG (options; a ring overlapping the window's arena),
+ * SSDA_ERR_BUFFER (ring or window arena short, or
  * the ring misaligned). The window and result must outlive the job.
  */
 int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
@@ -374,7 +378,8 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
  * A streamed other image needs its arena as ssda_stream_track says; with a
  * whole-width band of it, it is read once.
  * Returns SSDA_OK or what ssda_stream_track returns for its arguments
- * (SSDA_ERR_BUFFER also for a short ring), with *push untouched.
+ * (SSDA_ERR_BUFFER also for a short ring, SSDA_ERR_ARG for a ring that
+ * overlaps a streamed other image's arena), with *push untouched.
  */
 int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
                          uint8_t role, ssda_source_t *other, const ssda_track_config_t *cfg,
