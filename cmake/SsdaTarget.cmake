@@ -12,6 +12,12 @@
 # Without a board (Cortex-M0+, RV32IMC) only the library is
 # built unless SSDA_BUILD_TESTS is set explicitly.
 
+# A firmware that adds ssda as a subproject under one of our toolchain files
+# gets the library only: no test runtime in its ALL target, no emulator.
+if(NOT CMAKE_SOURCE_DIR STREQUAL PROJECT_SOURCE_DIR AND NOT SSDA_BUILD_TESTS)
+  return()
+endif()
+
 set(SSDA_TARGET_DIR ${CMAKE_CURRENT_LIST_DIR}/../tests/target)
 get_filename_component(SSDA_TARGET_DIR ${SSDA_TARGET_DIR} ABSOLUTE)
 

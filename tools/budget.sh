@@ -7,7 +7,9 @@
 #
 # Usage: tools/budget.sh                 print the tables
 #        tools/budget.sh --write FILE    also replace the part of FILE between
-#                                        <!-- budget:begin --> and <!-- budget:end -->
+#                                        <!-- budget:begin --> and <!-- budget:end -->,
+#                                        and README.md's summary between
+#                                        <!-- budget-summary:begin/end --> (summary.py)
 # Needs: arm-none-eabi-gcc + newlib, riscv64-unknown-elf-gcc, qemu-system-arm,
 # python3 (tools/setup-deps.sh installs the Debian packages). Build
 # directories go under build/budget/. Method: docs/target.md.
@@ -78,17 +80,24 @@ tables=$( {
 } )
 printf '%s\n' "$tables"
 
-if [ -n "$write" ]; then
-  python3 - "$write" "$tables" <<'PY'
+# Replace what FILE holds between <!-- NAME:begin --> and <!-- NAME:end -->.
+put_between() { # <file> <name> <content>
+  python3 - "$1" "$2" "$3" <<'PY'
 import sys
-path, tables = sys.argv[1], sys.argv[2]
+path, name, content = sys.argv[1:]
 text = open(path).read()
-begin, end = "<!-- budget:begin -->", "<!-- budget:end -->"
+begin, end = f"<!-- {name}:begin -->", f"<!-- {name}:end -->"
 if begin not in text or end not in text:
     sys.exit(f"budget.sh: {path} has no {begin} ... {end} markers")
 head, rest = text.split(begin, 1)
 _, tail = rest.split(end, 1)
-open(path, "w").write(head + begin + "\n" + tables + "\n" + end + tail)
+open(path, "w").write(head + begin + "\n" + content + "\n" + end + tail)
 PY
-  echo "budget.sh: tables written into $write" >&2
+}
+
+if [ -n "$write" ]; then
+  summary=$(printf '%s\n' "$tables" | python3 tools/budget/summary.py)
+  put_between "$write" budget "$tables"
+  put_between README.md budget-summary "$summary"
+  echo "budget.sh: tables written into $write, the summary into README.md" >&2
 fi
