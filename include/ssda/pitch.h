@@ -163,7 +163,8 @@ typedef struct {
     uint16_t frame_len;      /* K, samples per difference sum: 16..8192 (0 = lag_max,
                                 i.e. one period of f0_min as in YIN, at least 16) */
     uint16_t hop;            /* samples between estimates: >= 1 (0 = max(1, K / 4)) */
-    uint16_t threshold_q15;  /* dip threshold on n, Q15: 1..32767 (0 = 0.20) */
+    uint16_t threshold_q15;  /* dip threshold on n, Q15: 1..32767 (0 = 0.30,
+                                SSDA_PITCH_DEFAULT_THRESHOLD_Q15) */
     uint16_t voicing_q15;    /* voiced iff n(t*) <= this, Q15: 1..32767 (0 = threshold_q15) */
     uint16_t silence_mad;    /* silent iff mean |x - m| over the K samples < this, LSB:
                                 1..65535 (0 = 16; 1 = only constant frames) */
@@ -241,7 +242,10 @@ typedef struct {
 } ssda_pitch_work_t;
 
 /* The stream state. Caller-allocated; fields are private (read them through
-   ssda_pitch_get_info). */
+   ssda_pitch_get_info). A state that ssda_pitch_init never filled (zeroed,
+   or garbage without its magic value) is refused with SSDA_ERR_STATE; a
+   copy of an initialised state, or one whose buffer has gone, is not
+   detectable: the buffer must outlive the state's use. */
 typedef struct {
     ssda_pitch_info_t info;
     int16_t *buf;            /* caller buffer of info.span samples */

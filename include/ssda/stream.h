@@ -39,7 +39,13 @@
  *
  * The library never allocates: the source struct and the arena belong to the
  * caller and must outlive every call on the source. A source is not
- * thread-safe; two sources may share one read callback and context.
+ * thread-safe; two sources may share one read callback and context, but
+ * not arena memory (jobs refuse overlapping arenas with SSDA_ERR_ARG).
+ *
+ * Initialise before use: a zero-filled source or push job (static storage,
+ * or memset) is refused with SSDA_ERR_STATE, but one holding leftover stack
+ * bytes cannot be told from a valid one; call ssda_source_init /
+ * ssda_source_init_view / ssda_push_init_* first.
  */
 #ifndef SSDA_STREAM_H
 #define SSDA_STREAM_H
@@ -70,6 +76,10 @@ typedef enum {
  * back unchanged. offset and size are multiples of the source's read_size;
  * size > 0. A read may cover up to read_size - 1 bytes before the image's
  * first byte and after its last (the aligned range around it), never more.
+ * buffer lies in the arena but may have any byte alignment (a plate row of
+ * a raster source is kept at the device's stride when that is within the
+ * row's 4-byte rounding, e.g. 47 bytes): a driver whose DMA needs aligned
+ * memory reads through a buffer of its own.
  */
 typedef int (*ssda_read_fn)(void *context, uint32_t offset, void *buffer, uint32_t size);
 
@@ -356,7 +366,9 @@ typedef struct {
  * rectangles outside their images, window larger than the area),
  * SSDA_ERR_ARG (options; a ring overlapping the window's arena),
  * SSDA_ERR_BUFFER (ring or window arena short, or
- * the ring misaligned). The window and result must outlive the job.
+ * the ring misaligned). The window, result and the ring, and cfg->work
+ * when SSDA_MATCH_BOUNDS is set (the job keeps a copy of cfg, pointer
+ * included), must outlive the job.
  */
 int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
                          const ssda_rect_t *area_rect, ssda_source_t *window,
@@ -377,6 +389,9 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
  *     image width; band = search_h (FIRST) or win_h (SECOND).
  * A streamed other image needs its arena as ssda_stream_track says; with a
  * whole-width band of it, it is read once.
+ * The other source, out, stats, the ring and cfg->match.work (with
+ * SSDA_MATCH_BOUNDS; the job keeps a copy of cfg, pointer included) must
+ * outlive the job.
  * Returns SSDA_OK or what ssda_stream_track returns for its arguments
  * (SSDA_ERR_BUFFER also for a short ring, SSDA_ERR_ARG for a ring that
  * overlaps a streamed other image's arena), with *push untouched.
