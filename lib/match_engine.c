@@ -105,17 +105,22 @@ static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
 static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
 {
     uint64_t f = ramp_f_q16(e, r);
-    uint64_t t, frac;
+    const uint64_t lm = (uint64_t)e->L * e->M; /* < 2^32 */
+    uint64_t t;
+    uint32_t frac;
     if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
         /* eq. 3: lambda * f(r); lambda Q24.8 times f Q16 -> shift 24 */
         return ssda_mul_shr24(e->cfg->lambda_q8, f);
     }
-    /* eq. 4: min(T_i, T_i * f(r) / (L*M)); frac in Q16, <= 2^16 */
+    /* eq. 4: min(T_i, T_i * f(r) / (L*M)) with frac = f / (L*M) in Q16: it
+       reaches 1.0 (65536) exactly when f >= L*M * 2^16 (< 2^48); below, the
+       quotient is < 2^16, a 64-by-32 division (no 64-bit runtime division on
+       cores without a divide instruction; same value everywhere) */
     t = e->best.sad;
-    frac = f / ((uint64_t)e->L * e->M);
-    if (frac >= 65536u) {
+    if (f >= (lm << 16)) {
         return t;
     }
+    frac = SSDA_DIV64_32(f, (uint32_t)lm);
     /* (t >> 16) * frac < 2^32 * 2^16; (t & 0xFFFF) * frac < 2^32 */
     return (t >> 16) * frac + (((t & 0xFFFFu) * frac) >> 16);
 }
@@ -126,8 +131,9 @@ static uint64_t ramp_linear(const engine_t *e, uint64_t r)
     if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
         return ((uint64_t)e->cfg->lambda_q8 * r) >> 8; /* < 2^32 * 2^32 */
     }
-    /* t * r / LM <= t since r <= LM; t < 2^48, so split t to stay in 64 bits */
-    return (e->best.sad / ((uint64_t)e->L * e->M)) * r;
+    /* floor(t / LM) * r: a completed SAD t <= 65535 * LM, so the quotient
+       <= 65535 (a 64-by-32 division, as above) and the product < 2^48 */
+    return (uint64_t)SSDA_DIV64_32(e->best.sad, (uint32_t)((uint64_t)e->L * e->M)) * r;
 }
 
 /* The ramp cut after `pixels` pixels (kept out of line: a cold path for the
