@@ -164,7 +164,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (err != SSDA_OK) {
         return err;
     }
-    if (out_count < plan.grid.count ||
+    if (!ssda_track_out_fits(plan.grid.count, out_count) ||
         !stream_holds(other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }

@@ -107,7 +107,7 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     if (err != SSDA_OK) {
         return err;
     }
-    if (out_count < plan.grid.count) {
+    if (!ssda_track_out_fits(plan.grid.count, out_count)) {
         return SSDA_ERR_BUFFER;
     }
     /* The tracker fetches whole area rows (mask test, bounds) and whole

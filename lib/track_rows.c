@@ -343,7 +343,7 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
     if (err != SSDA_OK) {
         return err;
     }
-    if (out_count < plan.grid.count) {
+    if (!ssda_track_out_fits(plan.grid.count, out_count)) {
         return SSDA_ERR_BUFFER;
     }
     stats_zero(&st);

@@ -10,6 +10,22 @@
 #include "ssda/track.h"
 #include "match_rows.h"
 
+/*
+ * Whether out (out_count entries) holds a grid of count windows. On a 32-bit
+ * target a grid of more than SIZE_MAX / sizeof(ssda_track_vector_t)
+ * windows (about 179 million) would need an array beyond the address space,
+ * so SSDA_TRACK_OUT_SIZE wraps there and no out can hold it: refused.
+ */
+static inline bool ssda_track_out_fits(uint32_t count, size_t out_count)
+{
+#if SIZE_MAX <= UINT32_MAX
+    if (count > SIZE_MAX / sizeof(ssda_track_vector_t)) {
+        return false;
+    }
+#endif
+    return out_count >= count;
+}
+
 /* A checked configuration with every default resolved. */
 typedef struct {
     ssda_track_grid_t grid;

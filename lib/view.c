@@ -4,6 +4,7 @@
 int ssda_view_check(const ssda_view_t *view)
 {
     uint32_t bpp;
+    uint64_t extent;
     if (view == NULL || view->data == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -21,6 +22,14 @@ int ssda_view_check(const ssda_view_t *view)
     }
     /* uint16_t rows must be aligned; the low address bit is all we need. */
     if (bpp == 2u && (((uintptr_t)view->data) & 1u) != 0u) {
+        return SSDA_ERR_STRIDE;
+    }
+    /* Every row address data + y * stride must stay in the address space:
+       on a 32-bit target a stride near 2^32 (a "negative", bottom-up stride
+       say) would wrap them to memory before data. The view's bytes,
+       (height - 1) * stride + width * bpp < 2^48, end at or below the top. */
+    extent = ((uint64_t)view->height - 1u) * view->stride + (uint64_t)view->width * bpp;
+    if (extent - 1u > (uint64_t)(UINTPTR_MAX - (uintptr_t)view->data)) {
         return SSDA_ERR_STRIDE;
     }
     return SSDA_OK;

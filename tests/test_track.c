@@ -6,7 +6,7 @@
  */
 #include <string.h>
 #include "unity.h"
-#include "ssda/track.h"
+#include "ssda/stream.h"
 #include "test_image.h"
 
 void setUp(void) {}
@@ -629,10 +629,58 @@ static void test_bad_arguments_write_nothing(void)
     TEST_ASSERT_EQUAL_MEMORY(&g0, &g, sizeof g);
 }
 
+/* A grid whose vector array cannot exist: on a 32-bit target 16384 x 32768
+   images with 1 x 1 windows at step 1 give 2^29 windows, 12 GB of
+   vectors, and SSDA_TRACK_OUT_SIZE wraps (to 0). Refused with
+   SSDA_ERR_BUFFER before any pixel is read (the views claim the size; a
+   small buffer stands in) and nothing written, even with out_count =
+   the grid count. The stream and push entry points share the check. */
+static void test_grid_beyond_the_address_space_is_refused(void)
+{
+#if SIZE_MAX <= UINT32_MAX
+    static uint8_t px[16];
+    static ssda_track_vector_t out[2];
+    ssda_view_t a;
+    ssda_track_config_t c;
+    ssda_track_grid_t g;
+    ssda_track_stats_t st, poison;
+    memset(&c, 0, sizeof c);
+    c.win_w = c.win_h = c.search_w = c.search_h = c.step_x = c.step_y = 1;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, px, 16384u, 32768u, 16384u, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, 16384u, 32768u, &g));
+    TEST_ASSERT_EQUAL_UINT32(1u << 29, g.count);
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)SSDA_TRACK_OUT_SIZE(16384u, 32768u, 1u, 1u, 1u, 1u));
+    memset(out, 0x77, sizeof out);
+    memset(&poison, 0x44, sizeof poison);
+    st = poison;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_track(&a, &a, &c, out, g.count, &st));
+    {
+        static uint32_t ring[4096]; /* 16 KB: the 1-row band of 16384 px fits */
+        ssda_source_t src;
+        ssda_push_t p, before;
+        memset(&p, 0x33, sizeof p);
+        before = p;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&src, &a));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
+                              ssda_stream_track(&src, &src, &c, out, g.count, &st));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
+                              ssda_push_init_track(&p, 16384u, 32768u, SSDA_PIX_U8,
+                                                   SSDA_PUSH_FIRST, &src, &c, out, g.count,
+                                                   &st, ring, sizeof ring));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
+    }
+    TEST_ASSERT_EQUAL_MEMORY(&poison, &st, sizeof st);
+    TEST_ASSERT_EACH_EQUAL_HEX8(0x77, out, sizeof out);
+#else
+    TEST_IGNORE_MESSAGE("a 64-bit size_t holds any grid's vectors");
+#endif
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_grid_layout_and_defaults);
+    RUN_TEST(test_grid_beyond_the_address_space_is_refused);
     RUN_TEST(test_known_uniform_shift);
     RUN_TEST(test_spatially_varying_field);
     RUN_TEST(test_stats_are_sums_of_per_window_searches);

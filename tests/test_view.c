@@ -1,4 +1,5 @@
 /* test_view.c - view construction, ROIs and their validation. */
+#include <string.h>
 #include "unity.h"
 #include "ssda/view.h"
 
@@ -63,12 +64,39 @@ static void test_strerror_names_every_code(void)
     TEST_ASSERT_EQUAL_STRING("error from a callback", ssda_strerror(-1000));
 }
 
+/* Rows must stay in the address space: a view whose last byte would pass
+   its top is refused (row addresses would wrap to memory before data).
+   The addresses are never dereferenced. */
+static void test_rows_past_the_address_space_are_refused(void)
+{
+    ssda_view_t v, before;
+    const void *top16 = (const void *)(UINTPTR_MAX - 15u); /* 16 bytes to the top */
+    memset(&before, 0x5C, sizeof before);
+    v = before;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, top16, 4, 4, 4, SSDA_PIX_U8));
+    v = before;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_view_init(&v, top16, 4, 5, 4, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_view_init(&v, top16, 17, 1, 17, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &v, sizeof v);
+#if UINTPTR_MAX <= UINT32_MAX
+    {
+        /* 32-bit targets: a stride of 2^32 - 256 (a bottom-up image given
+           a "negative" stride) would put row 1 at data - 256 */
+        static uint8_t buf[16];
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE,
+                              ssda_view_init(&v, buf, 1, 2, 0xFFFFFF00u, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &v, sizeof v);
+    }
+#endif
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_init_accepts_valid_views);
     RUN_TEST(test_init_rejects_bad_views_and_writes_nothing);
     RUN_TEST(test_roi_points_into_source);
+    RUN_TEST(test_rows_past_the_address_space_are_refused);
     RUN_TEST(test_strerror_names_every_code);
     return UNITY_END();
 }

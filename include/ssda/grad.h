@@ -52,7 +52,9 @@ extern "C" {
                                 : ((out_format) == SSDA_PIX_U8 ? 10u : 2u))
 
 /* Bytes of a packed output (rows of (w-2) samples) for a w x h input,
-   w, h >= 3; out_format's bytes per pixel is its value (1 or 2). */
+   w, h >= 3; out_format's bytes per pixel is its value (1 or 2). Where
+   size_t is 32 bits this wraps for outputs of 4 GB or more; ssda_grad
+   refuses those with SSDA_ERR_BUFFER. */
 #define SSDA_GRAD_SIZE(w, h, out_format)                                     \
     (((size_t)(w) - 2u) * ((size_t)(h) - 2u) * (size_t)(out_format))
 

@@ -172,7 +172,9 @@ typedef struct {
     (SSDA_TRACK_GRID_DIM(roi_w, win_w, step_x) *                              \
      SSDA_TRACK_GRID_DIM(roi_h, win_h, step_y))
 
-/* Bytes of the vector array for that grid. */
+/* Bytes of the vector array for that grid. Where size_t is 32 bits this
+   wraps for grids of more than about 179 million windows; ssda_track and
+   the stream and push jobs refuse such a grid with SSDA_ERR_BUFFER. */
 #define SSDA_TRACK_OUT_SIZE(roi_w, roi_h, win_w, win_h, step_x, step_y)       \
     (SSDA_TRACK_GRID_COUNT(roi_w, roi_h, win_w, win_h, step_x, step_y) *      \
      sizeof(ssda_track_vector_t))

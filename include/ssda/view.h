@@ -36,7 +36,10 @@ typedef struct {
  * rows start stride bytes apart.
  * Returns SSDA_OK, SSDA_ERR_NULL (view or data NULL), SSDA_ERR_SIZE (zero
  * width/height), SSDA_ERR_FORMAT (unknown format) or SSDA_ERR_STRIDE
- * (stride < width * bpp, stride not a multiple of bpp, or data misaligned).
+ * (stride < width * bpp, stride not a multiple of bpp, data misaligned, or
+ * rows that would run past the end of the address space: the last byte,
+ * data + (height - 1) * stride + width * bpp - 1, must be addressable; a
+ * bottom-up image needs a view of its top row and a positive stride).
  * *view is written only on success.
  */
 int ssda_view_init(ssda_view_t *view, const void *data, uint16_t width,
