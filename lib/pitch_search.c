@@ -268,7 +268,8 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     bool best_need_right = false;
     bool in_run = false, run_need_right = false, run_armed = false;
     /* Armed: a peak n > rearm was seen since the last run began (at the
-       start: n(lag_min - 1) > threshold), so the next run is a real dip. */
+       start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so the
+       next run is a real dip. */
     const uint32_t rearm = ssda_pitch_rearm_q15(thr);
     bool armed;
     bool found = false;
@@ -291,6 +292,16 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     evaluate(w, lag_min - 1u, w->level + b_sum,
              full ? NO_BOUND : threshold_bound(thr, w->level + b_sum), &w->prev);
     armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
+    if (!armed) {
+        /* lag_min - 1 lies in a dip already: a period just above lag_min
+           (f0 just below f0_max), or the lag-0 tail of a slow signal. The
+           first has its half-period peak near lag_min / 2, the second stays
+           low there. Exact up to rearm; a cut proves n > rearm. */
+        const uint32_t half = lag_min / 2u; /* >= 2 */
+        const uint32_t sh = w->level + ssda_pitch_level(x + half, k, mean);
+        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
+        armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
+    }
 
     for (lag = lag_min; lag <= lag_max + 1u; lag++) {
         const bool candidate = lag <= lag_max;
@@ -367,8 +378,13 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
             in_run = true;
         } else if (in_run) {
             /* The run ended at lag - 1. It is a dip if it was entered from a
-               peak, and its minimum is not a lag_max that still falls. */
-            bool valid = run_armed && (w->run_lag != lag_max || !n_less(&w->run_right, &w->run));
+               peak, and its minimum is neither a lag_max that still falls
+               (a period beyond lag_max) nor a lag_min below which it still
+               falls (the tail of a dip below lag_min, e.g. a strong 2nd
+               harmonic's, which may now arm: its multiple follows). */
+            bool valid = run_armed &&
+                         (w->run_lag != lag_max || !n_less(&w->run_right, &w->run)) &&
+                         (w->run_lag != lag_min || !n_less(&w->run_left, &w->run));
             in_run = false;
             if (valid && !found) {
                 found = true;

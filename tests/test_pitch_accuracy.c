@@ -249,10 +249,58 @@ static void test_silence_dc_and_noise_are_not_voiced(void)
     }
 }
 
+/* Tones just below f0_max (default 1000 Hz): their period lies just above
+   lag_min, so lag_min - 1 is inside their dip already; the half-period peak
+   near lag_min / 2 arms the first dip (without it the dip at twice the
+   period won: 925..1000 Hz read an octave low at 48 kHz). And a tone an
+   octave lower whose strong 2nd harmonic puts a dip just below lag_min,
+   which now arms, is still read at its own period: a run whose minimum is
+   lag_min while n still falls is no dip (without that rule it read about
+   1010 Hz). Against the known f0. */
+static void test_tones_just_below_f0_max(void)
+{
+    static const uint32_t rates[] = {16000u, 44100u, 48000u};
+    static const double f0s[] = {925.0, 950.0, 975.0, 990.0, 1000.0};
+    uint32_t i, j, t;
+    for (i = 0; i < 6u; i++) { /* early exit, then every lag in full */
+        for (j = 0; j < 5u; j++) {
+            test_voice_t v;
+            ssda_pitch_config_t c = config(rates[i % 3u], i < 3u ? 0u : SSDA_PITCH_FULL);
+            uint32_t n = rates[i % 3u] / 8u; /* 0.125 s */
+            stats_t st;
+            test_voice_sine(&v, f0s[j], 12000.0);
+            test_signal_voice(g_sig, n, 0u, rates[i % 3u], &v);
+            st = run(&c, g_sig, n, &v);
+            TEST_ASSERT_TRUE(st.frames >= 3u);
+            TEST_ASSERT_EQUAL_UINT32(st.frames, st.voiced);
+            TEST_ASSERT_EQUAL_UINT32(0u, st.gross);
+            TEST_ASSERT_TRUE(st.max_abs_cents < 3.0);
+        }
+    }
+    for (i = 0; i < 3u; i++) {
+        /* 520 Hz: its 2nd harmonic (period just below lag_min) 17 dB over
+           the fundamental, no low-pass (it would take the harmonic out) */
+        test_voice_t v;
+        ssda_pitch_config_t c = config(rates[i], SSDA_PITCH_NO_FILTER);
+        uint32_t n = rates[i] / 8u;
+        stats_t st;
+        const double w = 2.0 * 3.14159265358979 * 520.0 / rates[i];
+        test_voice_sine(&v, 520.0, 1.0); /* the truth for run() */
+        for (t = 0; t < n; t++) {
+            g_sig[t] = (int16_t)(1500.0 * test_sin(w * t) + 11000.0 * test_sin(2.0 * w * t + 0.5));
+        }
+        st = run(&c, g_sig, n, &v);
+        TEST_ASSERT_TRUE(st.frames >= 3u);
+        TEST_ASSERT_EQUAL_UINT32(st.frames, st.voiced);
+        TEST_ASSERT_EQUAL_UINT32(0u, st.gross);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_sines_at_several_rates);
+    RUN_TEST(test_tones_just_below_f0_max);
     RUN_TEST(test_vowels_have_no_octave_errors);
     RUN_TEST(test_missing_fundamental_and_bright_pulses);
     RUN_TEST(test_vibrato_is_followed);

@@ -13,17 +13,21 @@
  *   d(t) = sum_{i<K} |x[i] - x[i+t]|            the AMDF
  *   s(t) = A + sum_{i<K} |x[i+t] - m|           d(t) <= s(t)
  *   n(t) = d(t) / s(t) in [0, 1]                normalised (0 = periodic)
- * for lags t in [lag_min - 1, lag_max + 1]; thr = threshold_q15 / 32768,
+ * for lags t in [lag_min - 1, lag_max + 1] and t = floor(lag_min / 2);
+ * thr = threshold_q15 / 32768,
  * rearm = min(32767, 3 * threshold_q15 / 2) / 32768 (integer division).
  * Silent when A < silence_mad * K: no search, lag 0. Otherwise:
  *  1. Runs: maximal intervals of lags in [lag_min, lag_max] with n <= thr.
  *     A run's minimum is its lag of smallest n (ties: the smaller lag).
  *  2. A run is a dip when (a) a peak precedes it: some lag with n > rearm
  *     lies between the start of the previous run (or lag_min - 1) and it;
- *     for the first run n(lag_min - 1) > thr also counts; and (b) its
- *     minimum is not lag_max with n(lag_max + 1) < n(lag_max). (a) rejects
- *     the tail of the lag-0 dip and wiggles around thr; (b) a dip below
- *     f0_min.
+ *     for the first run n(lag_min - 1) > thr also counts, and so does
+ *     n(floor(lag_min / 2)) > rearm (the half-period peak of a period just
+ *     above lag_min, whose dip has begun by lag_min - 1); and (b) its
+ *     minimum is not lag_max with n(lag_max + 1) < n(lag_max), nor lag_min
+ *     with n(lag_min - 1) < n(lag_min). (a) rejects the tail of the lag-0
+ *     dip and wiggles around thr; (b) a dip below f0_min, and the tail of
+ *     a dip above f0_max (e.g. a strong 2nd harmonic's).
  *  3. t = the minimum of the first dip (YIN's idea: the first dip, not the
  *     global minimum, so no sub-octave errors as 2T, 3T, ... of plain AMDF).
  *  4. Octave check (against octave-up errors when a harmonic dominates):
@@ -58,7 +62,9 @@
  * for every chunk size, kernel set and push pattern; only `diffs` differs.
  * tests/test_pitch_exact.c checks this against a brute-force reference.
  * Why early exit keeps it exact:
- *   - lags are scanned upwards from lag_min - 1, each summed in chunks and
+ *   - floor(lag_min / 2) is summed first (only when n(lag_min - 1) <= thr,
+ *     cut above rearm); then lags are scanned upwards from lag_min - 1,
+ *     each summed in chunks and
  *     cut once its partial sum passes its bound: the largest d with
  *     n <= thr (n <= rearm while no peak has been seen since the last run),
  *     or the largest d that still beats the best lag so far (the seed's

@@ -79,7 +79,7 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
     if (level < (int64_t)c->silence_mad * k) {
         return;
     }
-    for (t = c->lag_min - 1u; t <= c->lag_max + 1u; t++) {
+    for (t = c->lag_min / 2u; t <= c->lag_max + 1u; t++) { /* lag_min / 2: arming */
         /* int32 is enough here (d <= 8192 * 65535 < 2^29, and the lagged
            level likewise) and much faster on 32-bit targets */
         int32_t d = 0, b = 0, m32 = (int32_t)mean;
@@ -93,14 +93,18 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
     }
     /* Runs of n <= threshold in [lag_min, lag_max]. A run counts when a
        peak n > rearm lies between the previous run and it (for the first
-       run, n(lag_min - 1) > threshold is enough), and its minimum is not a
-       lag_max beyond which n still falls. The first such run wins. */
+       run, n(lag_min - 1) > threshold or n(lag_min / 2) > rearm is enough),
+       and its minimum is neither a lag_max beyond which n still falls nor a
+       lag_min below which it still falls. The first such run wins. */
     {
         uint32_t rearm = c->threshold_q15 + c->threshold_q15 / 2u;
-        bool peak = !under(c->lag_min - 1u, c->threshold_q15);
+        bool peak;
         if (rearm > 32767u) {
             rearm = 32767u;
         }
+        /* the first run also counts after n(lag_min / 2) > rearm (the
+           half-period peak of a period just above lag_min) */
+        peak = !under(c->lag_min - 1u, c->threshold_q15) || !under(c->lag_min / 2u, rearm);
         t = c->lag_min;
         while (t <= c->lag_max && !found) {
             uint32_t m;
@@ -120,7 +124,8 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
                 t++;
             }
             (void)run_start;
-            if (peak && (m != c->lag_max || !less(m + 1u, m))) {
+            if (peak && (m != c->lag_max || !less(m + 1u, m)) &&
+                (m != c->lag_min || !less(m - 1u, m))) {
                 chosen = m;
                 found = true;
             }
