@@ -102,6 +102,12 @@
  * TIME: estimate f (from 0 after init/reset) analyses stream samples
  * [f hop, f hop + span); lag t compares [f hop, f hop + K + t), so the
  * estimate belongs to their centre f hop + (K + t) / 2 (est->center).
+ * LATENCY: the estimate is returned by the push that brings its last
+ * sample, f hop + span - 1, that is span - 1 - (K + t) / 2 = K / 2 + lag_max
+ * - t / 2 samples after its centre (with the default K = lag_max, 1.5
+ * lag_max - t / 2: 28 ms for 220 Hz at 48 kHz with f0_min = 50 Hz), plus the
+ * input low-pass's delay (about 14 samples at its default corner), which
+ * center does not include. A higher f0_min (a shorter lag_max) shortens it.
  */
 #ifndef SSDA_PITCH_H
 #define SSDA_PITCH_H
@@ -173,7 +179,11 @@ typedef struct {
                                 SSDA_PITCH_DEFAULT_THRESHOLD_Q15) */
     uint16_t voicing_q15;    /* voiced iff n(t*) <= this, Q15: 1..32767 (0 = threshold_q15) */
     uint16_t silence_mad;    /* silent iff mean |x - m| over the K samples < this, LSB:
-                                1..65535 (0 = 16; 1 = only constant frames) */
+                                1..65535 (0 = 16; 1 = only constant frames).
+                                For a sine of peak a, mean |x - m| = 2a / pi:
+                                16 gates sines below about 25 LSB peak, measured
+                                after the input low-pass (which attenuates tones
+                                towards its corner) */
     uint16_t chunk;          /* samples summed between early-exit tests: 1..K (0 = 32,
                                 or K if smaller). Changes work only, not results */
     uint16_t lowpass_hz;     /* cutoff of the input low-pass, Hz: 1..rate / 4
@@ -213,7 +223,10 @@ typedef struct {
     uint32_t f0_q16;         /* rate / period, Hz, Q16.16; 0 when silent */
     uint32_t diffs;          /* absolute differences computed for this frame
                                 (work; the only field that depends on the mode) */
-    uint16_t confidence_q15; /* 1 - n(t*), Q15, 0..32767; 0 when silent */
+    uint16_t confidence_q15; /* 1 - n(t*), Q15, 0..32767; 0 when silent. An
+                                unvoiced frame can score high: with no dip found
+                                t* is the global minimum (e.g. a period outside
+                                f0_min..f0_max); decide by voiced, not by this */
     bool voiced;             /* not silent and n(t*) <= voicing threshold */
     bool dip;                /* t* is the minimum of a dip run under the threshold
                                 (false: global-minimum fallback, or silent) */

@@ -21,8 +21,9 @@ static const char help[] =
     "  --fmax HZ        highest f0 searched (default 1000, at most rate/4)\n"
     "  --hop-ms MS      time between estimates (default 10)\n"
     "  --frame-ms MS    samples summed per lag, as time (default one period of fmin)\n"
-    "  --threshold N    dip threshold on the normalised difference, 0..1 (default 0.3)\n"
-    "  --voicing N      voiced when the dip is at or below N, 0..1 (default:\n"
+    "  --threshold N    dip threshold on the normalised difference, 0 < N < 1\n"
+    "                   (default 0.3)\n"
+    "  --voicing N      voiced when the dip is at or below N, 0 < N < 1 (default:\n"
     "                   --threshold)\n"
     "  --full           no early exit: every lag summed in full (the reference;\n"
     "                   same results, more work)\n"
@@ -102,11 +103,11 @@ int cmd_pitch(int argc, char **argv)
             }
         } else if (cli_opt(&a, "--threshold", &v)) {
             if (v != NULL && cli_parse_double(v, 0.0001, 0.9999, &thr) != 0) {
-                return cli_usage_error(a.cmd, "bad --threshold '%s' (0..1)", v);
+                return cli_usage_error(a.cmd, "bad --threshold '%s' (above 0, below 1)", v);
             }
         } else if (cli_opt(&a, "--voicing", &v)) {
             if (v != NULL && cli_parse_double(v, 0.0001, 0.9999, &voicing) != 0) {
-                return cli_usage_error(a.cmd, "bad --voicing '%s' (0..1)", v);
+                return cli_usage_error(a.cmd, "bad --voicing '%s' (above 0, below 1)", v);
             }
         } else if (cli_flag(&a, "--full")) {
             full = 1;
@@ -131,8 +132,14 @@ int cmd_pitch(int argc, char **argv)
     if (a.npos != 1) {
         return cli_usage_error(a.cmd, "need one sound file");
     }
-    if (fmin > 0 && fmax > 0 && fmin >= fmax) {
-        return cli_usage_error(a.cmd, "--fmin must be below --fmax");
+    /* with the defaults filled in, so that --fmin 3000 alone is a usage
+       error too, not a refusal after the file is read */
+    if ((fmin > 0 ? fmin : (double)SSDA_PITCH_DEFAULT_F0_MIN) >=
+        (fmax > 0 ? fmax : (double)SSDA_PITCH_DEFAULT_F0_MAX)) {
+        return cli_usage_error(a.cmd, "--fmin (%g Hz) must be below --fmax (%g Hz%s)",
+                               fmin > 0 ? fmin : (double)SSDA_PITCH_DEFAULT_F0_MIN,
+                               fmax > 0 ? fmax : (double)SSDA_PITCH_DEFAULT_F0_MAX,
+                               fmax > 0 ? "" : ", the default");
     }
     if (csv != NULL && plot != NULL && strcmp(csv, "-") == 0 && strcmp(plot, "-") == 0) {
         return cli_usage_error(a.cmd, "--csv and --plot cannot both go to stdout");

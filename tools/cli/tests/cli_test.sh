@@ -66,6 +66,11 @@ usage)
   run 2 track a.png b.png --scan coarse && stderr_has "--scan coarse needs --predict none"
   run 2 compare a.png b.png --scan coarse --predict left && stderr_has "--scan coarse needs --predict none"
   run 2 pitch a.wav --fmin 300 --fmax 200
+  # the defaults count: --fmin above the default --fmax is a usage error (it
+  # was exit 1, refused after reading the file)
+  run 2 pitch a.wav --fmin 3000 && stderr_has "must be below --fmax (1000 Hz, the default)"
+  run 2 pitch a.wav --fmax 40 && stderr_has "--fmin (50 Hz) must be below --fmax (40 Hz)"
+  run 2 pitch a.wav --threshold 0 && stderr_has "(above 0, below 1)"
   run 2 pitch a.wav --hop-ms -1
   run 2 grad a.png b.png --bits 12
   run 2 grad a.png b.png --shift 40
