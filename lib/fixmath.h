@@ -12,6 +12,17 @@ uint32_t ssda_isqrt64(uint64_t v);
    bh < 2^32, a*bl < 2^56). Saturates to UINT64_MAX if a*bh would not fit. */
 uint64_t ssda_mul_shr24(uint32_t a, uint64_t b);
 
+/* a * b exactly (< 2^48) from two 32-bit partial products, a = ah 2^16 + al:
+   a * b = (ah b) 2^16 + al b, each below 2^32. No 64-bit multiply routine
+   from the runtime library on cores without UMULL (Cortex-M0/M0+/M23),
+   where `(uint64_t)a * b` calls __aeabi_lmul. */
+static inline uint64_t ssda_mul_u32_u16(uint32_t a, uint16_t b)
+{
+    const uint32_t hi = (a >> 16) * (uint32_t)b;     /* < 2^32 */
+    const uint32_t lo = (a & 0xFFFFu) * (uint32_t)b; /* < 2^32 */
+    return ((uint64_t)hi << 16) + lo;
+}
+
 /* min(floor(n / d), UINT32_MAX) for d > 0, by restoring shift-and-subtract
    in 32-bit words (32 steps): no 64-bit division routine from the runtime
    library, whose generic code costs about 1 KB of flash on cores without

@@ -1,9 +1,10 @@
 /* view.c - construction and validation of image views. */
 #include "ssda/view.h"
+#include "fixmath.h"
 
 int ssda_view_check(const ssda_view_t *view)
 {
-    uint32_t bpp;
+    uint32_t bpp, row;
     uint64_t extent;
     if (view == NULL || view->data == NULL) {
         return SSDA_ERR_NULL;
@@ -28,7 +29,8 @@ int ssda_view_check(const ssda_view_t *view)
        on a 32-bit target a stride near 2^32 (a "negative", bottom-up stride
        say) would wrap them to memory before data. The view's bytes,
        (height - 1) * stride + width * bpp < 2^48, end at or below the top. */
-    extent = ((uint64_t)view->height - 1u) * view->stride + (uint64_t)view->width * bpp;
+    row = (uint32_t)view->width * bpp; /* <= 131070 */
+    extent = ssda_mul_u32_u16(view->stride, (uint16_t)(view->height - 1u)) + row;
     if (extent - 1u > (uint64_t)(UINTPTR_MAX - (uintptr_t)view->data)) {
         return SSDA_ERR_STRIDE;
     }

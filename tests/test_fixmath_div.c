@@ -3,7 +3,9 @@
  * that cores without a divide instruction use instead of the runtime
  * library's: against the compiler's 64-bit division, at the extremes of
  * dividend and divisor and on random operands of every magnitude, with the
- * saturation at UINT32_MAX when the quotient needs more than 32 bits.
+ * saturation at UINT32_MAX when the quotient needs more than 32 bits; and
+ * ssda_mul_u32_u16, the 32 x 16 product without a 64-bit multiply routine,
+ * against the compiler's product.
  */
 #include "unity.h"
 #include "fixmath.h"
@@ -64,10 +66,32 @@ static void test_div_random(void)
     }
 }
 
+/* ssda_mul_u32_u16 (two 32-bit partial products) against the compiler's
+   64-bit product: extremes and random operands of every size. */
+static void test_mul_u32_u16(void)
+{
+    static const uint32_t as[] = {0u, 1u, 0xFFFFu, 0x10000u, 0xFFFF0000u, 0xFFFFFFFFu};
+    static const uint16_t bs[] = {0u, 1u, 2u, 0x8000u, 0xFFFEu, 0xFFFFu};
+    test_rng_t r;
+    uint32_t i, j;
+    for (i = 0; i < 6u; i++) {
+        for (j = 0; j < 6u; j++) {
+            TEST_ASSERT_EQUAL_UINT64((uint64_t)as[i] * bs[j], ssda_mul_u32_u16(as[i], bs[j]));
+        }
+    }
+    test_rng_seed(&r, 777u);
+    for (i = 0; i < 100000u; i++) {
+        uint32_t a = test_rng_next(&r) >> (test_rng_next(&r) % 32u);
+        uint16_t b = (uint16_t)(test_rng_next(&r) >> (16u + test_rng_next(&r) % 16u));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)a * b, ssda_mul_u32_u16(a, b));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_div_extremes);
     RUN_TEST(test_div_random);
+    RUN_TEST(test_mul_u32_u16);
     return UNITY_END();
 }
