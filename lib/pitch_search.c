@@ -176,7 +176,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
         uint32_t c = (uint32_t)(((uint64_t)k * period_q16 + 32768u) >> 16);
         uint32_t lag, found_lag = 0u;
         /* the best of the three in f->prev, each lag in f->cur: the scan's
-           prev and cur are free by now (kept off the stack) */
+           prev and cur are unused by now (kept off the stack) */
         lag_value_t *found_v = &f->prev;
         lag_value_t *v = &f->cur;
         found_v->d = 0u;
