@@ -38,15 +38,20 @@ static inline bool stream_mem_overlap(const void *p, size_t n, const void *q, si
     return a < b + m && b < a + n;
 }
 
-/* Would two sources of one job overwrite each other's plate? Only
-   streamed sources have one (an in-RAM source reads its view); one source
+/* Does source s keep a plate (it is streamed; an in-RAM source reads its
+   view) in memory overlapping the n bytes at p? Then a job that also
+   writes there (another plate, a push ring) would overwrite its rows. */
+static inline bool stream_plate_overlaps(const ssda_source_t *s, const void *p, size_t n)
+{
+    return s->view == NULL && stream_mem_overlap(s->cfg.arena, s->cfg.arena_size, p, n);
+}
+
+/* Would two sources of one job overwrite each other's plate? One source
    given twice, or two whose arenas overlap, cannot hold both operands'
    rows, and the search would run on the wrong pixels. */
 static inline bool stream_plates_clash(const ssda_source_t *a, const ssda_source_t *b)
 {
-    return a->view == NULL && b->view == NULL &&
-           stream_mem_overlap(a->cfg.arena, a->cfg.arena_size, b->cfg.arena,
-                              b->cfg.arena_size);
+    return a->view == NULL && stream_plate_overlaps(b, a->cfg.arena, a->cfg.arena_size);
 }
 
 /* Largest plate width (px) of h rows that the arena holds with `extra`

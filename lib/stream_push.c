@@ -29,8 +29,7 @@ static int ring_fits(uint8_t format, uint32_t w, uint32_t band, const void *ring
     if ((((uintptr_t)ring) & 3u) != 0u || ring_size / pitch < band) {
         return SSDA_ERR_BUFFER;
     }
-    if (other->view == NULL &&
-        stream_mem_overlap(ring, ring_size, other->cfg.arena, other->cfg.arena_size)) {
+    if (stream_plate_overlaps(other, ring, ring_size)) {
         return SSDA_ERR_ARG;
     }
     return SSDA_OK;
