@@ -7,7 +7,7 @@
 #define SSDA_POLY_INTERNAL_H
 
 #include "ssda/poly.h"
-#include "wide.h"
+#include "i128.h"
 
 /* Exponents of xn (i) and yn (j) of each term, in poly.h's order. */
 SSDA_INTERNAL extern const uint8_t ssda__poly_ex[SSDA_POLY_MAX_TERMS];

@@ -5,7 +5,7 @@
 #include <string.h>
 #include "ssda/shade.h"
 #include "fixmath.h"
-#include "wide.h"
+#include "i128.h"
 
 #define SHADE_OPEN 1u
 #define SHADE_DONE 2u

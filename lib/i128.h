@@ -1,5 +1,5 @@
 /*
- * wide.h - internal: signed 128-bit integers in two 64-bit words, for the
+ * i128.h - internal: signed 128-bit integers in two 64-bit words, for the
  * exact polynomial evaluation of the warp (add only, per pixel) and the
  * least-squares fit and shading sums (multiply and divide, per fit or row).
  *
@@ -8,8 +8,8 @@
  * (-2^127, 2^127) (each use writes its bound beside it). Unsigned words
  * only: no signed overflow, no implementation-defined shift.
  */
-#ifndef SSDA_WIDE_H
-#define SSDA_WIDE_H
+#ifndef SSDA_I128_H
+#define SSDA_I128_H
 
 #include <stdbool.h>
 #include <stdint.h>
@@ -106,4 +106,4 @@ static inline int64_t ssda__w_to64(ssda__w_t a)
     return (a.lo >> 63) != 0u ? -(int64_t)(~a.lo) - 1 : (int64_t)a.lo;
 }
 
-#endif /* SSDA_WIDE_H */
+#endif /* SSDA_I128_H */

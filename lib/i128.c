@@ -1,5 +1,5 @@
-/* wide.c - 128-bit shifts, products and quotients (lib/wide.h). */
-#include "wide.h"
+/* i128.c - 128-bit shifts, products and quotients (lib/i128.h). */
+#include "i128.h"
 
 ssda__w_t ssda__w_shl(ssda__w_t a, uint32_t n)
 {
