@@ -25,11 +25,13 @@ ssda__w_t ssda__w_sar(ssda__w_t a, uint32_t n)
         return a;
     }
     if (n >= 64u) {
-        r.lo = n == 64u ? a.hi : (a.hi >> (n - 64u)) | (fill << (128u - n));
+        const uint32_t down = n - 64u, up = 128u - n;
+        r.lo = n == 64u ? a.hi : (a.hi >> down) | (fill << up);
         r.hi = fill;
     } else {
-        r.lo = (a.lo >> n) | (a.hi << (64u - n));
-        r.hi = (a.hi >> n) | (fill << (64u - n));
+        const uint32_t up = 64u - n;
+        r.lo = (a.lo >> n) | (a.hi << up);
+        r.hi = (a.hi >> n) | (fill << up);
     }
     return r;
 }
@@ -112,16 +114,15 @@ ssda__w_t ssda__w_div_round(ssda__w_t n, ssda__w_t d)
 
 ssda__w_t ssda__w_div_floor(ssda__w_t n, ssda__w_t d)
 {
-    ssda__w_t rem;
+    const ssda__w_t one = {1u, 0u};
+    ssda__w_t rem, q;
     if (!ssda__w_neg_p(n)) {
         return divmod_u(n, d, &rem);
-    } else {
-        const ssda__w_t one = {1u, 0u};
-        /* floor(-m / d) = -ceil(m / d) */
-        ssda__w_t q = divmod_u(ssda__w_neg(n), d, &rem);
-        if (!ssda__w_zero_p(rem)) {
-            q = ssda__w_add(q, one);
-        }
-        return ssda__w_neg(q);
     }
+    /* floor(-m / d) = -ceil(m / d) */
+    q = divmod_u(ssda__w_neg(n), d, &rem);
+    if (!ssda__w_zero_p(rem)) {
+        q = ssda__w_add(q, one);
+    }
+    return ssda__w_neg(q);
 }

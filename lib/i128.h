@@ -103,7 +103,15 @@ static inline int64_t ssda__w_to64(ssda__w_t a)
 {
     /* two's complement words back to a signed value without an
        implementation-defined conversion of a value above INT64_MAX */
-    return (a.lo >> 63) != 0u ? -(int64_t)(~a.lo) - 1 : (int64_t)a.lo;
+    const uint64_t inv = ~a.lo;
+    return (a.lo >> 63) != 0u ? -(int64_t)inv - 1 : (int64_t)a.lo;
+}
+
+/* 2^n as int64_t, 0 <= n <= 62 (an unsigned shift: no signed shift). */
+static inline int64_t ssda__pow2(uint32_t n)
+{
+    const uint64_t v = (uint64_t)1u << n;
+    return (int64_t)v;
 }
 
 #endif /* SSDA_I128_H */

@@ -38,10 +38,10 @@ int ssda_poly_init(ssda_poly_t *poly, uint16_t ref_w, uint16_t ref_h, uint8_t or
     p.order = order;
     p.ref_w = ref_w;
     p.ref_h = ref_h;
-    p.u_q24[0] = (int64_t)p.cx * ((int64_t)1 << 24);
-    p.u_q24[1] = (int64_t)1 << (p.kx + 24u);
-    p.v_q24[0] = (int64_t)p.cy * ((int64_t)1 << 24);
-    p.v_q24[2] = (int64_t)1 << (p.ky + 24u);
+    p.u_q24[0] = (int64_t)p.cx * ssda__pow2(24u);
+    p.u_q24[1] = ssda__pow2((uint32_t)p.kx + 24u);
+    p.v_q24[0] = (int64_t)p.cy * ssda__pow2(24u);
+    p.v_q24[2] = ssda__pow2((uint32_t)p.ky + 24u);
     *poly = p;
     return SSDA_OK;
 }
@@ -86,7 +86,7 @@ void ssda__poly_fd_start(const ssda_poly_t *p, const int64_t *c, int32_t dx0, in
 }
 
 /* floor(P / 2^64) (P's high word, signed) as int32, if it fits. */
-static bool q8_of(ssda__w_t pv, int32_t *out)
+static bool poly_q8_of(ssda__w_t pv, int32_t *out)
 {
     const ssda__w_t q = {pv.hi, ssda__w_neg_p(pv) ? UINT64_MAX : 0u};
     const int64_t v = ssda__w_to64(q);
@@ -110,12 +110,12 @@ int ssda_poly_eval(const ssda_poly_t *poly, int32_t x, int32_t y, int32_t *u_q8,
     }
     dx = (int64_t)x - poly->cx;
     dy = (int64_t)y - poly->cy;
-    if (dx < -((int64_t)2 << poly->kx) || dx > ((int64_t)2 << poly->kx) ||
-        dy < -((int64_t)2 << poly->ky) || dy > ((int64_t)2 << poly->ky)) {
+    if (dx < -ssda__pow2((uint32_t)poly->kx + 1u) || dx > ssda__pow2((uint32_t)poly->kx + 1u) ||
+        dy < -ssda__pow2((uint32_t)poly->ky + 1u) || dy > ssda__pow2((uint32_t)poly->ky + 1u)) {
         return SSDA_ERR_SIZE;
     }
-    if (!q8_of(ssda__poly_p(poly, poly->u_q24, (int32_t)dx, (int32_t)dy), &u) ||
-        !q8_of(ssda__poly_p(poly, poly->v_q24, (int32_t)dx, (int32_t)dy), &v)) {
+    if (!poly_q8_of(ssda__poly_p(poly, poly->u_q24, (int32_t)dx, (int32_t)dy), &u) ||
+        !poly_q8_of(ssda__poly_p(poly, poly->v_q24, (int32_t)dx, (int32_t)dy), &v)) {
         return SSDA_ERR_OVERFLOW;
     }
     *u_q8 = u;

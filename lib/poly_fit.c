@@ -48,14 +48,14 @@ static bool terms_of(const ssda_poly_t *p, const ssda_poly_pair_t *pr, int64_t *
     /* |ref - c * 256| <= 2^(k+8) inside; xn = that / 2^(k+8), exact in Q30 */
     const int64_t dx = (int64_t)pr->ref_x_q8 - (int64_t)p->cx * 256;
     const int64_t dy = (int64_t)pr->ref_y_q8 - (int64_t)p->cy * 256;
-    const int64_t lim_x = (int64_t)1 << (p->kx + 8u), lim_y = (int64_t)1 << (p->ky + 8u);
+    const int64_t lim_x = ssda__pow2((uint32_t)p->kx + 8u), lim_y = ssda__pow2((uint32_t)p->ky + 8u);
     int64_t x, y;
     if (dx < -lim_x || dx > lim_x || dy < -lim_y || dy > lim_y) {
         return false;
     }
-    x = dx * ((int64_t)1 << (22u - p->kx));
-    y = dy * ((int64_t)1 << (22u - p->ky));
-    phi[0] = (int64_t)1 << 30;
+    x = dx * ssda__pow2(22u - (uint32_t)p->kx);
+    y = dy * ssda__pow2(22u - (uint32_t)p->ky);
+    phi[0] = ssda__pow2(30u);
     phi[1] = x;
     phi[2] = y;
     /* products of two Q30 values <= 2^60, rounded back to Q30 */
@@ -290,17 +290,18 @@ static void write_out(const ssda_poly_t *dom, const ssda_poly_pair_t *pairs, siz
     ssda__w_t sum = {0u, 0u}; /* <= n * 2^63 < 2^77 */
     uint32_t t;
     size_t k;
-    ssda_poly_t p = *dom;
+    ssda_poly_t p;
     (void)memset(&res, 0, sizeof res);
+    p = *dom;
     for (t = 0u; t < m; t++) {
         p.u_q24[t] = ssda__w_to64(sv->c[0][t]);
         p.v_q24[t] = ssda__w_to64(sv->c[1][t]);
     }
     /* x = X + dx: X = cx + 2^kx xn (|c| <= 2^48: no overflow) */
-    p.u_q24[0] += (int64_t)p.cx * ((int64_t)1 << 24);
-    p.u_q24[1] += (int64_t)1 << (p.kx + 24u);
-    p.v_q24[0] += (int64_t)p.cy * ((int64_t)1 << 24);
-    p.v_q24[2] += (int64_t)1 << (p.ky + 24u);
+    p.u_q24[0] += (int64_t)p.cx * ssda__pow2(24u);
+    p.u_q24[1] += ssda__pow2((uint32_t)p.kx + 24u);
+    p.v_q24[0] += (int64_t)p.cy * ssda__pow2(24u);
+    p.v_q24[2] += ssda__pow2((uint32_t)p.ky + 24u);
     for (k = 0u; k < n; k++) {
         int64_t phi[SSDA_POLY_MAX_TERMS];
         uint64_t sq;

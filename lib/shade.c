@@ -13,7 +13,10 @@
 /* floor(a * b / 2^30) for |a * b| < 2^62 (shifted as unsigned). */
 static int64_t mul_q30(int64_t a, int64_t b)
 {
-    return (int64_t)(((uint64_t)(a * b + ((int64_t)1 << 62))) >> 30) - ((int64_t)1 << 32);
+    const int64_t prod = a * b;
+    const uint64_t biased = (uint64_t)prod + (uint64_t)4611686018427387904u; /* + 2^62: >= 0 */
+    const uint64_t q = biased >> 30;
+    return (int64_t)q - (int64_t)4294967296; /* - 2^32 */
 }
 
 /* sin(2 pi phase / 2^32) in Q15 ([-32768, 32768]): quarter-wave symmetry
@@ -29,14 +32,18 @@ static int32_t sin_q15(uint32_t phase)
     if ((quarter & 1u) != 0u) {
         f = 0x4000u - f; /* falling quarter: sin(pi - a) */
     }
-    t = (int64_t)f << 16;                           /* Q30, 0..2^30 */
+    t = (int64_t)f * 65536;                         /* Q30, 0..2^30 */
     t2 = mul_q30(t, t);                             /* <= 2^30 */
     s = a5 + mul_q30(a7, t2);                       /* Horner: |s| < 2^31, products < 2^62 */
     s = a3 + mul_q30(s, t2);
     s = a1 + mul_q30(s, t2);
     s = mul_q30(s, t);                              /* Q30, 0..2^30 */
-    s = (s + (1 << 14)) >> 15;                      /* Q15 (s >= 0) */
-    return (quarter & 2u) != 0u ? -(int32_t)s : (int32_t)s;
+    {
+        const uint64_t su = (uint64_t)s + 16384u;   /* s >= 0 */
+        const uint64_t q15 = su >> 15;              /* <= 2^15 */
+        const int32_t r = (int32_t)q15;
+        return (quarter & 2u) != 0u ? -r : r;
+    }
 }
 
 /* The three basis values at phase: 1, cos, sin in Q15. */
@@ -64,8 +71,12 @@ int ssda_shade_init(ssda_shade_t *sh, uint16_t width, uint16_t height, uint8_t f
     s.height = height;
     s.format = format;
     /* round(2^32 / n) < 2^31 for n >= 3 */
-    s.step_x = SSDA_DIV64_32(((uint64_t)1 << 32) + width / 2u, width);
-    s.step_y = SSDA_DIV64_32(((uint64_t)1 << 32) + height / 2u, height);
+    {
+        const uint32_t hw = (uint32_t)width / 2u, hh = (uint32_t)height / 2u;
+        const uint64_t nw = 0x100000000u + (uint64_t)hw, nh = 0x100000000u + (uint64_t)hh;
+        s.step_x = SSDA_DIV64_32(nw, width);
+        s.step_y = SSDA_DIV64_32(nh, height);
+    }
     s.state = SHADE_OPEN;
     *sh = s;
     return SSDA_OK;
@@ -141,23 +152,24 @@ static void row_terms(const ssda_shade_t *sh, uint32_t y, int64_t *h)
     uint32_t p;
     basis(sh->step_y * y, g);
     for (p = 0u; p < 3u; p++) {
-        h[p] = (int64_t)sh->k_q8[p * 3u] * g[0] + (int64_t)sh->k_q8[p * 3u + 1u] * g[1] +
-               (int64_t)sh->k_q8[p * 3u + 2u] * g[2];
+        const size_t base = (size_t)p * 3u;
+        const int32_t *k = &sh->k_q8[base];
+        h[p] = (int64_t)k[0] * g[0] + (int64_t)k[1] * g[1] + (int64_t)k[2] * g[2];
     }
 }
 
 /* Q38 -> Q8, rounded (floor of + 2^29): |v| < 2^60, shifted as unsigned. */
-static int32_t q8_of(int64_t v)
+static int32_t shade_q8_of(int64_t v)
 {
-    const uint64_t biased = (uint64_t)(v + ((int64_t)1 << 29)) + ((uint64_t)1 << 62);
-    return (int32_t)((int64_t)(biased >> 30) - ((int64_t)1 << 32));
+    const int64_t q = mul_q30(v + 0x20000000, 1); /* + 2^29, floor / 2^30 */
+    return (int32_t)q;
 }
 
 static int32_t s_at(const ssda_shade_t *sh, uint32_t x, uint32_t y)
 {
     int64_t h[3];
     row_terms(sh, y, h);
-    return q8_of(s_q38_row(sh, h, x));
+    return shade_q8_of(s_q38_row(sh, h, x));
 }
 
 /* Climb from (x, y) to the extremum by steps halving to 1 (sign: +1 for
@@ -173,8 +185,9 @@ static void climb(const ssda_shade_t *sh, int32_t sign, uint32_t step, uint32_t 
             uint32_t k, bx = x, by = y;
             moved = false;
             for (k = 0u; k < 9u; k++) {
-                const int64_t nx = (int64_t)x + ((int64_t)(k % 3u) - 1) * (int64_t)step;
-                const int64_t ny = (int64_t)y + ((int64_t)(k / 3u) - 1) * (int64_t)step;
+                const uint32_t kx = k % 3u, ky = k / 3u;
+                const int64_t nx = (int64_t)x + ((int64_t)kx - 1) * (int64_t)step;
+                const int64_t ny = (int64_t)y + ((int64_t)ky - 1) * (int64_t)step;
                 int64_t v;
                 if (nx < 0 || ny < 0 || nx >= (int64_t)sh->width || ny >= (int64_t)sh->height) {
                     continue;
@@ -203,7 +216,7 @@ static void find_centre(ssda_shade_t *sh, int32_t sign)
     const uint32_t sx = sh->width / 32u > 1u ? sh->width / 32u : 1u;
     const uint32_t sy = sh->height / 32u > 1u ? sh->height / 32u : 1u;
     uint32_t x, y, bx = 0u, by = 0u;
-    int64_t best = INT64_MIN;
+    int64_t best = -INT64_MAX;
     for (y = sy / 2u; y < sh->height; y += sy) {
         for (x = sx / 2u; x < sh->width; x += sx) {
             const int64_t v = (int64_t)sign * s_at(sh, x, y);
@@ -238,7 +251,13 @@ int ssda_shade_finish(ssda_shade_t *sh, uint8_t mode)
                                     (int64_t)sh->width * (int64_t)sh->height), 22u);
     for (p = 0u; p < 3u; p++) {
         for (q = 0u; q < 3u; q++) {
-            const int64_t s = (p == 0u ? 1 : 2) * (q == 0u ? 1 : 2);
+            int64_t s = 1; /* s_p s_q */
+            if (p != 0u) {
+                s *= 2;
+            }
+            if (q != 0u) {
+                s *= 2;
+            }
             /* |acc| <= n w h 65535 2^30, so |K| <= 4 * 65535 * 2^8 < 2^27 */
             sh->k_q8[p * 3u + q] = (int32_t)ssda__w_to64(
                 ssda__w_div_round(ssda__w_mul(load(sh->acc[p * 3u + q]), s), den));
@@ -300,7 +319,7 @@ int ssda_shade_apply_row(const ssda_shade_t *sh, uint32_t y, const void *in, voi
         const bool u8 = sh->format == (uint8_t)SSDA_PIX_U8;
         const int32_t v = u8 ? (int32_t)((const uint8_t *)in)[x] : (int32_t)((const uint16_t *)in)[x];
         /* 256 I - S + S(centre) + 128: |S| < 2^27, so within int32 */
-        const int32_t t = v * 256 - q8_of(s_q38_row(sh, h, x)) + sh->centre_q8 + 128;
+        const int32_t t = v * 256 - shade_q8_of(s_q38_row(sh, h, x)) + sh->centre_q8 + 128;
         const int32_t o = t < 0 ? 0 : (t / 256 > max ? max : t / 256);
         if (u8) {
             ((uint8_t *)out)[x] = (uint8_t)o;

@@ -101,7 +101,7 @@ int ssda_warp_init(ssda_warp_t *job, const ssda_warp_config_t *cfg, ssda_source_
     j.src = src;
     j.sink = cfg->sink;
     j.context = cfg->context;
-    j.row = (uint8_t *)cfg->row;
+    j.row = cfg->row;
     j.tile_w = plan.tile_w;
     j.tile_h = plan.tile_h;
     j.band = plan.band;
@@ -114,7 +114,7 @@ int ssda_warp_init(ssda_warp_t *job, const ssda_warp_config_t *cfg, ssda_source_
 }
 
 /* The high word of P: floor(256 * coordinate), as a signed value. */
-static int64_t q8_of(ssda__w_t p)
+static int64_t warp_q8_of(ssda__w_t p)
 {
     const ssda__w_t h = {p.hi, ssda__w_neg_p(p) ? UINT64_MAX : 0u};
     return ssda__w_to64(h);
@@ -129,15 +129,17 @@ static bool tile_region(const ssda_warp_t *job, uint32_t x0, uint32_t y0, uint32
     const ssda_poly_t *p = &job->map;
     const bool bil = job->resample == (uint8_t)SSDA_WARP_BILINEAR;
     const int64_t sw = job->src->cfg.width, sh = job->src->cfg.height;
-    int64_t lo[2], hi[2];
+    int64_t lo[2] = {0, 0}, hi[2] = {0, 0};
     uint32_t a, k;
     for (a = 0u; a < 2u; a++) {
         const int64_t *c = a == 0u ? p->u_q24 : p->v_q24;
         const int64_t d = ssda__warp_curve(p, c, n - 1u, m - 1u) + 1;
         for (k = 0u; k < 4u; k++) {
-            const int32_t dx = (int32_t)(x0 + ((k & 1u) != 0u ? n - 1u : 0u)) - p->cx;
-            const int32_t dy = (int32_t)(y0 + ((k & 2u) != 0u ? m - 1u : 0u)) - p->cy;
-            const int64_t q = q8_of(ssda__poly_p(p, c, dx, dy));
+            const uint32_t cxk = (k & 1u) != 0u ? x0 + n - 1u : x0;
+            const uint32_t cyk = (k & 2u) != 0u ? y0 + m - 1u : y0;
+            const int32_t dx = (int32_t)cxk - p->cx;
+            const int32_t dy = (int32_t)cyk - p->cy;
+            const int64_t q = warp_q8_of(ssda__poly_p(p, c, dx, dy));
             lo[a] = k == 0u || q < lo[a] ? q : lo[a];
             hi[a] = k == 0u || q > hi[a] ? q : hi[a];
         }
@@ -162,8 +164,11 @@ static bool tile_region(const ssda_warp_t *job, uint32_t x0, uint32_t y0, uint32
     }
     r->x = (uint16_t)lo[0];
     r->y = (uint16_t)lo[1];
-    r->width = (uint16_t)(hi[0] - lo[0] + 1);
-    r->height = (uint16_t)(hi[1] - lo[1] + 1);
+    {
+        const int64_t rw = hi[0] - lo[0] + 1, rh = hi[1] - lo[1] + 1; /* 1..65535 */
+        r->width = (uint16_t)rw;
+        r->height = (uint16_t)rh;
+    }
     return true;
 }
 
@@ -222,10 +227,12 @@ static SSDA_NOINLINE int sample_slow(tile_t *t, int64_t uq, int64_t vq, uint32_t
             t->filled++;
             return SSDA_OK;
         }
-        xa = (uint32_t)(uq >> 8); /* uq >= 0 here */
-        ya = (uint32_t)(vq >> 8);
-        fx = (uint32_t)uq & 255u;
-        fy = (uint32_t)vq & 255u;
+        const uint64_t uu = (uint64_t)uq, vu = (uint64_t)vq; /* >= 0 here */
+        const uint64_t ui = uu >> 8, vi = vu >> 8;
+        xa = (uint32_t)ui;
+        ya = (uint32_t)vi;
+        fx = (uint32_t)uu & 255u;
+        fy = (uint32_t)vu & 255u;
         xb = xa + (fx != 0u ? 1u : 0u);
         yb = ya + (fy != 0u ? 1u : 0u);
     } else {
@@ -235,8 +242,10 @@ static SSDA_NOINLINE int sample_slow(tile_t *t, int64_t uq, int64_t vq, uint32_t
             t->filled++;
             return SSDA_OK;
         }
-        xa = xb = (uint32_t)iu;
-        ya = yb = (uint32_t)iv;
+        xa = (uint32_t)iu;
+        xb = xa;
+        ya = (uint32_t)iv;
+        yb = ya;
     }
     if (xa < t->c.x0 || xb >= t->c.x0 + t->c.pw || ya < t->c.y0 || yb >= t->c.y0 + t->c.ph) {
         const int err = place(t, xa, xb, ya, yb);
@@ -275,15 +284,17 @@ static int segment_rows(tile_t *t, uint32_t x, uint32_t y, uint32_t n, ssda__w_t
     const ssda_source_t *s = job->src;
     const bool bil = job->resample == (uint8_t)SSDA_WARP_BILINEAR;
     const int64_t d = ssda__warp_curve(p, p->v_q24, n - 1u, 0u) + 1;
-    const int64_t v0 = q8_of(v_first);
-    const int64_t v1 = q8_of(ssda__poly_p(p, p->v_q24, (int32_t)(x + n - 1u) - p->cx, (int32_t)y - p->cy));
+    const int64_t v0 = warp_q8_of(v_first);
+    const uint32_t xe = x + n - 1u;
+    const int64_t v1 = warp_q8_of(ssda__poly_p(p, p->v_q24, (int32_t)xe - p->cx, (int32_t)y - p->cy));
     int64_t ra = ssda__warp_px((v0 < v1 ? v0 : v1) - d + (bil ? 0 : 128));
     int64_t rb = ssda__warp_px((v0 > v1 ? v0 : v1) + d + (bil ? 0 : 128)) + (bil ? 1 : 0);
+    const uint32_t c_end = t->c.y0 + t->c.ph;
     uint32_t xa;
     ra = ra < (int64_t)t->region.y ? (int64_t)t->region.y : ra;
     rb = rb >= (int64_t)t->region.y + t->region.height ? (int64_t)t->region.y + t->region.height - 1 : rb;
     if (s->view != NULL || !t->has_region || ra > rb || rb - ra + 1 > (int64_t)s->ph ||
-        (t->c.ph != 0u && ra >= (int64_t)t->c.y0 && rb < (int64_t)(t->c.y0 + t->c.ph))) {
+        (t->c.ph != 0u && ra >= (int64_t)t->c.y0 && rb < (int64_t)c_end)) {
         return SSDA_OK;
     }
     xa = t->c.pw != 0u ? t->c.x0 : t->region.x;
@@ -294,6 +305,7 @@ static int segment_rows(tile_t *t, uint32_t x, uint32_t y, uint32_t n, ssda__w_t
 static int segment(tile_t *t, uint32_t x, uint32_t y, uint32_t n)
 {
     const ssda_warp_t *job = t->job;
+    uint8_t *const out = t->job->row;
     const ssda_poly_t *p = &job->map;
     const bool bil = job->resample == (uint8_t)SSDA_WARP_BILINEAR;
     const bool u16 = job->format == (uint8_t)SSDA_PIX_U16;
@@ -328,15 +340,15 @@ static int segment(tile_t *t, uint32_t x, uint32_t y, uint32_t n)
                 v = blend(r0[0], r0[1], r1[0], r1[1], (uint32_t)a & 255u, (uint32_t)b & 255u);
             }
         } else {
-            const int err = sample_slow(t, q8_of(fu.d[0]), q8_of(fv.d[0]), &v);
+            const int err = sample_slow(t, warp_q8_of(fu.d[0]), warp_q8_of(fv.d[0]), &v);
             if (err != SSDA_OK) {
                 return err;
             }
         }
         if (u16) {
-            ((uint16_t *)(void *)job->row)[i] = (uint16_t)v;
+            ((uint16_t *)(void *)out)[i] = (uint16_t)v;
         } else {
-            job->row[i] = (uint8_t)v;
+            out[i] = (uint8_t)v;
         }
         /* the next pixel: P, then its differences (order 1: D2 = D3 = 0) */
         fu.d[0] = ssda__w_add(fu.d[0], fu.d[1]);
@@ -350,7 +362,7 @@ static int segment(tile_t *t, uint32_t x, uint32_t y, uint32_t n)
             }
         }
     }
-    return job->sink(job->context, x, y, n, job->row);
+    return job->sink(job->context, x, y, n, out);
 }
 
 /* Shape the plate for one tile of a streamed source. */
@@ -360,9 +372,12 @@ static void tile_begin(tile_t *t, uint32_t x0, uint32_t y0, uint32_t n, uint32_t
     const bool bil = t->job->resample == (uint8_t)SSDA_WARP_BILINEAR;
     t->has_region = tile_region(t->job, x0, y0, n, m, &t->region);
     if (s->view == NULL && t->has_region) {
-        const uint32_t span = bil && t->region.width > 1u ? 2u : 1u;
         const uint32_t rows = (uint32_t)t->job->band + 1u < t->region.height
                                   ? (uint32_t)t->job->band + 1u : t->region.height;
+        uint32_t span = 1u;
+        if (bil && t->region.width > 1u) {
+            span = 2u;
+        }
         /* the arena holds a span x 2 plate (checked at init): no error */
         (void)stream_plate_plan(s, &t->region, span, rows, 1u, 0u);
     }

@@ -2,9 +2,7 @@
    many source rows and columns a piece of the output samples. */
 #include "warp_internal.h"
 
-#define BOUND_MAX ((int64_t)1 << 60)
-
-static const ssda__w_t W_ONE = {1u, 0u};
+#define BOUND_MAX ((int64_t)0x1000000000000000) /* 2^60 */
 
 static uint64_t mag(int64_t v)
 {
@@ -14,7 +12,8 @@ static uint64_t mag(int64_t v)
 /* ceil(a / 2^n) for a >= 0, saturated at BOUND_MAX. */
 static int64_t ceil_shift(ssda__w_t a, uint32_t n)
 {
-    const ssda__w_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__w_shl(W_ONE, n), W_ONE)), n);
+    const ssda__w_t one = {1u, 0u};
+    const ssda__w_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__w_shl(one, n), one)), n);
     return q.hi != 0u || q.lo > (uint64_t)BOUND_MAX ? BOUND_MAX : (int64_t)q.lo;
 }
 
