@@ -167,7 +167,7 @@ static void test_exact_against_eval(void)
                 if (g_out[y][x] != want) {
                     char msg[80];
                     snprintf(msg, sizeof msg, "trial %d order %u resample %u at (%u, %u)", trial, order,
-                             resample, x, y);
+                             resample, (unsigned)x, (unsigned)y);
                     TEST_ASSERT_EQUAL_UINT16_MESSAGE(want, g_out[y][x], msg);
                 }
             }

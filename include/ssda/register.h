@@ -1,0 +1,141 @@
+/*
+ * register.h - control points for the registration of two images (bands
+ * of one scene from different cameras, or two dates): one point per cell of
+ * a grid over the reference, found by correlation or by SSDA, sub-pixel,
+ * ready for ssda_poly_fit (poly.h) and ssda_warp (warp.h).
+ *
+ * Seed: Nagao et al. 1975, section 3.2: the reference (1000 x 800) is cut
+ * into 4 x 4 parts and one feature point is taken from each; a 20 x 20
+ * window X around it is searched in a 40 x 40 area Y of the other image by
+ * the correlation coefficient rho, and the pair is accepted when
+ * |rho| > 0.65 (a negative rho still matches: bands whose contrast is
+ * inverted); SSDA was 10-20x faster but less accurate across bands.
+ *
+ * METHOD, per cell (cells: the reference split into grid_x x grid_y parts,
+ * cell i spanning columns floor(i w / grid_x) .. floor((i+1) w / grid_x) - 1,
+ * rows alike):
+ *  1. the most textured window: among window positions on a lattice of
+ *     `step` px inside the cell, the one whose pixels have the largest
+ *     variance (n sum v^2 - (sum v)^2, exact; ties: the first in raster
+ *     order); below min_texture the cell is FLAT;
+ *  2. its search area in the moving image: search x search px centred on
+ *     the window's centre moved by (offset_x, offset_y), clipped to the
+ *     image (narrower than the window: OUTSIDE);
+ *  3. the best placement: SSDA_REGISTER_SAD, the exact SAD minimum
+ *     (ssda_match, automatic threshold, bounds); the correlation metrics
+ *     come with the correlation search of ncc.h;
+ *  4. sub-pixel: on each axis a parabola through the score at the best
+ *     placement and its two neighbours, offset
+ *     (s(-1) - s(+1)) / (2 (s(-1) - 2 s(0) + s(+1))), clamped to +-1/2 px,
+ *     in Q8 (none on an axis where a neighbour is outside the area);
+ *  5. status: BORDER when the best placement touches the edge of the
+ *     search area (the true match may lie beyond it), else OK.
+ * The pair is (window centre in the reference, matched centre in the
+ * moving image): centre = top-left + (window - 1) / 2 px.
+ *
+ * STREAMING: both images are sources (stream.h), in RAM or streamed; the
+ * window and the area are copied through ssda_source_row into the work
+ * buffer, so a streamed source needs an arena of one row of its widest
+ * span (the cell's width for the reference, the area's for the moving
+ * image); a plate of window rows (reference) and search rows (moving)
+ * reads each byte about once per cell.
+ */
+#ifndef SSDA_REGISTER_H
+#define SSDA_REGISTER_H
+
+#include "ssda/poly.h"
+#include "ssda/stream.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* How a window is matched. */
+typedef enum {
+    SSDA_REGISTER_NCC = 0,    /* correlation coefficient rho (the seed's) */
+    SSDA_REGISTER_ABSNCC = 1, /* |rho|: inverted contrast matches too */
+    SSDA_REGISTER_SAD = 2     /* SSDA: the exact minimum of the SAD */
+} ssda_register_metric_t;
+
+/* What became of a cell. */
+typedef enum {
+    SSDA_REGISTER_OK = 0,      /* accepted */
+    SSDA_REGISTER_FLAT = 1,    /* no window with texture >= min_texture */
+    SSDA_REGISTER_LOW_RHO = 2, /* |rho| (rho for NCC) not above min_rho */
+    SSDA_REGISTER_BORDER = 3,  /* best placement on the edge of the area */
+    SSDA_REGISTER_OUTSIDE = 4  /* the search area leaves the moving image */
+} ssda_register_status_t;
+
+/* Defaults: the seed's 4 x 4 grid, 20 x 20 window, 40 x 40 area, 0.65. */
+#define SSDA_REGISTER_DEFAULT_GRID 4u
+#define SSDA_REGISTER_DEFAULT_WINDOW 20u
+#define SSDA_REGISTER_DEFAULT_SEARCH 40u
+#define SSDA_REGISTER_DEFAULT_MIN_RHO_Q30 697932186 /* 0.65 in Q2.30 */
+
+/* Options. A zero-filled struct means the defaults (SSDA metric until the
+   correlation search is built in: see metric). */
+typedef struct {
+    uint16_t grid_x, grid_y; /* cells across and down, 1..256; 0 = 4 */
+    uint16_t window;         /* window side, px, 2..255; 0 = 20 */
+    uint16_t search;         /* search area side, px, window..1024; 0 = 40 */
+    uint16_t step;           /* texture lattice, px; 0 = window / 4 (>= 1) */
+    uint8_t metric;          /* ssda_register_metric_t */
+    int32_t min_rho_q30;     /* acceptance, Q2.30; 0 = 0.65 */
+    uint32_t min_texture;    /* variance below which a window is flat,
+                                (grey levels)^2 * n^2 / n^2 = grey^2;
+                                0 = 4 (8-bit) or 1024 (16-bit) */
+    int32_t offset_x;        /* expected displacement moving - reference, px */
+    int32_t offset_y;
+} ssda_register_config_t;
+
+/* One cell's control point. */
+typedef struct {
+    ssda_poly_pair_t pair;   /* reference and moving centres, px Q23.8 */
+    int32_t rho_q30;         /* rho at the match (correlation metrics); 0
+                                with SSDA */
+    uint64_t sad;            /* SAD at the match (SSDA), else 0 */
+    uint32_t texture;        /* the window's variance, grey^2 (saturated) */
+    uint16_t cell_x, cell_y;
+    uint8_t status;          /* ssda_register_status_t */
+} ssda_register_point_t;
+
+/* Work bytes for a window of `window` px and an area of `search` px
+   (format: bytes per pixel): the window and the area, and the search's own
+   work buffer. */
+#define SSDA_REGISTER_WORK_SIZE(window, search, format)                        \
+    (SSDA_STREAM_ALIGN4_((size_t)(window) * (size_t)(window) * (size_t)(format)) + \
+     SSDA_STREAM_ALIGN4_((size_t)(search) * (size_t)(search) * (size_t)(format)) + \
+     SSDA_MATCH_WORK_SIZE(search, search, window, window) + 8u)
+
+/*
+ * Find a control point in every cell (see METHOD).
+ *   ref, mov:  initialised sources of the same format (in RAM or streamed;
+ *              two streamed sources need arenas that do not overlap).
+ *   cfg:       options (NULL = defaults).
+ *   out, out_count: grid_x * grid_y points, raster order of the cells
+ *              (all written on success, accepted or not).
+ *   accepted:  NULL or the number of OK points.
+ *   work, work_size: SSDA_REGISTER_WORK_SIZE(window, search, format) bytes,
+ *              8-byte aligned.
+ * Returns SSDA_OK, or with out untouched:
+ *   SSDA_ERR_NULL    ref, mov, out or work NULL
+ *   SSDA_ERR_STATE   a source not initialised
+ *   SSDA_ERR_FORMAT  formats differ
+ *   SSDA_ERR_ARG     options out of range; one streamed source twice or
+ *                    overlapping arenas
+ *   SSDA_ERR_SIZE    a cell smaller than the window (grid too fine), or
+ *                    out_count below grid_x * grid_y
+ *   SSDA_ERR_BUFFER  work_size short or misaligned; an arena that cannot
+ *                    hold one span
+ *   SSDA_ERR_UNSUPPORTED  a correlation metric before ncc.h is built in
+ * or a read() error unchanged (then out holds the cells done before it).
+ */
+int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
+                         const ssda_register_config_t *cfg, ssda_register_point_t *out,
+                         size_t out_count, size_t *accepted, void *work, size_t work_size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SSDA_REGISTER_H */

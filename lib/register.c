@@ -1,0 +1,352 @@
+/*
+ * register.c - control points per grid cell (register.h): the most
+ * textured window, its match in the moving image, a sub-pixel peak.
+ */
+#include <string.h>
+#include "ssda/register.h"
+#include "i128.h"
+#include "stream_internal.h"
+#include "fixmath.h"
+
+/* A resolved configuration. */
+typedef struct {
+    uint32_t gx, gy, win, search, step;
+    uint8_t metric;
+    int32_t min_rho_q30;
+    uint32_t min_texture;
+    int32_t off_x, off_y;
+    uint32_t bpp;
+} reg_cfg_t;
+
+/* Work buffer parts. */
+typedef struct {
+    uint8_t *win;    /* win x win, packed */
+    uint8_t *area;   /* up to search x search, packed */
+    void *match;     /* the search's own work */
+    size_t match_size;
+} reg_work_t;
+
+static int resolve(const ssda_register_config_t *in, const ssda_source_t *ref, reg_cfg_t *c)
+{
+    ssda_register_config_t z;
+    const ssda_register_config_t *cfg = in;
+    if (cfg == NULL) {
+        (void)memset(&z, 0, sizeof z);
+        cfg = &z;
+    }
+    c->gx = cfg->grid_x != 0u ? cfg->grid_x : SSDA_REGISTER_DEFAULT_GRID;
+    c->gy = cfg->grid_y != 0u ? cfg->grid_y : SSDA_REGISTER_DEFAULT_GRID;
+    c->win = cfg->window != 0u ? cfg->window : SSDA_REGISTER_DEFAULT_WINDOW;
+    c->search = cfg->search != 0u ? cfg->search : SSDA_REGISTER_DEFAULT_SEARCH;
+    c->step = cfg->step != 0u ? cfg->step : (c->win / 4u > 0u ? c->win / 4u : 1u);
+    c->metric = cfg->metric;
+    c->min_rho_q30 = cfg->min_rho_q30 != 0 ? cfg->min_rho_q30 : SSDA_REGISTER_DEFAULT_MIN_RHO_Q30;
+    c->bpp = ref->cfg.format;
+    c->min_texture = cfg->min_texture != 0u ? cfg->min_texture : (c->bpp == 1u ? 4u : 1024u);
+    c->off_x = cfg->offset_x;
+    c->off_y = cfg->offset_y;
+    if (c->gx > 256u || c->gy > 256u || c->win < 2u || c->win > 255u || c->search < c->win ||
+        c->search > 1024u || c->metric > (uint8_t)SSDA_REGISTER_SAD || c->min_rho_q30 < 0 ||
+        c->off_x < -65535 || c->off_x > 65535 || c->off_y < -65535 || c->off_y > 65535) {
+        return SSDA_ERR_ARG;
+    }
+    if (c->metric != (uint8_t)SSDA_REGISTER_SAD) {
+        return SSDA_ERR_UNSUPPORTED; /* the correlation search: ncc.h */
+    }
+    return SSDA_OK;
+}
+
+/* Copy the w x h rectangle at (x, y) of s into dst (packed rows). */
+static int copy_rect(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint32_t h,
+                     uint8_t *dst)
+{
+    const size_t row = (size_t)w * s->cfg.format;
+    uint32_t r;
+    for (r = 0u; r < h; r++) {
+        const uint8_t *px;
+        const int err = ssda_source_row(s, x, y + r, w, &px);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        (void)memcpy(dst + (size_t)r * row, px, row);
+    }
+    return SSDA_OK;
+}
+
+/* n sum v^2 - (sum v)^2 of the win x win window at (x, y): exact (n <=
+   65025, sum v < 2^32, sum v^2 < 2^48; the result < 2^64 + fits 128). */
+static int window_spread(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t win, ssda__w_t *out)
+{
+    uint64_t s1 = 0u, s2 = 0u;
+    uint32_t r, i;
+    for (r = 0u; r < win; r++) {
+        const uint8_t *px;
+        const int err = ssda_source_row(s, x, y + r, win, &px);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        for (i = 0u; i < win; i++) {
+            const uint32_t v = s->cfg.format == (uint8_t)SSDA_PIX_U8
+                                   ? (uint32_t)px[i]
+                                   : (uint32_t)((const uint16_t *)(const void *)px)[i];
+            s1 += v;
+            s2 += (uint64_t)v * v;
+        }
+    }
+    *out = ssda__w_sub(ssda__w_mul64((int64_t)win * (int64_t)win, (int64_t)s2),
+                       ssda__w_mul64((int64_t)s1, (int64_t)s1));
+    return SSDA_OK;
+}
+
+/* The search area of the window with top-left (wx, wy): search x search
+   px centred on the window's centre moved by the offset (its top-left
+   moves with the window's), as [x0, x1) x [y0, y1) before clipping. */
+static void area_of(const reg_cfg_t *c, uint32_t wx, uint32_t wy, int64_t *a)
+{
+    const uint32_t half = (c->search - c->win) / 2u;
+    const int64_t margin = (int64_t)half;
+    a[0] = (int64_t)wx + c->off_x - margin;
+    a[1] = (int64_t)wy + c->off_y - margin;
+    a[2] = a[0] + c->search;
+    a[3] = a[1] + c->search;
+}
+
+/* The most textured window of the cell [x0, x1) x [y0, y1): top-left in
+   *bx, *by, its n^2 * variance in *best. Windows whose whole search area
+   lies in the moving image (mw x mh) come first: a match at the clipped
+   edge of an area could not tell a window half outside the image; only
+   when no window has such an area are the others taken. */
+static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *cell,
+                         uint32_t mw, uint32_t mh, uint32_t *bx, uint32_t *by, ssda__w_t *best)
+{
+    uint32_t pass, x, y;
+    bool any = false;
+    for (pass = 0u; pass < 2u && !any; pass++) {
+        for (y = cell[2]; y + c->win <= cell[3]; y += c->step) {
+            for (x = cell[0]; x + c->win <= cell[1]; x += c->step) {
+                int64_t a[4];
+                ssda__w_t v;
+                int err;
+                area_of(c, x, y, a);
+                if (pass == 0u && (a[0] < 0 || a[1] < 0 || a[2] > (int64_t)mw || a[3] > (int64_t)mh)) {
+                    continue;
+                }
+                err = window_spread(s, x, y, c->win, &v);
+                if (err != SSDA_OK) {
+                    return err;
+                }
+                if (!any || ssda__w_lt(*best, v)) {
+                    *best = v;
+                    *bx = x;
+                    *by = y;
+                    any = true;
+                }
+            }
+        }
+    }
+    return SSDA_OK;
+}
+
+/* round(128 (a - b) / den) clamped to [-128, 128] (Q8 px), 0 when den is
+   0: the vertex of a fit through (-1, a), (0, m), (1, b). */
+static int32_t vertex_q8(int64_t a, int64_t b, int64_t den)
+{
+    ssda__w_t q;
+    int64_t v;
+    if (den == 0) {
+        return 0;
+    }
+    q = ssda__w_div_round(ssda__w_mul64(a - b, 128), ssda__w_i64(den));
+    v = ssda__w_fits64(q) ? ssda__w_to64(q) : 0;
+    v = v > 128 ? 128 : (v < -128 ? -128 : v);
+    return (int32_t)v;
+}
+
+/* Sub-pixel offset of a SAD minimum m between neighbours a and b: the
+   equiangular (V-shaped) fit, which suits absolute differences (a
+   parabola, right for squared differences and correlation, biases SAD
+   peaks toward the integer): (a - b) / (2 (max(a, b) - m)). */
+static int32_t sad_vertex_q8(int64_t a, int64_t m, int64_t b)
+{
+    return vertex_q8(a, b, (a > b ? a : b) - m); /* |.| < 2^48 */
+}
+
+/* SAD at (x, y) of the area, or -1 outside its placements. */
+static int64_t sad_or_none(const ssda_view_t *area, const ssda_view_t *win, int64_t x, int64_t y)
+{
+    uint64_t sad;
+    if (x < 0 || y < 0 || x + win->width > area->width || y + win->height > area->height) {
+        return -1;
+    }
+    (void)ssda_sad_at(area, win, (uint16_t)x, (uint16_t)y, &sad);
+    return (int64_t)sad; /* < 2^48 */
+}
+
+/* Match the copied window in the copied area: the best placement, the
+   score and the sub-pixel offsets. */
+static void match_sad(const ssda_view_t *area, const ssda_view_t *win, const reg_work_t *w,
+                      uint32_t *bx, uint32_t *by, int32_t *ox, int32_t *oy, uint64_t *score)
+{
+    ssda_match_config_t mc;
+    ssda_match_result_t res;
+    int64_t s0, l, r, u, d;
+    (void)memset(&mc, 0, sizeof mc);
+    mc.flags = SSDA_MATCH_BOUNDS;
+    mc.work = w->match;
+    mc.work_size = w->match_size;
+    (void)ssda_match(area, win, &mc, &res); /* arguments checked by the caller */
+    *bx = res.x;
+    *by = res.y;
+    *score = res.sad;
+    s0 = (int64_t)res.sad;
+    l = sad_or_none(area, win, (int64_t)res.x - 1, res.y);
+    r = sad_or_none(area, win, (int64_t)res.x + 1, res.y);
+    u = sad_or_none(area, win, res.x, (int64_t)res.y - 1);
+    d = sad_or_none(area, win, res.x, (int64_t)res.y + 1);
+    *ox = l >= 0 && r >= 0 ? sad_vertex_q8(l, s0, r) : 0;
+    *oy = u >= 0 && d >= 0 ? sad_vertex_q8(u, s0, d) : 0;
+}
+
+/* One cell: fills *pt. */
+static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_work_t *w,
+                uint32_t i, uint32_t j, ssda_register_point_t *pt)
+{
+    const uint32_t rw = ref->cfg.width, rh = ref->cfg.height;
+    const uint32_t x0 = SSDA_DIV32(i * rw, c->gx), x1 = SSDA_DIV32((i + 1u) * rw, c->gx);
+    const uint32_t y0 = SSDA_DIV32(j * rh, c->gy), y1 = SSDA_DIV32((j + 1u) * rh, c->gy);
+    const int64_t n2 = (int64_t)c->win * c->win * c->win * c->win;
+    const uint32_t cell_box[4] = {x0, x1, y0, y1};
+    uint32_t wx = x0, wy = y0, bx, by;
+    int64_t ax0, ay0, ax1, ay1;
+    uint32_t aw, ah;
+    ssda__w_t spread = {0u, 0u};
+    ssda_view_t av, wv;
+    int32_t ox, oy;
+    uint64_t score;
+    int err;
+    (void)memset(pt, 0, sizeof *pt);
+    pt->cell_x = (uint16_t)i;
+    pt->cell_y = (uint16_t)j;
+    err = most_textured(ref, c, cell_box, mov->cfg.width, mov->cfg.height, &wx, &wy, &spread);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    {
+        /* texture = spread / n^2 (grey^2), saturated */
+        const ssda__w_t t = ssda__w_div_floor(spread, ssda__w_i64(n2));
+        pt->texture = t.hi != 0u || t.lo > UINT32_MAX ? UINT32_MAX : (uint32_t)t.lo;
+    }
+    {
+        /* centre = top-left + (win - 1) / 2, Q8: < 2^25 */
+        const uint32_t rx = (2u * wx + c->win - 1u) * 128u, ry = (2u * wy + c->win - 1u) * 128u;
+        pt->pair.ref_x_q8 = (int32_t)rx;
+        pt->pair.ref_y_q8 = (int32_t)ry;
+    }
+    pt->pair.mov_x_q8 = pt->pair.ref_x_q8;
+    pt->pair.mov_y_q8 = pt->pair.ref_y_q8;
+    if (ssda__w_lt(spread, ssda__w_mul64(n2, (int64_t)c->min_texture))) {
+        pt->status = (uint8_t)SSDA_REGISTER_FLAT;
+        return SSDA_OK;
+    }
+    /* the area: search x search centred on the window's centre + offset
+       (its top-left moves with the window's), clipped to the image */
+    {
+        int64_t a[4];
+        area_of(c, wx, wy, a);
+        ax0 = a[0];
+        ay0 = a[1];
+        ax1 = a[2];
+        ay1 = a[3];
+    }
+    ax0 = ax0 < 0 ? 0 : ax0;
+    ay0 = ay0 < 0 ? 0 : ay0;
+    ax1 = ax1 > (int64_t)mov->cfg.width ? (int64_t)mov->cfg.width : ax1;
+    ay1 = ay1 > (int64_t)mov->cfg.height ? (int64_t)mov->cfg.height : ay1;
+    if (ax1 - ax0 < (int64_t)c->win || ay1 - ay0 < (int64_t)c->win) {
+        pt->status = (uint8_t)SSDA_REGISTER_OUTSIDE;
+        return SSDA_OK;
+    }
+    aw = (uint32_t)ax1 - (uint32_t)ax0; /* 0 <= ax0 < ax1 <= 65535 */
+    ah = (uint32_t)ay1 - (uint32_t)ay0;
+    err = copy_rect(ref, wx, wy, c->win, c->win, w->win);
+    if (err == SSDA_OK) {
+        err = copy_rect(mov, (uint32_t)ax0, (uint32_t)ay0, aw, ah, w->area);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    (void)ssda_view_init(&wv, w->win, (uint16_t)c->win, (uint16_t)c->win, c->win * c->bpp,
+                         (ssda_pixfmt_t)c->bpp);
+    (void)ssda_view_init(&av, w->area, (uint16_t)aw, (uint16_t)ah, aw * c->bpp,
+                         (ssda_pixfmt_t)c->bpp);
+    match_sad(&av, &wv, w, &bx, &by, &ox, &oy, &score);
+    pt->sad = score;
+    pt->pair.mov_x_q8 = (int32_t)((2 * (ax0 + (int64_t)bx) + (int64_t)c->win - 1) * 128) + ox;
+    pt->pair.mov_y_q8 = (int32_t)((2 * (ay0 + (int64_t)by) + (int64_t)c->win - 1) * 128) + oy;
+    pt->status = (uint8_t)SSDA_REGISTER_OK;
+    if (bx == 0u || by == 0u || bx + c->win == av.width || by + c->win == av.height) {
+        pt->status = (uint8_t)SSDA_REGISTER_BORDER;
+    }
+    return SSDA_OK;
+}
+
+int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
+                         const ssda_register_config_t *cfg, ssda_register_point_t *out,
+                         size_t out_count, size_t *accepted, void *work, size_t work_size)
+{
+    reg_cfg_t c;
+    reg_work_t w;
+    size_t ok = 0u, winb, areab;
+    uint32_t i, j;
+    int err;
+    if (ref == NULL || mov == NULL || out == NULL || work == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!stream_ready(ref) || !stream_ready(mov)) {
+        return SSDA_ERR_STATE;
+    }
+    if (ref->cfg.format != mov->cfg.format) {
+        return SSDA_ERR_FORMAT;
+    }
+    err = resolve(cfg, ref, &c);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (stream_plates_clash(ref, mov)) {
+        return SSDA_ERR_ARG;
+    }
+    if (SSDA_DIV32(ref->cfg.width, c.gx) < c.win || SSDA_DIV32(ref->cfg.height, c.gy) < c.win ||
+        out_count < (size_t)c.gx * c.gy) {
+        return SSDA_ERR_SIZE;
+    }
+    winb = SSDA_STREAM_ALIGN4_((size_t)c.win * c.win * c.bpp);
+    areab = SSDA_STREAM_ALIGN4_((size_t)c.search * c.search * c.bpp);
+    if (work_size < SSDA_REGISTER_WORK_SIZE(c.win, c.search, c.bpp) ||
+        (((uintptr_t)work) & 7u) != 0u) {
+        return SSDA_ERR_BUFFER;
+    }
+    /* a streamed source must hold the widest span it is asked for */
+    if ((ref->view == NULL && stream_plate_fit_w(ref, 1u, 0u) < c.win) ||
+        (mov->view == NULL && stream_plate_fit_w(mov, 1u, 0u) < c.search &&
+         stream_plate_fit_w(mov, 1u, 0u) < mov->cfg.width)) {
+        return SSDA_ERR_BUFFER;
+    }
+    w.win = (uint8_t *)work;
+    w.area = w.win + winb;
+    w.match = w.area + areab;
+    w.match_size = work_size - winb - areab;
+    for (j = 0u; j < c.gy; j++) {
+        for (i = 0u; i < c.gx; i++) {
+            ssda_register_point_t *pt = &out[(size_t)j * c.gx + i];
+            err = cell(ref, mov, &c, &w, i, j, pt);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            ok += pt->status == (uint8_t)SSDA_REGISTER_OK ? 1u : 0u;
+        }
+    }
+    if (accepted != NULL) {
+        *accepted = ok;
+    }
+    return SSDA_OK;
+}

@@ -1,0 +1,420 @@
+/*
+ * test_register.c - control points on pairs with a known map: the moving
+ * image is made here from the reference by a smooth map with a bilinear
+ * resampler written in this file (not the library's warp); each point must
+ * lie on the map within 0.35 px. The chosen window against a brute-force
+ * variance over the lattice, the placement against the brute-force SAD
+ * minimum, statuses (flat cells, areas outside the image, matches on the
+ * area's border), streamed sources equal to in-RAM ones, and errors.
+ */
+#include <string.h>
+#include "unity.h"
+#include "ssda/register.h"
+#include "test_image.h"
+#include "test_rng.h"
+#include "test_source.h"
+
+void setUp(void) {}
+void tearDown(void) {}
+
+#define RW 240u
+#define RH 180u
+
+static uint8_t g_ref[RH][RW], g_mov[RH][RW];
+static uint16_t g_ref16[RH][RW], g_mov16[RH][RW];
+static uint64_t g_work[(SSDA_REGISTER_WORK_SIZE(40, 80, 2) + 7u) / 8u];
+static ssda_register_point_t g_pts[64], g_pts2[64];
+static uint8_t g_dev_r[RW * RH * 2u + 64u], g_dev_m[RW * RH * 2u + 64u];
+static uint32_t g_arena_r[2048], g_arena_m[2048];
+static test_source_t g_tr, g_tm;
+
+/* The known map: moving = reference + (dx, dy) + a rotation of `rot` rad
+   about the centre (small-angle form, exact as a map). */
+typedef struct {
+    double dx, dy, rot;
+} map_t;
+
+static void map_apply(const map_t *m, double X, double Y, double *x, double *y)
+{
+    const double cx = RW / 2.0, cy = RH / 2.0;
+    *x = X + m->dx - m->rot * (Y - cy);
+    *y = Y + m->dy + m->rot * (X - cx);
+}
+
+/* A smooth random field: noise blurred by three passes of a 7-tap box
+   (correlation length ~5 px), sampled between grid points by Catmull-Rom
+   bicubic interpolation, so that the moving image holds the same field at
+   sub-pixel positions. */
+#define FP 8 /* pad around the field */
+static double g_field[RH + 2 * FP][RW + 2 * FP];
+
+static void make_field(test_rng_t *r)
+{
+    static double tmp[RH + 2 * FP][RW + 2 * FP];
+    int x, y, pass, k;
+    for (y = 0; y < (int)RH + 2 * FP; y++)
+        for (x = 0; x < (int)RW + 2 * FP; x++) g_field[y][x] = (double)test_rng_next(r) / 4294967296.0;
+    for (pass = 0; pass < 3; pass++) {
+        for (y = 0; y < (int)RH + 2 * FP; y++)
+            for (x = 0; x < (int)RW + 2 * FP; x++) {
+                double s = 0;
+                for (k = -3; k <= 3; k++) {
+                    int xx = x + k < 0 ? 0 : (x + k >= (int)RW + 2 * FP ? (int)RW + 2 * FP - 1 : x + k);
+                    s += g_field[y][xx];
+                }
+                tmp[y][x] = s / 7.0;
+            }
+        for (y = 0; y < (int)RH + 2 * FP; y++)
+            for (x = 0; x < (int)RW + 2 * FP; x++) {
+                double s = 0;
+                for (k = -3; k <= 3; k++) {
+                    int yy = y + k < 0 ? 0 : (y + k >= (int)RH + 2 * FP ? (int)RH + 2 * FP - 1 : y + k);
+                    s += tmp[yy][x];
+                }
+                g_field[y][x] = s / 7.0;
+            }
+    }
+}
+
+static double cubic(double p0, double p1, double p2, double p3, double t)
+{
+    return p1 + 0.5 * t * (p2 - p0 + t * (2 * p0 - 5 * p1 + 4 * p2 - p3 + t * (3 * (p1 - p2) + p3 - p0)));
+}
+
+/* The field at (x, y) px of the image (clamped into the padded grid), as a
+   grey level: the blurred noise (sd ~0.05) stretched around 128. */
+static double texture(double x, double y)
+{
+    double col[4], v;
+    int ix, iy, j, k;
+    x += FP;
+    y += FP;
+    x = x < 1 ? 1 : (x > RW + 2 * FP - 3 ? RW + 2 * FP - 3 : x);
+    y = y < 1 ? 1 : (y > RH + 2 * FP - 3 ? RH + 2 * FP - 3 : y);
+    ix = (int)x;
+    iy = (int)y;
+    for (j = 0; j < 4; j++) {
+        const double *row = g_field[iy - 1 + j];
+        col[j] = cubic(row[ix - 1], row[ix], row[ix + 1], row[ix + 2], x - ix);
+    }
+    (void)k;
+    v = 128.0 + (cubic(col[0], col[1], col[2], col[3], y - iy) - 0.5) * 1400.0;
+    v = v < 0 ? 0 : (v > 255 ? 255 : v);
+    return (double)(int)(v + 0.5);
+}
+
+/* The pair: reference = the field, moving(x, y) = the field at the
+   reference position that maps to (x, y) (the map inverted by a fixed-point
+   iteration: it is close to the identity). invert: 255 - that. */
+static void make_pair(test_rng_t *r, const map_t *m, int invert)
+{
+    uint32_t x, y;
+    make_field(r);
+    for (y = 0; y < RH; y++) {
+        for (x = 0; x < RW; x++) {
+            double X = x, Y = y, u, v;
+            int it;
+            g_ref[y][x] = (uint8_t)texture(x, y);
+            for (it = 0; it < 20; it++) {
+                map_apply(m, X, Y, &u, &v);
+                X -= u - x;
+                Y -= v - y;
+            }
+            g_mov[y][x] = (uint8_t)(invert ? 255 - (int)texture(X, Y) : (int)texture(X, Y));
+            g_ref16[y][x] = (uint16_t)(g_ref[y][x] * 16u);
+            g_mov16[y][x] = (uint16_t)(g_mov[y][x] * 16u);
+        }
+    }
+}
+
+static void ram_sources(ssda_source_t *ref, ssda_source_t *mov, uint8_t format)
+{
+    ssda_view_t a, b;
+    if (format == SSDA_PIX_U8) {
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, g_ref, RW, RH, RW, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, g_mov, RW, RH, RW, SSDA_PIX_U8));
+    } else {
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, g_ref16, RW, RH, RW * 2, SSDA_PIX_U16));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, g_mov16, RW, RH, RW * 2, SSDA_PIX_U16));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(ref, &a));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(mov, &b));
+}
+
+static void stream_sources(ssda_source_t *ref, ssda_source_t *mov, uint8_t format, size_t ar, size_t am)
+{
+    ssda_source_t r0, m0;
+    ssda_view_t a, b;
+    ssda_source_config_t ca, cb;
+    ram_sources(&r0, &m0, format);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, r0.view, RW, RH, RW * format, (ssda_pixfmt_t)format));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, m0.view, RW, RH, RW * format, (ssda_pixfmt_t)format));
+    test_source_init(&g_tr, g_dev_r, sizeof g_dev_r, 1);
+    test_source_init(&g_tm, g_dev_m, sizeof g_dev_m, 1);
+    ca = test_source_config(&g_tr, &a, SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 0, 1, g_arena_r, ar);
+    cb = test_source_config(&g_tm, &b, SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 0, 1, g_arena_m, am);
+    test_source_store(&g_tr, &ca, &a);
+    test_source_store(&g_tm, &cb, &b);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(ref, &ca));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(mov, &cb));
+}
+
+/* Every cell of a textured pair with a known shift and rotation: OK, on
+   the map within 0.75 px, RMS below 0.25 px (sub-pixel), both formats. */
+static void test_points_on_known_map(void)
+{
+    test_rng_t r;
+    int trial;
+    double sum2 = 0;
+    int count = 0;
+    test_rng_seed(&r, 0x52454749u);
+    for (trial = 0; trial < 6; trial++) {
+        const map_t m = {((double)test_rng_next(&r) / 4294967296.0 - 0.5) * 12.0,
+                         ((double)test_rng_next(&r) / 4294967296.0 - 0.5) * 12.0,
+                         ((double)test_rng_next(&r) / 4294967296.0 - 0.5) * 0.02};
+        const uint8_t format = (uint8_t)(1 + trial % 2);
+        ssda_source_t ref, mov;
+        ssda_register_config_t cfg;
+        size_t ok = 0, k;
+        make_pair(&r, &m, 0);
+        ram_sources(&ref, &mov, format);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.metric = SSDA_REGISTER_SAD;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok,
+                                                            g_work, sizeof g_work));
+        TEST_ASSERT_EQUAL_UINT32(16, (uint32_t)ok);
+        for (k = 0; k < 16; k++) {
+            double x, y, ex, ey;
+            TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_OK, g_pts[k].status);
+            TEST_ASSERT_EQUAL_UINT16(k % 4, g_pts[k].cell_x);
+            TEST_ASSERT_EQUAL_UINT16(k / 4, g_pts[k].cell_y);
+            map_apply(&m, g_pts[k].pair.ref_x_q8 / 256.0, g_pts[k].pair.ref_y_q8 / 256.0, &x, &y);
+            ex = g_pts[k].pair.mov_x_q8 / 256.0 - x;
+            ey = g_pts[k].pair.mov_y_q8 / 256.0 - y;
+            TEST_ASSERT_TRUE(ex * ex + ey * ey < 0.75 * 0.75);
+            sum2 += ex * ex + ey * ey;
+            count++;
+        }
+    }
+    TEST_ASSERT_TRUE(sum2 / count < 0.25 * 0.25);
+}
+
+/* The window of each cell is the brute-force most-varied one on the
+   lattice; the placement is the brute-force SAD minimum of that window in
+   that area. */
+static void test_window_and_placement_brute_force(void)
+{
+    test_rng_t r;
+    const map_t m = {3.0, -2.0, 0.0};
+    ssda_source_t ref, mov;
+    ssda_register_config_t cfg;
+    ssda_view_t rv, mv;
+    size_t k;
+    test_rng_seed(&r, 11);
+    make_pair(&r, &m, 0);
+    ram_sources(&ref, &mov, SSDA_PIX_U8);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&rv, g_ref, RW, RH, RW, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&mv, g_mov, RW, RH, RW, SSDA_PIX_U8));
+    memset(&cfg, 0, sizeof cfg);
+    cfg.metric = SSDA_REGISTER_SAD;
+    cfg.grid_x = 3;
+    cfg.grid_y = 2;
+    cfg.window = 16;
+    cfg.search = 30;
+    cfg.step = 3;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 6, NULL, g_work, sizeof g_work));
+    for (k = 0; k < 6; k++) {
+        const uint32_t i = k % 3, j = k / 3;
+        const uint32_t x0 = i * RW / 3, x1 = (i + 1) * RW / 3, y0 = j * RH / 2, y1 = (j + 1) * RH / 2;
+        uint32_t x, y, bx = 0, by = 0, ax, ay, px, py;
+        double best = -1;
+        uint64_t bsad;
+        ssda_view_t area, win;
+        for (y = y0; y + 16 <= y1; y += 3) {
+            for (x = x0; x + 16 <= x1; x += 3) {
+                double s1 = 0, s2 = 0, v;
+                uint32_t a, b;
+                /* windows whose 30 x 30 area fits the image first (every
+                   cell has some here) */
+                if (x < 7 || y < 7 || x + 23 > RW || y + 23 > RH) {
+                    continue;
+                }
+                for (b = 0; b < 16; b++)
+                    for (a = 0; a < 16; a++) {
+                        s1 += g_ref[y + b][x + a];
+                        s2 += (double)g_ref[y + b][x + a] * g_ref[y + b][x + a];
+                    }
+                v = 256.0 * s2 - s1 * s1;
+                if (v > best) { best = v; bx = x; by = y; }
+            }
+        }
+        TEST_ASSERT_EQUAL_INT32((int32_t)(2 * bx + 15) * 128, g_pts[k].pair.ref_x_q8);
+        TEST_ASSERT_EQUAL_INT32((int32_t)(2 * by + 15) * 128, g_pts[k].pair.ref_y_q8);
+        /* area: 30 x 30 around the window (offset 0), clipped */
+        ax = bx >= 7 ? bx - 7 : 0;
+        ay = by >= 7 ? by - 7 : 0;
+        {
+            uint32_t aw = (bx + 23 > RW ? RW : bx + 23) - ax, ah = (by + 23 > RH ? RH : by + 23) - ay;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&area, &mv, (uint16_t)ax, (uint16_t)ay, (uint16_t)aw, (uint16_t)ah));
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&win, &rv, (uint16_t)bx, (uint16_t)by, 16, 16));
+        test_best(&area, &win, &px, &py, &bsad);
+        TEST_ASSERT_EQUAL_UINT64(bsad, g_pts[k].sad);
+        /* the integer part of the match (sub-pixel within +-1/2) */
+        TEST_ASSERT_INT32_WITHIN(128, (int32_t)(2 * (ax + px) + 15) * 128, g_pts[k].pair.mov_x_q8);
+        TEST_ASSERT_INT32_WITHIN(128, (int32_t)(2 * (ay + py) + 15) * 128, g_pts[k].pair.mov_y_q8);
+    }
+}
+
+/* Flat cells, areas that leave the image, and matches beyond the search
+   range (reported on the border). */
+static void test_statuses(void)
+{
+    test_rng_t r;
+    const map_t m = {0.0, 0.0, 0.0};
+    ssda_source_t ref, mov;
+    ssda_register_config_t cfg;
+    size_t ok, k;
+    uint32_t x, y;
+    test_rng_seed(&r, 12);
+    make_pair(&r, &m, 0);
+    for (y = 0; y < RH / 4; y++)
+        for (x = 0; x < RW / 4; x++) g_ref[y][x] = 77; /* cell (0, 0) flat */
+    ram_sources(&ref, &mov, SSDA_PIX_U8);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.metric = SSDA_REGISTER_SAD;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_FLAT, g_pts[0].status);
+    TEST_ASSERT_EQUAL_UINT32(0, g_pts[0].texture);
+    TEST_ASSERT_EQUAL_UINT32(15, (uint32_t)ok);
+    /* the same pair shifted by 25 px: beyond +-10, matches on the border */
+    {
+        const map_t far = {25.0, 0.0, 0.0};
+        test_rng_seed(&r, 12);
+        make_pair(&r, &far, 0);
+    }
+    /* the true match lies outside every area: no point is on the map
+       (what SSDA finds there is the best of wrong placements: on the
+       border, or inside; the seed's rho threshold is what rejects those) */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok, g_work, sizeof g_work));
+    for (k = 0; k < 16; k++) {
+        TEST_ASSERT_FALSE(g_pts[k].status == SSDA_REGISTER_OK &&
+                          g_pts[k].pair.mov_x_q8 - g_pts[k].pair.ref_x_q8 > 24 * 256 &&
+                          g_pts[k].pair.mov_x_q8 - g_pts[k].pair.ref_x_q8 < 26 * 256);
+    }
+    /* with the offset given, found again */
+    cfg.offset_x = 25;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok, g_work, sizeof g_work));
+    TEST_ASSERT_TRUE(ok >= 12); /* the right column's areas leave the image */
+    for (k = 0; k < 16; k++) {
+        if (g_pts[k].status == SSDA_REGISTER_OK) {
+            TEST_ASSERT_INT32_WITHIN(90, g_pts[k].pair.ref_x_q8 + 25 * 256, g_pts[k].pair.mov_x_q8);
+        }
+    }
+    /* an offset that puts every area outside */
+    cfg.offset_x = 1000;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok, g_work, sizeof g_work));
+    for (k = 0; k < 16; k++) TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_OUTSIDE, g_pts[k].status);
+}
+
+/* Streamed sources in small arenas give the in-RAM points. */
+static void test_streamed_equals_ram(void)
+{
+    test_rng_t r;
+    const map_t m = {4.5, -3.25, 0.01};
+    ssda_source_t ref, mov;
+    ssda_register_config_t cfg;
+    uint8_t format;
+    test_rng_seed(&r, 13);
+    make_pair(&r, &m, 0);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.metric = SSDA_REGISTER_SAD;
+    for (format = 1; format <= 2; format++) {
+        static const size_t arenas[][2] = {{40, 80}, {600, 700}, {4096, 4096}};
+        size_t a;
+        ram_sources(&ref, &mov, format);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+        for (a = 0; a < 3; a++) {
+            stream_sources(&ref, &mov, format, arenas[a][0] * format, arenas[a][1] * format);
+            memset(g_pts2, 0xEE, sizeof g_pts2);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, sizeof g_work));
+            TEST_ASSERT_EQUAL_MEMORY(g_pts, g_pts2, 16 * sizeof g_pts[0]);
+        }
+        /* a read error comes back unchanged */
+        stream_sources(&ref, &mov, format, 600 * format, 700 * format);
+        g_tm.fail_at_read = 5;
+        g_tm.fail_code = -41;
+        TEST_ASSERT_EQUAL_INT(-41, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, sizeof g_work));
+        stream_sources(&ref, &mov, format, 600 * format, 700 * format);
+        g_tr.fail_at_read = 3;
+        g_tr.fail_code = -42;
+        TEST_ASSERT_EQUAL_INT(-42, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, sizeof g_work));
+    }
+}
+
+static void test_errors(void)
+{
+    ssda_source_t ref, mov, zero;
+    ssda_register_config_t cfg;
+    ram_sources(&ref, &mov, SSDA_PIX_U8);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.metric = SSDA_REGISTER_SAD;
+    memset(g_pts, 0x5A, sizeof g_pts);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_register_points(NULL, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_register_points(&ref, NULL, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_register_points(&ref, &mov, &cfg, NULL, 16, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, NULL, sizeof g_work));
+    memset(&zero, 0, sizeof zero);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_register_points(&zero, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_register_points(&ref, &zero, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    {
+        ssda_source_t m16, r16;
+        ram_sources(&r16, &m16, SSDA_PIX_U16);
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_register_points(&ref, &m16, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 15, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, SSDA_REGISTER_WORK_SIZE(20, 40, 1) - 1));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, (uint8_t *)g_work + 4, sizeof g_work - 8));
+    cfg.grid_x = 13; /* 240 / 13 = 18 < 20 */
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 64, NULL, g_work, sizeof g_work));
+    cfg.grid_x = 0;
+    cfg.grid_y = 257;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 64, NULL, g_work, sizeof g_work));
+    cfg.grid_y = 0;
+    cfg.window = 1;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    cfg.window = 30;
+    cfg.search = 29;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    cfg.window = 0;
+    cfg.search = 0;
+    cfg.metric = 3;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    cfg.metric = SSDA_REGISTER_SAD;
+    cfg.min_rho_q30 = -1;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    cfg.min_rho_q30 = 0;
+    cfg.offset_y = 70000;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    cfg.offset_y = 0;
+    /* one streamed source given twice */
+    stream_sources(&ref, &mov, SSDA_PIX_U8, 4000, 4000);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &ref, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    /* arenas too small for a span */
+    stream_sources(&ref, &mov, SSDA_PIX_U8, 8, 4000);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    stream_sources(&ref, &mov, SSDA_PIX_U8, 4000, 36);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, g_pts, sizeof g_pts);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_points_on_known_map);
+    RUN_TEST(test_window_and_placement_brute_force);
+    RUN_TEST(test_statuses);
+    RUN_TEST(test_streamed_equals_ram);
+    RUN_TEST(test_errors);
+    return UNITY_END();
+}
