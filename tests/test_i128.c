@@ -18,12 +18,12 @@ static ssda__w_t w_of(uint64_t hi, uint64_t lo)
     return v;
 }
 
+#if defined(__SIZEOF_INT128__)
 static uint64_t r64(test_rng_t *r)
 {
     return ((uint64_t)test_rng_next(r) << 32) | test_rng_next(r);
 }
 
-#if defined(__SIZEOF_INT128__)
 typedef __int128 n128;
 static n128 n_of(ssda__w_t v)
 {

@@ -19,6 +19,12 @@
 void setUp(void) {}
 void tearDown(void) {}
 
+#ifndef SSDA_TEST_SMALL
+#define SCALE 1
+#else
+#define SCALE 3 /* emulated boards: a third of the trials */
+#endif
+
 #define SW 200u /* source */
 #define SH 150u
 #define OW 180u /* output (the map's grid) */
@@ -131,7 +137,7 @@ static void test_exact_against_eval(void)
     ssda_view_t v;
     test_rng_seed(&r, 0x57415250u);
     view_of(&v, SSDA_PIX_U16);
-    for (trial = 0; trial < 24; trial++) {
+    for (trial = 0; trial < 24 / SCALE; trial++) {
         const uint8_t order = (uint8_t)(1 + trial % 3);
         const uint8_t resample = (uint8_t)((trial / 3) % 2);
         const int axis = (trial / 6) % 2;
@@ -282,7 +288,7 @@ static void test_streamed_equals_ram(void)
     int trial;
     size_t gi;
     test_rng_seed(&r, 0x5354524Du);
-    for (trial = 0; trial < 12; trial++) {
+    for (trial = 0; trial < 12 / SCALE; trial++) {
         const uint8_t format = (uint8_t)(1 + trial % 2);
         const uint8_t rs = (uint8_t)((trial / 2) % 2);
         ssda_view_t v;
@@ -322,7 +328,7 @@ static void test_plan_bounds_and_reads(void)
     test_rng_t r;
     int trial;
     test_rng_seed(&r, 0x504C414Eu);
-    for (trial = 0; trial < 30; trial++) {
+    for (trial = 0; trial < 30 / SCALE; trial++) {
         const uint8_t rs = (uint8_t)(trial % 2);
         const uint16_t tw = (uint16_t)(trial % 3 == 0 ? 0 : test_rng_range(&r, 16, OW));
         ssda_poly_t map;
