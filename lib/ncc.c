@@ -36,14 +36,16 @@ static void row_sums(const uint8_t *p, uint8_t format, uint32_t n, uint32_t *s, 
     uint64_t q = 0u;
     if (format == (uint8_t)SSDA_PIX_U8) {
         for (i = 0u; i < n; i++) {
+            const uint32_t sq = (uint32_t)p[i] * p[i];
             a += p[i];
-            q += (uint32_t)p[i] * p[i];
+            q += sq;
         }
     } else {
         const uint16_t *p16 = (const uint16_t *)(const void *)p;
         for (i = 0u; i < n; i++) {
+            const uint32_t sq = (uint32_t)p16[i] * p16[i]; /* < 2^32 */
             a += p16[i];
-            q += (uint64_t)((uint32_t)p16[i] * p16[i]);
+            q += sq;
         }
     }
     *s += a;
@@ -69,7 +71,8 @@ int64_t ssda__ncc_num(uint32_t n, uint64_t saw, uint32_t sa, uint32_t sw)
     const uint64_t p = (uint64_t)n * saw;  /* <= 2^16 * 2^16 * 65535^2 < 2^64 */
     const uint64_t q = (uint64_t)sa * sw;  /* < 2^64 */
     /* the difference is within +-2^62 (ncc.h), so both casts are exact */
-    return p >= q ? (int64_t)(p - q) : -(int64_t)(q - p);
+    const uint64_t d = p >= q ? p - q : q - p;
+    return p >= q ? (int64_t)d : -(int64_t)d;
 }
 
 void ssda__ncc_place(const ssda_view_t *area, const ssda_view_t *window,
@@ -104,10 +107,19 @@ static uint64_t mag(int64_t v)
     return v < 0 ? (uint64_t)(-v) : (uint64_t)v;
 }
 
+/* The sign of rho (of |rho| when abs): -1, 0 or 1. */
+static int rho_sign(int64_t num, bool abs)
+{
+    if (num == 0) {
+        return 0;
+    }
+    return (num > 0 || abs) ? 1 : -1;
+}
+
 int ssda__ncc_cmp(const ssda__ncc_key_t *a, const ssda__ncc_key_t *b, bool abs)
 {
-    const int sa = a->num > 0 ? 1 : (a->num < 0 ? (abs ? 1 : -1) : 0);
-    const int sb = b->num > 0 ? 1 : (b->num < 0 ? (abs ? 1 : -1) : 0);
+    const int sa = rho_sign(a->num, abs);
+    const int sb = rho_sign(b->num, abs);
     ssda__u192_t l, r;
     int c;
     if (sa != sb) {
@@ -140,7 +152,7 @@ int32_t ssda__ncc_rho_q30(const ssda__ncc_key_t *k, uint64_t var_w)
     rhs.w0 = n2.lo << 60;
     rhs.w1 = (n2.hi << 60) | (n2.lo >> 4);
     rhs.w2 = n2.hi >> 4;
-    for (bit = 1u << 30; bit != 0u; bit >>= 1) {
+    for (bit = (uint32_t)1u << 30; bit != 0u; bit >>= 1) {
         const uint32_t t = q | bit; /* < 2^31 */
         const ssda__u192_t lhs = ssda__mul_128x64(d, (uint64_t)t * t);
         if (ssda__cmp_192(&lhs, &rhs) <= 0) {

@@ -48,9 +48,8 @@ typedef struct {
 } engine_t;
 
 /* Lay the tables out in the work buffer (8-byte arrays first). */
-static void layout(engine_t *e, void *work)
+static void layout(engine_t *e, uint64_t *q)
 {
-    uint64_t *q = (uint64_t *)work;
     uint32_t *p;
     const size_t r = ((size_t)e->M + 1u) * e->tw;
     e->wsaa = q;
@@ -89,8 +88,9 @@ static void window_rest(engine_t *e)
             uint32_t i;
             for (i = 0u; i < e->L; i++) {
                 const uint32_t v = e->u8 ? p[i] : ((const uint16_t *)(const void *)p)[i];
+                const uint32_t sq = v * v; /* < 2^32 */
                 s += v;
-                ss += (uint64_t)(v * v);
+                ss += sq;
             }
         }
         n_rest += group_rows(e, g) * e->L;
@@ -105,16 +105,19 @@ static void window_sums_u8(const uint8_t *p, uint32_t L, uint32_t n, uint32_t *s
     uint32_t a = 0u, i;
     uint64_t q = 0u;
     for (i = 0u; i < L; i++) {
+        const uint32_t sq = (uint32_t)p[i] * p[i];
         a += p[i];
-        q += (uint32_t)p[i] * p[i];
+        q += sq;
     }
     s[0] = a;
     ss[0] = q;
     for (i = 1u; i < n; i++) {
         const uint32_t in = p[i + L - 1u];
         const uint32_t out = p[i - 1u];
+        const uint32_t in2 = in * in;
+        const uint32_t out2 = out * out;
         a = a + in - out;
-        q = q + in * in - out * out; /* the sum holds out^2: no wrap */
+        q = q + in2 - out2; /* the sum holds out^2: no wrap */
         s[i] = a;
         ss[i] = q;
     }
@@ -126,16 +129,19 @@ static void window_sums_u16(const uint16_t *p, uint32_t L, uint32_t n, uint32_t 
     uint32_t a = 0u, i;
     uint64_t q = 0u;
     for (i = 0u; i < L; i++) {
+        const uint32_t sq = (uint32_t)p[i] * p[i]; /* < 2^32 */
         a += p[i];
-        q += (uint64_t)((uint32_t)p[i] * p[i]);
+        q += sq;
     }
     s[0] = a;
     ss[0] = q;
     for (i = 1u; i < n; i++) {
         const uint32_t in = p[i + L - 1u];
         const uint32_t out = p[i - 1u];
+        const uint32_t in2 = in * in; /* < 2^32 */
+        const uint32_t out2 = out * out;
         a = a + in - out;
-        q = q + (uint64_t)(in * in) - (uint64_t)(out * out);
+        q = q + in2 - out2; /* the sum holds out^2: no wrap */
         s[i] = a;
         ss[i] = q;
     }
@@ -221,13 +227,18 @@ static void offer(engine_t *e, const ssda__ncc_key_t *k, uint32_t x, uint32_t y)
    all the same), < 2^50 for a, b < 2^49. */
 static uint64_t amgm(uint64_t a, uint64_t b)
 {
-    int32_t k = ((int32_t)ssda__bitlen64(b) - (int32_t)ssda__bitlen64(a)) / 2;
-    if (k >= 0) {
-        const uint64_t bk = (b + (((uint64_t)1u << k) - 1u)) >> k; /* ceil */
-        return ((a << k) + bk + 1u) >> 1;
+    const uint32_t la = ssda__bitlen64(a);
+    const uint32_t lb = ssda__bitlen64(b);
+    uint32_t k;       /* |log2 of the power of two|, <= 32 */
+    uint64_t round;   /* 2^k - 1: the shifted-out part, to round up */
+    if (lb >= la) {
+        k = (lb - la) / 2u;
+        round = ((uint64_t)1u << k) - 1u;
+        return ((a << k) + ((b + round) >> k) + 1u) >> 1;
     }
-    k = -k;
-    return (((a + (((uint64_t)1u << k) - 1u)) >> k) + (b << k) + 1u) >> 1;
+    k = (la - lb) / 2u;
+    round = ((uint64_t)1u << k) - 1u;
+    return (((a + round) >> k) + (b << k) + 1u) >> 1;
 }
 
 /* The state of one position during its products. */
@@ -246,7 +257,7 @@ static bool cut_after(engine_t *e, pos_t *p, uint32_t g, uint32_t i)
 {
     const uint32_t rows_left = e->M - (g + 1u) * e->G;
     const uint64_t n_r = (uint64_t)rows_left * e->L;     /* < 2^16 */
-    uint64_t saa_r, ea, b, sasw, m, m2;
+    uint64_t saa_r, ea, b, sasw, m, cw, ds, cdn;
     uint32_t sa_r, r;
     uint32_t slot = e->slot0 + g * e->G; /* < 2 (M + 1): one wrap at most */
     int64_t base, ub, lb;
@@ -260,7 +271,7 @@ static bool cut_after(engine_t *e, pos_t *p, uint32_t g, uint32_t i)
         p->saa_done += e->ring2[off];
         slot = slot == e->M ? 0u : slot + 1u;
     }
-    e->ops += 2u * e->G;
+    e->ops += 2u * (uint64_t)e->G;
     sa_r = p->sa - p->sa_done;
     saa_r = p->saa - p->saa_done;
     /* sum over R of (S - c)^2, exact: each term < 2^49 */
@@ -268,8 +279,10 @@ static bool cut_after(engine_t *e, pos_t *p, uint32_t g, uint32_t i)
     b = amgm(ea, e->ew_rest[g]);
     /* sum_R S W = c Sw_R + d Sa_R - c d n_R + sum_R (S - c)(W - d), |.| <= b;
        every term < 2^50, so base and both bounds fit int64 */
-    base = (int64_t)p->dot + (int64_t)((uint64_t)p->c * e->sw_rest[g]) +
-           (int64_t)((uint64_t)e->d * sa_r) - (int64_t)((uint64_t)p->c * e->d * n_r);
+    cw = (uint64_t)p->c * e->sw_rest[g];
+    ds = (uint64_t)e->d * sa_r;
+    cdn = (uint64_t)p->c * e->d * n_r;
+    base = (int64_t)p->dot + (int64_t)cw + (int64_t)ds - (int64_t)cdn;
     ub = base + (int64_t)b;
     lb = base - (int64_t)b;
     e->ops++;
@@ -295,7 +308,7 @@ static bool cut_after(engine_t *e, pos_t *p, uint32_t g, uint32_t i)
             return false; /* unbounded here: keep going */
         }
         if ((uint64_t)lb * e->w.n < sasw) {
-            m2 = sasw - (uint64_t)lb * e->w.n;
+            const uint64_t m2 = sasw - (uint64_t)lb * e->w.n;
             m = m2 > m ? m2 : m;
         }
     }
@@ -358,11 +371,10 @@ static void evaluate(engine_t *e, uint32_t x, uint32_t y, uint32_t sa, uint64_t 
 static void row_span(const engine_t *e, uint32_t y, uint32_t *xa, uint32_t *xb)
 {
     const uint32_t dy = y > e->py ? y - e->py : e->py - y;
-    uint32_t h;
     *xa = e->x0;
     *xb = e->x1;
     if (e->disk) {
-        h = ssda_isqrt64((uint64_t)e->r2 - (uint64_t)dy * dy);
+        const uint32_t h = ssda_isqrt64((uint64_t)e->r2 - (uint64_t)dy * dy);
         if (e->px - e->x0 > h) {
             *xa = e->px - h;
         }
@@ -434,7 +446,7 @@ static void setup(engine_t *e, const ssda_view_t *area, const ssda_view_t *windo
         e->y1 = ny - 1u - e->py > r ? e->py + r : ny - 1u;
     }
     e->tw = e->x1 - e->x0 + 1u;
-    layout(e, cfg->work);
+    layout(e, (uint64_t *)cfg->work); /* 8-byte aligned (checked) */
 }
 
 /* rho of the 8 neighbours of the best position (SSDA_NCC_AROUND). */

@@ -21,8 +21,9 @@
  * are not used. The two lanes are then added to the 32-bit sum (UXTAH and an
  * ADD with LSR #16): 7 instructions per 2 pixels with the loads.
  *
- * Products (correlation), 8-bit: UXTB16 spreads bytes 0 and 2 (and, after a
- * rotation by 8, bytes 1 and 3) of a word into two halfword lanes; SMLAD
+ * Products (correlation), 8-bit: a mask spreads bytes 0 and 2 (and, after a
+ * shift by 8, bytes 1 and 3) of a word into two halfword lanes (one AND
+ * each, the shift folded into it); SMLAD
  * multiplies both lane pairs and adds them to the accumulator. The lanes hold
  * 0..255, so the signed products are the unsigned ones, and the 32-bit sum
  * wraps like uint32_t arithmetic: the total < 2^32 (kernels.h) is exact
@@ -167,19 +168,13 @@ uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
     return sum;
 }
 
-/* Rotate right by 8 bits (one ROR). */
-static inline uint32_t ror8(uint32_t v)
-{
-    return (v >> 8) | (v << 24);
-}
-
 /* Products of four byte pairs added to acc (see the file comment). */
 static inline uint32_t dot_u8x4(uint32_t a, uint32_t b, uint32_t acc)
 {
-    acc = (uint32_t)__smlad((int16x2_t)__uxtb16((uint8x4_t)a), (int16x2_t)__uxtb16((uint8x4_t)b),
-                            (int32_t)acc);
-    return (uint32_t)__smlad((int16x2_t)__uxtb16((uint8x4_t)ror8(a)),
-                             (int16x2_t)__uxtb16((uint8x4_t)ror8(b)), (int32_t)acc);
+    const uint32_t lanes = 0x00FF00FFu; /* bytes 0 and 2 as halfword lanes */
+    acc = (uint32_t)__smlad((int16x2_t)(a & lanes), (int16x2_t)(b & lanes), (int32_t)acc);
+    return (uint32_t)__smlad((int16x2_t)((a >> 8) & lanes), (int16x2_t)((b >> 8) & lanes),
+                             (int32_t)acc);
 }
 
 uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,

@@ -98,7 +98,7 @@ static inline __m128i madd_u8x8(__m128i acc, __m128i a, __m128i b)
                                              _mm_unpacklo_epi8(b, zero)));
 }
 
-static inline __m128i load32(const uint8_t *p)
+static inline __m128i load32(const void *p)
 {
     int32_t w;
     (void)memcpy(&w, p, sizeof w);
@@ -113,37 +113,39 @@ uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
     const uint32_t r3 = n & 3u;
     uint32_t tail = 0u, r;
     if (n == 16u) { /* the common window width, straight-line */
-        for (r = 0u; r < rows; r++, a += astride, b += bstride) {
-            const __m128i va = load128(a);
-            const __m128i vb = load128(b);
+        for (r = 0u; r < rows; r++) {
+            const __m128i va = load128(a + r * astride);
+            const __m128i vb = load128(b + r * bstride);
             acc = madd_u8x8(acc, va, vb);
             acc = madd_u8x8(acc, _mm_unpackhi_epi64(va, va), _mm_unpackhi_epi64(vb, vb));
         }
         return hsum_u32x4(acc);
     }
-    for (r = 0u; r < rows; r++, a += astride, b += bstride) {
+    for (r = 0u; r < rows; r++) {
+        const uint8_t *pa = a + r * astride;
+        const uint8_t *pb = b + r * bstride;
         uint32_t i;
         for (i = 0u; i < n16; i += 16u) {
-            const __m128i va = load128(a + i);
-            const __m128i vb = load128(b + i);
+            const __m128i va = load128(pa + i);
+            const __m128i vb = load128(pb + i);
             acc = madd_u8x8(acc, va, vb);
             acc = madd_u8x8(acc, _mm_unpackhi_epi64(va, va), _mm_unpackhi_epi64(vb, vb));
         }
         if ((n & 8u) != 0u) {
-            acc = madd_u8x8(acc, _mm_loadl_epi64((const __m128i *)(const void *)(a + i)),
-                            _mm_loadl_epi64((const __m128i *)(const void *)(b + i)));
+            acc = madd_u8x8(acc, _mm_loadl_epi64((const __m128i *)(const void *)(pa + i)),
+                            _mm_loadl_epi64((const __m128i *)(const void *)(pb + i)));
             i += 8u;
         }
         if ((n & 4u) != 0u) {
-            acc = madd_u8x8(acc, load32(a + i), load32(b + i));
+            acc = madd_u8x8(acc, load32(pa + i), load32(pb + i));
             i += 4u;
         }
         if (r3 != 0u) { /* at most three: written out, no loop to vectorise */
-            tail += (uint32_t)a[i] * b[i];
+            tail += (uint32_t)pa[i] * pb[i];
             if (r3 > 1u) {
-                tail += (uint32_t)a[i + 1u] * b[i + 1u];
+                tail += (uint32_t)pa[i + 1u] * pb[i + 1u];
                 if (r3 > 2u) {
-                    tail += (uint32_t)a[i + 2u] * b[i + 2u];
+                    tail += (uint32_t)pa[i + 2u] * pb[i + 2u];
                 }
             }
         }
