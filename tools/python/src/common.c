@@ -81,8 +81,7 @@ static int type_error(PyObject *obj, const char *what, const char *want, const c
     PyObject *name = dtype_name(obj, fmt);
     if (name != NULL) {
         PyErr_Format(PyExc_TypeError, "%s must be %s, got dtype %U (convert it with "
-                     ".astype(); a view is taken where the layout allows, else a copy)",
-                     what, want, name);
+                     ".astype() if its values fit)", what, want, name);
         Py_DECREF(name);
     }
     return -1;
