@@ -75,7 +75,8 @@ int ssdapy_match_options(PyObject *kw, ssda_match_config_t *cfg, int allow_predi
 {
     unsigned long long k = 0, lambda = 0, fixed = 0, step = 0;
     PyObject *v;
-    int scan_given = PyDict_GetItemString(kw, "scan") != NULL;
+    PyObject *scan = PyDict_GetItemString(kw, "scan"); /* borrowed */
+    int scan_given = scan != NULL && scan != Py_None;
     memset(cfg, 0, sizeof *cfg);
     cfg->flags = SSDA_MATCH_BOUNDS; /* exact either way; less work on a host */
     if (take_enum(kw, "threshold", thresholds, &cfg->threshold) != 0 ||
