@@ -50,9 +50,6 @@ static int resolve(const ssda_register_config_t *in, const ssda_source_t *ref, r
         c->off_x < -65535 || c->off_x > 65535 || c->off_y < -65535 || c->off_y > 65535) {
         return SSDA_ERR_ARG;
     }
-    if (c->metric != (uint8_t)SSDA_REGISTER_SAD) {
-        return SSDA_ERR_UNSUPPORTED; /* the correlation search: ncc.h */
-    }
     return SSDA_OK;
 }
 
@@ -182,10 +179,53 @@ static int64_t sad_or_none(const ssda_view_t *area, const ssda_view_t *win, int6
     return (int64_t)sad; /* < 2^48 */
 }
 
-/* Match the copied window in the copied area: the best placement, the
-   score and the sub-pixel offsets. */
+/* What a search found: the best placement, sub-pixel offsets, scores. */
+typedef struct {
+    uint32_t bx, by;
+    int32_t ox, oy;
+    int32_t rho_q30;
+    uint64_t sad, ops;
+} found_t;
+
+/* rho at (x, y) of the area, 0 outside its placements (SSDA_NCC_NONE in
+   the neighbourhood result). */
+static int64_t rho_or_none(int32_t v)
+{
+    return v == SSDA_NCC_NONE ? INT64_MIN : (int64_t)v;
+}
+
+/* The correlation search: ssda_ncc_match with the 3 x 3 neighbourhood,
+   parabolic sub-pixel offsets (on rho: its peak, also of a negative one). */
+static void match_ncc(const ssda_view_t *area, const ssda_view_t *win, const reg_work_t *w,
+                      uint8_t metric, found_t *f)
+{
+    ssda_ncc_config_t nc;
+    ssda_ncc_result_t res;
+    int64_t l, r, u, d, m;
+    (void)memset(&nc, 0, sizeof nc);
+    nc.metric = metric == (uint8_t)SSDA_REGISTER_NCC ? (uint8_t)SSDA_NCC_RHO : (uint8_t)SSDA_NCC_ABS;
+    nc.flags = SSDA_NCC_AROUND;
+    nc.work = w->match;
+    nc.work_size = w->match_size;
+    (void)ssda_ncc_match(area, win, &nc, &res); /* arguments checked by the caller */
+    f->bx = res.x;
+    f->by = res.y;
+    f->rho_q30 = res.rho_q30;
+    f->ops = res.pixel_ops;
+    m = res.rho_q30;
+    l = rho_or_none(res.around_q30[3]);
+    r = rho_or_none(res.around_q30[5]);
+    u = rho_or_none(res.around_q30[1]);
+    d = rho_or_none(res.around_q30[7]);
+    /* |rho| < 2^31: the sums below fit easily */
+    f->ox = l != INT64_MIN && r != INT64_MIN ? vertex_q8(l, r, l - 2 * m + r) : 0;
+    f->oy = u != INT64_MIN && d != INT64_MIN ? vertex_q8(u, d, u - 2 * m + d) : 0;
+}
+
+/* The SSDA search: the exact SAD minimum, equiangular sub-pixel offsets,
+   and rho measured there. */
 static void match_sad(const ssda_view_t *area, const ssda_view_t *win, const reg_work_t *w,
-                      uint32_t *bx, uint32_t *by, int32_t *ox, int32_t *oy, uint64_t *score)
+                      found_t *f)
 {
     ssda_match_config_t mc;
     ssda_match_result_t res;
@@ -195,16 +235,35 @@ static void match_sad(const ssda_view_t *area, const ssda_view_t *win, const reg
     mc.work = w->match;
     mc.work_size = w->match_size;
     (void)ssda_match(area, win, &mc, &res); /* arguments checked by the caller */
-    *bx = res.x;
-    *by = res.y;
-    *score = res.sad;
+    f->bx = res.x;
+    f->by = res.y;
+    f->sad = res.sad;
+    f->ops = res.pixel_ops;
+    (void)ssda_ncc_at(area, win, res.x, res.y, &f->rho_q30);
     s0 = (int64_t)res.sad;
     l = sad_or_none(area, win, (int64_t)res.x - 1, res.y);
     r = sad_or_none(area, win, (int64_t)res.x + 1, res.y);
     u = sad_or_none(area, win, res.x, (int64_t)res.y - 1);
     d = sad_or_none(area, win, res.x, (int64_t)res.y + 1);
-    *ox = l >= 0 && r >= 0 ? sad_vertex_q8(l, s0, r) : 0;
-    *oy = u >= 0 && d >= 0 ? sad_vertex_q8(u, s0, d) : 0;
+    f->ox = l >= 0 && r >= 0 ? sad_vertex_q8(l, s0, r) : 0;
+    f->oy = u >= 0 && d >= 0 ? sad_vertex_q8(u, s0, d) : 0;
+}
+
+/* The status of a match (register.h, step 5). */
+static ssda_register_status_t status_of(const reg_cfg_t *c, const ssda_view_t *area,
+                                        const found_t *f)
+{
+    const int64_t rho = f->rho_q30;
+    if (c->metric != (uint8_t)SSDA_REGISTER_SAD &&
+        (c->metric == (uint8_t)SSDA_REGISTER_NCC ? rho : (rho < 0 ? -rho : rho)) <=
+            (int64_t)c->min_rho_q30) {
+        return SSDA_REGISTER_LOW_RHO;
+    }
+    if (f->bx == 0u || f->by == 0u || f->bx + c->win == area->width ||
+        f->by + c->win == area->height) {
+        return SSDA_REGISTER_BORDER;
+    }
+    return SSDA_REGISTER_OK;
 }
 
 /* One cell: fills *pt. */
@@ -216,13 +275,12 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
     const uint32_t y0 = SSDA_DIV32(j * rh, c->gy), y1 = SSDA_DIV32((j + 1u) * rh, c->gy);
     const int64_t n2 = (int64_t)c->win * c->win * c->win * c->win;
     const uint32_t cell_box[4] = {x0, x1, y0, y1};
-    uint32_t wx = x0, wy = y0, bx, by;
+    uint32_t wx = x0, wy = y0;
+    found_t f;
     int64_t ax0, ay0, ax1, ay1;
     uint32_t aw, ah;
     ssda__w_t spread = {0u, 0u};
     ssda_view_t av, wv;
-    int32_t ox, oy;
-    uint64_t score;
     int err;
     (void)memset(pt, 0, sizeof *pt);
     pt->cell_x = (uint16_t)i;
@@ -279,14 +337,23 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
                          (ssda_pixfmt_t)c->bpp);
     (void)ssda_view_init(&av, w->area, (uint16_t)aw, (uint16_t)ah, aw * c->bpp,
                          (ssda_pixfmt_t)c->bpp);
-    match_sad(&av, &wv, w, &bx, &by, &ox, &oy, &score);
-    pt->sad = score;
-    pt->pair.mov_x_q8 = (int32_t)((2 * (ax0 + (int64_t)bx) + (int64_t)c->win - 1) * 128) + ox;
-    pt->pair.mov_y_q8 = (int32_t)((2 * (ay0 + (int64_t)by) + (int64_t)c->win - 1) * 128) + oy;
-    pt->status = (uint8_t)SSDA_REGISTER_OK;
-    if (bx == 0u || by == 0u || bx + c->win == av.width || by + c->win == av.height) {
-        pt->status = (uint8_t)SSDA_REGISTER_BORDER;
+    (void)memset(&f, 0, sizeof f);
+    if (c->metric == (uint8_t)SSDA_REGISTER_SAD) {
+        match_sad(&av, &wv, w, &f);
+    } else {
+        match_ncc(&av, &wv, w, c->metric, &f);
     }
+    pt->sad = f.sad;
+    pt->rho_q30 = f.rho_q30;
+    pt->pixel_ops = f.ops;
+    {
+        /* the matched centre, Q8: < 2^25 */
+        const int64_t mx = (2 * (ax0 + (int64_t)f.bx) + (int64_t)c->win - 1) * 128 + f.ox;
+        const int64_t my = (2 * (ay0 + (int64_t)f.by) + (int64_t)c->win - 1) * 128 + f.oy;
+        pt->pair.mov_x_q8 = (int32_t)mx;
+        pt->pair.mov_y_q8 = (int32_t)my;
+    }
+    pt->status = (uint8_t)status_of(c, &av, &f);
     return SSDA_OK;
 }
 
@@ -319,8 +386,8 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
         out_count < (size_t)c.gx * c.gy) {
         return SSDA_ERR_SIZE;
     }
-    winb = SSDA_STREAM_ALIGN4_((size_t)c.win * c.win * c.bpp);
-    areab = SSDA_STREAM_ALIGN4_((size_t)c.search * c.search * c.bpp);
+    winb = SSDA_REGISTER_ALIGN8_((size_t)c.win * c.win * c.bpp);
+    areab = SSDA_REGISTER_ALIGN8_((size_t)c.search * c.search * c.bpp);
     if (work_size < SSDA_REGISTER_WORK_SIZE(c.win, c.search, c.bpp) ||
         (((uintptr_t)work) & 7u) != 0u) {
         return SSDA_ERR_BUFFER;

@@ -205,6 +205,98 @@ static void test_points_on_known_map(void)
     TEST_ASSERT_TRUE(sum2 / count < 0.25 * 0.25);
 }
 
+/* The seed's metric (|rho|, the zero-filled config) on the same kind of
+   pairs: every cell OK, RMS below 0.2 px; with inverted contrast |rho|
+   still matches (rho < -0.65 everywhere) while rho alone rejects every
+   cell (LOW_RHO); and the rho of every point equals ssda_ncc_at at the
+   integer placement the point rounds to. */
+static void test_correlation_metrics(void)
+{
+    test_rng_t r;
+    int invert;
+    test_rng_seed(&r, 0x4E434331u);
+    for (invert = 0; invert < 2; invert++) {
+        const map_t m = {2.7, -4.1, 0.006};
+        ssda_source_t ref, mov;
+        ssda_register_config_t cfg;
+        size_t ok = 0, k;
+        double sum2 = 0;
+        make_pair(&r, &m, invert);
+        ram_sources(&ref, &mov, SSDA_PIX_U8);
+        memset(&cfg, 0, sizeof cfg); /* ABSNCC, 0.65, 4 x 4, 20 in 40 */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok,
+                                                            g_work, sizeof g_work));
+        TEST_ASSERT_EQUAL_UINT32(16, (uint32_t)ok);
+        for (k = 0; k < 16; k++) {
+            double x, y, ex, ey;
+            ssda_view_t mv, rv, area, win;
+            int32_t rho;
+            const int32_t tx = (g_pts[k].pair.mov_x_q8 + 128) / 256 - 9; /* top-left */
+            const int32_t ty = (g_pts[k].pair.mov_y_q8 + 128) / 256 - 9;
+            map_apply(&m, g_pts[k].pair.ref_x_q8 / 256.0, g_pts[k].pair.ref_y_q8 / 256.0, &x, &y);
+            ex = g_pts[k].pair.mov_x_q8 / 256.0 - x;
+            ey = g_pts[k].pair.mov_y_q8 / 256.0 - y;
+            sum2 += ex * ex + ey * ey;
+            TEST_ASSERT_TRUE(invert ? g_pts[k].rho_q30 < -697932186 : g_pts[k].rho_q30 > 697932186);
+            /* rho where the point lies, measured directly (the sub-pixel
+               offset may round to a neighbour: then at most that one's) */
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&mv, g_mov, RW, RH, RW, SSDA_PIX_U8));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&rv, g_ref, RW, RH, RW, SSDA_PIX_U8));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&win, &rv, (uint16_t)((g_pts[k].pair.ref_x_q8 - 9 * 256 - 128) / 256),
+                                                         (uint16_t)((g_pts[k].pair.ref_y_q8 - 9 * 256 - 128) / 256), 20, 20));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&area, &mv, (uint16_t)(tx - 1), (uint16_t)(ty - 1), 22, 22));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_ncc_at(&area, &win, 1, 1, &rho));
+            TEST_ASSERT_TRUE(invert ? rho >= g_pts[k].rho_q30 : rho <= g_pts[k].rho_q30);
+        }
+        TEST_ASSERT_TRUE(sum2 / 16 < 0.2 * 0.2);
+        cfg.metric = SSDA_REGISTER_NCC;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok,
+                                                            g_work, sizeof g_work));
+        /* inverted: rho alone finds no true match (a smooth texture may
+           correlate with some other placement: never within 1 px of it) */
+        if (!invert) {
+            TEST_ASSERT_EQUAL_UINT32(16, (uint32_t)ok);
+        }
+        for (k = 0; invert && k < 16; k++) {
+            double x, y;
+            map_apply(&m, g_pts[k].pair.ref_x_q8 / 256.0, g_pts[k].pair.ref_y_q8 / 256.0, &x, &y);
+            TEST_ASSERT_TRUE(g_pts[k].status != SSDA_REGISTER_OK ||
+                             (g_pts[k].pair.mov_x_q8 / 256.0 - x) * (g_pts[k].pair.mov_x_q8 / 256.0 - x) +
+                                     (g_pts[k].pair.mov_y_q8 / 256.0 - y) * (g_pts[k].pair.mov_y_q8 / 256.0 - y) > 1.0);
+        }
+        /* SSDA reports rho at its minimum too (positive here, no inversion) */
+        cfg.metric = SSDA_REGISTER_SAD;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok,
+                                                            g_work, sizeof g_work));
+        for (k = 0; !invert && k < 16; k++) {
+            TEST_ASSERT_TRUE(g_pts[k].rho_q30 > 697932186);
+            TEST_ASSERT_TRUE(g_pts[k].pixel_ops > 0);
+        }
+    }
+}
+
+/* A high threshold rejects weak matches: noise against the texture. */
+static void test_low_rho(void)
+{
+    test_rng_t r;
+    const map_t m = {0.0, 0.0, 0.0};
+    ssda_source_t ref, mov;
+    ssda_register_config_t cfg;
+    size_t ok = 0, k;
+    uint32_t x, y;
+    test_rng_seed(&r, 21);
+    make_pair(&r, &m, 0);
+    for (y = 0; y < RH; y++)
+        for (x = 0; x < RW; x++) g_mov[y][x] = (uint8_t)test_rng_next(&r); /* unrelated noise */
+    ram_sources(&ref, &mov, SSDA_PIX_U8);
+    memset(&cfg, 0, sizeof cfg);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, &ok, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT32(0, (uint32_t)ok);
+    for (k = 0; k < 16; k++) {
+        TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_LOW_RHO, g_pts[k].status);
+    }
+}
+
 /* The window of each cell is the brute-force most-varied one on the
    lattice; the placement is the brute-force SAD minimum of that window in
    that area. */
@@ -418,6 +510,8 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_points_on_known_map);
+    RUN_TEST(test_correlation_metrics);
+    RUN_TEST(test_low_rho);
     RUN_TEST(test_window_and_placement_brute_force);
     RUN_TEST(test_statuses);
     RUN_TEST(test_streamed_equals_ram);

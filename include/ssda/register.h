@@ -21,15 +21,20 @@
  *  2. its search area in the moving image: search x search px centred on
  *     the window's centre moved by (offset_x, offset_y), clipped to the
  *     image (narrower than the window: OUTSIDE);
- *  3. the best placement: SSDA_REGISTER_SAD, the exact SAD minimum
- *     (ssda_match, automatic threshold, bounds); the correlation metrics
- *     come with the correlation search of ncc.h;
- *  4. sub-pixel: on each axis a parabola through the score at the best
- *     placement and its two neighbours, offset
- *     (s(-1) - s(+1)) / (2 (s(-1) - 2 s(0) + s(+1))), clamped to +-1/2 px,
- *     in Q8 (none on an axis where a neighbour is outside the area);
- *  5. status: BORDER when the best placement touches the edge of the
- *     search area (the true match may lie beyond it), else OK.
+ *  3. the best placement: the largest |rho| (SSDA_REGISTER_ABSNCC, the
+ *     seed's rule: inverted contrast matches too) or rho (NCC), exact
+ *     (ssda_ncc_match, ncc.h), or the exact SAD minimum (SSDA_REGISTER_SAD:
+ *     ssda_match, automatic threshold, bounds; rho is then measured at the
+ *     minimum, ssda_ncc_at, and reported, not used);
+ *  4. sub-pixel: on each axis through the score at the best placement and
+ *     its two neighbours: correlation, a parabola, offset
+ *     (s(-1) - s(+1)) / (2 (s(-1) - 2 s(0) + s(+1))); SAD, the equiangular
+ *     (V) fit, (s(-1) - s(+1)) / (2 (max(s(-1), s(+1)) - s(0))), which
+ *     suits absolute differences; clamped to +-1/2 px, in Q8 (none on an
+ *     axis where a neighbour is outside the area);
+ *  5. status: LOW_RHO when the correlation metrics' |rho| (NCC: rho) is
+ *     not above min_rho; else BORDER when the best placement touches the
+ *     edge of the search area (the true match may lie beyond it); else OK.
  * The pair is (window centre in the reference, matched centre in the
  * moving image): centre = top-left + (window - 1) / 2 px.
  *
@@ -43,6 +48,7 @@
 #ifndef SSDA_REGISTER_H
 #define SSDA_REGISTER_H
 
+#include "ssda/ncc.h"
 #include "ssda/poly.h"
 #include "ssda/stream.h"
 
@@ -52,8 +58,9 @@ extern "C" {
 
 /* How a window is matched. */
 typedef enum {
-    SSDA_REGISTER_NCC = 0,    /* correlation coefficient rho (the seed's) */
-    SSDA_REGISTER_ABSNCC = 1, /* |rho|: inverted contrast matches too */
+    SSDA_REGISTER_ABSNCC = 0, /* |rho|: the seed's rule (inverted contrast
+                                 matches too) */
+    SSDA_REGISTER_NCC = 1,    /* rho: positive correlation only */
     SSDA_REGISTER_SAD = 2     /* SSDA: the exact minimum of the SAD */
 } ssda_register_metric_t;
 
@@ -72,8 +79,8 @@ typedef enum {
 #define SSDA_REGISTER_DEFAULT_SEARCH 40u
 #define SSDA_REGISTER_DEFAULT_MIN_RHO_Q30 697932186 /* 0.65 in Q2.30 */
 
-/* Options. A zero-filled struct means the defaults (SSDA metric until the
-   correlation search is built in: see metric). */
+/* Options. A zero-filled struct means the seed's defaults: |rho| > 0.65,
+   20 x 20 in 40 x 40, 4 x 4 cells. */
 typedef struct {
     uint16_t grid_x, grid_y; /* cells across and down, 1..256; 0 = 4 */
     uint16_t window;         /* window side, px, 2..255; 0 = 20 */
@@ -91,21 +98,27 @@ typedef struct {
 /* One cell's control point. */
 typedef struct {
     ssda_poly_pair_t pair;   /* reference and moving centres, px Q23.8 */
-    int32_t rho_q30;         /* rho at the match (correlation metrics); 0
-                                with SSDA */
+    int32_t rho_q30;         /* rho at the match, Q2.30 (SSDA: measured at
+                                the SAD minimum); 0 when flat or outside */
     uint64_t sad;            /* SAD at the match (SSDA), else 0 */
+    uint64_t pixel_ops;      /* the search's work (pixel_ops of ssda_match
+                                or ssda_ncc_match) */
     uint32_t texture;        /* the window's variance, grey^2 (saturated) */
     uint16_t cell_x, cell_y;
     uint8_t status;          /* ssda_register_status_t */
 } ssda_register_point_t;
 
 /* Work bytes for a window of `window` px and an area of `search` px
-   (format: bytes per pixel): the window and the area, and the search's own
-   work buffer. */
+   (format: bytes per pixel): the window and the area, and the larger of
+   the two searches' work buffers. */
+#define SSDA_REGISTER_ALIGN8_(n) ((((size_t)(n)) + 7u) & ~(size_t)7u)
 #define SSDA_REGISTER_WORK_SIZE(window, search, format)                        \
-    (SSDA_STREAM_ALIGN4_((size_t)(window) * (size_t)(window) * (size_t)(format)) + \
-     SSDA_STREAM_ALIGN4_((size_t)(search) * (size_t)(search) * (size_t)(format)) + \
-     SSDA_MATCH_WORK_SIZE(search, search, window, window) + 8u)
+    (SSDA_REGISTER_ALIGN8_((size_t)(window) * (size_t)(window) * (size_t)(format)) + \
+     SSDA_REGISTER_ALIGN8_((size_t)(search) * (size_t)(search) * (size_t)(format)) + \
+     (SSDA_MATCH_WORK_SIZE(search, search, window, window) >                   \
+              SSDA_NCC_WORK_SIZE(search, window, window)                      \
+          ? SSDA_MATCH_WORK_SIZE(search, search, window, window)              \
+          : SSDA_NCC_WORK_SIZE(search, window, window)))
 
 /*
  * Find a control point in every cell (see METHOD).
@@ -127,7 +140,7 @@ typedef struct {
  *                    out_count below grid_x * grid_y
  *   SSDA_ERR_BUFFER  work_size short or misaligned; an arena that cannot
  *                    hold one span
- *   SSDA_ERR_UNSUPPORTED  a correlation metric before ncc.h is built in
+ *   SSDA_ERR_UNSUPPORTED  16-bit images in a build with SSDA_CFG_NO_U16
  * or a read() error unchanged (then out holds the cells done before it).
  */
 int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
