@@ -79,4 +79,10 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
 int demo_pitch(const demo_ctx_t *c, const demo_signal_t *sig, int synthetic,
                const char *ref_csv, const char *plot_name, const char *label);
 
+/* Band registration (demo_register.c): a synthetic second band through a
+   known map, control points, fit, streamed resampling; prints the error
+   against the truth, writes bands_flicker.gif and bands_checker.png.
+   Returns 0 or -1. */
+int demo_register(const demo_ctx_t *c);
+
 #endif /* SSDA_DEMO_H */

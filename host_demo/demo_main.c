@@ -130,10 +130,16 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
     if (demo_pitch(c, &voice, 1, NULL, "pitch_plot.png", label) != 0) {
         goto done;
     }
+    demo_heading(c, "3. Band registration (seed 002: control points, polynomial map, resampling)");
+    if (demo_register(c) != 0) {
+        fprintf(stderr, "ssda-demo: the registration part failed\n");
+        goto done;
+    }
     tool_path(argv0, tool, sizeof tool);
     demo_heading(c, "Next: the same on your own files");
     printf("   %s track FIRST.png SECOND.png --overlay vectors.png --json vectors.json\n", tool);
     printf("   %s pitch SOUND.wav --plot pitch.png --csv f0.csv\n", tool);
+    printf("   %s register BAND1.png BAND2.png -o BAND2_registered.png --flicker f.gif\n", tool);
     printf("   for example on the files above:\n");
     printf("   %s track %s %s --exclude --overlay %s/my_vectors.png\n", tool, p1, p2, c->out_dir);
     printf("   %s pitch %s --ref %s --plot %s/my_pitch.png\n", tool, pw, pc, c->out_dir);

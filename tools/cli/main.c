@@ -15,6 +15,7 @@ static const struct {
     {"track", cmd_track, "motion vectors on a grid between two images (cloud tracking)"},
     {"compare", cmd_compare, "SSDA vectors vs exhaustive normalised cross-correlation"},
     {"grad", cmd_grad, "the seed's Fig. 8 differential operator on an image"},
+    {"register", cmd_register, "register band images: control points, polynomial map, resampling"},
     {"pitch", cmd_pitch, "f0 track of a WAV (or any libsndfile format) by AMDF"},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])

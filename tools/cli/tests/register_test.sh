@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# CLI tests of `ssda register` (issue 17):
+#   register_test.sh SSDA GEN CHECK WORKDIR
+# GEN (gen_register.c) makes a pair with a known 2nd-order map, CHECK
+# (check_register.c) reads the outputs back with jansson, giflib and libpng.
+# Every case states its expected exit code; failed runs leave no output.
+set -u
+ssda=$1 gen=$2 check=$3 work=$4
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+run() {
+  local want=$1; shift
+  "$ssda" "$@" >out.txt 2>err.txt
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
+    return 1
+  fi
+}
+chk() { "$check" "$@" >/dev/null || fail "check $*"; }
+absent() {
+  local f
+  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
+  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left"; fi
+}
+stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+
+"$gen" . || { echo "FAIL: gen_register" >&2; exit 1; }
+
+# the known map recovered (order 2, 4x4 grid), every output written
+run 0 register ref.png mov.png -o out.png --json reg.json --flicker f.gif --checker c.png \
+      --diff d.png --stack s.png && {
+  chk map reg.json truth.txt 0.5
+  chk png out.png 320 240 1 8
+  chk png s.png 320 240 3 8
+  chk png c.png 320 240 1 8
+  chk png d.png 320 240 1 8
+  chk gif f.gif 2 320 240
+  chk aligned out.png ref.png 6
+  grep -q "control points accepted" out.txt || fail "no summary"
+}
+# nearest resampling (the seed), order 1 and 3, 16-bit
+run 0 register ref.png mov.png -o n.png --resample nearest --order 3 --grid 5x4 --json n.json -q &&
+  { chk map n.json truth.txt 0.5; chk aligned n.png ref.png 8; [ -s out.txt ] && fail "-q printed"; }
+run 0 register ref16.png mov16.png -o o16.png --json o16.json -q &&
+  { chk map o16.json truth.txt 0.5; chk png o16.png 320 240 1 16; }
+run 0 register ref.png mov.png --order 1 --json o1.json -q && chk map o1.json truth.txt 1.5
+# across a gain change (8-bit REF, 12-bit counts in 16 bits): |rho| is blind to gain
+run 0 register ref.png mov16.png --json g.json -q && chk map g.json truth.txt 0.5
+# inverted contrast: |rho| (the default) matches, rho alone finds too few
+run 0 register ref.png inv.png --json inv.json -q && {
+  chk map inv.json truth.txt 0.5
+  grep -q '"rho":-0\.[6-9]' inv.json || fail "no negative rho in inv.json"
+}
+run 1 register ref.png inv.png --metric ncc -o x.png && { stderr_has "order 2 needs at least 6"; absent x.png; }
+# SSDA (the seed's fast alternative) on the same-gain pair
+run 0 register ref.png mov.png --metric sad --json sad.json -q && chk map sad.json truth.txt 0.5
+# streamed in 4 KB: the same output as in RAM
+run 0 register ref.png mov.png -o m.png --mem 4K -q && chk same m.png out.png
+run 0 register ref.png mov.png -o m256.png --mem 256 -q && chk same m256.png out.png
+run 0 register ref.png mov.png -o m2.png --mem 4K && grep -q "streamed in 4096 bytes" out.txt ||
+  fail "no streamed summary"
+# the offset given instead of found, the same map
+run 0 register ref.png mov.png --offset 7,-5 --json off.json -q && chk map off.json truth.txt 0.5
+# shading removal first
+run 0 register ref.png mov.png --shade --json sh.json -q && chk map sh.json truth.txt 0.6
+# several MOVs: -o each, a stack of three bands, the JSON's registrations
+run 0 register ref.png mov.png mov.png -o a.png -o b.png --stack s3.png --json two.json -q && {
+  chk map two.json truth.txt 0.5 0; chk map two.json truth.txt 0.5 1; chk png s3.png 320 240 3 8
+  chk same a.png b.png
+}
+# JSON on stdout
+run 0 register ref.png mov.png --json - && grep -q '"coeffs_x"' out.txt || fail "--json - printed no JSON"
+
+# too few control points: exit 1, the counts named, no output at all
+run 1 register ref.png flat.png -o x.png --json x.json --flicker x.gif && {
+  stderr_has "found 0 control points of 16 cells; order 2 needs at least 6"; absent x.png x.json x.gif
+}
+run 1 register ref.png flat.png -o x.png --order 3 --grid 3x3 && {
+  stderr_has "needs at least 10"; absent x.png
+}
+# bad input and usage
+run 1 register ref.png nothere.png -o x.png && absent x.png
+run 1 register tiny.png tiny.png -o x.png && absent x.png
+run 2 register ref.png mov.png -o x.png --mem 255 && absent x.png
+run 2 register ref.png -o x.png && absent x.png
+run 2 register ref.png mov.png && stderr_has "no output"
+run 2 register ref.png mov.png -o x.png --order 4
+run 2 register ref.png mov.png -o x.png --grid 0x3
+run 2 register ref.png mov.png -o x.png --metric foo
+run 2 register ref.png mov.png -o x.png --min-rho 0
+run 2 register ref.png mov.png -o x.png --resample cubic
+run 2 register ref.png mov.png -o x.png -o y.png && absent x.png y.png
+run 2 register ref.png mov.png mov.png mov.png mov.png --stack x.png && absent x.png
+run 0 register --help && grep -q "usage: ssda register" out.txt || fail "no --help"
+
+if [ "$failures" -ne 0 ]; then echo "register: $failures failure(s)" >&2; exit 1; fi
+echo "register: all cases passed"
