@@ -187,11 +187,12 @@ typedef struct {
     uint64_t sad, ops;
 } found_t;
 
-/* rho at (x, y) of the area, 0 outside its placements (SSDA_NCC_NONE in
-   the neighbourhood result). */
+/* A neighbour's rho, or RHO_NONE (beyond any rho, |rho| <= 2^30) outside
+   the area's placements (SSDA_NCC_NONE in the neighbourhood result). */
+#define RHO_NONE ((int64_t)-4294967296)
 static int64_t rho_or_none(int32_t v)
 {
-    return v == SSDA_NCC_NONE ? INT64_MIN : (int64_t)v;
+    return v == SSDA_NCC_NONE ? RHO_NONE : (int64_t)v;
 }
 
 /* The correlation search: ssda_ncc_match with the 3 x 3 neighbourhood,
@@ -218,8 +219,8 @@ static void match_ncc(const ssda_view_t *area, const ssda_view_t *win, const reg
     u = rho_or_none(res.around_q30[1]);
     d = rho_or_none(res.around_q30[7]);
     /* |rho| < 2^31: the sums below fit easily */
-    f->ox = l != INT64_MIN && r != INT64_MIN ? vertex_q8(l, r, l - 2 * m + r) : 0;
-    f->oy = u != INT64_MIN && d != INT64_MIN ? vertex_q8(u, d, u - 2 * m + d) : 0;
+    f->ox = l != RHO_NONE && r != RHO_NONE ? vertex_q8(l, r, l - 2 * m + r) : 0;
+    f->oy = u != RHO_NONE && d != RHO_NONE ? vertex_q8(u, d, u - 2 * m + d) : 0;
 }
 
 /* The SSDA search: the exact SAD minimum, equiangular sub-pixel offsets,
