@@ -8,7 +8,6 @@
 #include "cli.h"
 #include "img_out.h"
 #include "poly_float.h"
-#include "progress.h"
 #include "ssda/register.h"
 #include "ssda/shade.h"
 #include "ssda/warp.h"
@@ -18,6 +17,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static const char help[] =
     "usage: ssda register REF.png MOV.png [MOV2.png ...] -o OUT.png [options]\n"
@@ -102,7 +102,7 @@ typedef struct {
     int32_t off_x, off_y;
     uint64_t bytes_read;
     size_t arena;
-    double secs_points, secs_fit, secs_warp;
+    double secs_offset, secs_points, secs_fit, secs_warp;
 } reg_one_t;
 
 /* ---- options ---- */
@@ -307,18 +307,17 @@ static int remove_shading(gray_image_t *img)
 
 /* ---- the automatic offset: gradient magnitudes at a coarse scale ---- */
 
-/* img box-averaged by f, as 8-bit for display-like contrast, then the
-   seed's Fig. 8 operator (sign-free: inverted contrast gives the same
-   edges). */
-static int coarse_grad(const gray_image_t *img, uint32_t f, gray_image_t *out)
+/* d8 (an 8-bit display copy) box-averaged by f, then the seed's Fig. 8
+   operator (sign-free: inverted contrast gives the same edges). */
+static int coarse_grad(const gray_image_t *d8, uint32_t f, gray_image_t *out)
 {
-    gray_image_t d8 = {0}, small = {0};
+    gray_image_t small = {0};
     uint32_t x, y, i, j;
     ssda_view_t sv;
     ssda_grad_out_t go;
     int rc = -1;
-    const uint32_t w = img->width / f, h = img->height / f;
-    if (w < 8 || h < 8 || img_display8(img, &d8) != 0 || gray_image_alloc(&small, w, h, 8) != 0 ||
+    const uint32_t w = d8->width / f, h = d8->height / f;
+    if (w < 8 || h < 8 || gray_image_alloc(&small, w, h, 8) != 0 ||
         gray_image_alloc(out, w - 2, h - 2, 8) != 0) {
         goto done;
     }
@@ -327,7 +326,7 @@ static int coarse_grad(const gray_image_t *img, uint32_t f, gray_image_t *out)
             uint32_t s = 0;
             for (j = 0; j < f; j++) {
                 for (i = 0; i < f; i++) {
-                    s += gray_image_get(&d8, x * f + i, y * f + j);
+                    s += gray_image_get(d8, x * f + i, y * f + j);
                 }
             }
             ((uint8_t *)small.pixels)[(size_t)y * small.stride + x] = (uint8_t)(s / (f * f));
@@ -341,7 +340,6 @@ static int coarse_grad(const gray_image_t *img, uint32_t f, gray_image_t *out)
     go.shift = 2;
     rc = ssda_grad(&sv, &go, NULL) == SSDA_OK ? 0 : -1;
 done:
-    gray_image_free(&d8);
     gray_image_free(&small);
     return rc;
 }
@@ -426,21 +424,26 @@ static int auto_offset(const gray_image_t *ref, const gray_image_t *mov, int32_t
     const uint32_t big = ref->width > ref->height ? ref->width : ref->height;
     uint32_t f = 1;
     int32_t x = 0, y = 0;
+    gray_image_t r8 = {0}, m8 = {0};
+    int rc = -1;
     while (big / f > 256) {
         f *= 2;
     }
-    if (offset_level(ref, mov, f, 16, &x, &y) != 0) {
-        return -1;
-    }
-    while (f > 1) {
-        f = f >= 4 ? f / 4 : 1;
-        if (offset_level(ref, mov, f, 8, &x, &y) != 0) {
-            break; /* keep the coarser answer */
+    if (img_display8(ref, &r8) == 0 && img_display8(mov, &m8) == 0 &&
+        offset_level(&r8, &m8, f, 16, &x, &y) == 0) {
+        while (f > 1) {
+            f = f >= 4 ? f / 4 : 1;
+            if (offset_level(&r8, &m8, f, 8, &x, &y) != 0) {
+                break; /* keep the coarser answer */
+            }
         }
+        *ox = x;
+        *oy = y;
+        rc = 0;
     }
-    *ox = x;
-    *oy = y;
-    return 0;
+    gray_image_free(&r8);
+    gray_image_free(&m8);
+    return rc;
 }
 
 /* ---- one registration ---- */
@@ -457,9 +460,11 @@ static int put_rows(void *ctx, uint32_t x, uint32_t y, uint32_t n, const void *p
     return 0;
 }
 
+/* CPU seconds of this process (the figures of docs/registration.md are CPU
+   time: a loaded machine stretches wall time). */
 static double now_s(void)
 {
-    return progress_now();
+    return (double)clock() / CLOCKS_PER_SEC;
 }
 
 static int find_points(const char *cmd, const gray_image_t *ref, reg_one_t *r,
@@ -646,6 +651,7 @@ static int register_one(const char *cmd, const gray_image_t *ref, reg_one_t *r,
                         const reg_opts_t *o)
 {
     const uint32_t gx = o->reg.grid_x ? o->reg.grid_x : 4, gy = o->reg.grid_y ? o->reg.grid_y : 4;
+    double t0;
     r->ncells = (size_t)gx * gy;
     r->pts = calloc(r->ncells, sizeof *r->pts);
     r->residual = calloc(r->ncells, sizeof *r->residual);
@@ -657,9 +663,11 @@ static int register_one(const char *cmd, const gray_image_t *ref, reg_one_t *r,
     }
     r->off_x = o->reg.offset_x;
     r->off_y = o->reg.offset_y;
+    t0 = now_s();
     if (o->auto_offset && auto_offset(ref, &r->img, &r->off_x, &r->off_y) != 0) {
         r->off_x = r->off_y = 0; /* too small to search: assume none */
     }
+    r->secs_offset = now_s() - t0;
     if (find_points(cmd, ref, r, o) != 0 || fit_map(cmd, ref, r, o) != 0) {
         return -1;
     }
@@ -740,9 +748,10 @@ static cJSON *json_of(const reg_one_t *r, const gray_image_t *ref, const reg_opt
     }
     cJSON_AddItemToObject(j, "coeffs_x", cx);
     cJSON_AddItemToObject(j, "coeffs_y", cy);
-    cJSON_AddNumberToObject(j, "time_points_s", r->secs_points);
-    cJSON_AddNumberToObject(j, "time_fit_s", r->secs_fit);
-    cJSON_AddNumberToObject(j, "time_warp_s", r->secs_warp);
+    cJSON_AddNumberToObject(j, "cpu_offset_s", r->secs_offset);
+    cJSON_AddNumberToObject(j, "cpu_points_s", r->secs_points);
+    cJSON_AddNumberToObject(j, "cpu_fit_s", r->secs_fit);
+    cJSON_AddNumberToObject(j, "cpu_warp_s", r->secs_warp);
     if (o->have_mem) {
         cJSON_AddNumberToObject(j, "mem", (double)o->mem);
         cJSON_AddNumberToObject(j, "bytes_read", (double)r->bytes_read);
@@ -892,7 +901,8 @@ static void summary(const reg_one_t *r, const reg_opts_t *o)
                (unsigned long long)o->mem, (unsigned long long)r->bytes_read,
                (double)r->bytes_read / ((double)r->img.stride * r->img.height));
     }
-    printf("  time: points %.3f s, fit %.3f s, resampling %.3f s\n", r->secs_points, r->secs_fit,
+    printf("  CPU time: offset %.3f s, points %.3f s, fit %.3f s, resampling %.3f s\n",
+           r->secs_offset, r->secs_points, r->secs_fit,
            r->secs_warp);
 }
 

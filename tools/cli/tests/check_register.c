@@ -66,6 +66,16 @@ static int read_png(const char *path, png_img_t *img)
     return 0;
 }
 
+static void free_png(png_img_t *img)
+{
+    unsigned y;
+    for (y = 0; y < img->h; y++) {
+        free(img->rows[y]);
+    }
+    free(img->rows);
+    img->rows = NULL;
+}
+
 static double poly(const json_t *c, double X, double Y)
 {
     static const int ex[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0}, ey[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
@@ -150,6 +160,7 @@ static int check_png(char **argv)
     if (read_png(argv[2], &img) != 0) {
         return fail("%s: not a PNG%g", argv[2], 0);
     }
+    free_png(&img);
     if (img.w != (unsigned)atoi(argv[3]) || img.h != (unsigned)atoi(argv[4]) ||
         img.channels != (unsigned)atoi(argv[5]) || img.bits != (unsigned)atoi(argv[6])) {
         fprintf(stderr, "check_register: %s is %ux%u, %u channels, %u bits\n", argv[2], img.w, img.h,
@@ -181,6 +192,7 @@ static int check_gif(char **argv)
     for (k = 0; k < g->ImageCount; k++) {
         GraphicsControlBlock gcb;
         if (DGifSavedExtensionToGCB(g, k, &gcb) != GIF_OK || gcb.DelayTime != 7) {
+            DGifCloseFile(g, &e);
             return fail("%s: frame delay not 7 cs%g", argv[2], 0);
         }
     }
@@ -204,6 +216,8 @@ static int check_same(char **argv, int aligned)
     for (y = 0; y < a.h; y++) {
         if (!aligned) {
             if (memcmp(a.rows[y], b.rows[y], (size_t)a.w * bpp) != 0) {
+                free_png(&a);
+                free_png(&b);
                 return fail("%s: pixels differ from the other%g", argv[2], 0);
             }
             continue;
@@ -214,6 +228,8 @@ static int check_same(char **argv, int aligned)
             n++;
         }
     }
+    free_png(&a);
+    free_png(&b);
     if (aligned && sum / (double)n > atof(argv[4])) {
         return fail("%s: mean |A - B| %g", argv[2], sum / (double)n);
     }
