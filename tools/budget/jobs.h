@@ -19,6 +19,9 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* Band registration: the warp per output pixel (in RAM, streamed), control
+   points per cell, a fit, shading per pixel. */
+void jobs_register(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);

@@ -30,6 +30,10 @@ FEATURE_NAMES = {
     "grad": "Fig. 8 operator (`grad.h`)",
     "view": "image views (`view.h`)",
     "ssda": "error names (`ssda.h`)",
+    "poly": "polynomial maps and their fit (`poly.h`)",
+    "warp": "resampling through a map (`warp.h`)",
+    "shade": "shading removal (`shade.h`)",
+    "register": "control points (`register.h`)",
 }
 
 
@@ -497,6 +501,25 @@ def main():
                          fmt(get(r, key + ".worst")[0]) for _, _, r in runs]
                 w(f"| {label} | " + " | ".join(cells) +
                   f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        if any("reg.warp_nearest_o1" in r for _, _, r in runs):
+            w("\n| band registration (issue 17) | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | per | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---|---:|\n")
+            for key, label, unit in (
+                    ("reg.warp_nearest_o1", "warp, nearest, order 1, in RAM", "output pixel"),
+                    ("reg.warp_bilinear_o1", "warp, bilinear, order 1, in RAM", "output pixel"),
+                    ("reg.warp_bilinear_o3", "warp, bilinear, order 3, in RAM", "output pixel"),
+                    ("reg.warp_bilinear_o2_stream2k", "warp, bilinear, order 2, streamed in 2 KB",
+                     "output pixel"),
+                    ("reg.points_absncc", "control points, |rho|, 20 in 40", "cell"),
+                    ("reg.points_sad", "control points, SSDA, 20 in 40", "cell"),
+                    ("reg.fit_o2_16", "fit, order 2, 16 pairs", "fit"),
+                    ("reg.shade_add", "shading, accumulate", "pixel"),
+                    ("reg.shade_apply", "shading, correct", "pixel")):
+                r0 = get(runs[0][2], key)
+                w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                                              for _, _, r in runs) + f" | {unit} | {r0[2]} |\n")
 
 
 if __name__ == "__main__":
