@@ -137,7 +137,6 @@ int demo_register(const demo_ctx_t *c)
     (void)ssda_source_init_view(&sref, &vr);
     (void)ssda_source_init_view(&smov, &vm);
     memset(&rc_cfg, 0, sizeof rc_cfg);
-    rc_cfg.metric = SSDA_REGISTER_SAD;
     rc_cfg.search = 64; /* +-22 px around each window: the shift is unknown */
     if (ssda_register_points(&sref, &smov, &rc_cfg, pts, 16, &accepted, work, sizeof work) !=
         SSDA_OK) {
@@ -186,21 +185,23 @@ int demo_register(const demo_ctx_t *c)
             cnt++;
         }
     }
-    printf("   %s: a %d x %d 8-bit scene; the second band is it seen through a known\n"
-           "   2nd-order map (shift (11.4, -7.2) px, rotation 0.75 deg, scale 1.006, a bow)\n"
-           "   with gain 0.85 and offset +20\n",
-           c->quiet ? "" : "input", RW, RH);
-    printf("   control points: %zu of 16 cells accepted (SSDA, 20 x 20 in 64 x 64, sub-pixel)\n",
-           accepted);
-    printf("   fit (order 2, exact integer normal equations, Cholesky + refinement):\n"
-           "     %u pairs used, %u rejected, RMS residual %.3f px, max %.3f px\n",
-           fit.used, fit.rejected, fit.rms_q8 / 256.0, fit.max_q8 / 256.0);
-    printf("   the map against the truth on an 11 x 11 grid: RMS %.3f px, max %.3f px\n",
-           sqrt(sum2 / cnt), worst);
-    printf("   resampled (bilinear) from a streamed source: %zu bytes of plate, read %llu bytes "
-           "(%.2f x the image)\n",
-           sizeof arena, (unsigned long long)sstr.stats.bytes_read,
-           (double)sstr.stats.bytes_read / (RW * RH));
+    if (!c->quiet) {
+        printf("   input: a %d x %d 8-bit scene; the second band is it seen through a known\n"
+               "   2nd-order map (shift (11.4, -7.2) px, rotation 0.75 deg, scale 1.006, a bow)\n"
+               "   with gain 0.85 and offset +20\n",
+               RW, RH);
+        printf("   control points: %zu of 16 cells accepted (|rho| > 0.65, 20 x 20 in 64 x 64, sub-pixel)\n",
+               accepted);
+        printf("   fit (order 2, exact integer normal equations, Cholesky + refinement):\n"
+               "     %u pairs used, %u rejected, RMS residual %.3f px, max %.3f px\n",
+               fit.used, fit.rejected, fit.rms_q8 / 256.0, fit.max_q8 / 256.0);
+        printf("   the map against the truth on an 11 x 11 grid: RMS %.3f px, max %.3f px\n",
+               sqrt(sum2 / cnt), worst);
+        printf("   resampled (bilinear) from a streamed source: %zu bytes of plate, read %llu bytes "
+               "(%.2f x the image)\n",
+               sizeof arena, (unsigned long long)sstr.stats.bytes_read,
+               (double)sstr.stats.bytes_read / (RW * RH));
+    }
     /* the pictures: flicker (the seed's 15 Hz view) and a checkerboard */
     if (img_display8(&ref, &d_ref) != 0 || img_display8(&out, &d_out) != 0) {
         goto done;
