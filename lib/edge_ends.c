@@ -81,7 +81,10 @@ static uint32_t first_step(uint16_t m, const ssda__edge_end_t *e)
     const int32_t dot = (int32_t)ssda__ring_dx[d] * e->ux + (int32_t)ssda__ring_dy[d] * e->uy;
     /* steps d and d + 4 run along the split line; a line across the
        fitted direction (|cos| < 0.38, 67.5 degrees) gives no way ahead */
-    const int32_t len = (d & 1u) != 0u ? 23170 : 16384; /* |step| in Q14 */
+    int32_t len = 16384; /* |step| in Q14: 1, or sqrt(2) for a diagonal */
+    if ((d & 1u) != 0u) {
+        len = 23170;
+    }
     if (dot * 8 > len * 3) {
         return d;
     }

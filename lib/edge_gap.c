@@ -71,8 +71,14 @@ static void find_t(const uint16_t *map, uint32_t w, uint32_t h, const ssda__edge
     const int32_t x1 = x0 + scale_round(gap, e->ux, m); /* |gap * u| < 2^21 */
     const int32_t y1 = y0 + scale_round(gap, e->uy, m);
     const int32_t dx = iabs32(x1 - x0), dy = iabs32(y1 - y0);
-    const int32_t sx = x1 > x0 ? 1 : -1, sy = y1 > y0 ? 1 : -1;
+    int32_t sx = -1, sy = -1;
     int32_t x = x0, y = y0, err = dx - dy, i;
+    if (x1 > x0) {
+        sx = 1;
+    }
+    if (y1 > y0) {
+        sy = 1;
+    }
     t->found = false;
     for (i = 0; i < dx + dy; i++) { /* one axis step at a time: 4-connected */
         uint16_t mv;
@@ -127,7 +133,10 @@ static bool try_i(const ssda__edge_end_t *p, const ssda__edge_end_t *q,
         cfg->i_angle) {
         return false;
     }
-    len_q8 = ssda_isqrt64((uint64_t)(vx * vx + vy * vy) << 16);
+    {
+        const int64_t d2 = vx * vx + vy * vy; /* <= 2 * 64^2 */
+        len_q8 = ssda_isqrt64((uint64_t)d2 * 65536u);
+    }
     area = len_q8 * (ssda__abs64(e_p) + ssda__abs64(e_q)) / 4u; /* < 2^15 * 2^22 */
     if (area > ((uint64_t)(uint32_t)cfg->i_area << 22)) {
         return false;
@@ -160,15 +169,15 @@ static bool try_v(const ssda__edge_end_t *p, const ssda__edge_end_t *q,
     }
     /* t = tn / den px; t_q8 = |tn| 2^22 / |den| < gap 2^8 */
     t_q8 = SSDA_DIV64_32(ssda__abs64(tn) << 22, (uint32_t)ssda__abs64(den));
-    xq8 = ((int64_t)p->x << 8) + ssda__rshr64((int64_t)t_q8 * p->ux, 14u);
-    yq8 = ((int64_t)p->y << 8) + ssda__rshr64((int64_t)t_q8 * p->uy, 14u);
+    xq8 = (int64_t)p->x * 256 + ssda__rshr64((int64_t)t_q8 * p->ux, 14u);
+    yq8 = (int64_t)p->y * 256 + ssda__rshr64((int64_t)t_q8 * p->uy, 14u);
     *cx = (int32_t)ssda__rshr64(xq8, 8u);
     *cy = (int32_t)ssda__rshr64(yq8, 8u);
     if (*cx < 0 || *cy < 0 || (uint32_t)*cx >= w || (uint32_t)*cy >= h) {
         return false;
     }
-    mx = ssda__abs64(2 * xq8 - (((int64_t)p->x + q->x) << 8)); /* 2 (corner - midpoint) */
-    my = ssda__abs64(2 * yq8 - (((int64_t)p->y + q->y) << 8));
+    mx = ssda__abs64(2 * xq8 - ((int64_t)p->x + q->x) * 256); /* 2 (corner - midpoint) */
+    my = ssda__abs64(2 * yq8 - ((int64_t)p->y + q->y) * 256);
     *cost = ssda_isqrt64(mx * mx + my * my) / 2u;
     return true;
 }

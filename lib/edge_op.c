@@ -32,9 +32,9 @@ static uint16_t operate(const window_t *w)
     uint32_t sq_h = 0u, sq_v = 0u, sq_a = 0u, sq_d = 0u;
     uint32_t i, j, best = 0u;
     split_t s[4];
-    memset(anti, 0, sizeof anti);
-    memset(diag, 0, sizeof diag);
-    memset(col, 0, sizeof col);
+    (void)memset(anti, 0, sizeof anti);
+    (void)memset(diag, 0, sizeof diag);
+    (void)memset(col, 0, sizeof col);
     for (i = 0u; i < 5u; i++) {
         row[i] = 0u;
         for (j = 0u; j < 5u; j++) {
@@ -92,14 +92,13 @@ static void operate_row(const ssda_edge_job_t *job, uint32_t y, uint32_t oldest)
     }
 }
 
-/* The neighbour across the split line of direction d: (dx, dy) on one side
-   (the other is its negation). */
-static const int8_t across_dx[4] = {0, 1, 1, 1};
-static const int8_t across_dy[4] = {1, 1, 0, -1};
-
 /* Ridge thinning of map row y (rows y - 1 and y + 1 complete). */
 static void thin_row(const ssda_edge_job_t *job, uint32_t y)
 {
+    /* the neighbour across the split line of direction d: (dx, dy) on one
+       side, its negation on the other */
+    static const int8_t across_dx[4] = {0, 1, 1, 1};
+    static const int8_t across_dy[4] = {1, 1, 0, -1};
     const uint32_t w = job->width;
     uint16_t *m = job->map + (size_t)y * w;
     uint32_t x;
@@ -150,7 +149,10 @@ int ssda_edge_init(ssda_edge_job_t *job, uint16_t width, uint16_t height,
     job->height = height;
     job->rows_in = 0u;
     job->slot = 0u;
-    job->strength_min = strength_min != 0u ? strength_min : SSDA_EDGE_DEFAULT_STRENGTH;
+    job->strength_min = SSDA_EDGE_DEFAULT_STRENGTH;
+    if (strength_min != 0u) {
+        job->strength_min = strength_min;
+    }
     job->magic = EDGE_MAGIC;
     return SSDA_OK;
 }
@@ -168,11 +170,11 @@ int ssda_edge_push(ssda_edge_job_t *job, const uint8_t *row)
     w = job->width;
     h = job->height;
     slot = job->slot;
-    memcpy(job->ring + (size_t)slot * w, row, w);
+    (void)memcpy(job->ring + (size_t)slot * w, row, w);
     job->slot = slot == 4u ? 0u : slot + 1u; /* also the slot of row r - 4 */
     job->rows_in = r + 1u;
     if (r < 2u) {
-        memset(job->map + (size_t)r * w, 0, (size_t)w * 2u); /* border rows */
+        (void)memset(job->map + (size_t)r * w, 0, (size_t)w * 2u); /* border rows */
     }
     if (r >= 4u) {
         operate_row(job, r - 2u, job->slot);
@@ -181,7 +183,8 @@ int ssda_edge_push(ssda_edge_job_t *job, const uint8_t *row)
         }
     }
     if (r + 1u == h) { /* the last row: the bottom border, then its neighbour */
-        memset(job->map + (size_t)(h - 2u) * w, 0, (size_t)w * 4u);
+        const size_t last2 = (size_t)h - 2u;
+        (void)memset(job->map + last2 * w, 0, (size_t)w * 4u);
         thin_row(job, h - 3u);
     }
     return SSDA_OK;

@@ -61,9 +61,10 @@ int ssda_edge_refine(uint16_t *map, uint16_t width, uint16_t height,
         c->spur_min > 16u || c->i_angle_deg > 180u || c->v_angle_deg > 180u) {
         return SSDA_ERR_ARG;
     }
-    cap = (work_size / SSDA_EDGE_WORK_SIZE(1)) > 0xFFFFFFFFu
-              ? 0xFFFFFFFFu
-              : (uint32_t)(work_size / SSDA_EDGE_WORK_SIZE(1));
+    {
+        const uint64_t entries = (uint64_t)work_size / SSDA_EDGE_WORK_SIZE(1);
+        cap = entries > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)entries;
+    }
     spur = or_default(c->spur_min, SSDA_EDGE_DEFAULT_SPUR);
     fit = or_default(c->fit_len, SSDA_EDGE_DEFAULT_FIT);
     gap.gap = (int32_t)or_default(c->gap_max, SSDA_EDGE_DEFAULT_GAP);

@@ -181,10 +181,15 @@ uint32_t ssda__edge_line(uint16_t *map, uint32_t w, int32_t x0, int32_t y0, int3
 {
     const int32_t dx = x1 > x0 ? x1 - x0 : x0 - x1;
     const int32_t dy = y1 > y0 ? y0 - y1 : y1 - y0; /* -|y1 - y0| */
-    const int32_t sx = x1 > x0 ? 1 : -1;
-    const int32_t sy = y1 > y0 ? 1 : -1;
+    int32_t sx = -1, sy = -1;
     int32_t err = dx + dy, x = x0, y = y0;
     uint32_t set = 0u;
+    if (x1 > x0) {
+        sx = 1;
+    }
+    if (y1 > y0) {
+        sy = 1;
+    }
     for (;;) { /* Bresenham, 8-connected; ends at (x1, y1) */
         uint16_t *p = map + (size_t)(uint32_t)y * w + (uint32_t)x;
         const int32_t e2 = 2 * err;

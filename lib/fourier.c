@@ -3,21 +3,17 @@
 #include "fourier_internal.h"
 #include "fixmath.h"
 #include "fixtrig.h"
+#include "loops_internal.h"
 
 #include <string.h>
 
-#define COORD_LIMIT ((int32_t)1 << 24)
+#define COORD_LIMIT 16777216 /* 2^24 */
 
 static bool pow2_samples(uint32_t n, uint32_t *log2n)
 {
-    uint32_t l;
-    for (l = 3u; (1u << l) <= SSDA_LOOPS_MAX_SAMPLES; l++) {
-        if (n == (1u << l)) {
-            *log2n = l;
-            return true;
-        }
-    }
-    return false;
+    const uint32_t l = ssda__samples_log2(n);
+    *log2n = l;
+    return l != 0u;
 }
 
 /* a_k for k = +-n: (1/N) sum u_j exp(-2 pi i k j / N), Q8 px. */
@@ -43,7 +39,9 @@ static ssda_fd_coef_t coefficient(const ssda_point_q8_t *p, uint32_t log2n, int3
 
 static uint64_t norm2(const ssda_fd_coef_t *c)
 {
-    return (uint64_t)((int64_t)c->re_q8 * c->re_q8) + (uint64_t)((int64_t)c->im_q8 * c->im_q8);
+    const int64_t r = (int64_t)c->re_q8 * c->re_q8; /* < 2^48 */
+    const int64_t i = (int64_t)c->im_q8 * c->im_q8;
+    return (uint64_t)r + (uint64_t)i;
 }
 
 int ssda_fd_compute(const ssda_point_q8_t *points, uint32_t n, uint32_t order, ssda_fd_t *fd)
@@ -85,8 +83,9 @@ uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den)
         return 0u;
     }
     if (dl > 32u) { /* num / den = num / (d 2^k) */
-        d = den >> (dl - 32u);
-        e -= (int32_t)(dl - 32u);
+        const uint32_t k = dl - 32u;
+        d = den >> k;
+        e -= (int32_t)k;
     }
     nl = ssda__bitlen64(nm);
     if (e >= 0) {
@@ -94,9 +93,13 @@ uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den)
         if ((int32_t)nl + e > (int32_t)ssda__bitlen64(d) + 32) {
             return 0xFFFFFFFFu;
         }
-        nm <<= (uint32_t)e; /* < 2^64: nl + e <= 64 */
+        const uint32_t k = (uint32_t)e;
+        nm <<= k; /* < 2^64: nl + e <= 64 */
+    } else if (e <= -64) {
+        nm = 0u;
     } else {
-        nm = (-e >= 64) ? 0u : nm >> (uint32_t)(-e);
+        const uint32_t k = (uint32_t)(-e);
+        nm >>= k;
     }
     return SSDA_DIV64_32(nm, (uint32_t)d);
 }

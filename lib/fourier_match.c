@@ -8,7 +8,7 @@
 #define TERMS (2u * SSDA_FD_MAX_ORDER)
 #define GRID_LOG2 7u                     /* 128 grid points over a turn */
 #define GRID (1u << GRID_LOG2)
-#define CELL (1u << (32u - GRID_LOG2))   /* one grid step, turns */
+#define CELL 0x02000000u                 /* one grid step, turns: 2^(32 - 7) */
 #define BISECTIONS 24u
 #define PEAKS 3u
 #define C_BITS 27u                       /* |c_n| components below 2^27 */
@@ -32,12 +32,12 @@ static void zpoly_build(const ssda_fd_t *a, const ssda_fd_t *b, zpoly_t *p)
     uint64_t big = 0u;
     uint32_t n, j, len;
     for (n = 0u; n < a->order; n++) {
-        const ssda_fd_coef_t *pa[2] = {&a->pos[n], &a->neg[n]};
-        const ssda_fd_coef_t *pb[2] = {&b->pos[n], &b->neg[n]};
         for (j = 0u; j < 2u; j++) {
             const uint32_t t = 2u * n + j;
-            const int64_t ar = pa[j]->re_q8, ai = pa[j]->im_q8;
-            const int64_t br = pb[j]->re_q8, bi = pb[j]->im_q8;
+            const ssda_fd_coef_t *ca = (j == 0u) ? &a->pos[n] : &a->neg[n];
+            const ssda_fd_coef_t *cb = (j == 0u) ? &b->pos[n] : &b->neg[n];
+            const int64_t ar = ca->re_q8, ai = ca->im_q8;
+            const int64_t br = cb->re_q8, bi = cb->im_q8;
             /* conj(b) a = (br ar + bi ai) + i (br ai - bi ar): |.| < 2^49 */
             cr[t] = br * ar + bi * ai;
             ci[t] = br * ai - bi * ar;
@@ -76,7 +76,8 @@ static zval_t zpoly_eval(const zpoly_t *p, uint32_t alpha)
 static uint64_t power(const zval_t *v)
 {
     const int64_t r = ssda__asr64(v->zr, 18u), i = ssda__asr64(v->zi, 18u);
-    return (uint64_t)(r * r) + (uint64_t)(i * i);
+    const int64_t r2 = r * r, i2 = i * i;
+    return (uint64_t)r2 + (uint64_t)i2;
 }
 
 /* Sign of d|Z|^2 / d alpha = 2 (Zi Wr - Zr Wi): > 0 while |Z| grows. */
@@ -98,7 +99,8 @@ static uint64_t score(const zpoly_t *p, uint32_t alpha, bool fixed)
 {
     const zval_t v = zpoly_eval(p, alpha);
     if (fixed) {
-        return (uint64_t)(v.zr + ((int64_t)1 << 62));
+        const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
+        return (uint64_t)lifted;
     }
     return power(&v);
 }
@@ -174,7 +176,8 @@ static uint64_t magnitude(const zval_t *v, int32_t *exp2)
     const uint32_t t = len > 31u ? len - 31u : 0u;
     const int64_t r = ssda__asr64(v->zr, t), i = ssda__asr64(v->zi, t);
     *exp2 = (int32_t)t;
-    return ssda_isqrt64((uint64_t)(r * r) + (uint64_t)(i * i));
+    const int64_t r2 = r * r, i2 = i * i; /* < 2^62 each */
+    return ssda_isqrt64((uint64_t)r2 + (uint64_t)i2);
 }
 
 static int check(const ssda_fd_t *a, const ssda_fd_t *b, const ssda_fd_match_t *m)

@@ -33,11 +33,19 @@ static bool prunable(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, ui
 static uint32_t prune_from(uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
                            uint32_t *stack, uint32_t cap, bool *full)
 {
-    uint32_t top = 0u, n = 0u, k;
-    stack[top++] = (y << 16) | x;
+    uint32_t top, n = 0u, k;
+    stack[0] = (y << 16) | x;
+    top = 1u;
     while (top > 0u) {
-        const uint32_t p = stack[--top];
-        const int32_t px = (int32_t)(p & 0xFFFFu), py = (int32_t)(p >> 16);
+        uint32_t p;
+        int32_t px, py;
+        top--;
+        p = stack[top];
+        {
+            const uint32_t ux = p & 0xFFFFu, uy = p >> 16;
+            px = (int32_t)ux;
+            py = (int32_t)uy;
+        }
         for (k = 0u; k < 8u; k++) {
             const int32_t qx = px + ssda__ring_dx[k], qy = py + ssda__ring_dy[k];
             uint16_t *q;
@@ -49,7 +57,8 @@ static uint32_t prune_from(uint16_t *map, uint32_t w, uint32_t h, uint32_t x, ui
                 *q = (uint16_t)(*q & ~SSDA_EDGE_ON);
                 n++;
                 if (top < cap) {
-                    stack[top++] = ((uint32_t)qy << 16) | (uint32_t)qx;
+                    stack[top] = ((uint32_t)qy << 16) | (uint32_t)qx;
+                    top++;
                 } else {
                     *full = true;
                 }
@@ -86,17 +95,19 @@ static uint32_t fill(uint16_t *map, const ssda_view_t *img, uint32_t x, uint32_t
                      uint32_t *queue, uint32_t cap, fill_t *f)
 {
     const uint32_t w = img->width, h = img->height;
-    uint32_t head = 0u, tail = 0u, k;
+    uint32_t head = 0u, tail, k;
     (void)memset(f, 0, sizeof *f);
     f->x0 = x;
     f->y0 = y;
     f->x1 = x;
     f->y1 = y;
-    queue[tail++] = (y << 16) | x;
+    queue[0] = (y << 16) | x;
+    tail = 1u;
     map[(size_t)y * w + x] |= (uint16_t)(SSDA__EDGE_SEEN | SSDA__EDGE_MARK);
     while (head < tail) {
-        const uint32_t p = queue[head++];
+        const uint32_t p = queue[head];
         const uint32_t px = p & 0xFFFFu, py = p >> 16;
+        head++;
         f->area++;
         f->sx += px;
         f->sy += py;
@@ -120,7 +131,8 @@ static uint32_t fill(uint16_t *map, const ssda_view_t *img, uint32_t x, uint32_t
                 f->remainder = true; /* a region an earlier fill could not finish */
             } else if (tail < cap) {
                 *q = (uint16_t)(*q | SSDA__EDGE_SEEN | SSDA__EDGE_MARK);
-                queue[tail++] = ((uint32_t)qy << 16) | (uint32_t)qx;
+                queue[tail] = ((uint32_t)qy << 16) | (uint32_t)qx;
+                tail++;
             } else {
                 f->overflow = true;
             }

@@ -12,10 +12,10 @@ static bool member(const ssda__member_t *s, int32_t x, int32_t y)
     if (x < 0 || y < 0 || (uint32_t)x >= s->w || (uint32_t)y >= s->h) {
         return false;
     }
-    if (s->mask != NULL) {
-        return s->mask[(size_t)(uint32_t)y * s->stride + (uint32_t)x] != 0u;
+    if (s->map != NULL) {
+        return (s->map[(size_t)(uint32_t)y * s->stride + (uint32_t)x] & s->bit) != 0u;
     }
-    return (s->map[(size_t)(uint32_t)y * s->stride + (uint32_t)x] & s->bit) != 0u;
+    return s->mask != NULL && s->mask[(size_t)(uint32_t)y * s->stride + (uint32_t)x] != 0u;
 }
 
 void ssda__trace_begin(ssda__tracer_t *t, const ssda__member_t *set, uint32_t sx, uint32_t sy)
@@ -71,7 +71,12 @@ uint64_t ssda__trace_length(const ssda__member_t *set, uint32_t sx, uint32_t sy)
 /* floor(v * 256 / len) for v < len <= DIAG_Q16: the Q8 part of a step */
 static int32_t along_q8(uint32_t v, uint32_t len)
 {
-    return len == STEP_Q16 ? (int32_t)(v >> 8) : (int32_t)SSDA_DIV32(v << 8, len);
+    const uint32_t v8 = v << 8; /* < 2^25 */
+    uint32_t q = v >> 8;
+    if (len != STEP_Q16) {
+        q = SSDA_DIV32(v8, len);
+    }
+    return (int32_t)q;
 }
 
 void ssda__trace_sample(const ssda__member_t *set, uint32_t sx, uint32_t sy, uint64_t len_q16,
@@ -103,13 +108,15 @@ void ssda__trace_sample(const ssda__member_t *set, uint32_t sx, uint32_t sy, uin
 
 uint32_t ssda__samples_log2(uint32_t v)
 {
-    uint32_t l;
-    for (l = 3u; (1u << l) <= SSDA_LOOPS_MAX_SAMPLES; l++) {
-        if (v == (1u << l)) {
-            return l;
-        }
+    uint32_t l = 0u, r = v;
+    if (v < 8u || v > SSDA_LOOPS_MAX_SAMPLES || (v & (v - 1u)) != 0u) {
+        return 0u;
     }
-    return 0u;
+    while (r > 1u) {
+        r >>= 1;
+        l++;
+    }
+    return l;
 }
 
 int ssda_loops_contour(const ssda_view_t *mask, uint16_t x, uint16_t y, uint32_t samples,

@@ -49,7 +49,7 @@ static bool area_fits(uint32_t area_r, uint32_t area_m, uint32_t lo_q16, uint32_
 static bool area_near(uint32_t area_r, uint32_t area_m, uint32_t s_q16, uint32_t ratio_q8)
 {
     uint64_t e; /* expected area, Q16 px: < 2^20 * 2^24 */
-    if (s_q16 > (1u << 20)) {
+    if (s_q16 > 0x100000u) { /* 16.0 */
         return false;
     }
     e = (uint64_t)area_r * (((uint64_t)s_q16 * s_q16) >> 16);
@@ -312,7 +312,7 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     p->resid_max = def(c->resid_max_q8, 768u);       /* 3 px */
     p->resid_mean = def(c->resid_mean_q8, 384u);     /* 1.5 px */
     if (n_ref > SSDA_SYMREG_MAX_LOOPS || n_mov > SSDA_SYMREG_MAX_LOOPS || p->min_pairs < 3u ||
-        p->e2_final > p->e2_grow || p->smin > p->smax || p->smax > (1u << 20) ||
+        p->e2_final > p->e2_grow || p->smin > p->smax || p->smax > 0x100000u ||
         p->ratio_q8 < 256u || p->ratio_q8 > 65536u) {
         return SSDA_ERR_ARG;
     }
@@ -340,7 +340,8 @@ static uint32_t write_pairs(const plan_t *p, const best_t *b, ssda_symreg_pair_t
     for (i = 0u; i < p->n_ref && n < max_pairs; i++) {
         if (b->set[i].mov != SSDA__NONE) {
             ssda_fd_match_t m;
-            ssda_symreg_pair_t *o = &pairs[n++];
+            ssda_symreg_pair_t *o = &pairs[n];
+            n++;
             (void)ssda_fd_match(&p->fr[i], &p->fm[b->set[i].mov], &m);
             o->ref = (uint16_t)i;
             o->mov = b->set[i].mov;
@@ -371,9 +372,15 @@ int ssda_symreg(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n_ref,
     if (err != SSDA_OK) {
         return err;
     }
-    set = (ssda__partner_t *)(void *)(list + p.k);
-    best_set = set + n_ref;
-    owner = (uint16_t *)(void *)(best_set + n_ref);
+    {
+        void *after_list = &list[p.k];
+        set = after_list;
+    }
+    best_set = &set[n_ref];
+    {
+        void *after_sets = &best_set[n_ref];
+        owner = after_sets;
+    }
     (void)memset(&r, 0, sizeof r);
     (void)memset(&best, 0, sizeof best);
     best.set = best_set;
