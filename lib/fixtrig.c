@@ -95,13 +95,13 @@ uint32_t ssda__atan2(int64_t y, int64_t x)
     if (m == 0u) {
         return 0u;
     }
-    /* scale so that the larger |component| is in [2^29, 2^30): the CORDIC
-       growth (1.65) then keeps |x|, |y| below 2^31 */
-    if (len > 30u) {
-        cx = (int32_t)ssda__asr64(x, len - 30u);
-        cy = (int32_t)ssda__asr64(y, len - 30u);
+    /* scale so that the larger |component| is in [2^28, 2^29): the vector
+       is then below 2^29.5 and its CORDIC growth (1.65) below 2^31 */
+    if (len > 29u) {
+        cx = (int32_t)ssda__asr64(x, len - 29u);
+        cy = (int32_t)ssda__asr64(y, len - 29u);
     } else {
-        const uint32_t up = 30u - len;
+        const uint32_t up = 29u - len;
         const int64_t f = (int64_t)((uint64_t)1u << up);
         cx = (int32_t)(x * f);
         cy = (int32_t)(y * f);

@@ -22,7 +22,8 @@ int32_t ssda__cos_q15(uint32_t angle);
 int32_t ssda__sin_q15(uint32_t angle);
 
 /* Angle of the vector (x, y) in turns (CORDIC, 28 iterations after the
-   vector is scaled to 2^29..2^30): |error| < 2^-22 turn (8.6e-5 degrees).
+   larger component is scaled to 2^28..2^29): |error| < 2^-22 turn
+   (8.6e-5 degrees).
    (0, 0) gives 0. Any int64 input (INT64_MIN included). */
 uint32_t ssda__atan2(int64_t y, int64_t x);
 

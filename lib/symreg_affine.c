@@ -53,33 +53,40 @@ void ssda__symreg_scale_rot(const ssda_symreg_affine_t *t, uint32_t *s_q16, uint
 
 /* Sums of the centred pair coordinates (eq. 17's matrix after centring). */
 typedef struct {
-    int64_t xx, xy, yy, xu, yu, xv, yv; /* |.| < 4096 * 2^48 = 2^60 */
+    int64_t xx, xy, yy, xu, yu, xv, yv; /* |.| < 4096 * 2^48 = 2^60 for |offsets| < 2^24 */
     int64_t mx, my, mu, mv;             /* means, Q8 */
     uint32_t n;
 } sums_t;
 
+/* sum / n rounded toward zero (no signed division routine) */
+static int64_t mean(int64_t sum, uint32_t n)
+{
+    const uint32_t q = SSDA_DIV64_32(ssda__abs64(sum), n); /* < 2^31 */
+    return sum < 0 ? -(int64_t)q : (int64_t)q;
+}
+
 static void centred_sums(const ssda_loop_t *ref, const ssda_loop_t *mov,
                          const ssda__partner_t *set, uint32_t n_ref, sums_t *s)
 {
-    uint64_t sx = 0u, sy = 0u, su = 0u, sv = 0u; /* centroids >= 0, < 2^24 each */
+    int64_t sx = 0, sy = 0, su = 0, sv = 0; /* |centroids| < 2^31, 4096 of them */
     uint32_t i;
     (void)memset(s, 0, sizeof *s);
     for (i = 0u; i < n_ref; i++) {
         if (set[i].mov != SSDA__NONE) {
-            sx += (uint64_t)ref[i].cx_q8;
-            sy += (uint64_t)ref[i].cy_q8;
-            su += (uint64_t)mov[set[i].mov].cx_q8;
-            sv += (uint64_t)mov[set[i].mov].cy_q8;
+            sx += ref[i].cx_q8;
+            sy += ref[i].cy_q8;
+            su += mov[set[i].mov].cx_q8;
+            sv += mov[set[i].mov].cy_q8;
             s->n++;
         }
     }
     if (s->n < 3u) {
         return;
     }
-    s->mx = (int64_t)SSDA_DIV64_32(sx, s->n);
-    s->my = (int64_t)SSDA_DIV64_32(sy, s->n);
-    s->mu = (int64_t)SSDA_DIV64_32(su, s->n);
-    s->mv = (int64_t)SSDA_DIV64_32(sv, s->n);
+    s->mx = mean(sx, s->n);
+    s->my = mean(sy, s->n);
+    s->mu = mean(su, s->n);
+    s->mv = mean(sv, s->n);
     for (i = 0u; i < n_ref; i++) {
         if (set[i].mov != SSDA__NONE) {
             const ssda_loop_t *m = &mov[set[i].mov];
