@@ -9,7 +9,7 @@
 #define GRID_LOG2 7u                     /* 128 grid points over a turn */
 #define GRID (1u << GRID_LOG2)
 #define CELL 0x02000000u                 /* one grid step, turns: 2^(32 - 7) */
-#define BISECTIONS 24u
+#define BISECTIONS 20u
 #define PEAKS 3u
 #define C_BITS 27u                       /* |c_n| components below 2^27 */
 
@@ -127,6 +127,33 @@ static uint32_t refine(const zpoly_t *p, uint32_t j, bool fixed)
     return lo + width / 2u;
 }
 
+/* Scores at the GRID points alpha_j = j / GRID turn: there k alpha_j is a
+   whole number of grid steps, so exp(i k alpha_j) comes from one table of
+   GRID entries (no interpolation, no per-term cos/sin). */
+static void grid_scores(const zpoly_t *p, bool fixed, uint64_t *g)
+{
+    int32_t tc[GRID], ts[GRID];
+    uint32_t j, t;
+    for (j = 0u; j < GRID; j++) {
+        tc[j] = ssda__cos_q15(j * CELL);
+        ts[j] = ssda__sin_q15(j * CELL);
+    }
+    for (j = 0u; j < GRID; j++) {
+        zval_t v = {0, 0, 0, 0};
+        for (t = 0u; t < p->count; t++) {
+            const uint32_t m = ((uint32_t)p->k[t] * j) & (GRID - 1u);
+            v.zr += (int64_t)p->re[t] * tc[m] - (int64_t)p->im[t] * ts[m];
+            v.zi += (int64_t)p->re[t] * ts[m] + (int64_t)p->im[t] * tc[m];
+        }
+        if (fixed) {
+            const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
+            g[j] = (uint64_t)lifted;
+        } else {
+            g[j] = power(&v);
+        }
+    }
+}
+
 /* The alpha maximising the score: grid scan, the PEAKS best local maxima
    refined, the best refined kept (ties: the smaller alpha). */
 static uint32_t best_alpha(const zpoly_t *p, bool fixed)
@@ -134,9 +161,7 @@ static uint32_t best_alpha(const zpoly_t *p, bool fixed)
     uint64_t g[GRID];
     uint32_t peak[PEAKS], npeak = 0u, j, i, best_alpha = 0u;
     uint64_t best = 0u;
-    for (j = 0u; j < GRID; j++) {
-        g[j] = score(p, j * CELL, fixed);
-    }
+    grid_scores(p, fixed, g);
     for (j = 0u; j < GRID; j++) { /* local maxima, kept best first */
         const uint64_t prev = g[(j + GRID - 1u) & (GRID - 1u)], next = g[(j + 1u) & (GRID - 1u)];
         if (g[j] >= prev && g[j] > next) {

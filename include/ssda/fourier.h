@@ -21,8 +21,8 @@
  * phi = -arg Z(alpha) (eq. 10) and s = |Z(alpha)| / sum |a_n|^2 (eq. 9),
  * and E^2 = 1 - |Z|^2 / (sum |a_n|^2 sum |b_n|^2); alpha is the root of
  * eq. 12 (d|Z|^2 / d alpha = 0) with the largest |Z|: |Z(alpha)|^2 is
- * scanned at 128 points, the three best local maxima are refined by 24
- * bisections of the sign of eq. 12 (to 2^-24 turn), the best is kept
+ * scanned at 128 points, the three best local maxima are refined by 20
+ * bisections of the sign of eq. 12 (to 2^-20 turn), the best is kept
  * (ties: the smaller alpha).
  *
  * FIXED POINT. Contour samples Q8 px; coefficients Q8 px (int32, |a_n| <=
