@@ -8,6 +8,7 @@
 #include <string.h>
 
 #define ITER_MAX 64u /* [2.2] rounds per nucleus; each must add pairs */
+#define PER_REF 2u   /* [1] nuclei from one REF loop at most */
 
 /* A nucleus candidate from [1]. */
 typedef struct {
@@ -21,7 +22,7 @@ typedef struct {
     const ssda_fd_t *fr, *fm;
     uint32_t n_ref, n_mov, k, min_pairs;
     uint32_t e2_nucleus, e2_grow, e2_final, smin, smax, ratio_q8, reach_q16, reach_min;
-    uint32_t resid_max, resid_mean;
+    uint32_t resid_max, resid_mean, shear_q16;
 } plan_t;
 
 /* The best registration so far. */
@@ -75,25 +76,33 @@ static void nuclei_insert(nucleus_t *list, uint32_t *n, uint32_t k, const nucleu
     *n = *n < k ? *n + 1u : k;
 }
 
-/* [1]: the k best pairs by free-match E^2. Returns how many. */
+/* [1]: the k best pairs by free-match E^2, at most PER_REF of them from
+   any one REF loop (the seed: the same loops recur in many pairs; without
+   the cap, a few round loops that match everything fill the list).
+   Returns how many. */
 static uint32_t find_nuclei(const plan_t *p, nucleus_t *list, ssda_symreg_result_t *res)
 {
     uint32_t i, j, n = 0u;
     for (i = 0u; i < p->n_ref; i++) {
+        nucleus_t mine[PER_REF];
+        uint32_t nm = 0u;
         for (j = 0u; j < p->n_mov; j++) {
-            const uint32_t limit = n == p->k ? list[n - 1u].e2 : p->e2_nucleus;
+            uint32_t limit = n == p->k ? list[n - 1u].e2 : p->e2_nucleus;
             ssda_fd_match_t m;
             nucleus_t c;
+            if (nm == PER_REF && mine[PER_REF - 1u].e2 < limit) {
+                limit = mine[PER_REF - 1u].e2;
+            }
             if (!area_fits(p->ref[i].area, p->mov[j].area, p->smin, p->smax)) {
                 continue;
             }
             if (ssda__fd_e2_bound(&p->fr[i], &p->fm[j]) > limit) {
-                res->skipped++; /* cannot beat the list: no search */
+                res->skipped++; /* cannot enter the lists: no search */
                 continue;
             }
             (void)ssda_fd_match(&p->fr[i], &p->fm[j], &m); /* orders checked at entry */
             res->matches++;
-            if (m.e2_q16 > p->e2_nucleus || m.s_q16 < p->smin || m.s_q16 > p->smax) {
+            if (m.e2_q16 > limit || m.s_q16 < p->smin || m.s_q16 > p->smax) {
                 continue;
             }
             res->candidates++;
@@ -102,7 +111,10 @@ static uint32_t find_nuclei(const plan_t *p, nucleus_t *list, ssda_symreg_result
             c.s_q16 = m.s_q16;
             c.phi = m.phi;
             c.e2 = m.e2_q16;
-            nuclei_insert(list, &n, p->k, &c);
+            nuclei_insert(mine, &nm, PER_REF, &c);
+        }
+        for (j = 0u; j < nm; j++) {
+            nuclei_insert(list, &n, p->k, &mine[j]);
         }
     }
     return n;
@@ -196,6 +208,34 @@ static void residuals(const plan_t *p, const ssda__partner_t *set, const ssda_sy
     }
 }
 
+/* The seed's assumption of an affine transform with little shear (a view
+   from straight above): the mapped x and y axes differ in length by at
+   most shear (relative) and meet at 90 degrees within acos(shear). */
+static bool little_shear(const ssda_symreg_affine_t *t, uint32_t shear_q16)
+{
+    /* Q8 coefficients: |.| < 2^13 for scales below 16 (else refused) */
+    const int64_t a = ssda__asr64(t->a_q16, 8u), b = ssda__asr64(t->b_q16, 8u);
+    const int64_t d = ssda__asr64(t->d_q16, 8u), e = ssda__asr64(t->e_q16, 8u);
+    const uint64_t s1 = (uint64_t)(a * a + d * d), s2 = (uint64_t)(b * b + e * e); /* Q16 */
+    const uint64_t lo = s1 < s2 ? s1 : s2, hi = s1 < s2 ? s2 : s1;
+    const uint64_t dot = ssda__abs64(a * b + d * e);
+    if (s1 >= ((uint64_t)1 << 42) || s2 >= ((uint64_t)1 << 42) || lo == 0u) {
+        return false;
+    }
+    /* s_hi / s_lo <= 1 + shear  <=>  hi <= lo (1 + shear)^2; and
+       |cos| = dot / sqrt(s1 s2) <= shear  <=>  dot^2 <= shear^2 s1 s2 */
+    {
+        const uint64_t f = 65536u + shear_q16;                       /* Q16 */
+        const uint64_t lo_f = (lo * ((f * f) >> 16)) >> 16;          /* < 2^42 * 2^18 */
+        const uint64_t sh2 = ((uint64_t)shear_q16 * shear_q16) >> 16; /* Q16 */
+        if (hi > lo_f) {
+            return false;
+        }
+        /* dot^2 < 2^84 would overflow: compare in Q8 of the products */
+        return (dot >> 8) * (dot >> 8) <= (((s1 >> 8) * (s2 >> 8)) >> 16) * sh2;
+    }
+}
+
 /* [2.5]'s fixed matches with the fit's scale and rotation; the REF index
    of the largest E^2 above e2_final, or NONE when all pass (E^2 stored). */
 static uint32_t shape_check(const plan_t *p, ssda__partner_t *set, const ssda_symreg_affine_t *t)
@@ -229,7 +269,8 @@ static bool settle(const plan_t *p, const nucleus_t *nu, ssda__partner_t *set, u
             return false;                                                    /* [2.3] */
         }
         residuals(p, set, t, &worst, &worst_i, &sum, &sum2);
-        if (worst > p->resid_max || sum > (uint64_t)p->resid_mean * count) {  /* [2.4] */
+        if (worst > p->resid_max || sum > (uint64_t)p->resid_mean * count || /* [2.4] */
+            !little_shear(t, p->shear_q16)) {
             drop = worst_i;
         } else {
             drop = shape_check(p, set, t);                                   /* [2.5] */
@@ -299,7 +340,7 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     p->fm = fd_mov;
     p->n_ref = n_ref;
     p->n_mov = n_mov;
-    p->k = def(c->nuclei, 30u);
+    p->k = def(c->nuclei, SSDA_SYMREG_DEFAULT_NUCLEI);
     p->min_pairs = def(c->min_pairs, 3u);
     p->e2_nucleus = def(c->e2_nucleus_q16, 3277u);   /* 0.05 */
     p->e2_grow = def(c->e2_grow_q16, 16384u);        /* 0.25 */
@@ -311,9 +352,10 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     p->reach_min = def(c->reach_min_q8, 1024u);      /* 4 px */
     p->resid_max = def(c->resid_max_q8, 768u);       /* 3 px */
     p->resid_mean = def(c->resid_mean_q8, 384u);     /* 1.5 px */
+    p->shear_q16 = def(c->shear_q16, 9830u);         /* 0.15 */
     if (n_ref > SSDA_SYMREG_MAX_LOOPS || n_mov > SSDA_SYMREG_MAX_LOOPS || p->min_pairs < 3u ||
         p->e2_final > p->e2_grow || p->smin > p->smax || p->smax > 0x100000u ||
-        p->ratio_q8 < 256u || p->ratio_q8 > 65536u) {
+        p->ratio_q8 < 256u || p->ratio_q8 > 65536u || p->shear_q16 > 65536u) {
         return SSDA_ERR_ARG;
     }
     for (i = 0u; i < n_ref + n_mov; i++) {

@@ -24,7 +24,7 @@ void tearDown(void) {}
 static ssda_loop_t g_ref[NL], g_mov[NL];
 static ssda_fd_t g_fr[NL], g_fm[NL];
 static ssda_point_q8_t g_pr[NL][NS], g_pm[NL][NS];
-static uint32_t g_work[(SSDA_SYMREG_WORK_SIZE(NL, NL, 30) + 3u) / 4u + 1u];
+static uint32_t g_work[(SSDA_SYMREG_WORK_SIZE(NL, NL, SSDA_SYMREG_DEFAULT_NUCLEI) + 3u) / 4u + 1u];
 static ssda_symreg_pair_t g_pairs[NL];
 
 static double frand(test_rng_t *r, double lo, double hi)
@@ -357,7 +357,7 @@ static void test_errors_change_nothing(void)
                                                    g_work, sizeof g_work, g_pairs, NL, &res));
     g_fm[3] = odd;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_symreg(g_ref, g_fr, NL, g_mov, g_fm, NL, NULL,
-                                                      g_work, SSDA_SYMREG_WORK_SIZE(NL, NL, 30) - 1u,
+                                                      g_work, SSDA_SYMREG_WORK_SIZE(NL, NL, SSDA_SYMREG_DEFAULT_NUCLEI) - 1u,
                                                       g_pairs, NL, &res));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_symreg(g_ref, g_fr, NL, g_mov, g_fm, NL, NULL,
                                                       (uint8_t *)g_work + 2, sizeof g_work - 4u,

@@ -9,8 +9,9 @@
  * METHOD (seed [1]-[3]).
  * [1] Every (ref, mov) pair whose areas fit the scale range is matched
  *     with s, phi and alpha free (ssda_fd_match; a pair whose E^2 lower
- *     bound is above e2_nucleus is skipped without the search). The
- *     `nuclei` pairs of smallest E^2 (<= e2_nucleus) are the nuclei.
+ *     bound cannot enter the lists below is skipped without the search).
+ *     The `nuclei` pairs of smallest E^2 (<= e2_nucleus), at most two from
+ *     any one REF loop, are the nuclei (ties: the earlier pair).
  * [2] For each nucleus in order of E^2:
  *   [2.1] start from the similarity of eq. 16: MOV = s R(phi) (REF - c_ref)
  *         + c_mov with the nucleus's s, phi and centroids;
@@ -23,8 +24,11 @@
  *         min_pairs pairs, or no more than the last final set: next nucleus;
  *   [2.3] the affine transform is fitted to the pairs' centroids by least
  *         squares (eq. 17);
- *   [2.4] if a residual exceeds resid_max or their mean resid_mean, the
- *         pair of largest residual is dropped and [2.3] repeats;
+ *   [2.4] if a residual exceeds resid_max or their mean resid_mean, or
+ *         the transform shears more than the seed assumes (views from
+ *         straight above: the mapped x and y axes differ in length by more
+ *         than shear, or meet further than acos(shear) from 90 degrees),
+ *         the pair of largest residual is dropped and [2.3] repeats;
  *   [2.5] if a pair's E^2 with the fitted scale and rotation exceeds
  *         e2_final, the largest is dropped and [2.3] repeats; otherwise
  *         the set is final and [2.2] grows it from the new transform.
@@ -57,7 +61,7 @@ typedef struct {
 
 /* Settings. Zero-filled = defaults (docs/symbolic.md says which matter). */
 typedef struct {
-    uint16_t nuclei;        /* nuclei tried (0 = 30, the seed's "for example 30") */
+    uint16_t nuclei;        /* nuclei tried (0 = 100; the seed: "for example 30") */
     uint16_t min_pairs;     /* pairs a registration needs, >= 3 (0 = 3, seed) */
     uint32_t e2_nucleus_q16; /* [1] free-match E^2 of a nucleus (0 = 0.05) */
     uint32_t e2_grow_q16;   /* [2.2] fixed-match E^2 to pair (0 = 0.25) */
@@ -68,6 +72,7 @@ typedef struct {
     uint32_t reach_min_q8;  /* [2.2] plus this, px Q8 (0 = 4 px) */
     uint32_t resid_max_q8;  /* [2.4] largest residual, Q8 px (0 = 3 px) */
     uint32_t resid_mean_q8; /* [2.4] largest mean residual, Q8 px (0 = 1.5 px) */
+    uint32_t shear_q16;     /* [2.4] largest shear, <= 65536 (0 = 0.15; 65536 = any) */
 } ssda_symreg_config_t;
 
 /* A matched pair in the winning registration. */
@@ -86,12 +91,16 @@ typedef struct {
     uint32_t rms_q8;        /* RMS residual of the winner, Q8 px */
     uint32_t scale_q16;     /* sqrt|ae - bd| of the winner (eq. 14) */
     uint32_t rotation;      /* its mean axis rotation (eq. 15), turns */
-    uint32_t candidates;    /* [1] pairs with E^2 <= e2_nucleus */
+    uint32_t candidates;    /* [1] pairs that entered a nucleus list (E^2 <=
+                               e2_nucleus and below the lists' worst then) */
     uint32_t nuclei;        /* nuclei tried */
     uint32_t best_nucleus;  /* index of the winning nucleus among them */
     uint32_t matches;       /* free matches run in [1] */
     uint32_t skipped;       /* [1] pairs the E^2 bound skipped */
 } ssda_symreg_result_t;
+
+/* Nuclei tried when the config says 0. */
+#define SSDA_SYMREG_DEFAULT_NUCLEI 100u
 
 /* Most loops per image. */
 #define SSDA_SYMREG_MAX_LOOPS 4096u

@@ -41,7 +41,7 @@ static const char help[] =
     "  --samples N       contour samples, a power of two 8..1024 (64)\n"
     "  --order N         Fourier descriptor order, 1..16 (10)\n"
     "registration:\n"
-    "  --nuclei N        nucleus pairs tried, 1..1000 (30)\n"
+    "  --nuclei N        nucleus pairs tried, 1..1000 (100; the seed used about 30)\n"
     "  --min-pairs N     pairs a registration needs, 3.. (3)\n"
     "  --scale MIN,MAX   scales MOV/REF searched, e.g. 0.5,2 (default)\n"
     "  -q, --quiet       no summary on stdout\n"
@@ -344,7 +344,7 @@ static void summary(const char *ref_path, const char *mov_path, const loops_run_
 static int run(const char *cmd, const symreg_opts_t *o, const loops_run_t *r,
                const loops_run_t *m, ssda_symreg_result_t *res, ssda_symreg_pair_t **pairs_out)
 {
-    const uint32_t k = o->reg.nuclei ? o->reg.nuclei : 30u;
+    const uint32_t k = o->reg.nuclei ? o->reg.nuclei : SSDA_SYMREG_DEFAULT_NUCLEI;
     const size_t wsize = SSDA_SYMREG_WORK_SIZE(r->n, m->n, k);
     void *work = malloc(wsize);
     ssda_symreg_pair_t *pairs = calloc(r->n ? r->n : 1u, sizeof *pairs);
