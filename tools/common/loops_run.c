@@ -94,10 +94,15 @@ int loops_run(const gray_image_t *img, const loops_run_cfg_t *cfg, loops_run_t *
             return fail(err, errlen, "descriptors: %s", ssda_strerror(e));
         }
     }
-    r.lib_bytes = SSDA_EDGE_MAP_SIZE(w, h) + SSDA_EDGE_RING_SIZE(w) +
-                  (edge_work > loop_work ? edge_work : loop_work) +
-                  sizeof *r.loops * max_loops + SSDA_LOOPS_POINTS_SIZE(max_loops, samples) +
-                  sizeof *r.fds * r.n;
+    /* what the library needed: buffers sized for the ends and loops found
+       (a firmware provisions its own worst case) */
+    {
+        const size_t ends_work = SSDA_EDGE_WORK_SIZE(r.edge_stats.ends);
+        r.lib_bytes = SSDA_EDGE_MAP_SIZE(w, h) + SSDA_EDGE_RING_SIZE(w) +
+                      (ends_work > loop_work ? ends_work : loop_work) +
+                      (sizeof *r.loops + sizeof *r.fds) * r.n +
+                      SSDA_LOOPS_POINTS_SIZE(r.n, samples);
+    }
     *out = r;
     return 0;
 }

@@ -32,7 +32,9 @@ typedef struct {
     uint16_t *map;               /* the final map (loops' cycles ON) */
     ssda_edge_stats_t edge_stats;
     ssda_loops_stats_t loop_stats;
-    size_t lib_bytes;            /* bytes of library buffers in use at the peak */
+    size_t lib_bytes;            /* bytes of library buffers this image needed: the
+                                    map, the ring, the larger work (ends found or
+                                    largest loop), loops, contours, descriptors */
 } loops_run_t;
 
 /* Run the chain on an 8-bit image. Returns 0, or -1 with a message in err
