@@ -102,7 +102,8 @@ uint32_t ssda__atan2(int64_t y, int64_t x)
         cy = (int32_t)ssda__asr64(y, len - 29u);
     } else {
         const uint32_t up = 29u - len;
-        const int64_t f = (int64_t)((uint64_t)1u << up);
+        const uint64_t fu = (uint64_t)1u << up; /* < 2^29 */
+        const int64_t f = (int64_t)fu;
         cx = (int32_t)(x * f);
         cy = (int32_t)(y * f);
     }

@@ -216,7 +216,8 @@ static bool little_shear(const ssda_symreg_affine_t *t, uint32_t shear_q16)
     /* Q8 coefficients: |.| < 2^13 for scales below 16 (else refused) */
     const int64_t a = ssda__asr64(t->a_q16, 8u), b = ssda__asr64(t->b_q16, 8u);
     const int64_t d = ssda__asr64(t->d_q16, 8u), e = ssda__asr64(t->e_q16, 8u);
-    const uint64_t s1 = (uint64_t)(a * a + d * d), s2 = (uint64_t)(b * b + e * e); /* Q16 */
+    const int64_t s1s = a * a + d * d, s2s = b * b + e * e; /* Q16, >= 0 */
+    const uint64_t s1 = (uint64_t)s1s, s2 = (uint64_t)s2s;
     const uint64_t lo = s1 < s2 ? s1 : s2, hi = s1 < s2 ? s2 : s1;
     const uint64_t dot = ssda__abs64(a * b + d * e);
     if (s1 >= ((uint64_t)1 << 42) || s2 >= ((uint64_t)1 << 42) || lo == 0u) {
@@ -225,7 +226,7 @@ static bool little_shear(const ssda_symreg_affine_t *t, uint32_t shear_q16)
     /* s_hi / s_lo <= 1 + shear  <=>  hi <= lo (1 + shear)^2; and
        |cos| = dot / sqrt(s1 s2) <= shear  <=>  dot^2 <= shear^2 s1 s2 */
     {
-        const uint64_t f = 65536u + shear_q16;                       /* Q16 */
+        const uint64_t f = (uint64_t)shear_q16 + 65536u;             /* Q16 */
         const uint64_t lo_f = (lo * ((f * f) >> 16)) >> 16;          /* < 2^42 * 2^18 */
         const uint64_t sh2 = ((uint64_t)shear_q16 * shear_q16) >> 16; /* Q16 */
         if (hi > lo_f) {

@@ -226,6 +226,11 @@ static int write_json(FILE *f, const char *ref_path, const char *mov_path, const
     cJSON_AddNumberToObject(root, "rotation_deg", deg(res->rotation));
     cJSON_AddNumberToObject(root, "candidates", res->candidates);
     cJSON_AddNumberToObject(root, "nuclei", res->nuclei);
+    /* the library's buffers: each image's chain, and the registration's work */
+    cJSON_AddNumberToObject(root, "lib_bytes_ref", (double)r->lib_bytes);
+    cJSON_AddNumberToObject(root, "lib_bytes_mov", (double)m->lib_bytes);
+    cJSON_AddNumberToObject(root, "lib_bytes_symreg",
+                            (double)SSDA_SYMREG_WORK_SIZE(r->n, m->n, res->nuclei));
     text = cJSON_Print(root);
     cJSON_Delete(root);
     if (text == NULL) {
