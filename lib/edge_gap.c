@@ -4,6 +4,8 @@
 #include "fixmath.h"
 #include "fixtrig.h"
 
+#include <string.h>
+
 #define CONSUMED 0xFFFFu
 
 /* The best closing of one pattern for an end. */
@@ -232,6 +234,9 @@ void ssda__edge_close(uint16_t *map, uint32_t w, uint32_t h, ssda__edge_end_t *e
     for (k = 0u; k < n; k++) {
         ssda__edge_end_t *p = &ends[k];
         pick_t pt, pi, pv;
+        (void)memset(&pt, 0, sizeof pt); /* every field defined on every path */
+        (void)memset(&pi, 0, sizeof pi);
+        (void)memset(&pv, 0, sizeof pv);
         if (p->x == CONSUMED ||
             ssda__ring_class(ssda__edge_ring(map, w, h, p->x, p->y)) != (uint32_t)SSDA_EDGE_END) {
             continue;
