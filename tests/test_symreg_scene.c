@@ -206,7 +206,8 @@ static void test_scenes_register(void)
         }
     }
     /* most scenes register, and a registration is right */
-    printf("%u scenes, %u registered, %u within 2 px\n", SCENES, registered, ok);
+    printf("%u scenes, %u registered, %u within 2 px\n", (unsigned)SCENES, (unsigned)registered,
+           (unsigned)ok);
     TEST_ASSERT_TRUE(registered * 3u >= SCENES * 2u);
     TEST_ASSERT_TRUE(ok * 10u >= registered * 8u);
 }
