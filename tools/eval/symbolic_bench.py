@@ -24,7 +24,6 @@ import argparse
 import json
 import math
 import os
-import resource
 import subprocess
 import sys
 import tempfile
@@ -37,20 +36,26 @@ import numpy as np
 # ---------------------------------------------------------------- helpers
 
 def run_json(cmd):
-    """Run cmd (its --json to a temp file); (dict or None, seconds, maxrss KB)."""
+    """Run cmd (its --json to a temp file) under /usr/bin/time; (dict or None,
+    seconds, peak RSS of the process in KB)."""
     with tempfile.NamedTemporaryFile(suffix=".json", delete=False) as f:
         path = f.name
+    with tempfile.NamedTemporaryFile(suffix=".rss", delete=False) as f:
+        rss_path = f.name
     t0 = time.perf_counter()
-    p = subprocess.Popen(cmd + ["--json", path, "-q"], stdout=subprocess.DEVNULL,
-                         stderr=subprocess.DEVNULL)
-    _, status, ru = os.wait4(p.pid, 0)
+    p = subprocess.run(["/usr/bin/time", "-f", "%M", "-o", rss_path] + cmd +
+                       ["--json", path, "-q"], stdout=subprocess.DEVNULL,
+                       stderr=subprocess.DEVNULL)
     secs = time.perf_counter() - t0
     data = None
-    if os.waitstatus_to_exitcode(status) == 0:
+    if p.returncode == 0:
         with open(path) as f:
             data = json.load(f)
+    with open(rss_path) as f:
+        lines = [ln for ln in f.read().split() if ln.isdigit()]
     os.unlink(path)
-    return data, secs, ru.ru_maxrss
+    os.unlink(rss_path)
+    return data, secs, int(lines[-1]) if lines else 0
 
 
 def similarity(w, h, deg, scale, tx=0.0, ty=0.0):
@@ -184,9 +189,15 @@ def orb_register(ref, mov, partial):
 
 
 ORB_MEM_CODE = r"""
-import sys, resource, cv2, numpy as np
+import sys, cv2, numpy as np
+def status(key):
+    for line in open("/proc/self/status"):
+        if line.startswith(key):
+            return int(line.split()[1])
 ref = cv2.imread(sys.argv[1], cv2.IMREAD_GRAYSCALE); mov = cv2.imread(sys.argv[2], cv2.IMREAD_GRAYSCALE)
-base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+with open("/proc/self/clear_refs", "w") as f:
+    f.write("5")  # reset the peak (VmHWM) to the current RSS
+base = status("VmRSS")
 if sys.argv[3] == "1":
     orb = cv2.ORB_create(nfeatures=3000)
     k1, d1 = orb.detectAndCompute(ref, None); k2, d2 = orb.detectAndCompute(mov, None)
@@ -194,12 +205,13 @@ if sys.argv[3] == "1":
     good = [a for a, b in (x for x in m if len(x) == 2) if a.distance < 0.8 * b.distance]
     src = np.float32([k1[g.queryIdx].pt for g in good]); dst = np.float32([k2[g.trainIdx].pt for g in good])
     cv2.estimateAffine2D(src, dst, method=cv2.RANSAC, ransacReprojThreshold=3.0)
-print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - base)
+print(status("VmHWM") - base)
 """
 
 
 def orb_memory_kb(ref_path, mov_path):
-    """Peak RSS growth of a process running ORB + RANSAC on the pair, KB."""
+    """Peak RSS growth of a process while it runs ORB + RANSAC on the pair
+    (images already loaded; VmHWM reset through /proc/self/clear_refs), KB."""
     out = subprocess.run([sys.executable, "-c", ORB_MEM_CODE, ref_path, mov_path, "1"],
                          capture_output=True, text=True, check=True).stdout
     return int(out.strip())
@@ -331,12 +343,17 @@ def main():
             say(f"| {name} | {k} | {r['ok']}/{r['n']} ({100.0 * r['ok'] / r['n']:.0f} %) | "
                 f"{r['found']}/{r['n']} | {median(r['rms']):.2f} px | {1e3 * median(r['secs']):.0f} ms |")
     say("")
-    say("| scene | size | loops (median, fewer of the two) | ssda library buffers (median) | ssda process peak RSS | ORB + RANSAC peak RSS growth |")
+    say("| scene | size | loops (median, fewer of the two) | ssda library buffers (median) | `ssda symreg` process peak RSS (median) | ORB + RANSAC: peak RSS growth while it runs |")
     say("|---|---|---:|---:|---:|---:|")
     for name, (res, mem, loops, shape) in results.items():
         say(f"| {name} | {shape[1]} x {shape[0]} | {median(loops):.0f} | "
             f"{median(mem['lib']) / 1024:.0f} KB | {median(mem['ssda_rss']) / 1024:.1f} MB | "
             f"{median(mem['orb_rss']) / 1024:.1f} MB |")
+    say("")
+    say("Library buffers: what `ssda_edge_*`, `ssda_loops_find`, the descriptors and "
+        "`ssda_symreg` needed for the larger image of the pair plus the registration "
+        "(the JSON's lib_bytes_*). Process peaks include libpng, cairo and the decoded "
+        "images; ORB's growth is measured in a Python process after the images are loaded.")
     say("")
     grid = scene_pairs(a.quick)
     say("Pairs: " + ", ".join(f"{d} deg x {s} (gain {g})" for d, s, g in grid) + ".")
