@@ -24,6 +24,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SYMREG
+    jobs_symreg();
 #ifdef SSDA_BUDGET_HAVE_REGISTER
     jobs_register();
 #endif
