@@ -62,7 +62,14 @@ int cmd_compare(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
     }
+    if (cli_is_stdout(o.overlay_path) && cli_is_stdout(o.json_path)) {
+        return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
+    }
     cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
+    if (cli_output_check(a.cmd, o.json_path) != 0 ||
+        cli_output_check(a.cmd, o.overlay_path) != 0) {
+        return CLI_INPUT;
+    }
     cli_outputs_begin(&out, a.cmd);
     rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
     if (rc != CLI_OK) {
@@ -146,8 +153,7 @@ int cmd_compare(int argc, char **argv)
     if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
         goto done;
     }
-    if (!(o.json_path != NULL && strcmp(o.json_path, "-") == 0) &&
-        !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
+    if (!cli_is_stdout(o.json_path) && !cli_is_stdout(o.overlay_path)) {
         uint64_t brute = track_brute_ops(&r);
         printf("SSDA vs exhaustive normalised cross-correlation on %u ok windows "
                "(of %u; window %ux%u, search %ux%u):\n",

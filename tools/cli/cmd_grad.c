@@ -88,6 +88,9 @@ int cmd_grad(int argc, char **argv)
         return cli_usage_error(a.cmd, "need IN.png and OUT.png");
     }
     cli_warn_png_name(a.cmd, "output", a.pos[1]);
+    if (cli_output_check(a.cmd, a.pos[1]) != 0) {
+        return CLI_INPUT;
+    }
     if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &in) != 0) {
         return CLI_INPUT;
     }
@@ -154,7 +157,7 @@ int cmd_grad(int argc, char **argv)
                         "--shift or --bits 16 to keep them\n",
                 sat, gray_image_max(&out), (unsigned)go.shift);
     }
-    if (strcmp(a.pos[1], "-") != 0) {
+    if (!cli_is_stdout(a.pos[1])) {
         printf("wrote %s: %u x %u, %u-bit, E' %s %u (input maximum %u)%s\n", a.pos[1],
                out.width, out.height, bits, up ? "x" : ">>", up ? 1u << up : shift, in_max,
                crop ? " (cropped)" : ", 1-pixel border 0");

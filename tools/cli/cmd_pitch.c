@@ -141,10 +141,13 @@ int cmd_pitch(int argc, char **argv)
                                fmax > 0 ? fmax : (double)SSDA_PITCH_DEFAULT_F0_MAX,
                                fmax > 0 ? "" : ", the default");
     }
-    if (csv != NULL && plot != NULL && strcmp(csv, "-") == 0 && strcmp(plot, "-") == 0) {
+    if (cli_is_stdout(csv) && cli_is_stdout(plot)) {
         return cli_usage_error(a.cmd, "--csv and --plot cannot both go to stdout");
     }
     cli_warn_png_name(a.cmd, "--plot", plot);
+    if (cli_output_check(a.cmd, csv) != 0 || cli_output_check(a.cmd, plot) != 0) {
+        return CLI_INPUT;
+    }
     if (wav_read_mono_i16_ex(a.pos[0], &x, &n, &rate, &winfo, err, sizeof err) != 0) {
         return cli_input_error(a.cmd, "%s", err);
     }
@@ -237,7 +240,7 @@ int cmd_pitch(int argc, char **argv)
     if (cli_outputs_commit(&out) != CLI_OK) {
         goto done;
     }
-    if (!(csv != NULL && strcmp(csv, "-") == 0) && !(plot != NULL && strcmp(plot, "-") == 0)) {
+    if (!cli_is_stdout(csv) && !cli_is_stdout(plot)) {
         voiced_f0 = malloc((tr.n + 1u) * sizeof *voiced_f0);
         if (voiced_f0 == NULL) {
             cli_input_error(a.cmd, "out of memory");

@@ -83,16 +83,19 @@ int cmd_track(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
     }
-    if (o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0 && o.json_path != NULL &&
-        strcmp(o.json_path, "-") == 0) {
+    if (cli_is_stdout(o.overlay_path) && cli_is_stdout(o.json_path)) {
         return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
     }
     cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
+    if (cli_output_check(a.cmd, o.json_path) != 0 ||
+        cli_output_check(a.cmd, o.overlay_path) != 0) {
+        return CLI_INPUT;
+    }
     rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
     if (rc != CLI_OK) {
         return rc;
     }
-    json_stdout = o.json_path != NULL && strcmp(o.json_path, "-") == 0;
+    json_stdout = cli_is_stdout(o.json_path);
     brute = track_brute_ops(&r);
     cli_threshold_name(&r.cfg.match, tname, sizeof tname);
     cli_outputs_begin(&out, a.cmd);
@@ -122,7 +125,7 @@ int cmd_track(int argc, char **argv)
     if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
         goto done;
     }
-    if (!json_stdout && !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
+    if (!json_stdout && !cli_is_stdout(o.overlay_path)) {
         printf("%u windows (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n",
                r.grid.count, r.grid.cols, r.grid.rows, r.grid.win_w, r.grid.win_h,
                r.grid.search_w, r.grid.search_h, r.grid.step_x, r.grid.step_y);

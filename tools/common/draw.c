@@ -24,10 +24,20 @@ static void set_err(char *err, size_t errlen, const char *fmt, ...)
     va_end(ap);
 }
 
+typedef struct {
+    FILE *fp;
+    int write_errno; /* errno of a failed write (ENOSPC, EFBIG), else 0 */
+} png_sink_t;
+
 static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int len)
 {
-    return fwrite(data, 1, len, (FILE *)closure) == len ? CAIRO_STATUS_SUCCESS
-                                                        : CAIRO_STATUS_WRITE_ERROR;
+    png_sink_t *sink = closure;
+    errno = 0;
+    if (fwrite(data, 1, len, sink->fp) == len) {
+        return CAIRO_STATUS_SUCCESS;
+    }
+    sink->write_errno = errno != 0 ? errno : EIO;
+    return CAIRO_STATUS_WRITE_ERROR;
 }
 
 /* Write a finished surface as PNG to fp. */
@@ -35,15 +45,19 @@ static int surface_to_stream(cairo_surface_t *s, FILE *fp, const char *name, cha
                              size_t errlen)
 {
     cairo_status_t st;
+    png_sink_t sink;
+    sink.fp = fp;
+    sink.write_errno = 0;
     if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
         set_err(err, errlen, "cannot draw '%s': %s", name,
                 cairo_status_to_string(cairo_surface_status(s)));
         return -1;
     }
     cairo_surface_flush(s);
-    st = cairo_surface_write_to_png_stream(s, write_to_file, fp);
+    st = cairo_surface_write_to_png_stream(s, write_to_file, &sink);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot write '%s': %s", name, cairo_status_to_string(st));
+        set_err(err, errlen, "cannot write '%s': %s", name,
+                sink.write_errno != 0 ? strerror(sink.write_errno) : cairo_status_to_string(st));
         return -1;
     }
     return 0;
@@ -57,7 +71,7 @@ static int to_path(const char *path, char *err, size_t errlen,
 {
     atomic_file_t af;
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, strerror(errno));
+        set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     if (draw(af.fp, path, ctx, err, errlen) != 0) {
@@ -65,7 +79,7 @@ static int to_path(const char *path, char *err, size_t errlen,
         return -1;
     }
     if (atomic_file_commit(&af) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     return 0;

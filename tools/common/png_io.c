@@ -320,7 +320,24 @@ typedef struct {
     png_infop info;
     png_bytep row;
     png_err_ctx_t ectx;
+    int write_errno;       /* errno of a failed write (ENOSPC, EFBIG), else 0 */
 } png_writer_t;
+
+/* libpng's own writer says only "Write Error": keep the reason. */
+static void on_png_write(png_structp png, png_bytep data, size_t len)
+{
+    png_writer_t *w = (png_writer_t *)png_get_io_ptr(png);
+    errno = 0;
+    if (fwrite(data, 1, len, w->fp) != len) {
+        w->write_errno = errno != 0 ? errno : EIO;
+        png_error(png, strerror(w->write_errno));
+    }
+}
+
+static void on_png_flush(png_structp png)
+{
+    (void)png; /* the commit flushes */
+}
 
 static int write_protected(png_writer_t *w, const gray_image_t *img)
 {
@@ -328,7 +345,7 @@ static int write_protected(png_writer_t *w, const gray_image_t *img)
     if (setjmp(png_jmpbuf(w->png))) {
         return -1;
     }
-    png_init_io(w->png, w->fp);
+    png_set_write_fn(w->png, w, on_png_write, on_png_flush);
     png_set_IHDR(w->png, w->info, img->width, img->height, img->bits, PNG_COLOR_TYPE_GRAY,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(w->png, w->info);
@@ -364,7 +381,7 @@ int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t 
         return -1;
     }
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, strerror(errno));
+        set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     w.fp = af.fp;
@@ -375,20 +392,15 @@ int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t 
         set_err(err, errlen, "'%s': out of memory", path);
     } else if (write_protected(&w, img) != 0) {
         set_err(err, errlen, "cannot write '%s': %s", path, w.ectx.msg);
-    } else if (atomic_file_commit(&af) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
-        af.fp = NULL; /* commit already cleaned up */
-        w.fp = NULL;
+    } else if (atomic_file_commit(&af) != 0) { /* releases af either way */
+        set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
     } else {
         rc = 0;
-        af.fp = NULL;
     }
     if (w.png != NULL) {
         png_destroy_write_struct(&w.png, w.info != NULL ? &w.info : NULL);
     }
     free(w.row);
-    if (rc != 0 && af.fp != NULL) {
-        atomic_file_abort(&af);
-    }
+    atomic_file_abort(&af); /* after an error: the temp file (a no-op after commit) */
     return rc;
 }
