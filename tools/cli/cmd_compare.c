@@ -27,6 +27,27 @@ static void help(void)
           stdout);
 }
 
+#define PCT(n) (ok ? 100.0 * (double)(n) / (double)ok : 0.0)
+
+/* {"compare":{...}}: the members compare adds to track's JSON. */
+static cJSON *json_compare(uint32_t ok, const uint32_t within[3], double ssda_secs,
+                           double ncc_secs)
+{
+    cJSON *extra = cJSON_CreateObject();
+    cJSON *c = cJSON_AddObjectToObject(extra, "compare");
+    cJSON_AddStringToObject(c, "reference", "ncc");
+    cJSON_AddNumberToObject(c, "windows", ok);
+    cJSON_AddNumberToObject(c, "within_0", within[0]);
+    cJSON_AddNumberToObject(c, "within_1", within[1]);
+    cJSON_AddNumberToObject(c, "within_2", within[2]);
+    json_out_add_fixed(c, "within_0_pct", PCT(within[0]), 2);
+    json_out_add_fixed(c, "within_1_pct", PCT(within[1]), 2);
+    json_out_add_fixed(c, "within_2_pct", PCT(within[2]), 2);
+    json_out_add_fixed(c, "ssda_time_s", ssda_secs, 6);
+    json_out_add_fixed(c, "ncc_time_s", ncc_secs, 6);
+    return extra;
+}
+
 int cmd_compare(int argc, char **argv)
 {
     cli_args_t a;
@@ -40,7 +61,7 @@ int cmd_compare(int argc, char **argv)
     double t0, ncc_secs;
     progress_t prog;
     int rc;
-    char extra[512], title[256], sub[256];
+    char title[256], sub[256];
 
     track_opts_init(&o);
     cli_args_begin(&a, "compare", argc, argv);
@@ -122,19 +143,13 @@ int cmd_compare(int argc, char **argv)
     ncc_secs = progress_now() - t0;
     progress_end(&prog);
 
-#define PCT(n) (ok ? 100.0 * (double)(n) / (double)ok : 0.0)
-    snprintf(extra, sizeof extra,
-             "\"compare\":{\"reference\":\"ncc\",\"windows\":%u,\"within_0\":%u,"
-             "\"within_1\":%u,\"within_2\":%u,\"within_0_pct\":%.2f,\"within_1_pct\":%.2f,"
-             "\"within_2_pct\":%.2f,\"ssda_time_s\":%.6f,\"ncc_time_s\":%.6f}",
-             ok, within[0], within[1], within[2], PCT(within[0]), PCT(within[1]),
-             PCT(within[2]), r.secs, ncc_secs);
     if (o.json_path != NULL) {
-        if ((f = cli_outputs_open(&out, o.json_path)) == NULL) {
+        if ((f = cli_outputs_open(&out, o.json_path)) == NULL ||
+            track_write_json(a.cmd, f, &r, &o, (const int32_t(*)[2])ref,
+                             json_compare(ok, within, r.secs, ncc_secs)) != 0) {
             rc = CLI_INPUT;
             goto done;
         }
-        track_write_json(f, &r, &o, (const int32_t(*)[2])ref, extra);
     }
     if (o.overlay_path != NULL) {
         snprintf(title, sizeof title, "ssda compare  %s -> %s", cli_basename(a.pos[0]),
@@ -176,7 +191,6 @@ int cmd_compare(int argc, char **argv)
             printf("wrote:   %s\n", o.overlay_path);
         }
     }
-#undef PCT
 done:
     cli_outputs_abort(&out);
     free(ref);

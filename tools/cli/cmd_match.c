@@ -1,5 +1,6 @@
 /* cmd_match.c - `ssda match SEARCH.png WINDOW.png`: one SSDA template search. */
 #include "cli.h"
+#include "json_out.h"
 #include "progress.h"
 
 #include <stdlib.h>
@@ -34,6 +35,34 @@ static const char help[] =
     "  -h, --help        this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
+
+/* The --json object, one line on stdout (docs/cli.md). */
+static int print_json(const ssda_match_result_t *res, const gray_image_t *s_img,
+                      const gray_image_t *w_img, uint64_t brute, const char *tname,
+                      const char *scan, double secs)
+{
+    cJSON *doc = json_out_object();
+    int rc;
+    cJSON_AddNumberToObject(doc, "x", res->x);
+    cJSON_AddNumberToObject(doc, "y", res->y);
+    json_out_add_u64(doc, "sad", res->sad);
+    cJSON_AddBoolToObject(doc, "exact", res->exact);
+    json_out_add_u64(doc, "positions", res->positions);
+    json_out_add_u64(doc, "completed", res->completed);
+    json_out_add_u64(doc, "pixel_ops", res->pixel_ops);
+    json_out_add_u64(doc, "brute_force_ops", brute);
+    cJSON_AddNumberToObject(doc, "search_w", s_img->width);
+    cJSON_AddNumberToObject(doc, "search_h", s_img->height);
+    cJSON_AddNumberToObject(doc, "window_w", w_img->width);
+    cJSON_AddNumberToObject(doc, "window_h", w_img->height);
+    cJSON_AddNumberToObject(doc, "bits", s_img->bits);
+    cJSON_AddStringToObject(doc, "threshold", tname);
+    cJSON_AddStringToObject(doc, "scan", scan);
+    json_out_add_fixed(doc, "time_s", secs, 6);
+    rc = json_out_print(stdout, doc, NULL);
+    cJSON_Delete(doc);
+    return rc == 0 ? CLI_OK : cli_input_error("match", "out of memory for the JSON");
+}
 
 int cmd_match(int argc, char **argv)
 {
@@ -159,14 +188,7 @@ int cmd_match(int argc, char **argv)
     npos = (uint64_t)(s_img.width - w_img.width + 1) * (s_img.height - w_img.height + 1);
     brute = npos * w_img.width * w_img.height;
     if (json) {
-        printf("{\"x\":%u,\"y\":%u,\"sad\":%llu,\"exact\":%s,\"positions\":%u,"
-               "\"completed\":%u,\"pixel_ops\":%llu,\"brute_force_ops\":%llu,"
-               "\"search_w\":%u,\"search_h\":%u,\"window_w\":%u,\"window_h\":%u,"
-               "\"bits\":%u,\"threshold\":\"%s\",\"scan\":\"%s\",\"time_s\":%.6f}\n",
-               res.x, res.y, (unsigned long long)res.sad, res.exact ? "true" : "false",
-               res.positions, res.completed, (unsigned long long)res.pixel_ops,
-               (unsigned long long)brute, s_img.width, s_img.height, w_img.width,
-               w_img.height, s_img.bits, tname, cli_scan_name(&cfg), secs);
+        rc = print_json(&res, &s_img, &w_img, brute, tname, cli_scan_name(&cfg), secs);
     } else {
         printf("best match: x=%u y=%u  (top-left of %s in %s)\n", res.x, res.y, a.pos[1],
                a.pos[0]);

@@ -104,7 +104,10 @@ int cmd_track(int argc, char **argv)
             rc = CLI_INPUT;
             goto done;
         }
-        track_write_json(f, &r, &o, NULL, NULL);
+        if (track_write_json(a.cmd, f, &r, &o, NULL, NULL) != 0) {
+            rc = CLI_INPUT;
+            goto done;
+        }
     }
     if (o.overlay_path != NULL) {
         snprintf(title, sizeof title, "ssda track  %s -> %s", cli_basename(a.pos[0]),

@@ -1,5 +1,6 @@
 /* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
 #include "track_run.h"
+#include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
 #include "ssda/stream.h"
@@ -718,69 +719,130 @@ uint64_t track_brute_ops(const track_result_t *r)
    arrowheads and marks run together. */
 #define OVERLAY_MIN_SPACING 22.0
 
-void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
-                      const int32_t (*ref)[2], const char *extra_top)
-{
-    uint32_t k;
-    char tname[64];
-    const ssda_track_grid_t *g = &r->grid;
-    static const char *pnames[] = {"none", "left", "neighbour"};
+/* ---- JSON (docs/cli.md) ---- */
 
+static cJSON *json_grid(const ssda_track_grid_t *g)
+{
+    cJSON *grid = cJSON_CreateObject();
+    cJSON *roi = cJSON_CreateArray();
+    cJSON_AddNumberToObject(grid, "cols", g->cols);
+    cJSON_AddNumberToObject(grid, "rows", g->rows);
+    cJSON_AddNumberToObject(grid, "window_w", g->win_w);
+    cJSON_AddNumberToObject(grid, "window_h", g->win_h);
+    cJSON_AddNumberToObject(grid, "search_w", g->search_w);
+    cJSON_AddNumberToObject(grid, "search_h", g->search_h);
+    cJSON_AddNumberToObject(grid, "step_x", g->step_x);
+    cJSON_AddNumberToObject(grid, "step_y", g->step_y);
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_x));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_y));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_w));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_h));
+    cJSON_AddItemToObject(grid, "roi", roi);
+    return grid;
+}
+
+static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
+{
+    static const char *pnames[] = {"none", "left", "neighbour"};
+    cJSON *opt = cJSON_CreateObject();
+    char tname[64];
     cli_threshold_name(&r->cfg.match, tname, sizeof tname);
-    fprintf(f, "{\"width\":%u,\"height\":%u,\"bits\":%u,\n", r->second.width, r->second.height,
-            r->second.bits);
-    fprintf(f, " \"grid\":{\"cols\":%u,\"rows\":%u,\"window_w\":%u,\"window_h\":%u,"
-               "\"search_w\":%u,\"search_h\":%u,\"step_x\":%u,\"step_y\":%u,"
-               "\"roi\":[%u,%u,%u,%u]},\n",
-            g->cols, g->rows, g->win_w, g->win_h, g->search_w, g->search_h, g->step_x,
-            g->step_y, g->roi_x, g->roi_y, g->roi_w, g->roi_h);
-    fprintf(f, " \"options\":{\"threshold\":\"%s\",\"scan\":\"%s\",\"predict\":\"%s\","
-               "\"bounds\":%s,\"grad\":%s,",
-            tname, cli_scan_name(&r->cfg.match), pnames[r->cfg.predict % 3u],
-            (r->cfg.match.flags & SSDA_MATCH_BOUNDS) ? "true" : "false",
-            o->grad ? "true" : "false");
+    cJSON_AddStringToObject(opt, "threshold", tname);
+    cJSON_AddStringToObject(opt, "scan", cli_scan_name(&r->cfg.match));
+    cJSON_AddStringToObject(opt, "predict", pnames[r->cfg.predict % 3u]);
+    cJSON_AddBoolToObject(opt, "bounds", (r->cfg.match.flags & SSDA_MATCH_BOUNDS) != 0);
+    cJSON_AddBoolToObject(opt, "grad", o->grad);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
-        fprintf(f, "\"exclude\":{\"level\":%u,\"min_count\":%u},", r->texture_level,
-                r->texture_min_count);
+        cJSON *ex = cJSON_AddObjectToObject(opt, "exclude");
+        cJSON_AddNumberToObject(ex, "level", r->texture_level);
+        cJSON_AddNumberToObject(ex, "min_count", r->texture_min_count);
     } else {
-        fprintf(f, "\"exclude\":null,");
+        cJSON_AddNullToObject(opt, "exclude");
     }
     if (o->cfg.flags & SSDA_TRACK_MASK) {
-        fprintf(f, "\"mask_value\":%u},\n", o->cfg.mask_value);
+        cJSON_AddNumberToObject(opt, "mask_value", o->cfg.mask_value);
     } else {
-        fprintf(f, "\"mask_value\":null},\n");
+        cJSON_AddNullToObject(opt, "mask_value");
     }
-    if (extra_top != NULL) {
-        fprintf(f, " %s,\n", extra_top);
-    }
-    fprintf(f, " \"windows\":[");
-    for (k = 0; k < g->count && !ferror(f); k++) { /* stop at a closed pipe */
-        const ssda_track_vector_t *v = &r->vec[k];
-        fprintf(f, "%s\n  {\"x\":%u,\"y\":%u,\"dx\":%d,\"dy\":%d,\"sad\":%llu,"
-                   "\"status\":\"%s\",\"exact\":%s",
-                k ? "," : "", v->x, v->y, (int)v->dx, (int)v->dy, (unsigned long long)v->sad,
-                track_status_name(v->status), v->exact ? "true" : "false");
-        if (ref != NULL && v->status == SSDA_TRACK_OK) {
-            fprintf(f, ",\"ref_dx\":%d,\"ref_dy\":%d", (int)ref[k][0], (int)ref[k][1]);
-        }
-        fputc('}', f);
-    }
-    fprintf(f, "],\n \"stats\":{\"pixel_ops\":%llu,\"bytes_read\":%llu,"
-               "\"brute_force_ops\":%llu,\"positions\":%llu,\"completed\":%llu,"
-               "\"check_pixels\":%llu,\"windows\":%u,\"ok\":%u,\"excluded\":%u,"
-               "\"masked\":%u,\"edge\":%u,\"time_s\":%.6f",
-            (unsigned long long)r->stats.pixel_ops, (unsigned long long)r->bytes_read,
-            (unsigned long long)track_brute_ops(r), (unsigned long long)r->stats.positions,
-            (unsigned long long)r->stats.completed, (unsigned long long)r->stats.check_pixels,
-            r->stats.windows, r->stats.ok, r->stats.excluded, r->stats.masked, r->stats.edge,
-            r->secs);
+    return opt;
+}
+
+static cJSON *json_stats(const track_result_t *r, const track_opts_t *o)
+{
+    cJSON *st = cJSON_CreateObject();
+    json_out_add_u64(st, "pixel_ops", r->stats.pixel_ops);
+    json_out_add_u64(st, "bytes_read", r->bytes_read);
+    json_out_add_u64(st, "brute_force_ops", track_brute_ops(r));
+    json_out_add_u64(st, "positions", r->stats.positions);
+    json_out_add_u64(st, "completed", r->stats.completed);
+    json_out_add_u64(st, "check_pixels", r->stats.check_pixels);
+    cJSON_AddNumberToObject(st, "windows", r->stats.windows);
+    cJSON_AddNumberToObject(st, "ok", r->stats.ok);
+    cJSON_AddNumberToObject(st, "excluded", r->stats.excluded);
+    cJSON_AddNumberToObject(st, "masked", r->stats.masked);
+    cJSON_AddNumberToObject(st, "edge", r->stats.edge);
+    json_out_add_fixed(st, "time_s", r->secs, 6);
     if (o->have_mem) {
-        fprintf(f, ",\"mem_bytes\":%llu,\"plate_bytes_first\":%zu,\"plate_bytes_second\":%zu,"
-                   "\"reads\":%llu",
-                (unsigned long long)o->mem, r->arena_first, r->arena_second,
-                (unsigned long long)r->reads);
+        json_out_add_u64(st, "mem_bytes", o->mem);
+        json_out_add_u64(st, "plate_bytes_first", r->arena_first);
+        json_out_add_u64(st, "plate_bytes_second", r->arena_second);
+        json_out_add_u64(st, "reads", r->reads);
     }
-    fprintf(f, "}}\n");
+    return st;
+}
+
+typedef struct {
+    const track_result_t *r;
+    const int32_t (*ref)[2];
+} window_items_t;
+
+/* Window k of the "windows" array (made while printing: json_out_lazy_t). */
+static cJSON *json_window(void *ctx, size_t k)
+{
+    const window_items_t *w = ctx;
+    const ssda_track_vector_t *v = &w->r->vec[k];
+    cJSON *item = cJSON_CreateObject();
+    cJSON_AddNumberToObject(item, "x", v->x);
+    cJSON_AddNumberToObject(item, "y", v->y);
+    cJSON_AddNumberToObject(item, "dx", v->dx);
+    cJSON_AddNumberToObject(item, "dy", v->dy);
+    json_out_add_u64(item, "sad", v->sad);
+    cJSON_AddStringToObject(item, "status", track_status_name(v->status));
+    cJSON_AddBoolToObject(item, "exact", v->exact);
+    if (w->ref != NULL && v->status == SSDA_TRACK_OK) {
+        cJSON_AddNumberToObject(item, "ref_dx", w->ref[k][0]);
+        cJSON_AddNumberToObject(item, "ref_dy", w->ref[k][1]);
+    }
+    return item;
+}
+
+int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const track_opts_t *o,
+                     const int32_t (*ref)[2], cJSON *extra)
+{
+    cJSON *doc = json_out_object(), *m;
+    window_items_t items;
+    json_out_lazy_t lazy;
+    int rc;
+    cJSON_AddNumberToObject(doc, "width", r->second.width);
+    cJSON_AddNumberToObject(doc, "height", r->second.height);
+    cJSON_AddNumberToObject(doc, "bits", r->second.bits);
+    cJSON_AddItemToObject(doc, "grid", json_grid(&r->grid));
+    cJSON_AddItemToObject(doc, "options", json_options(r, o));
+    while (extra != NULL && (m = extra->child) != NULL) { /* moved, in order */
+        cJSON_AddItemToObject(doc, m->string, cJSON_DetachItemViaPointer(extra, m));
+    }
+    cJSON_Delete(extra);
+    cJSON_AddArrayToObject(doc, "windows"); /* placeholder: made while printing */
+    cJSON_AddItemToObject(doc, "stats", json_stats(r, o));
+    items.r = r;
+    items.ref = ref;
+    lazy.name = "windows";
+    lazy.count = r->grid.count;
+    lazy.item = json_window;
+    lazy.ctx = &items;
+    rc = json_out_print(f, doc, &lazy);
+    cJSON_Delete(doc);
+    return rc == 0 ? 0 : (cli_input_error(cmd, "out of memory for the JSON"), -1);
 }
 
 int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,

@@ -8,6 +8,7 @@
 
 #include "cli.h"
 #include "draw.h"
+#include "json_out.h"
 #include "ssda/track.h"
 
 typedef struct {
@@ -70,12 +71,14 @@ const char *track_status_name(int status);
 /* Brute-force pixel operations for the OK windows (each area searched in full). */
 uint64_t track_brute_ops(const track_result_t *r);
 
-/* Write the JSON document (see docs/cli.md). ref (grid.count entries, may be
-   NULL) adds "ref_dx", "ref_dy" to each OK window; extra_top (may be NULL)
-   is inserted as more top-level members, e.g. "\"compare\":{...}".
-   Written to f (an output of the command's cli_outputs_t). */
-void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
-                      const int32_t (*ref)[2], const char *extra_top);
+/* Write the JSON document (see docs/cli.md) to f (an output of the
+   command's cli_outputs_t). ref (grid.count entries, may be NULL) adds
+   "ref_dx", "ref_dy" to each OK window; extra (may be NULL; taken over and
+   deleted) is an object whose members are added to the top level before
+   "windows", e.g. {"compare":{...}}. Returns 0, or -1 (out of memory; said
+   on stderr for cmd). */
+int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const track_opts_t *o,
+                     const int32_t (*ref)[2], cJSON *extra);
 
 /* Draw the vectors over SECOND into f (name for messages). truth
    (grid.count entries, may be NULL) is drawn as the reference arrows.

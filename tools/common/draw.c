@@ -1,28 +1,17 @@
 /* draw.c - vector overlays and pitch plots with cairo. */
 #include "draw.h"
+#include "tool_err.h"
 #include "atomic_file.h"
 
 #include <cairo.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define FONT "DejaVu Sans"
 #define PI 3.14159265358979323846
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 typedef struct {
     FILE *fp;
@@ -49,14 +38,14 @@ static int surface_to_stream(cairo_surface_t *s, FILE *fp, const char *name, cha
     sink.fp = fp;
     sink.write_errno = 0;
     if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot draw '%s': %s", name,
+        tool_set_err(err, errlen, "cannot draw '%s': %s", name,
                 cairo_status_to_string(cairo_surface_status(s)));
         return -1;
     }
     cairo_surface_flush(s);
     st = cairo_surface_write_to_png_stream(s, write_to_file, &sink);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot write '%s': %s", name,
+        tool_set_err(err, errlen, "cannot write '%s': %s", name,
                 sink.write_errno != 0 ? strerror(sink.write_errno) : cairo_status_to_string(st));
         return -1;
     }
@@ -71,7 +60,7 @@ static int to_path(const char *path, char *err, size_t errlen,
 {
     atomic_file_t af;
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
+        tool_set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     if (draw(af.fp, path, ctx, err, errlen) != 0) {
@@ -79,7 +68,7 @@ static int to_path(const char *path, char *err, size_t errlen,
         return -1;
     }
     if (atomic_file_commit(&af) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
+        tool_set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     return 0;

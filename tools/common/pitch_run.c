@@ -1,24 +1,13 @@
 /* pitch_run.c - whole-signal f0 tracks through ssda_pitch, reference CSVs, scores. */
 #include "pitch_run.h"
+#include "tool_err.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 void pitch_track_free(pitch_track_t *tr)
 {
@@ -77,7 +66,7 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
 
     memset(&tr, 0, sizeof tr);
     if (rate < SSDA_PITCH_RATE_MIN) {
-        set_err(err, errlen, "sample rate %u Hz is below the %u Hz the pitch search needs", rate,
+        tool_set_err(err, errlen, "sample rate %u Hz is below the %u Hz the pitch search needs", rate,
                 SSDA_PITCH_RATE_MIN);
         return -1;
     }
@@ -88,7 +77,7 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
         len = n / factor;
         dec = malloc((len + 1u) * sizeof *dec);
         if (dec == NULL) {
-            set_err(err, errlen, "out of memory");
+            tool_set_err(err, errlen, "out of memory");
             return -1;
         }
         for (i = 0; i < len; i++) {
@@ -104,30 +93,30 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
     c.sample_rate_hz = arate;
     e = ssda_pitch_buffer_size(&c, &bytes);
     if (e != SSDA_OK) {
-        set_err(err, errlen, "pitch settings refused at %u Hz: %s (f0 range must satisfy "
+        tool_set_err(err, errlen, "pitch settings refused at %u Hz: %s (f0 range must satisfy "
                 "10 <= fmin < fmax <= rate/4)", arate, ssda_strerror(e));
         goto done;
     }
     buf = malloc(bytes);
     if (buf == NULL || ssda_pitch_init(&p, &c, buf, bytes) != SSDA_OK ||
         ssda_pitch_get_info(&p, &tr.info) != SSDA_OK) {
-        set_err(err, errlen, buf == NULL ? "out of memory" : "pitch settings refused");
+        tool_set_err(err, errlen, buf == NULL ? "out of memory" : "pitch settings refused");
         goto done;
     }
     if (len < tr.info.span) {
-        set_err(err, errlen, "signal too short: %.3f s, one analysis needs %.3f s (lower "
+        tool_set_err(err, errlen, "signal too short: %.3f s, one analysis needs %.3f s (lower "
                 "--fmin to shorten it)", (double)len / arate, (double)tr.info.span / arate);
         goto done;
     }
     cap = (len - tr.info.span) / tr.info.hop + 2u;
     if (track_grow(&tr, cap) != 0) {
-        set_err(err, errlen, "out of memory");
+        tool_set_err(err, errlen, "out of memory");
         goto done;
     }
     while (pos < len) {
         e = ssda_pitch_push(&p, sig + pos, len - pos, &used, &est);
         if (e < 0) {
-            set_err(err, errlen, "pitch search failed: %s", ssda_strerror(e));
+            tool_set_err(err, errlen, "pitch search failed: %s", ssda_strerror(e));
             goto done;
         }
         pos += used;
@@ -135,7 +124,7 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
             if (tr.n == cap) {
                 cap *= 2u;
                 if (track_grow(&tr, cap) != 0) {
-                    set_err(err, errlen, "out of memory");
+                    tool_set_err(err, errlen, "out of memory");
                     goto done;
                 }
             }
@@ -179,7 +168,7 @@ int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out,
     double *t = NULL, *fv = NULL;
     size_t n = 0, cap = 0, lineno = 0;
     if (f == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
         return -1;
     }
     while (fgets(line, sizeof line, f) != NULL) {
@@ -197,7 +186,7 @@ int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out,
             if (n == 0 && lineno == 1) {
                 continue; /* header */
             }
-            set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
+            tool_set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
             goto fail;
         }
         p = end;
@@ -206,7 +195,7 @@ int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out,
         }
         b = strtod(p, &end);
         if (end == p || !isfinite(a) || !isfinite(b) || b < 0.0) {
-            set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
+            tool_set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
             goto fail;
         }
         if (n == cap) {
@@ -221,7 +210,7 @@ int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out,
                 fv = f2;
             }
             if (t2 == NULL || f2 == NULL) {
-                set_err(err, errlen, "out of memory reading '%s'", path);
+                tool_set_err(err, errlen, "out of memory reading '%s'", path);
                 goto fail;
             }
         }
@@ -231,7 +220,7 @@ int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out,
     }
     fclose(f);
     if (n == 0) {
-        set_err(err, errlen, "'%s' holds no time_s,f0_hz rows", path);
+        tool_set_err(err, errlen, "'%s' holds no time_s,f0_hz rows", path);
         free(t);
         free(fv);
         return -1;

@@ -1,11 +1,11 @@
 /* png_io.c - PNG to gray and gray to PNG with libpng (rules in png_io.h). */
 #include "png_io.h"
+#include "tool_err.h"
 #include "atomic_file.h"
 
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,17 +28,6 @@ static void on_png_warning(png_structp png, png_const_charp text)
 {
     (void)png;
     (void)text; /* ancillary-chunk trouble: the pixels are still fine */
-}
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
 }
 
 int gray_image_alloc(gray_image_t *img, uint32_t width, uint32_t height, int bits)
@@ -258,44 +247,44 @@ int png_read_gray(const char *path, png_gray_depth_t depth, gray_image_t *img,
     int rc = -1;
 
     if (depth != PNG_GRAY_NATIVE && depth != PNG_GRAY_8 && depth != PNG_GRAY_16) {
-        set_err(err, errlen, "'%s': unknown gray depth %d", path, (int)depth);
+        tool_set_err(err, errlen, "'%s': unknown gray depth %d", path, (int)depth);
         return -1;
     }
     r = calloc(1, sizeof *r);
     if (r == NULL) {
-        set_err(err, errlen, "'%s': out of memory", path);
+        tool_set_err(err, errlen, "'%s': out of memory", path);
         return -1;
     }
     r->path = path;
     r->fp = fopen(path, "rb");
     if (r->fp == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
         goto done;
     }
     got = fread(sig, 1, sizeof sig, r->fp);
     if (got == 0) {
-        set_err(err, errlen, "'%s' is empty, not a PNG file", path);
+        tool_set_err(err, errlen, "'%s' is empty, not a PNG file", path);
         goto done;
     }
     if (got < sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0) {
-        set_err(err, errlen, "'%s' is not a PNG file (bad signature)", path);
+        tool_set_err(err, errlen, "'%s' is not a PNG file (bad signature)", path);
         goto done;
     }
     r->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r->ectx, on_png_error,
                                     on_png_warning);
     if (r->png == NULL || (r->info = png_create_info_struct(r->png)) == NULL) {
-        set_err(err, errlen, "'%s': out of memory", path);
+        tool_set_err(err, errlen, "'%s': out of memory", path);
         goto done;
     }
     if (read_protected(r, depth) != 0) {
         if (r->why[0] != '\0') {
-            set_err(err, errlen, "'%s': %s", path, r->why);
+            tool_set_err(err, errlen, "'%s': %s", path, r->why);
         } else {
             /* libpng's fread failure at end of file says just "Read Error" */
             const char *m = strcmp(r->ectx.msg, "Read Error") == 0 ? "file ends early"
                             : r->ectx.msg[0] != '\0'            ? r->ectx.msg
                                                                 : "libpng error";
-            set_err(err, errlen, "'%s': corrupt or truncated PNG (%s)", path, m);
+            tool_set_err(err, errlen, "'%s': corrupt or truncated PNG (%s)", path, m);
         }
         goto done;
     }
@@ -377,11 +366,11 @@ int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t 
     if (img == NULL || img->pixels == NULL || img->width == 0 || img->height == 0 ||
         img->width > SSDA_MAX_DIM || img->height > SSDA_MAX_DIM ||
         (img->bits != 8 && img->bits != 16)) {
-        set_err(err, errlen, "'%s': nothing valid to write", path);
+        tool_set_err(err, errlen, "'%s': nothing valid to write", path);
         return -1;
     }
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
+        tool_set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     w.fp = af.fp;
@@ -389,11 +378,11 @@ int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t 
     w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.ectx, on_png_error,
                                     on_png_warning);
     if (w.row == NULL || w.png == NULL || (w.info = png_create_info_struct(w.png)) == NULL) {
-        set_err(err, errlen, "'%s': out of memory", path);
+        tool_set_err(err, errlen, "'%s': out of memory", path);
     } else if (write_protected(&w, img) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, w.ectx.msg);
+        tool_set_err(err, errlen, "cannot write '%s': %s", path, w.ectx.msg);
     } else if (atomic_file_commit(&af) != 0) { /* releases af either way */
-        set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
+        tool_set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
     } else {
         rc = 0;
     }

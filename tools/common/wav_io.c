@@ -1,26 +1,15 @@
 /* wav_io.c - mono int16 audio reading through libsndfile. */
 #include "wav_io.h"
+#include "tool_err.h"
 
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <sndfile.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static void describe_subtype(int format, wav_info_t *info)
 {
@@ -63,16 +52,16 @@ static int probe_file(const char *path, char *err, size_t errlen)
     FILE *f = fopen(path, "rb");
     int c;
     if (f == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
         return -1;
     }
     errno = 0;
     c = fgetc(f);
     if (c == EOF) {
         if (ferror(f)) { /* e.g. a directory */
-            set_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
+            tool_set_err(err, errlen, "cannot read '%s': %s", path, strerror(errno));
         } else {
-            set_err(err, errlen, "'%s' is empty, not a sound file", path);
+            tool_set_err(err, errlen, "'%s' is empty, not a sound file", path);
         }
         fclose(f);
         return -1;
@@ -94,7 +83,7 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
     enum { BLOCK_FRAMES = 4096 };
 
     if (path == NULL || samples == NULL || count == NULL || rate == NULL) {
-        set_err(err, errlen, "wav_read_mono_i16: NULL argument");
+        tool_set_err(err, errlen, "wav_read_mono_i16: NULL argument");
         return -1;
     }
     if (probe_file(path, err, errlen) != 0) {
@@ -110,22 +99,22 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
         while (k > 0 && (why[k - 1] == '.' || why[k - 1] == ' ' || why[k - 1] == '\n')) {
             why[--k] = '\0';
         }
-        set_err(err, errlen, "'%s' is not a sound file libsndfile reads (%s)", path, why);
+        tool_set_err(err, errlen, "'%s' is not a sound file libsndfile reads (%s)", path, why);
         return -1;
     }
     if (sfi.channels < 1 || sfi.samplerate < 1) {
-        set_err(err, errlen, "'%s': invalid header (%d channels, %d Hz)", path,
+        tool_set_err(err, errlen, "'%s': invalid header (%d channels, %d Hz)", path,
                 sfi.channels, sfi.samplerate);
         sf_close(sf);
         return -1;
     }
     if (sfi.frames <= 0) {
-        set_err(err, errlen, "'%s': no audio frames", path);
+        tool_set_err(err, errlen, "'%s': no audio frames", path);
         sf_close(sf);
         return -1;
     }
     if ((unsigned long long)sfi.frames > (unsigned long long)(SIZE_MAX / sizeof(int16_t))) {
-        set_err(err, errlen, "'%s': too long (%lld frames)", path, (long long)sfi.frames);
+        tool_set_err(err, errlen, "'%s': too long (%lld frames)", path, (long long)sfi.frames);
         sf_close(sf);
         return -1;
     }
@@ -146,7 +135,7 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
     out = malloc(cap * sizeof *out);
     block = malloc((size_t)BLOCK_FRAMES * nch * sizeof *block);
     if (out == NULL || block == NULL) {
-        set_err(err, errlen, "'%s': out of memory for %zu frames", path, frames);
+        tool_set_err(err, errlen, "'%s': out of memory for %zu frames", path, frames);
         free(out);
         free(block);
         sf_close(sf);
@@ -166,7 +155,7 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
             size_t grown = cap > frames / 2u ? frames : 2u * cap;
             int16_t *more = realloc(out, grown * sizeof *out);
             if (more == NULL) {
-                set_err(err, errlen, "'%s': out of memory after %zu frames", path, done);
+                tool_set_err(err, errlen, "'%s': out of memory after %zu frames", path, done);
                 free(out);
                 free(block);
                 sf_close(sf);
@@ -185,7 +174,7 @@ int wav_read_mono_i16_ex(const char *path, int16_t **samples, size_t *count,
         done += (size_t)got;
     }
     if (sf_error(sf) != SF_ERR_NO_ERROR || done == 0) {
-        set_err(err, errlen, "'%s': read error after %zu of %zu frames: %s", path, done,
+        tool_set_err(err, errlen, "'%s': read error after %zu of %zu frames: %s", path, done,
                 frames, sf_strerror(sf));
         free(out);
         free(block);

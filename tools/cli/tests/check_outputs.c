@@ -16,7 +16,7 @@
  *   grad-same IN.png OUT.png SHIFT   OUT is the Fig. 8 operator of IN (same
  *       size, border 0), recomputed here in plain C
  */
-#include "json_mini.h"
+#include <jansson.h>
 #include "png_io.h"
 
 #include <math.h>
@@ -56,43 +56,40 @@ static char *slurp(const char *path)
     return buf;
 }
 
-static json_value_t *load_json(const char *path)
+/* The tools write JSON with cJSON; it is read back here with a different
+   library (jansson, strict: one value, valid UTF-8, no duplicate keys). */
+static json_t *load_json(const char *path)
 {
-    char *s = slurp(path);
-    size_t at = 0;
-    json_value_t *v;
-    if (s == NULL) {
-        fail("cannot read %s", path);
-        return NULL;
+    json_error_t e;
+    json_t *v = json_load_file(path, JSON_REJECT_DUPLICATES, &e);
+    if (v == NULL) {
+        fail("%s is not valid JSON (line %d, column %d: %s)", path, e.line, e.column, e.text);
     }
-    v = json_parse(s, &at);
-    if (v == NULL) fail("%s is not valid JSON (error at byte %zu)", path, at);
-    free(s);
     return v;
 }
 
-static int num(const json_value_t *o, const char *key, double *out)
+static int num(const json_t *o, const char *key, double *out)
 {
-    const json_value_t *v = json_get(o, key);
-    if (v == NULL || v->type != JSON_NUMBER) return -1;
-    *out = v->number;
+    const json_t *v = json_object_get(o, key);
+    if (!json_is_number(v)) return -1;
+    *out = json_number_value(v);
     return 0;
 }
 
 static int check_match(int argc, char **argv)
 {
-    json_value_t *j;
+    json_t *j;
     double x, y, sad, pos, comp, ops, brute;
-    const json_value_t *ex;
+    const json_t *ex;
     int rc = 0;
     if (argc != 5) return 2;
     j = load_json(argv[0]);
     if (j == NULL) return 1;
-    ex = json_get(j, "exact");
+    ex = json_object_get(j, "exact");
     if (num(j, "x", &x) || num(j, "y", &y) || num(j, "sad", &sad) || num(j, "positions", &pos) ||
         num(j, "completed", &comp) || num(j, "pixel_ops", &ops) ||
         num(j, "brute_force_ops", &brute) || ex == NULL ||
-        (ex->type != JSON_TRUE && ex->type != JSON_FALSE)) {
+        !json_is_boolean(ex)) {
         rc = fail("match JSON lacks a field");
     } else if ((strcmp(argv[1], "-") != 0 && x != atof(argv[1])) ||
                (strcmp(argv[2], "-") != 0 && y != atof(argv[2]))) {
@@ -100,14 +97,13 @@ static int check_match(int argc, char **argv)
     } else if (strcmp(argv[3], "-") != 0 && sad != atof(argv[3])) {
         rc = fail("sad %g, expected %s", sad, argv[3]);
     } else if (strcmp(argv[4], "-") != 0 &&
-               (ex->type == JSON_TRUE) != (strcmp(argv[4], "true") == 0)) {
-        rc = fail("exact is %s, expected %s", ex->type == JSON_TRUE ? "true" : "false", argv[4]);
+               json_is_true(ex) != (strcmp(argv[4], "true") == 0)) {
+        rc = fail("exact is %s, expected %s", json_is_true(ex) ? "true" : "false", argv[4]);
     } else if (comp < 1 || comp > pos || ops <= 0) {
         rc = fail("implausible work counts: positions %g completed %g pixel_ops %g", pos, comp,
                   ops);
     }
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 
@@ -115,8 +111,8 @@ static const char *status_names[] = {"ok", "excluded", "masked", "edge"};
 
 static int check_track(int argc, char **argv)
 {
-    json_value_t *j;
-    const json_value_t *wins, *stats, *grid;
+    json_t *j;
+    const json_t *wins, *stats, *grid;
     double dx = atof(argv[1]), dy = atof(argv[2]), minfrac = atof(argv[3]);
     double cols, rows, sw, sh, ww, wh, v, counts_json[4];
     size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
@@ -144,34 +140,34 @@ static int check_track(int argc, char **argv)
     }
     j = load_json(argv[0]);
     if (j == NULL) return 1;
-    wins = json_get(j, "windows");
-    stats = json_get(j, "stats");
-    grid = json_get(j, "grid");
-    if (wins == NULL || wins->type != JSON_ARRAY || stats == NULL || grid == NULL ||
+    wins = json_object_get(j, "windows");
+    stats = json_object_get(j, "stats");
+    grid = json_object_get(j, "grid");
+    if (wins == NULL || !json_is_array(wins) || stats == NULL || grid == NULL ||
         num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &sw) ||
         num(grid, "search_h", &sh) || num(grid, "window_w", &ww) || num(grid, "window_h", &wh) ||
         num(stats, "pixel_ops", &v) || num(stats, "bytes_read", &v)) {
         rc = fail("track JSON lacks windows, grid or stats fields");
         goto done;
     }
-    if ((double)wins->count != cols * rows) {
-        rc = fail("%zu windows, grid says %g x %g", wins->count, cols, rows);
+    if ((double)json_array_size(wins) != cols * rows) {
+        rc = fail("%zu windows, grid says %g x %g", json_array_size(wins), cols, rows);
         goto done;
     }
-    for (i = 0; i < wins->count; i++) {
-        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
+    for (i = 0; i < json_array_size(wins); i++) {
+        const json_t *w = json_array_get(wins, i), *st = json_object_get(w, "status");
         double wx, wy, wdx, wdy, sad;
         int k, s = -1;
-        if (st == NULL || st->type != JSON_STRING || num(w, "x", &wx) || num(w, "y", &wy) ||
+        if (!json_is_string(st) || num(w, "x", &wx) || num(w, "y", &wy) ||
             num(w, "dx", &wdx) || num(w, "dy", &wdy) || num(w, "sad", &sad)) {
             rc = fail("window %zu lacks x, y, dx, dy, sad or status", i);
             goto done;
         }
         for (k = 0; k < 4; k++) {
-            if (strcmp(st->string, status_names[k]) == 0) s = k;
+            if (strcmp(json_string_value(st), status_names[k]) == 0) s = k;
         }
         if (s < 0) {
-            rc = fail("window %zu has unknown status '%s'", i, st->string);
+            rc = fail("window %zu has unknown status '%s'", i, json_string_value(st));
             goto done;
         }
         counts[s]++;
@@ -184,7 +180,7 @@ static int check_track(int argc, char **argv)
             }
             if (wdx == dx && wdy == dy) agree++;
         } else if (wdx != 0 || wdy != 0) {
-            rc = fail("window %zu is %s but has a vector", i, st->string);
+            rc = fail("window %zu is %s but has a vector", i, json_string_value(st));
             goto done;
         }
     }
@@ -205,33 +201,32 @@ static int check_track(int argc, char **argv)
                   dy, 100 * minfrac);
     }
 done:
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 
 static int check_compare(int argc, char **argv)
 {
-    json_value_t *j;
-    const json_value_t *cmp, *wins;
+    json_t *j;
+    const json_t *cmp, *wins;
     double w0, w1, w2, n, p1;
     size_t i, mine[3] = {0, 0, 0}, ok = 0;
     int rc = 0;
     if (argc != 2) return 2;
     j = load_json(argv[0]);
     if (j == NULL) return 1;
-    cmp = json_get(j, "compare");
-    wins = json_get(j, "windows");
+    cmp = json_object_get(j, "compare");
+    wins = json_object_get(j, "windows");
     if (cmp == NULL || wins == NULL || num(cmp, "within_0", &w0) || num(cmp, "within_1", &w1) ||
         num(cmp, "within_2", &w2) || num(cmp, "windows", &n) || num(cmp, "within_1_pct", &p1) ||
         num(cmp, "ncc_time_s", &n) || num(cmp, "windows", &n)) {
         rc = fail("compare JSON lacks fields");
         goto done;
     }
-    for (i = 0; i < wins->count; i++) {
-        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
+    for (i = 0; i < json_array_size(wins); i++) {
+        const json_t *w = json_array_get(wins, i), *st = json_object_get(w, "status");
         double dx, dy, rx, ry, d;
-        if (strcmp(st->string, "ok") != 0) continue;
+        if (strcmp(json_string_value(st), "ok") != 0) continue;
         if (num(w, "dx", &dx) || num(w, "dy", &dy) || num(w, "ref_dx", &rx) ||
             num(w, "ref_dy", &ry)) {
             rc = fail("ok window %zu lacks ref_dx/ref_dy", i);
@@ -251,8 +246,7 @@ static int check_compare(int argc, char **argv)
         rc = fail("within 1 px %.1f %%, expected at least %s %%", p1, argv[1]);
     }
 done:
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 
