@@ -43,8 +43,10 @@ typedef struct {
     const char *inline_value; /* value after '=' or NULL */
     int bad;           /* a usage error was already reported */
     const char *pos[CLI_MAX_POSITIONAL];
+    int pos_argi[CLI_MAX_POSITIONAL]; /* argv index of each positional */
     int npos;
     int options_done;
+    int dashdash_argi; /* argv index of "--", 0 if none */
 } cli_args_t;
 
 void cli_args_begin(cli_args_t *a, const char *cmd, int argc, char **argv);
@@ -57,6 +59,11 @@ int cli_flag(cli_args_t *a, const char *name);
 int cli_opt(cli_args_t *a, const char *name, const char **value);
 /* Report the current option as unknown; returns CLI_USAGE. */
 int cli_unknown(cli_args_t *a);
+/* After the loop: exactly n positionals? More: "unexpected argument 'X'"
+   naming the first extra one (after "--" every argument is a file: said
+   when X looks like an option); fewer: need (e.g. "need FIRST.png and
+   SECOND.png"). Returns CLI_OK or CLI_USAGE (printed). */
+int cli_positionals(const cli_args_t *a, int n, const char *need);
 
 /* Print "ssda CMD: message" and a hint to stderr; returns CLI_USAGE. */
 int cli_usage_error(const char *cmd, const char *fmt, ...);

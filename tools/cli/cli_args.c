@@ -27,6 +27,7 @@ int cli_next(cli_args_t *a)
         const char *eq;
         if (!a->options_done && strcmp(s, "--") == 0) {
             a->options_done = 1;
+            a->dashdash_argi = a->i - 1;
             continue;
         }
         /* "-" alone is a positional (stdout/stdin); "-5" is not an option either */
@@ -36,6 +37,7 @@ int cli_next(cli_args_t *a)
                 a->bad = 1;
                 return 0;
             }
+            a->pos_argi[a->npos] = a->i - 1;
             a->pos[a->npos++] = s;
             continue;
         }
@@ -85,6 +87,20 @@ int cli_opt(cli_args_t *a, const char *name, const char **value)
 int cli_unknown(cli_args_t *a)
 {
     return cli_usage_error(a->cmd, "unknown option '%.*s'", (int)a->name_len, a->name);
+}
+
+int cli_positionals(const cli_args_t *a, int n, const char *need)
+{
+    if (a->npos > n) {
+        const char *x = a->pos[n];
+        int after = a->dashdash_argi != 0 && a->pos_argi[n] > a->dashdash_argi && x[0] == '-';
+        return cli_usage_error(a->cmd, "unexpected argument '%s'%s", x,
+                               after ? " (after '--' every argument is a file name)" : "");
+    }
+    if (a->npos < n) {
+        return cli_usage_error(a->cmd, "%s", need);
+    }
+    return CLI_OK;
 }
 
 int cli_usage_error(const char *cmd, const char *fmt, ...)

@@ -80,8 +80,8 @@ int cmd_compare(int argc, char **argv)
     if (a.bad) {
         return CLI_USAGE;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
+    if ((rc = track_check_positionals(&a, &o)) != CLI_OK) {
+        return rc;
     }
     if (cli_is_stdout(o.overlay_path) && cli_is_stdout(o.json_path)) {
         return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");

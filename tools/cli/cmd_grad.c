@@ -84,8 +84,8 @@ int cmd_grad(int argc, char **argv)
     if (a.bad) {
         return CLI_USAGE;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need IN.png and OUT.png");
+    if (cli_positionals(&a, 2, "need IN.png and OUT.png") != CLI_OK) {
+        return CLI_USAGE;
     }
     cli_warn_png_name(a.cmd, "output", a.pos[1]);
     if (cli_output_check(a.cmd, a.pos[1]) != 0) {

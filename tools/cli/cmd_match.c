@@ -129,15 +129,13 @@ int cmd_match(int argc, char **argv)
     if (a.bad) {
         return CLI_USAGE;
     }
-    if (a.npos > 2) {
+    if (a.npos > 2 && json && a.pos[2][0] != '-') {
         /* often "--json FILE" as track and compare take it */
-        return cli_usage_error(a.cmd, "unexpected argument '%s'%s", a.pos[2],
-                               json ? " (match --json prints to stdout; redirect it: "
-                                      "--json > FILE)"
-                                    : "");
+        return cli_usage_error(a.cmd, "unexpected argument '%s' (match --json prints to "
+                               "stdout; redirect it: --json > FILE)", a.pos[2]);
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need SEARCH.png and WINDOW.png");
+    if (cli_positionals(&a, 2, "need SEARCH.png and WINDOW.png") != CLI_OK) {
+        return CLI_USAGE;
     }
     if (have_predict) {
         if (scan_given && cfg.scan != SSDA_SCAN_PREDICT) {

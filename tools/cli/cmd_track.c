@@ -80,8 +80,8 @@ int cmd_track(int argc, char **argv)
     if (a.bad) {
         return CLI_USAGE;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
+    if ((rc = track_check_positionals(&a, &o)) != CLI_OK) {
+        return rc;
     }
     if (cli_is_stdout(o.overlay_path) && cli_is_stdout(o.json_path)) {
         return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
@@ -129,8 +129,8 @@ int cmd_track(int argc, char **argv)
         goto done;
     }
     if (!json_stdout && !cli_is_stdout(o.overlay_path)) {
-        printf("%u windows (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n",
-               r.grid.count, r.grid.cols, r.grid.rows, r.grid.win_w, r.grid.win_h,
+        printf("%u window%s (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n",
+               r.grid.count, r.grid.count == 1 ? "" : "s", r.grid.cols, r.grid.rows, r.grid.win_w, r.grid.win_h,
                r.grid.search_w, r.grid.search_h, r.grid.step_x, r.grid.step_y);
         printf("status:  %u ok, %u excluded, %u masked, %u edge\n", r.stats.ok,
                r.stats.excluded, r.stats.masked, r.stats.edge);
@@ -138,10 +138,10 @@ int cmd_track(int argc, char **argv)
             printf("motion:  median dx=%+d dy=%+d px (FIRST -> SECOND)\n",
                    (int)median_component(&r, 0), (int)median_component(&r, 1));
             printf("work:    %llu pixel ops = %.2f %% of brute force (%llu); threshold %s, "
-                   "%.2f ms\n",
+                   "scan %s, %.2f ms\n",
                    (unsigned long long)r.stats.pixel_ops,
                    brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
-                   (unsigned long long)brute, tname, 1e3 * r.secs);
+                   (unsigned long long)brute, tname, cli_scan_name(&r.cfg.match), 1e3 * r.secs);
         }
         if (o.have_mem) {
             uint64_t images = (uint64_t)r.first.stride * r.first.height +

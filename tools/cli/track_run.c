@@ -169,6 +169,7 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
             cli_usage_error(a->cmd, "bad --scan '%s' (raster, predict, coarse)", v);
             a->bad = 1;
         }
+        o->scan_given = 1;
     } else if (cli_opt(a, "--order", &v)) {
         if (v != NULL && cli_parse_order(v, &o->cfg.match) != 0) {
             cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
@@ -198,6 +199,7 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         uint32_t level = 0, count = 0;
         int given = 0;
         o->exclude = 1;
+        o->exclude_argi = a->i - 1;
         v = a->inline_value;
         if (v == NULL && a->i < a->argc &&
             parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
@@ -243,6 +245,15 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         return 0;
     }
     return 1;
+}
+
+int track_check_positionals(const cli_args_t *a, const track_opts_t *o)
+{
+    if (a->npos > 2 && o->exclude && a->pos_argi[2] == o->exclude_argi + 1) {
+        return cli_usage_error(a->cmd, "unexpected argument '%s': not a value of --exclude "
+                               "(LEVEL[:COUNT] or mean[:COUNT]; --exclude=VALUE)", a->pos[2]);
+    }
+    return cli_positionals(a, 2, "need FIRST.png and SECOND.png");
 }
 
 const char *track_status_name(int status)
@@ -490,23 +501,33 @@ static void stats_add(ssda_track_stats_t *t, const ssda_track_stats_t *s)
     t->edge += s->edge;
 }
 
-int track_run(const char *cmd, const char *first_path, const char *second_path,
-              const track_opts_t *o, track_result_t *r)
+static const char *predict_name(uint8_t predict)
 {
-    ssda_view_t vf, vs;
-    void *work = NULL;
-    int e, masked = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
-    uint32_t maxval;
-    progress_t prog;
-    double t0;
+    static const char *names[] = {"none", "left", "neighbour"};
+    return names[predict % 3u];
+}
 
-    memset(r, 0, sizeof *r);
-    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
-    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
-        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
-                               "every window is searched outward from its predicted vector)");
+/* What the library runs: with a prediction a raster scan is run as a
+   PREDICT scan (track.h). The config then says so, and the JSON and the
+   summary report what ran; an explicit --scan raster is warned about. */
+static void resolve_scan(const char *cmd, const track_opts_t *o, ssda_track_config_t *cfg)
+{
+    if (cfg->predict == SSDA_TRACK_PREDICT_NONE || cfg->match.scan != SSDA_SCAN_RASTER) {
+        return;
     }
-    r->cfg = o->cfg;
+    if (o->scan_given) {
+        fprintf(stderr, "ssda %s: warning: --scan raster is run as --scan predict with "
+                "--predict %s (each search starts at the predicted vector); --predict none "
+                "for a raster scan\n", cmd, predict_name(cfg->predict));
+    }
+    cfg->match.scan = SSDA_SCAN_PREDICT;
+}
+
+/* Read FIRST and SECOND; keep SECOND as read for the overlay. */
+static int load_inputs(const char *cmd, const char *first_path, const char *second_path,
+                       const track_opts_t *o, track_result_t *r)
+{
+    uint32_t maxval;
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;
     }
@@ -518,59 +539,63 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
                 cmd, r->first.width, r->first.height, r->second.width, r->second.height);
     }
     maxval = gray_image_max(&r->second);
-    if (masked && o->cfg.mask_value > maxval) {
-        track_result_free(r);
-        return cli_usage_error(cmd, "--mask-value %u is beyond these %u-bit images", 
+    if ((o->cfg.flags & SSDA_TRACK_MASK) && o->cfg.mask_value > maxval) {
+        return cli_usage_error(cmd, "--mask-value %u is beyond these %u-bit images",
                                o->cfg.mask_value, maxval == 255 ? 8 : 16);
     }
     if (o->overlay_path != NULL) {
         /* the overlay shows SECOND as read, also when tracking on gradients */
-        r->second_orig = r->second;
-        r->second.pixels = NULL;
-        if (gray_image_alloc(&r->second, r->second_orig.width, r->second_orig.height,
-                             r->second_orig.bits) != 0) {
-            track_result_free(r);
+        if (gray_image_alloc(&r->second_orig, r->second.width, r->second.height,
+                             r->second.bits) != 0) {
             return cli_input_error(cmd, "out of memory");
         }
-        memcpy(r->second.pixels, r->second_orig.pixels,
+        memcpy(r->second_orig.pixels, r->second.pixels,
                (size_t)r->second.stride * r->second.height);
     }
-    if (o->grad) {
-        gray_image_t gf, gs;
-        /* smallest shift that keeps 4 * max below 65535 (the fill value) */
-        uint32_t m = image_max(&r->first, masked, o->cfg.mask_value);
-        unsigned shift = 0;
-        uint32_t m2 = image_max(&r->second, masked, o->cfg.mask_value);
-        if (m2 > m) {
-            m = m2;
-        }
-        while ((4u * m) >> shift >= 65535u) {
-            shift++;
-        }
-        if (grad_image(cmd, &r->first, masked, o->cfg.mask_value, shift, &gf) != 0) {
-            track_result_free(r);
-            return CLI_INPUT;
-        }
-        if (grad_image(cmd, &r->second, masked, o->cfg.mask_value, shift, &gs) != 0) {
-            gray_image_free(&gf);
-            track_result_free(r);
-            return CLI_INPUT;
-        }
-        gray_image_free(&r->first);
-        gray_image_free(&r->second);
-        r->first = gf;
-        r->second = gs;
-        if (masked) {
-            r->cfg.mask_value = 65535u;
-        }
+    return CLI_OK;
+}
+
+/* --grad: both images replaced by their Fig. 8 gradients (16-bit; with a
+   mask, 65535 becomes the fill value). */
+static int apply_grad(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    gray_image_t gf, gs;
+    int masked = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
+    /* smallest shift that keeps 4 * max below 65535 (the fill value) */
+    uint32_t m = image_max(&r->first, masked, o->cfg.mask_value);
+    uint32_t m2 = image_max(&r->second, masked, o->cfg.mask_value);
+    unsigned shift = 0;
+    m = m2 > m ? m2 : m;
+    while ((4u * m) >> shift >= 65535u) {
+        shift++;
     }
+    if (grad_image(cmd, &r->first, masked, o->cfg.mask_value, shift, &gf) != 0) {
+        return CLI_INPUT;
+    }
+    if (grad_image(cmd, &r->second, masked, o->cfg.mask_value, shift, &gs) != 0) {
+        gray_image_free(&gf);
+        return CLI_INPUT;
+    }
+    gray_image_free(&r->first);
+    gray_image_free(&r->second);
+    r->first = gf;
+    r->second = gs;
+    if (masked) {
+        r->cfg.mask_value = 65535u;
+    }
+    return CLI_OK;
+}
+
+/* --exclude's level and --roi into the config. */
+static int resolve_region(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
     if (o->exclude) {
         r->cfg.flags |= SSDA_TRACK_EXCLUDE;
         r->texture_level = o->exclude_level_given
                                ? o->exclude_level
-                               : image_mean(&r->second, masked, r->cfg.mask_value);
+                               : image_mean(&r->second, (o->cfg.flags & SSDA_TRACK_MASK) != 0,
+                                            r->cfg.mask_value);
         if (r->texture_level >= gray_image_max(&r->second)) {
-            track_result_free(r);
             return cli_usage_error(cmd, "--exclude level %u is not below the images' maximum",
                                    o->exclude_level);
         }
@@ -579,59 +604,81 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     }
     if (o->have_roi) {
         if (o->roi[0] + o->roi[2] > r->second.width || o->roi[1] + o->roi[3] > r->second.height) {
-            cli_usage_error(cmd, "--roi %u,%u,%u,%u is not inside SECOND (%u x %u)", o->roi[0],
-                            o->roi[1], o->roi[2], o->roi[3], r->second.width, r->second.height);
-            track_result_free(r);
-            return CLI_USAGE;
+            return cli_usage_error(cmd, "--roi %u,%u,%u,%u is not inside SECOND (%u x %u)",
+                                   o->roi[0], o->roi[1], o->roi[2], o->roi[3], r->second.width,
+                                   r->second.height);
         }
         r->cfg.roi_x = (uint16_t)o->roi[0];
         r->cfg.roi_y = (uint16_t)o->roi[1];
         r->cfg.roi_w = (uint16_t)o->roi[2];
         r->cfg.roi_h = (uint16_t)o->roi[3];
     }
-    e = ssda_track_grid(&r->cfg, (uint16_t)r->second.width, (uint16_t)r->second.height,
-                        &r->grid);
-    if (e != SSDA_OK) {
-        /* the sizes as resolved: 0 in the config means the library's default */
-        const ssda_track_config_t *c = &r->cfg;
-        uint32_t ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
-        uint32_t wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
-        uint32_t sw = c->search_w ? c->search_w : 2u * ww;
-        uint32_t sh = c->search_h ? c->search_h : 2u * wh;
-        sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
-        sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
-        cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
-                        "(the search area must be at least the window, the window inside "
-                        "the region)",
-                        ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
-                        c->roi_h ? c->roi_h : r->second.height);
-        track_result_free(r);
-        return CLI_USAGE;
-    }
-    if (r->grid.search_w == r->grid.win_w || r->grid.search_h == r->grid.win_h) {
-        int both = r->grid.search_w == r->grid.win_w && r->grid.search_h == r->grid.win_h;
-        const char *what = both ? "dx and dy" : r->grid.search_w == r->grid.win_w ? "dx" : "dy";
+    return CLI_OK;
+}
+
+/* Warnings on a grid that runs but not as a user would expect: a search
+   area with no room (every vector 0), an odd margin (a one-sided range). */
+static void warn_grid(const char *cmd, const ssda_track_grid_t *g)
+{
+    uint32_t mx = (uint32_t)g->search_w - g->win_w, my = (uint32_t)g->search_h - g->win_h;
+    if (mx == 0 || my == 0) {
+        const char *what = mx == 0 && my == 0 ? "dx and dy" : mx == 0 ? "dx" : "dy";
         fprintf(stderr, "ssda %s: warning: search area %ux%u leaves the %ux%u window no room "
                 "to move: every %s is 0 (vectors range over +-(search - window) / 2; "
                 "e.g. --search %ux%u)\n",
-                cmd, r->grid.search_w, r->grid.search_h, r->grid.win_w, r->grid.win_h, what,
-                2u * r->grid.win_w, 2u * r->grid.win_h);
+                cmd, g->search_w, g->search_h, g->win_w, g->win_h, what, 2u * g->win_w,
+                2u * g->win_h);
     }
+    if (mx % 2u != 0 || my % 2u != 0) {
+        /* the area starts (search - window) / 2 px before the window, rounded down */
+        fprintf(stderr, "ssda %s: warning: search %ux%u and window %ux%u leave an odd margin: "
+                "dx ranges over -%u..+%u, dy over -%u..+%u (one px more left or up than right "
+                "or down); an even search - window gives a symmetric range\n",
+                cmd, g->search_w, g->search_h, g->win_w, g->win_h, mx - mx / 2u, mx / 2u,
+                my - my / 2u, my / 2u);
+    }
+}
+
+/* The grid of the config on SECOND (sizes resolved as the library does). */
+static int resolve_grid(const char *cmd, track_result_t *r)
+{
+    const ssda_track_config_t *c = &r->cfg;
+    uint32_t ww, wh, sw, sh;
+    if (ssda_track_grid(c, (uint16_t)r->second.width, (uint16_t)r->second.height,
+                        &r->grid) == SSDA_OK) {
+        warn_grid(cmd, &r->grid);
+        return CLI_OK;
+    }
+    /* the sizes as resolved: 0 in the config means the library's default */
+    ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
+    wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
+    sw = c->search_w ? c->search_w : 2u * ww;
+    sh = c->search_h ? c->search_h : 2u * wh;
+    sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
+    sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
+    return cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
+                           "(the search area must be at least the window, the window inside "
+                           "the region)",
+                           ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
+                           c->roi_h ? c->roi_h : r->second.height);
+}
+
+/* --exclude's count (default: window pixels / 16, at least 1), the vector
+   array and the bounds buffer (*work, malloc'ed; NULL without bounds). */
+static int alloc_run(const char *cmd, const track_opts_t *o, track_result_t *r, void **work)
+{
+    uint64_t pixels = (uint64_t)r->grid.win_w * r->grid.win_h;
     if (o->exclude) {
-        r->texture_min_count = o->exclude_count != 0
-                                   ? o->exclude_count
-                                   : ((uint32_t)r->grid.win_w * r->grid.win_h / 16u > 0
-                                          ? (uint32_t)r->grid.win_w * r->grid.win_h / 16u
-                                          : 1u);
-        if (2u * (uint64_t)r->texture_min_count > (uint64_t)r->grid.win_w * r->grid.win_h) {
-            track_result_free(r);
+        r->texture_min_count = o->exclude_count != 0 ? o->exclude_count
+                               : pixels / 16u > 0    ? (uint32_t)(pixels / 16u)
+                                                     : 1u;
+        if (2u * (uint64_t)r->texture_min_count > pixels) {
             return cli_usage_error(cmd, "--exclude count %u is more than half the window's "
                                    "pixels", o->exclude_count);
         }
     }
     r->vec = calloc(r->grid.count, sizeof *r->vec);
     if (r->vec == NULL) {
-        track_result_free(r);
         return cli_input_error(cmd, "out of memory for %u windows", r->grid.count);
     }
     /* A search area larger than FIRST leaves every window EDGE: nothing is
@@ -640,69 +687,124 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     if (r->grid.search_w > r->first.width || r->grid.search_h > r->first.height) {
         r->cfg.match.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
     }
+    *work = NULL;
     if (r->cfg.match.flags & SSDA_MATCH_BOUNDS) {
         r->cfg.match.work_size = SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
                                                       r->grid.win_w, r->grid.win_h);
-        work = malloc(r->cfg.match.work_size);
-        if (work == NULL) {
-            track_result_free(r);
+        if ((*work = malloc(r->cfg.match.work_size)) == NULL) {
             return cli_input_error(cmd, "out of memory");
         }
-        r->cfg.match.work = work;
+        r->cfg.match.work = *work;
     }
+    return CLI_OK;
+}
+
+/* Track from the images in memory. Without prediction and with a progress
+   bar, the grid runs in bands of rows (every window is independent):
+   vectors and counts equal those of one call. Returns an ssda error code. */
+static int run_in_ram(const track_opts_t *o, track_result_t *r)
+{
+    ssda_view_t vf, vs;
+    progress_t prog;
+    uint32_t row = 0, band = r->grid.rows / 50u + 1u;
+    int e = SSDA_OK;
     gray_image_view(&r->first, &vf);
     gray_image_view(&r->second, &vs);
-
-    if (o->have_mem) {
-        t0 = progress_now();
-        e = track_streamed(cmd, o, r);
-        r->secs = progress_now() - t0;
-        free(work);
-        r->cfg.match.work = NULL;
-        if (e != CLI_OK) {
-            track_result_free(r);
-        }
-        return e;
-    }
     progress_begin(&prog, "tracking", r->grid.rows, o->quiet);
-    t0 = progress_now();
-    if (prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1) {
-        /* Without prediction every window is independent: run the grid in bands of
-           rows to show progress; vectors and counts equal those of one call. */
-        uint32_t row = 0, band = r->grid.rows / 50u + 1u;
-        e = SSDA_OK;
-        while (row < r->grid.rows && e == SSDA_OK) {
-            ssda_track_config_t c = r->cfg;
-            ssda_track_stats_t s;
-            uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
-            c.roi_x = r->grid.roi_x;
-            c.roi_w = r->grid.roi_w;
-            c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
-            c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
-            e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
-                           (size_t)n * r->grid.cols, &s);
-            if (e == SSDA_OK) {
-                stats_add(&r->stats, &s);
-            }
-            row += n;
-            progress_update(&prog, row);
-        }
-    } else {
+    if (!(prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1)) {
         e = ssda_track(&vf, &vs, &r->cfg, r->vec, r->grid.count, &r->stats);
+        row = r->grid.rows;
     }
-    r->secs = progress_now() - t0;
+    while (row < r->grid.rows && e == SSDA_OK) {
+        ssda_track_config_t c = r->cfg;
+        ssda_track_stats_t s;
+        uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
+        c.roi_x = r->grid.roi_x;
+        c.roi_w = r->grid.roi_w;
+        c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
+        c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
+        e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
+                       (size_t)n * r->grid.cols, &s);
+        if (e == SSDA_OK) {
+            stats_add(&r->stats, &s);
+        }
+        row += n;
+        progress_update(&prog, row);
+    }
     progress_end(&prog);
-    free(work);
-    r->cfg.match.work = NULL;
-    if (e != SSDA_OK) {
-        cli_usage_error(cmd, "tracking refused these options: %s", ssda_strerror(e));
-        track_result_free(r);
-        return CLI_USAGE;
-    }
     /* RAM sources: every pixel of both images was loaded once. */
     r->bytes_read = (uint64_t)r->first.stride * r->first.height +
                     (uint64_t)r->second.stride * r->second.height;
-    return CLI_OK;
+    return e;
+}
+
+/* No window could be searched: say why (the run itself is valid). */
+static void warn_nothing_tracked(const char *cmd, const track_result_t *r)
+{
+    const ssda_track_stats_t *s = &r->stats;
+    if (s->ok > 0 || s->windows == 0) {
+        return;
+    }
+    if (s->edge == s->windows) {
+        fprintf(stderr, "ssda %s: warning: nothing to track: every one of the %u windows is "
+                "'edge' (its %ux%u search area leaves FIRST, %u x %u); a smaller --search or "
+                "larger images\n",
+                cmd, s->windows, r->grid.search_w, r->grid.search_h, r->first.width,
+                r->first.height);
+    } else {
+        fprintf(stderr, "ssda %s: warning: nothing to track: of %u windows %u excluded (no "
+                "texture), %u masked (fill value), %u edge (search area leaves FIRST)\n",
+                cmd, s->windows, s->excluded, s->masked, s->edge);
+    }
+}
+
+/* Every step of track_run but the loading; 0 or a CLI code (printed). */
+static int prepare_and_track(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    void *work = NULL;
+    double t0;
+    int rc;
+    if ((o->grad && (rc = apply_grad(cmd, o, r)) != CLI_OK) ||
+        (rc = resolve_region(cmd, o, r)) != CLI_OK || (rc = resolve_grid(cmd, r)) != CLI_OK ||
+        (rc = alloc_run(cmd, o, r, &work)) != CLI_OK) {
+        free(work);
+        return rc;
+    }
+    t0 = progress_now();
+    if (o->have_mem) {
+        rc = track_streamed(cmd, o, r);
+    } else if ((rc = run_in_ram(o, r)) != SSDA_OK) {
+        rc = cli_usage_error(cmd, "tracking refused these options: %s", ssda_strerror(rc));
+    }
+    r->secs = progress_now() - t0;
+    free(work);
+    r->cfg.match.work = NULL;
+    if (rc == CLI_OK) {
+        warn_nothing_tracked(cmd, r);
+    }
+    return rc;
+}
+
+int track_run(const char *cmd, const char *first_path, const char *second_path,
+              const track_opts_t *o, track_result_t *r)
+{
+    int rc;
+    memset(r, 0, sizeof *r);
+    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
+    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
+        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
+                               "every window is searched outward from its predicted vector)");
+    }
+    r->cfg = o->cfg;
+    resolve_scan(cmd, o, &r->cfg);
+    rc = load_inputs(cmd, first_path, second_path, o, r);
+    if (rc == CLI_OK) {
+        rc = prepare_and_track(cmd, o, r);
+    }
+    if (rc != CLI_OK) {
+        track_result_free(r);
+    }
+    return rc;
 }
 
 uint64_t track_brute_ops(const track_result_t *r)
@@ -743,13 +845,12 @@ static cJSON *json_grid(const ssda_track_grid_t *g)
 
 static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
 {
-    static const char *pnames[] = {"none", "left", "neighbour"};
     cJSON *opt = cJSON_CreateObject();
     char tname[64];
     cli_threshold_name(&r->cfg.match, tname, sizeof tname);
     cJSON_AddStringToObject(opt, "threshold", tname);
     cJSON_AddStringToObject(opt, "scan", cli_scan_name(&r->cfg.match));
-    cJSON_AddStringToObject(opt, "predict", pnames[r->cfg.predict % 3u]);
+    cJSON_AddStringToObject(opt, "predict", predict_name(r->cfg.predict));
     cJSON_AddBoolToObject(opt, "bounds", (r->cfg.match.flags & SSDA_MATCH_BOUNDS) != 0);
     cJSON_AddBoolToObject(opt, "grad", o->grad);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
@@ -879,9 +980,10 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     /* A dense grid on a reduced picture is a carpet of arrowheads: draw only
        every k-th column and row (centred), so drawn windows are at least
        OVERLAY_MIN_SPACING output px apart. The JSON keeps every window. */
-    step = g->step_x < g->step_y ? g->step_x : g->step_y;
+    /* only along an axis with more than one window (one window: nothing to thin) */
+    step = g->cols > 1u && (g->rows == 1u || g->step_x < g->step_y) ? g->step_x : g->step_y;
     zstep = step * draw_vectors_zoom(bg.width, bg.height);
-    while (zstep * every < OVERLAY_MIN_SPACING) {
+    while ((g->cols > 1u || g->rows > 1u) && zstep * every < OVERLAY_MIN_SPACING) {
         every++;
     }
     off_c = ((g->cols - 1u) % every) / 2u;

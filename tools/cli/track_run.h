@@ -15,6 +15,8 @@ typedef struct {
     ssda_track_config_t cfg;  /* library options as parsed */
     int grad;                 /* --grad: Fig. 8 operator on both images first */
     int exclude;              /* --exclude given */
+    int exclude_argi;         /* argv index of --exclude (its value is optional) */
+    int scan_given;           /* --scan given */
     int exclude_level_given;  /* LEVEL given (else the mean of SECOND) */
     uint32_t exclude_level;
     uint32_t exclude_count;   /* COUNT, 0 = window pixels / 16 */
@@ -35,6 +37,11 @@ void track_opts_init(track_opts_t *o);
 /* If the current option of a is a track option, take it and return 1
    (a->bad set on a usage error, already reported); else return 0. */
 int track_opts_take(cli_args_t *a, track_opts_t *o);
+
+/* After the loop: FIRST.png and SECOND.png, and nothing more (an extra
+   argument is named; right after --exclude, its value syntax is said).
+   Returns CLI_OK or CLI_USAGE (printed). */
+int track_check_positionals(const cli_args_t *a, const track_opts_t *o);
 
 /* The help text lines of the track options (for --help). */
 extern const char track_opts_help[];

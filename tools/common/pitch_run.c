@@ -2,8 +2,6 @@
 #include "pitch_run.h"
 #include "tool_err.h"
 
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -139,13 +137,16 @@ int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config
             tr.voiced[tr.n] = est.voiced ? 1u : 0u;
             tr.confidence_q15[tr.n] = est.confidence_q15;
             tr.diffs += est.diffs;
+            tr.analysed += est.silent ? 0u : 1u;
             tr.n++;
             if (prog != NULL) {
                 progress_update(prog, pos);
             }
         }
     }
-    tr.full_diffs = (uint64_t)tr.n * tr.info.full_diffs;
+    /* the full search on the frames analysed (silent ones are never searched) */
+    tr.full_diffs = (uint64_t)tr.analysed * (tr.info.lag_max - tr.info.lag_min + 3u) *
+                    tr.info.frame_len;
     tr.decimation = factor;
     tr.input_rate = rate;
     *out = tr;
@@ -156,84 +157,6 @@ done:
     free(buf);
     free(dec);
     return rc;
-}
-
-/* ---- reference CSV ---- */
-
-int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out, char *err,
-                size_t errlen)
-{
-    FILE *f = fopen(path, "r");
-    char line[512];
-    double *t = NULL, *fv = NULL;
-    size_t n = 0, cap = 0, lineno = 0;
-    if (f == NULL) {
-        tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    while (fgets(line, sizeof line, f) != NULL) {
-        char *p = line, *end;
-        double a, b;
-        lineno++;
-        while (isspace((unsigned char)*p)) {
-            p++;
-        }
-        if (*p == '\0' || *p == '#') {
-            continue;
-        }
-        a = strtod(p, &end);
-        if (end == p) {
-            if (n == 0 && lineno == 1) {
-                continue; /* header */
-            }
-            tool_set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
-            goto fail;
-        }
-        p = end;
-        while (*p == ',' || *p == ';' || *p == ' ' || *p == '\t') {
-            p++;
-        }
-        b = strtod(p, &end);
-        if (end == p || !isfinite(a) || !isfinite(b) || b < 0.0) {
-            tool_set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
-            goto fail;
-        }
-        if (n == cap) {
-            double *t2, *f2;
-            cap = cap ? 2u * cap : 1024u;
-            t2 = realloc(t, cap * sizeof *t);
-            if (t2 != NULL) {
-                t = t2;
-            }
-            f2 = realloc(fv, cap * sizeof *fv);
-            if (f2 != NULL) {
-                fv = f2;
-            }
-            if (t2 == NULL || f2 == NULL) {
-                tool_set_err(err, errlen, "out of memory reading '%s'", path);
-                goto fail;
-            }
-        }
-        t[n] = a;
-        fv[n] = b;
-        n++;
-    }
-    fclose(f);
-    if (n == 0) {
-        tool_set_err(err, errlen, "'%s' holds no time_s,f0_hz rows", path);
-        free(t);
-        free(fv);
-        return -1;
-    }
-    *t_out = t;
-    *f_out = fv;
-    *n_out = n;
-    return 0;
-fail:
-    fclose(f);
-    free(t);
-    free(fv);
-    return -1;
 }
 
 /* ---- scoring ---- */

@@ -261,7 +261,13 @@ int png_read_gray(const char *path, png_gray_depth_t depth, gray_image_t *img,
         tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
         goto done;
     }
+    errno = 0;
     got = fread(sig, 1, sizeof sig, r->fp);
+    if (got == 0 && ferror(r->fp)) { /* e.g. a directory: "Is a directory" */
+        tool_set_err(err, errlen, "cannot read '%s': %s", path,
+                     strerror(errno != 0 ? errno : EIO));
+        goto done;
+    }
     if (got == 0) {
         tool_set_err(err, errlen, "'%s' is empty, not a PNG file", path);
         goto done;

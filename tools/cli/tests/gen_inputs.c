@@ -14,9 +14,10 @@
  *       conversion must give, computed here independently.
  *   crop IN.png OUT.png X,Y,W,H: a gray8/16 crop.
  *   wav OUT.wav [--f0 HZ | --glide HZ0:HZ1] [--rate R] [--secs S] [--silence S]
- *       [--channels C] [--format pcm16|pcm24|float] [--jump HZ:S]: a voiced
- *       harmonic signal; with --silence S, that many seconds of silence first;
- *       with --jump, its last S seconds at HZ (frames off the plot's range).
+ *       [--channels C] [--format pcm16|pcm24|float] [--jump HZ:S] [--gain G]: a
+ *       voiced harmonic signal (peak about 0.6 x G of full scale); with
+ *       --silence S, that many seconds of silence first; with --jump, its last
+ *       S seconds at HZ (frames off the plot's range).
  *   bad KIND OUT: malformed inputs: empty, text, truncated (a PNG cut inside
  *       its data), crc (IDAT checksum wrong), huge (IHDR 70000 x 8),
  *       toomuch (IHDR 40000 x 40000 16-bit RGBA), wav-empty, wav-text,
@@ -393,6 +394,7 @@ static int cmd_wav(int argc, char **argv)
     const char *out = NULL, *format = "pcm16";
     double f0a = 200.0, f0b = 200.0, secs = 1.0, silence = 0.0, phase = 0.0;
     double jf = 0.0, jsecs = 0.0; /* --jump F:SECS: the last SECS at f0 F (an outlier) */
+    double gain = 1.0;            /* --gain G: amplitude factor (peak about 0.6 x G) */
     int rate = 16000, channels = 1, i, c;
     SF_INFO info;
     SNDFILE *sf;
@@ -413,6 +415,8 @@ static int cmd_wav(int argc, char **argv)
             silence = atof(argv[++i]);
         } else if (strcmp(argv[i], "--channels") == 0 && i + 1 < argc) {
             channels = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--gain") == 0 && i + 1 < argc) {
+            gain = atof(argv[++i]);
         } else if (strcmp(argv[i], "--format") == 0 && i + 1 < argc) {
             format = argv[++i];
         } else if (out == NULL && argv[i][0] != '-') {
@@ -439,7 +443,7 @@ static int cmd_wav(int argc, char **argv)
         for (hmn = 1; hmn <= 6; hmn++) { /* a voiced source: harmonics falling 1/h */
             v += sin(hmn * phase) / hmn;
         }
-        for (c = 0; c < channels; c++) buf[k * channels + c] = (float)(0.35 * v);
+        for (c = 0; c < channels; c++) buf[k * channels + c] = (float)(0.35 * gain * v);
     }
     sf = sf_open(out, SFM_WRITE, &info);
     if (sf == NULL) die("cannot create", out);
