@@ -387,7 +387,7 @@ static void print_score(const pitch_opts_t *o, const pitch_job_t *j)
     printf("vs %s: GPE %.2f %% (of %zu frames voiced in both), VDE %.2f %%, fine error %.1f "
            "cents\n", o->ref_path, 100.0 * sc.gpe, sc.both_voiced, 100.0 * sc.vde,
            sc.fpe_cents);
-    if (o->ref_hop <= 0 && last > 2.0 * dur + 1.0 && last / 1000.0 <= 2.0 * dur + 1.0) {
+    if (o->ref_hop <= 0 && last > 10.0 * dur + 10.0 && last / 1000.0 <= 2.0 * dur + 1.0) {
         fprintf(stderr, "ssda pitch: warning: '%s' runs to time %g while the sound lasts "
                 "%.2f s: its times look like milliseconds (they must be seconds)\n",
                 o->ref_path, last, dur);

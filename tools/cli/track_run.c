@@ -132,48 +132,58 @@ static int parse_bytes(const char *s, uint64_t *out)
     return 0;
 }
 
-int track_opts_take(cli_args_t *a, track_opts_t *o)
+/* Report a bad value of the current option (a->bad set). */
+static void bad_value(cli_args_t *a, const char *fmt, const char *v)
+{
+    cli_usage_error(a->cmd, fmt, v);
+    a->bad = 1;
+}
+
+/* --window, --search, --step, --roi. */
+static int take_grid(cli_args_t *a, track_opts_t *o)
 {
     const char *v;
-    uint32_t u = 0; /* read below only after a parsed value */
     if (cli_opt(a, "--window", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.win_w, &o->cfg.win_h) != 0) {
-            cli_usage_error(a->cmd, "bad --window '%s' (N or WxH, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --window '%s' (N or WxH, 1..65535)", v);
         }
     } else if (cli_opt(a, "--search", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.search_w, &o->cfg.search_h) != 0) {
-            cli_usage_error(a->cmd, "bad --search '%s' (N or WxH, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --search '%s' (N or WxH, 1..65535)", v);
         }
     } else if (cli_opt(a, "--step", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.step_x, &o->cfg.step_y) != 0) {
-            cli_usage_error(a->cmd, "bad --step '%s' (N or XxY, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --step '%s' (N or XxY, 1..65535)", v);
         }
     } else if (cli_opt(a, "--roi", &v)) {
         if (v != NULL && (cli_parse_list_u32(v, 0, 65535, o->roi, 4) != 0 || o->roi[2] == 0 ||
                           o->roi[3] == 0)) {
-            cli_usage_error(a->cmd, "bad --roi '%s' (X,Y,W,H with W, H >= 1)", v);
-            a->bad = 1;
+            bad_value(a, "bad --roi '%s' (X,Y,W,H with W, H >= 1)", v);
         }
         o->have_roi = 1;
-    } else if (cli_opt(a, "--threshold", &v)) {
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --threshold, --scan, --order, --bounds, --no-bounds, --predict. */
+static int take_search(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    if (cli_opt(a, "--threshold", &v)) {
         if (v != NULL && cli_parse_threshold(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --threshold '%s' (auto, none, fixed:T, "
-                            "ramp:LAMBDA[:K], auto-ramp[:K])", v);
-            a->bad = 1;
+            bad_value(a, "bad --threshold '%s' (auto, none, fixed:T, ramp:LAMBDA[:K], "
+                         "auto-ramp[:K])", v);
         }
     } else if (cli_opt(a, "--scan", &v)) {
         if (v != NULL && cli_parse_scan(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --scan '%s' (raster, predict, coarse)", v);
-            a->bad = 1;
+            bad_value(a, "bad --scan '%s' (raster, predict, coarse)", v);
         }
         o->scan_given = 1;
     } else if (cli_opt(a, "--order", &v)) {
         if (v != NULL && cli_parse_order(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
-            a->bad = 1;
+            bad_value(a, "bad --order '%s' (rows, spread)", v);
         }
     } else if (cli_flag(a, "--bounds")) {
         o->cfg.match.flags |= SSDA_MATCH_BOUNDS;
@@ -191,34 +201,49 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         } else if (strcmp(v, "none") == 0) {
             o->cfg.predict = SSDA_TRACK_PREDICT_NONE;
         } else {
-            cli_usage_error(a->cmd, "bad --predict '%s' (neighbour, left, none)", v);
-            a->bad = 1;
+            bad_value(a, "bad --predict '%s' (neighbour, left, none)", v);
         }
-    } else if (a->name_len == 9 && strncmp(a->name, "--exclude", 9) == 0) {
-        /* optional value: "--exclude=SPEC", or a following argument that parses as one */
-        uint32_t level = 0, count = 0;
-        int given = 0;
-        o->exclude = 1;
-        o->exclude_argi = a->i - 1;
-        v = a->inline_value;
-        if (v == NULL && a->i < a->argc &&
-            parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
-            v = a->argv[a->i++];
-        }
-        if (v != NULL) {
-            if (parse_exclude(v, &level, &given, &count) != 0) {
-                cli_usage_error(a->cmd, "bad --exclude '%s' (LEVEL[:COUNT] or mean[:COUNT])", v);
-                a->bad = 1;
-                return 1;
-            }
-            o->exclude_level_given = given;
-            o->exclude_level = level;
-            o->exclude_count = count;
-        }
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --exclude [LEVEL[:COUNT]]: an optional value, "--exclude=SPEC" or a
+   following argument that parses as one. */
+static void take_exclude(cli_args_t *a, track_opts_t *o)
+{
+    uint32_t level = 0, count = 0;
+    int given = 0;
+    const char *v = a->inline_value;
+    o->exclude = 1;
+    o->exclude_argi = a->i - 1;
+    if (v == NULL && a->i < a->argc &&
+        parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
+        v = a->argv[a->i++];
+    }
+    if (v == NULL) {
+        return;
+    }
+    if (parse_exclude(v, &level, &given, &count) != 0) {
+        bad_value(a, "bad --exclude '%s' (LEVEL[:COUNT] or mean[:COUNT])", v);
+        return;
+    }
+    o->exclude_level_given = given;
+    o->exclude_level = level;
+    o->exclude_count = count;
+}
+
+/* --exclude, --mask-value, --grad, --mem. */
+static int take_skip(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    uint32_t u = 0; /* read below only after a parsed value */
+    if (a->name_len == 9 && strncmp(a->name, "--exclude", 9) == 0) {
+        take_exclude(a, o);
     } else if (cli_opt(a, "--mask-value", &v)) {
         if (v != NULL && cli_parse_u32(v, 0, 65535, &u) != 0) {
-            cli_usage_error(a->cmd, "bad --mask-value '%s' (0..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --mask-value '%s' (0..65535)", v);
         }
         o->cfg.flags |= SSDA_TRACK_MASK;
         o->cfg.mask_value = (uint16_t)u;
@@ -226,18 +251,26 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         o->grad = 1;
     } else if (cli_opt(a, "--mem", &v)) {
         if (v != NULL && parse_bytes(v, &o->mem) != 0) {
-            cli_usage_error(a->cmd, "bad --mem '%s' (bytes, optional K/M/G suffix)", v);
-            a->bad = 1;
+            bad_value(a, "bad --mem '%s' (bytes, optional K/M/G suffix)", v);
         }
         o->have_mem = 1;
-    } else if (cli_opt(a, "--json", &v)) {
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --json, --overlay, --arrow-scale, --quiet. */
+static int take_output(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    if (cli_opt(a, "--json", &v)) {
         o->json_path = v;
     } else if (cli_opt(a, "--overlay", &v)) {
         o->overlay_path = v;
     } else if (cli_opt(a, "--arrow-scale", &v)) {
         if (v != NULL && cli_parse_double(v, 0.01, 1000.0, &o->arrow_scale) != 0) {
-            cli_usage_error(a->cmd, "bad --arrow-scale '%s' (0.01..1000)", v);
-            a->bad = 1;
+            bad_value(a, "bad --arrow-scale '%s' (0.01..1000)", v);
         }
     } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
         o->quiet = 1;
@@ -247,6 +280,11 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
     return 1;
 }
 
+int track_opts_take(cli_args_t *a, track_opts_t *o)
+{
+    return take_grid(a, o) || take_search(a, o) || take_skip(a, o) || take_output(a, o);
+}
+
 int track_check_positionals(const cli_args_t *a, const track_opts_t *o)
 {
     if (a->npos > 2 && o->exclude && a->pos_argi[2] == o->exclude_argi + 1) {
@@ -254,6 +292,43 @@ int track_check_positionals(const cli_args_t *a, const track_opts_t *o)
                                "(LEVEL[:COUNT] or mean[:COUNT]; --exclude=VALUE)", a->pos[2]);
     }
     return cli_positionals(a, 2, "need FIRST.png and SECOND.png");
+}
+
+int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
+                     track_opts_t *o, const char **first, const char **second)
+{
+    cli_args_t a;
+    int rc;
+    track_opts_init(o);
+    cli_args_begin(&a, cmd, argc, argv);
+    while (cli_next(&a)) {
+        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
+            help();
+            return -1;
+        }
+        if (!track_opts_take(&a, o)) {
+            return cli_unknown(&a);
+        }
+        if (a.bad) {
+            return CLI_USAGE;
+        }
+    }
+    if (a.bad) {
+        return CLI_USAGE;
+    }
+    if ((rc = track_check_positionals(&a, o)) != CLI_OK) {
+        return rc;
+    }
+    *first = a.pos[0];
+    *second = a.pos[1];
+    if (cli_is_stdout(o->overlay_path) && cli_is_stdout(o->json_path)) {
+        return cli_usage_error(cmd, "--json and --overlay cannot both go to stdout");
+    }
+    cli_warn_png_name(cmd, "--overlay", o->overlay_path);
+    if (cli_output_check(cmd, o->json_path) != 0 || cli_output_check(cmd, o->overlay_path) != 0) {
+        return CLI_INPUT;
+    }
+    return CLI_OK;
 }
 
 const char *track_status_name(int status)
@@ -946,6 +1021,30 @@ int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const tr
     return rc == 0 ? 0 : (cli_input_error(cmd, "out of memory for the JSON"), -1);
 }
 
+/* The part of SECOND (as read) the grid covers, plus the search margin, so
+   a small --roi is drawn large instead of lost in a reduced whole image;
+   *x0, *y0: its top-left in SECOND. Returns 0 or -1 (out of memory). */
+static int overlay_background(const gray_image_t *src, const ssda_track_grid_t *g,
+                              gray_image_t *bg, uint32_t *x0, uint32_t *y0)
+{
+    uint32_t mx = (g->search_w - g->win_w) / 2u, my = (g->search_h - g->win_h) / 2u;
+    uint32_t x1 = (uint32_t)g->roi_x + g->roi_w + mx, y1 = (uint32_t)g->roi_y + g->roi_h + my, y;
+    *x0 = g->roi_x > mx ? g->roi_x - mx : 0u;
+    *y0 = g->roi_y > my ? g->roi_y - my : 0u;
+    x1 = x1 < src->width ? x1 : src->width;
+    y1 = y1 < src->height ? y1 : src->height;
+    if (gray_image_alloc(bg, x1 - *x0, y1 - *y0, src->bits) != 0) {
+        return -1;
+    }
+    for (y = *y0; y < y1; y++) {
+        memcpy((uint8_t *)bg->pixels + (size_t)(y - *y0) * bg->stride,
+               (const uint8_t *)src->pixels + (size_t)y * src->stride +
+                   (size_t)*x0 * (src->bits / 8u),
+               bg->stride);
+    }
+    return 0;
+}
+
 int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,
                         const track_opts_t *o, const double (*truth)[2],
                         const char *truth_label, const char *title, const char *subtitle)
@@ -953,29 +1052,15 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     draw_vector_t *dv = calloc(r->grid.count + 1u, sizeof *dv);
     draw_vectors_opts_t dopt;
     gray_image_t bg = {0};
-    const gray_image_t *src = &r->second_orig;
     const ssda_track_grid_t *g = &r->grid;
     char err[512];
-    uint32_t k, x0, y0, x1, y1, y, step, every = 1, off_c, off_r, n = 0;
+    uint32_t k, x0, y0, step, every = 1, off_c, off_r, n = 0;
     double zstep;
     int rc;
-    /* Show the part of SECOND the grid covers, plus the search margin: a
-       small --roi is drawn large instead of lost in a reduced whole image. */
-    x0 = g->roi_x > (g->search_w - g->win_w) / 2u ? g->roi_x - (g->search_w - g->win_w) / 2u : 0u;
-    y0 = g->roi_y > (g->search_h - g->win_h) / 2u ? g->roi_y - (g->search_h - g->win_h) / 2u : 0u;
-    x1 = (uint32_t)g->roi_x + g->roi_w + (g->search_w - g->win_w) / 2u;
-    y1 = (uint32_t)g->roi_y + g->roi_h + (g->search_h - g->win_h) / 2u;
-    x1 = x1 < src->width ? x1 : src->width;
-    y1 = y1 < src->height ? y1 : src->height;
-    if (dv == NULL || gray_image_alloc(&bg, x1 - x0, y1 - y0, src->bits) != 0) {
+    if (dv == NULL || overlay_background(&r->second_orig, g, &bg, &x0, &y0) != 0) {
         free(dv);
         cli_input_error(cmd, "out of memory");
         return -1;
-    }
-    for (y = y0; y < y1; y++) {
-        memcpy((uint8_t *)bg.pixels + (size_t)(y - y0) * bg.stride,
-               (const uint8_t *)src->pixels + (size_t)y * src->stride + (size_t)x0 * (src->bits / 8u),
-               bg.stride);
     }
     /* A dense grid on a reduced picture is a carpet of arrowheads: draw only
        every k-th column and row (centred), so drawn windows are at least

@@ -43,6 +43,13 @@ int track_opts_take(cli_args_t *a, track_opts_t *o);
    Returns CLI_OK or CLI_USAGE (printed). */
 int track_check_positionals(const cli_args_t *a, const track_opts_t *o);
 
+/* Everything track and compare do with argv: the options, FIRST and
+   SECOND (*first, *second), --json and --overlay not both on stdout, the
+   outputs writable. Returns CLI_OK, CLI_USAGE or CLI_INPUT (said), or -1
+   after help() for --help. */
+int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
+                     track_opts_t *o, const char **first, const char **second);
+
 /* The help text lines of the track options (for --help). */
 extern const char track_opts_help[];
 

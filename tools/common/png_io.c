@@ -120,72 +120,12 @@ static void row_to_gray(const png_byte *in, uint32_t width, int channels, int in
     }
 }
 
-/* The libpng part; returns 0 or -1 (message in r->ectx or r->why). */
-static int read_protected(png_reader_t *r, png_gray_depth_t depth)
+/* Decoded rows to gray into r->out: every row at once for an interlaced
+   image (passes), else one row at a time. Inside read_protected's setjmp. */
+static int decode_rows(png_reader_t *r, png_uint_32 w, png_uint_32 h, int passes, int channels,
+                       int dec_bits, int out_bits, size_t rowbytes)
 {
-    png_uint_32 w, h;
-    int bit_depth, color_type, interlace, passes, channels, dec_bits, out_bits;
-    size_t rowbytes, out_bpp, y;
-
-    if (setjmp(png_jmpbuf(r->png))) {
-        return -1;
-    }
-    png_init_io(r->png, r->fp);
-    png_set_sig_bytes(r->png, 8);
-    /* Our own size limit gives a clearer message than libpng's default one. */
-    png_set_user_limits(r->png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
-    png_read_info(r->png, r->info);
-    png_get_IHDR(r->png, r->info, &w, &h, &bit_depth, &color_type, &interlace, NULL, NULL);
-
-    r->src.source_bits = (uint32_t)bit_depth;
-    r->src.color_type = color_type;
-    r->src.was_color = (color_type & PNG_COLOR_MASK_COLOR) != 0;
-    r->src.had_alpha = (color_type & PNG_COLOR_MASK_ALPHA) != 0 ||
-                       png_get_valid(r->png, r->info, PNG_INFO_tRNS) != 0;
-    snprintf(r->src.description, sizeof r->src.description, "%d-bit %s%s", bit_depth,
-             color_name(color_type), interlace != PNG_INTERLACE_NONE ? ", interlaced" : "");
-
-    if (w > SSDA_MAX_DIM || h > SSDA_MAX_DIM) {
-        snprintf(r->why, sizeof r->why,
-                 "image is %lu x %lu pixels; the largest accepted is 65535 x 65535",
-                 (unsigned long)w, (unsigned long)h);
-        return -1;
-    }
-
-    if (color_type == PNG_COLOR_TYPE_PALETTE) {
-        png_set_palette_to_rgb(r->png); /* RGBA when a tRNS chunk exists */
-    }
-    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) {
-        png_set_expand_gray_1_2_4_to_8(r->png); /* scaled to 0..255, tRNS not expanded */
-    }
-    passes = png_set_interlace_handling(r->png);
-    png_read_update_info(r->png, r->info);
-    channels = png_get_channels(r->png, r->info);
-    dec_bits = png_get_bit_depth(r->png, r->info);
-    rowbytes = png_get_rowbytes(r->png, r->info);
-
-    out_bits = depth == PNG_GRAY_NATIVE ? (bit_depth == 16 ? 16 : 8) : (int)depth;
-    out_bpp = out_bits == 16 ? 2u : 1u;
-    {
-        /* w, h <= 65535 and rowbytes <= 8 * 65535: no size_t overflow on 64-bit
-           or 32-bit hosts below, since each product is checked against the cap. */
-        double need = (double)w * (double)h * (double)out_bpp +
-                      (passes > 1 ? (double)rowbytes * (double)h : (double)rowbytes);
-        if (need > (double)PNG_IO_MAX_BYTES) {
-            snprintf(r->why, sizeof r->why,
-                     "image is %lu x %lu pixels (%s); decoding it needs %.0f MB, more than "
-                     "the %lu MB limit",
-                     (unsigned long)w, (unsigned long)h, r->src.description, need / 1e6,
-                     (unsigned long)(PNG_IO_MAX_BYTES / 1000000u));
-            return -1;
-        }
-    }
-    if (gray_image_alloc(&r->out, w, h, out_bits) != 0) {
-        snprintf(r->why, sizeof r->why, "out of memory for %lu x %lu pixels",
-                 (unsigned long)w, (unsigned long)h);
-        return -1;
-    }
-
+    size_t y;
     if (passes > 1) {
         r->rows = calloc(h, sizeof *r->rows);
         if (r->rows == NULL) {
@@ -204,19 +144,98 @@ static int read_protected(png_reader_t *r, png_gray_depth_t depth)
             row_to_gray(r->rows[y], w, channels, dec_bits, out_bits,
                         (uint8_t *)r->out.pixels + y * r->out.stride);
         }
-    } else {
-        if ((r->row = malloc(rowbytes)) == NULL) {
-            snprintf(r->why, sizeof r->why, "out of memory");
-            return -1;
-        }
-        for (y = 0; y < h; y++) {
-            png_read_row(r->png, r->row, NULL);
-            row_to_gray(r->row, w, channels, dec_bits, out_bits,
-                        (uint8_t *)r->out.pixels + y * r->out.stride);
-        }
+        return 0;
+    }
+    if ((r->row = malloc(rowbytes)) == NULL) {
+        snprintf(r->why, sizeof r->why, "out of memory");
+        return -1;
+    }
+    for (y = 0; y < h; y++) {
+        png_read_row(r->png, r->row, NULL);
+        row_to_gray(r->row, w, channels, dec_bits, out_bits,
+                    (uint8_t *)r->out.pixels + y * r->out.stride);
+    }
+    return 0;
+}
+
+/* What the file holds (for messages), from its header. */
+static void describe_source(png_reader_t *r, int bit_depth, int color_type, int interlace)
+{
+    r->src.source_bits = (uint32_t)bit_depth;
+    r->src.color_type = color_type;
+    r->src.was_color = (color_type & PNG_COLOR_MASK_COLOR) != 0;
+    r->src.had_alpha = (color_type & PNG_COLOR_MASK_ALPHA) != 0 ||
+                       png_get_valid(r->png, r->info, PNG_INFO_tRNS) != 0;
+    snprintf(r->src.description, sizeof r->src.description, "%d-bit %s%s", bit_depth,
+             color_name(color_type), interlace != PNG_INTERLACE_NONE ? ", interlaced" : "");
+}
+
+/* Refuse an image whose decoding needs more than PNG_IO_MAX_BYTES. w, h <=
+   65535 and rowbytes <= 8 * 65535: each product is checked against the
+   cap in double, so no size_t overflow on 64-bit or 32-bit hosts. */
+static int check_size(png_reader_t *r, png_uint_32 w, png_uint_32 h, int passes, size_t rowbytes,
+                      size_t out_bpp)
+{
+    double need = (double)w * (double)h * (double)out_bpp +
+                  (passes > 1 ? (double)rowbytes * (double)h : (double)rowbytes);
+    if (need > (double)PNG_IO_MAX_BYTES) {
+        snprintf(r->why, sizeof r->why,
+                 "image is %lu x %lu pixels (%s); decoding it needs %.0f MB, more than "
+                 "the %lu MB limit",
+                 (unsigned long)w, (unsigned long)h, r->src.description, need / 1e6,
+                 (unsigned long)(PNG_IO_MAX_BYTES / 1000000u));
+        return -1;
+    }
+    return 0;
+}
+
+/* The libpng part; returns 0 or -1 (message in r->ectx or r->why). */
+static int read_protected(png_reader_t *r, png_gray_depth_t depth)
+{
+    png_uint_32 w, h;
+    int bit_depth, color_type, interlace, passes, channels, dec_bits, out_bits;
+    size_t rowbytes;
+
+    if (setjmp(png_jmpbuf(r->png))) {
+        return -1;
+    }
+    png_init_io(r->png, r->fp);
+    png_set_sig_bytes(r->png, 8);
+    /* Our own size limit gives a clearer message than libpng's default one. */
+    png_set_user_limits(r->png, PNG_UINT_31_MAX, PNG_UINT_31_MAX);
+    png_read_info(r->png, r->info);
+    png_get_IHDR(r->png, r->info, &w, &h, &bit_depth, &color_type, &interlace, NULL, NULL);
+    describe_source(r, bit_depth, color_type, interlace);
+    if (w > SSDA_MAX_DIM || h > SSDA_MAX_DIM) {
+        snprintf(r->why, sizeof r->why,
+                 "image is %lu x %lu pixels; the largest accepted is 65535 x 65535",
+                 (unsigned long)w, (unsigned long)h);
+        return -1;
+    }
+    if (color_type == PNG_COLOR_TYPE_PALETTE) {
+        png_set_palette_to_rgb(r->png); /* RGBA when a tRNS chunk exists */
+    }
+    if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) {
+        png_set_expand_gray_1_2_4_to_8(r->png); /* scaled to 0..255, tRNS not expanded */
+    }
+    passes = png_set_interlace_handling(r->png);
+    png_read_update_info(r->png, r->info);
+    channels = png_get_channels(r->png, r->info);
+    dec_bits = png_get_bit_depth(r->png, r->info);
+    rowbytes = png_get_rowbytes(r->png, r->info);
+    out_bits = depth == PNG_GRAY_NATIVE ? (bit_depth == 16 ? 16 : 8) : (int)depth;
+    if (check_size(r, w, h, passes, rowbytes, out_bits == 16 ? 2u : 1u) != 0) {
+        return -1;
+    }
+    if (gray_image_alloc(&r->out, w, h, out_bits) != 0) {
+        snprintf(r->why, sizeof r->why, "out of memory for %lu x %lu pixels",
+                 (unsigned long)w, (unsigned long)h);
+        return -1;
+    }
+    if (decode_rows(r, w, h, passes, channels, dec_bits, out_bits, rowbytes) != 0) {
+        return -1;
     }
     png_read_end(r->png, NULL); /* checks the trailing chunks and IEND */
-    (void)out_bpp;
     return 0;
 }
 
