@@ -109,21 +109,49 @@ static int check_match(int argc, char **argv)
 
 static const char *status_names[] = {"ok", "excluded", "masked", "edge"};
 
-static int check_track(int argc, char **argv)
+/* One window of a track JSON: its fields, a known status, a vector inside
+   the search range for ok (others none). Counts the status; *agree when
+   its vector is (dx, dy). Returns 0 or 1 (said). */
+static int check_window(const json_t *w, size_t i, const double geo[4], double dx, double dy,
+                        size_t counts[4], size_t *agree)
 {
-    json_t *j;
-    const json_t *wins, *stats, *grid;
-    double dx = atof(argv[1]), dy = atof(argv[2]), minfrac = atof(argv[3]);
-    double cols, rows, sw, sh, ww, wh, v, counts_json[4];
-    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
-    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
-    int a, rc = 0;
-    if (argc < 4) return 2;
+    const json_t *st = json_object_get(w, "status");
+    double wx, wy, wdx, wdy, sad, sw = geo[0], sh = geo[1], ww = geo[2], wh = geo[3];
+    int k, s = -1;
+    if (!json_is_string(st) || num(w, "x", &wx) || num(w, "y", &wy) || num(w, "dx", &wdx) ||
+        num(w, "dy", &wdy) || num(w, "sad", &sad)) {
+        return fail("window %zu lacks x, y, dx, dy, sad or status", i);
+    }
+    for (k = 0; k < 4; k++) {
+        if (strcmp(json_string_value(st), status_names[k]) == 0) s = k;
+    }
+    if (s < 0) {
+        return fail("window %zu has unknown status '%s'", i, json_string_value(st));
+    }
+    counts[s]++;
+    if (s == 0) {
+        /* dx ranges over hx - (sw - ww) .. hx */
+        double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
+        if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
+            return fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
+        }
+        *agree += wdx == dx && wdy == dy;
+    } else if (wdx != 0 || wdy != 0) {
+        return fail("window %zu is %s but has a vector", i, json_string_value(st));
+    }
+    return 0;
+}
+
+/* Options after FILE DX DY MINFRAC: --min-ok N, --no-ok, --count STATUS N.
+   Returns 0 or 2 (bad command line). */
+static int track_options(int argc, char **argv, long *min_ok, long want_count[4])
+{
+    int a;
     for (a = 4; a < argc; a++) {
         if (strcmp(argv[a], "--min-ok") == 0 && a + 1 < argc) {
-            min_ok = atol(argv[++a]);
+            *min_ok = atol(argv[++a]);
         } else if (strcmp(argv[a], "--no-ok") == 0) {
-            min_ok = 0;
+            *min_ok = 0;
         } else if (strcmp(argv[a], "--count") == 0 && a + 2 < argc) {
             int k, found = 0;
             for (k = 0; k < 4; k++) {
@@ -138,69 +166,61 @@ static int check_track(int argc, char **argv)
             return 2;
         }
     }
+    return 0;
+}
+
+/* Status counts: stats agree with the windows, and with --count. */
+static int check_counts(const json_t *stats, const size_t counts[4], const long want_count[4])
+{
+    double counts_json;
+    int a;
+    for (a = 0; a < 4; a++) {
+        if (num(stats, status_names[a], &counts_json) || counts_json != (double)counts[a]) {
+            return fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
+        }
+        if (want_count[a] >= 0 && (long)counts[a] != want_count[a]) {
+            return fail("%zu %s windows, expected %ld", counts[a], status_names[a], want_count[a]);
+        }
+    }
+    return 0;
+}
+
+static int check_track(int argc, char **argv)
+{
+    json_t *j;
+    const json_t *wins, *stats, *grid;
+    double dx, dy, minfrac, cols, rows, geo[4], v;
+    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
+    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
+    int rc = 0;
+    if (argc < 4 || track_options(argc, argv, &min_ok, want_count) != 0) return 2;
+    dx = atof(argv[1]);
+    dy = atof(argv[2]);
+    minfrac = atof(argv[3]);
     j = load_json(argv[0]);
     if (j == NULL) return 1;
     wins = json_object_get(j, "windows");
     stats = json_object_get(j, "stats");
     grid = json_object_get(j, "grid");
     if (wins == NULL || !json_is_array(wins) || stats == NULL || grid == NULL ||
-        num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &sw) ||
-        num(grid, "search_h", &sh) || num(grid, "window_w", &ww) || num(grid, "window_h", &wh) ||
-        num(stats, "pixel_ops", &v) || num(stats, "bytes_read", &v)) {
+        num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &geo[0]) ||
+        num(grid, "search_h", &geo[1]) || num(grid, "window_w", &geo[2]) ||
+        num(grid, "window_h", &geo[3]) || num(stats, "pixel_ops", &v) ||
+        num(stats, "bytes_read", &v)) {
         rc = fail("track JSON lacks windows, grid or stats fields");
-        goto done;
-    }
-    if ((double)json_array_size(wins) != cols * rows) {
+    } else if ((double)json_array_size(wins) != cols * rows) {
         rc = fail("%zu windows, grid says %g x %g", json_array_size(wins), cols, rows);
-        goto done;
     }
-    for (i = 0; i < json_array_size(wins); i++) {
-        const json_t *w = json_array_get(wins, i), *st = json_object_get(w, "status");
-        double wx, wy, wdx, wdy, sad;
-        int k, s = -1;
-        if (!json_is_string(st) || num(w, "x", &wx) || num(w, "y", &wy) ||
-            num(w, "dx", &wdx) || num(w, "dy", &wdy) || num(w, "sad", &sad)) {
-            rc = fail("window %zu lacks x, y, dx, dy, sad or status", i);
-            goto done;
-        }
-        for (k = 0; k < 4; k++) {
-            if (strcmp(json_string_value(st), status_names[k]) == 0) s = k;
-        }
-        if (s < 0) {
-            rc = fail("window %zu has unknown status '%s'", i, json_string_value(st));
-            goto done;
-        }
-        counts[s]++;
-        if (s == 0) {
-            /* dx ranges over hx - (sw - ww) .. hx */
-            double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
-            if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
-                rc = fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
-                goto done;
-            }
-            if (wdx == dx && wdy == dy) agree++;
-        } else if (wdx != 0 || wdy != 0) {
-            rc = fail("window %zu is %s but has a vector", i, json_string_value(st));
-            goto done;
-        }
+    for (i = 0; rc == 0 && i < json_array_size(wins); i++) {
+        rc = check_window(json_array_get(wins, i), i, geo, dx, dy, counts, &agree);
     }
-    for (a = 0; a < 4; a++) {
-        if (num(stats, status_names[a], &counts_json[a]) || counts_json[a] != (double)counts[a]) {
-            rc = fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
-            goto done;
-        }
-        if (want_count[a] >= 0 && (long)counts[a] != want_count[a]) {
-            rc = fail("%zu %s windows, expected %ld", counts[a], status_names[a], want_count[a]);
-            goto done;
-        }
-    }
-    if ((long)counts[0] < min_ok) {
+    rc = rc == 0 ? check_counts(stats, counts, want_count) : rc;
+    if (rc == 0 && (long)counts[0] < min_ok) {
         rc = fail("only %zu ok windows, expected at least %ld", counts[0], min_ok);
-    } else if (counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
+    } else if (rc == 0 && counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
         rc = fail("%zu of %zu ok windows found (%g, %g); wanted %.0f %%", agree, counts[0], dx,
                   dy, 100 * minfrac);
     }
-done:
     json_decref(j);
     return rc;
 }
