@@ -24,5 +24,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SYMREG
+    jobs_symreg();
+#endif
     return budget_failed();
 }

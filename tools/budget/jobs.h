@@ -19,6 +19,9 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,
+   registration. */
+void jobs_symreg(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);
