@@ -429,7 +429,7 @@ int png_write_gray_to(FILE *fp, const char *name, const gray_image_t *img, char 
     if (img == NULL || img->pixels == NULL || img->width == 0 || img->height == 0 ||
         img->width > SSDA_MAX_DIM || img->height > SSDA_MAX_DIM ||
         (img->bits != 8 && img->bits != 16)) {
-        set_err(err, errlen, "'%s': nothing valid to write", name);
+        tool_set_err(err, errlen, "'%s': nothing valid to write", name);
         return -1;
     }
     w.fp = fp;
@@ -437,9 +437,9 @@ int png_write_gray_to(FILE *fp, const char *name, const gray_image_t *img, char 
     w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.ectx, on_png_error,
                                     on_png_warning);
     if (w.row == NULL || w.png == NULL || (w.info = png_create_info_struct(w.png)) == NULL) {
-        set_err(err, errlen, "'%s': out of memory", name);
+        tool_set_err(err, errlen, "'%s': out of memory", name);
     } else if (write_protected(&w, img) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", name, w.ectx.msg);
+        tool_set_err(err, errlen, "cannot write '%s': %s", name, w.ectx.msg);
     } else {
         rc = 0;
     }
