@@ -24,5 +24,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_STREAM
+    jobs_stream();
+#endif
     return budget_failed();
 }

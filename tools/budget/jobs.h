@@ -19,6 +19,8 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* ssda_push_row of push-mode tracking: one row, and a whole frame. */
+void jobs_stream(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);
