@@ -2,7 +2,7 @@
 #include "match_rows.h"
 #include "kernel/kernels.h"
 
-void ssda_rows_from_view(ssda_rows_t *rows, const ssda_view_t *view)
+void ssda__rows_from_view(ssda__rows_t *rows, const ssda_view_t *view)
 {
     rows->base = (const uint8_t *)view->data;
     rows->stride = view->stride;
@@ -13,7 +13,7 @@ void ssda_rows_from_view(ssda_rows_t *rows, const ssda_view_t *view)
     rows->format = view->format;
 }
 
-int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
+int ssda__match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
                             uint32_t area_h, uint32_t win_w, uint32_t win_h)
 {
     if (cfg->threshold > (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
@@ -109,7 +109,7 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
     static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
-    ssda_rows_t a, w;
+    ssda__rows_t a, w;
     int err;
     if (area == NULL || window == NULL || result == NULL) {
         return SSDA_ERR_NULL;
@@ -121,14 +121,14 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
     if (cfg == NULL) {
         cfg = &defaults;
     }
-    err = ssda_match_check_config(cfg, area->width, area->height, window->width,
+    err = ssda__match_check_config(cfg, area->width, area->height, window->width,
                                   window->height);
     if (err != SSDA_OK) {
         return err;
     }
-    ssda_rows_from_view(&a, area);
-    ssda_rows_from_view(&w, window);
-    return ssda_match_rows(&a, &w, cfg, result);
+    ssda__rows_from_view(&a, area);
+    ssda__rows_from_view(&w, window);
+    return ssda__match_rows(&a, &w, cfg, result);
 }
 
 int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
@@ -153,12 +153,12 @@ int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
         const uint8_t *t = ssda_view_row(window, r);
 #ifndef SSDA_CFG_NO_U16
         if (area->format != (uint8_t)SSDA_PIX_U8) {
-            total += ssda_sad_row_u16((const uint16_t *)(const void *)s,
+            total += ssda__sad_row_u16((const uint16_t *)(const void *)s,
                                       (const uint16_t *)(const void *)t, window->width);
             continue;
         }
 #endif
-        total += ssda_sad_row_u8(s, t, window->width);
+        total += ssda__sad_row_u8(s, t, window->width);
     }
     *sad = total;
     return SSDA_OK;

@@ -28,8 +28,8 @@ typedef struct {
 /* The search state, kept small: it lives on the caller's stack under the
    deepest call chain (hill_climb > consider > note_cut). */
 typedef struct {
-    const ssda_rows_t *area;
-    const ssda_rows_t *win;
+    const ssda__rows_t *area;
+    const ssda__rows_t *win;
     const ssda_match_config_t *cfg;
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
@@ -96,7 +96,7 @@ static uint32_t gcd_u32(uint32_t a, uint32_t b)
    r * 2^16 < 2^48, K_q8 * sqrt_q8 < 2^16 * 2^24: sum < 2^49. */
 static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
 {
-    uint64_t sqrt_q8 = ssda_isqrt64(r << 16);
+    uint64_t sqrt_q8 = ssda__isqrt64(r << 16);
     return (r << 16) + (uint64_t)e->k_q8 * sqrt_q8;
 }
 
@@ -110,7 +110,7 @@ static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
     uint32_t frac;
     if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
         /* eq. 3: lambda * f(r); lambda Q24.8 times f Q16 -> shift 24 */
-        return ssda_mul_shr24(e->cfg->lambda_q8, f);
+        return ssda__mul_shr24(e->cfg->lambda_q8, f);
     }
     /* eq. 4: min(T_i, T_i * f(r) / (L*M)) with frac = f / (L*M) in Q16: it
        reaches 1.0 (65536) exactly when f >= L*M * 2^16 (< 2^48); below, the
@@ -152,13 +152,13 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
 {
 #ifndef SSDA_CFG_NO_U16
     if (!e->u8) {
-        return ssda_sad_row_u16((const uint16_t *)(const void *)a,
+        return ssda__sad_row_u16((const uint16_t *)(const void *)a,
                                 (const uint16_t *)(const void *)w, n);
     }
 #else
     (void)e;
 #endif
-    return ssda_sad_row_u8(a, w, n);
+    return ssda__sad_row_u8(a, w, n);
 }
 
 #ifdef ENGINE_FALLBACK
@@ -263,9 +263,9 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         const uint8_t *ap;
         const uint8_t *wp;
         uint64_t v;
-        int err = ssda_rows_get(e->area, x, y + r, e->L, &ap);
+        int err = ssda__rows_get(e->area, x, y + r, e->L, &ap);
         if (err == SSDA_OK) {
-            err = ssda_rows_get(e->win, 0u, r, e->L, &wp);
+            err = ssda__rows_get(e->win, 0u, r, e->L, &wp);
         }
         if (err != SSDA_OK) {
             return err;
@@ -556,7 +556,7 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
         const uint8_t *p;
         uint32_t *h = gsum + (size_t)yy * nx;
         uint32_t s = 0u; /* <= L * 65535 <= 65535^2 < 2^32 */
-        int err = ssda_rows_get(e->area, 0u, yy, e->area->width, &p);
+        int err = ssda__rows_get(e->area, 0u, yy, e->area->width, &p);
         if (err != SSDA_OK) {
             e->ops += ops;
             return err;
@@ -608,7 +608,7 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
         for (yy = i * group; yy < (i + 1u) * group; yy++) {
             const uint8_t *p;
             uint32_t c;
-            int err = ssda_rows_get(e->win, 0u, yy, L, &p);
+            int err = ssda__rows_get(e->win, 0u, yy, L, &p);
             if (err != SSDA_OK) {
                 e->ops += ops;
                 return err;
@@ -626,7 +626,7 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
 
 #endif
 
-int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
+int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                     const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
     engine_t e = {0};

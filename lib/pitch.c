@@ -13,7 +13,7 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     if (cfg == NULL || bytes == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = ssda_pitch_resolve(cfg, &info);
+    err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
@@ -29,7 +29,7 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     if (p == NULL || cfg == NULL || buffer == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = ssda_pitch_resolve(cfg, &info);
+    err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
@@ -81,11 +81,11 @@ static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, siz
 {
     size_t i;
     if (!p->lp_primed) {
-        ssda_pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
+        ssda__pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
         p->lp_primed = true;
     }
     for (i = 0u; i < n; i++) {
-        int16_t y = ssda_pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
+        int16_t y = ssda__pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
         if (out != NULL) {
             out[i] = y;
         }
@@ -129,7 +129,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         p->fill += (uint32_t)take;
         used += take;
         if (p->fill == span) {
-            ssda_pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
+            ssda__pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
             est->frame = p->frame;
             /* wraps modulo 2^32 by design (unsigned) */
             est->center = p->frame * p->info.hop +

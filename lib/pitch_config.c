@@ -6,7 +6,7 @@
 #define KNOWN_FLAGS \
     (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC)
 
-int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
+int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 {
     ssda_pitch_info_t r;
     uint32_t rate, f0_min, f0_max;
@@ -80,7 +80,7 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 #ifndef SSDA_CFG_NO_PITCH_FILTER
     if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
         r.lowpass_hz = (uint16_t)(cfg->lowpass_hz != 0u ? cfg->lowpass_hz : f0_max);
-        r.lowpass_q15 = ssda_pitch_lowpass_coef_q15(r.lowpass_hz, rate);
+        r.lowpass_q15 = ssda__pitch_lowpass_coef_q15(r.lowpass_hz, rate);
     }
 #endif
     r.flags = cfg->flags;

@@ -84,7 +84,7 @@ static void evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound, lag_v
         v->d = lower; /* not exact */
         return;
     }
-    v->d = ssda_pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
+    v->d = ssda__pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
                                &complete, &f->diffs);
     if (complete) {
         v->d |= LAG_EXACT;
@@ -109,7 +109,7 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
 /* The value of any lag, with its scale computed directly. */
 static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
 {
-    uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+    uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
     evaluate(f, lag, s, bound, v);
 }
 
@@ -117,9 +117,9 @@ static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
 static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
                               const lag_value_t *mid, const lag_value_t *right)
 {
-    int32_t delta = ssda_pitch_interp_q16(ssda_pitch_norm_q20(d_of(left), left->s),
-                                          ssda_pitch_norm_q20(d_of(mid), mid->s),
-                                          ssda_pitch_norm_q20(d_of(right), right->s),
+    int32_t delta = ssda__pitch_interp_q16(ssda__pitch_norm_q20(d_of(left), left->s),
+                                          ssda__pitch_norm_q20(d_of(mid), mid->s),
+                                          ssda__pitch_norm_q20(d_of(right), right->s),
                                           SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
     /* lag <= 4800: 65536 * lag + delta < 2^29 */
     return (uint32_t)((int32_t)(lag << 16) + delta);
@@ -130,16 +130,16 @@ static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, cons
 static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
                               const lag_value_t *right)
 {
-    uint32_t a = ssda_pitch_norm_q20(d_of(left), left->s);
-    uint32_t b = ssda_pitch_norm_q20(d_of(mid), mid->s);
-    uint32_t c = ssda_pitch_norm_q20(d_of(right), right->s);
+    uint32_t a = ssda__pitch_norm_q20(d_of(left), left->s);
+    uint32_t b = ssda__pitch_norm_q20(d_of(mid), mid->s);
+    uint32_t c = ssda__pitch_norm_q20(d_of(right), right->s);
     uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
     uint32_t drop;
     if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
         int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
-        drop = den > 0 ? ssda_div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
+        drop = den > 0 ? ssda__div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
     } else {
         drop = diff / 2u;
     }
@@ -185,7 +185,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
             return false;
         }
         for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
-            uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+            uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
             /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
             uint32_t bound = (uint32_t)(((uint64_t)limit * s - 1u) >> 20);
             evaluate(f, lag, s, full ? NO_BOUND : bound, v);
@@ -194,7 +194,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
                 *found_v = *v;
             }
         }
-        if (found_lag != 0u && ssda_pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
+        if (found_lag != 0u && ssda__pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
             *new_lag = found_lag;
             *new_v = *found_v;
             return true;
@@ -218,7 +218,7 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 /*
  * The chosen lag (w->t_*) refined: exact neighbours, the sub-sample period,
  * the octave check when it is a dip (found), and the estimate. Kept out of
- * ssda_pitch_analyze_in (noinline, called last): the scan's locals are off
+ * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
  */
 static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_estimate_t *est)
@@ -237,8 +237,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     }
     est->lag = w->t_lag;
     est->period_q16 = period;
-    est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
-    n_q15 = ssda_div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
+    est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, est->period_q16);
+    n_q15 = ssda__div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
     est->voiced = found && n_at_most_q15(&w->t_mid, info->voicing_q15);
     est->dip = found;
@@ -248,7 +248,7 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
 
 /*
  * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
- * (w set up by ssda_pitch_analyze_in): the first valid dip run's minimum in
+ * (w set up by ssda__pitch_analyze_in): the first valid dip run's minimum in
  * w->t_* (returns true), else the global minimum (false). Out of line, so
  * that its locals are gone when refine() runs.
  */
@@ -270,7 +270,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     /* Armed: a peak n > rearm was seen since the last run began (at the
        start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so the
        next run is a real dip. */
-    const uint32_t rearm = ssda_pitch_rearm_q15(thr);
+    const uint32_t rearm = ssda__pitch_rearm_q15(thr);
     bool armed;
     bool found = false;
 
@@ -279,7 +279,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
         /* The seed's prediction: sum the predicted lag first, in full; its
            value becomes the best so far and tightens every later bound. */
         pred = predict_lag;
-        evaluate(w, pred, w->level + ssda_pitch_level(x + pred, k, mean), NO_BOUND, &w->pred);
+        evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, mean), NO_BOUND, &w->pred);
         w->best = w->pred;
         w->best_lag = pred;
     } else {
@@ -288,7 +288,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 
     /* lag_min - 1 is only a neighbour and the first arming test: needed
        exactly when n <= threshold. */
-    b_sum = ssda_pitch_level(x + lag_min - 1u, k, mean);
+    b_sum = ssda__pitch_level(x + lag_min - 1u, k, mean);
     evaluate(w, lag_min - 1u, w->level + b_sum,
              full ? NO_BOUND : threshold_bound(thr, w->level + b_sum), &w->prev);
     armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
@@ -298,7 +298,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
            first has its half-period peak near lag_min / 2, the second stays
            low there. Exact up to rearm; a cut proves n > rearm. */
         const uint32_t half = lag_min / 2u; /* >= 2 */
-        const uint32_t sh = w->level + ssda_pitch_level(x + half, k, mean);
+        const uint32_t sh = w->level + ssda__pitch_level(x + half, k, mean);
         evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
         armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
     }
@@ -414,7 +414,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     return found;
 }
 
-void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
+void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
                            const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     const uint32_t k = info->frame_len;
@@ -423,9 +423,9 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     w->info = info;
     w->x = x;
     w->diffs = 0u;
-    mean = ssda_pitch_mean(x, k);
+    mean = ssda__pitch_mean(x, k);
     w->mean = mean;
-    w->level = ssda_pitch_level(x, k, mean);
+    w->level = ssda__pitch_level(x, k, mean);
     /* silence_mad * K <= 65535 * 8192 < 2^30 */
     if (w->level < (uint32_t)info->silence_mad * k) {
         silent_estimate(est);
@@ -449,9 +449,9 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     refine(w, scan_lags(w, predict_lag), est);
 }
 
-void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
+void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     ssda_pitch_work_t w;
-    ssda_pitch_analyze_in(&w, info, x, predict_lag, est);
+    ssda__pitch_analyze_in(&w, info, x, predict_lag, est);
 }

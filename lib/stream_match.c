@@ -12,7 +12,7 @@ static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
 
 static bool fits(const ssda_source_t *s, uint32_t span)
 {
-    return s->view != NULL || stream_plate_fit_h(s, span, 0u) >= 1u;
+    return s->view != NULL || ssda__stream_plate_fit_h(s, span, 0u) >= 1u;
 }
 
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
@@ -21,22 +21,22 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
 {
     static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
     ssda_rect_t ar, wr;
-    ssda_rows_t a, w;
-    stream_rows_ctx_t actx, wctx;
+    ssda__rows_t a, w;
+    ssda__stream_rows_ctx_t actx, wctx;
     int err;
 
     if (area == NULL || window == NULL || result == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(area) || !stream_ready(window)) {
+    if (!ssda__stream_ready(area) || !ssda__stream_ready(window)) {
         return SSDA_ERR_STATE;
     }
-    if (stream_plates_clash(area, window)) {
+    if (ssda__stream_plates_clash(area, window)) {
         return SSDA_ERR_ARG;
     }
-    err = stream_rect(area, area_rect, &ar);
+    err = ssda__stream_rect(area, area_rect, &ar);
     if (err == SSDA_OK) {
-        err = stream_rect(window, window_rect, &wr);
+        err = ssda__stream_rect(window, window_rect, &wr);
     }
     if (err != SSDA_OK) {
         return err;
@@ -50,7 +50,7 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
     if (cfg == NULL) {
         cfg = &defaults;
     }
-    err = ssda_match_check_config(cfg, ar.width, ar.height, wr.width, wr.height);
+    err = ssda__match_check_config(cfg, ar.width, ar.height, wr.width, wr.height);
     if (err != SSDA_OK) {
         return err;
     }
@@ -61,7 +61,7 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
         /* The raster scan revisits a band of window-height rows moving
            down; the other scans jump around the whole area. */
         const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
-        (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
+        (void)ssda__stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
                                 raster ? wr.height : ar.height, 1u, 0u);
         /* A raster scan's band of window-height rows moves down one row at
            a time: a plate with spare rows jumps by them (rows needed are
@@ -71,9 +71,9 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
         }
     }
     if (window->view == NULL) {
-        (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u, 0u);
+        (void)ssda__stream_plate_plan(window, &wr, wr.width, wr.height, 0u, 0u);
     }
-    stream_rows_make(&a, &actx, area, &ar);
-    stream_rows_make(&w, &wctx, window, &wr);
-    return ssda_match_rows(&a, &w, cfg, result);
+    ssda__stream_rows_make(&a, &actx, area, &ar);
+    ssda__stream_rows_make(&w, &wctx, window, &wr);
+    return ssda__match_rows(&a, &w, cfg, result);
 }

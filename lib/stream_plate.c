@@ -52,7 +52,7 @@ static size_t plate_bytes(const ssda_source_t *s, uint32_t w, uint32_t h)
     return (size_t)h * pitch_for(s, w) + bounce_min(s, w);
 }
 
-uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
+uint32_t ssda__stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 {
     size_t room = room_of(s);
     size_t h;
@@ -66,7 +66,7 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
     return h > SSDA_MAX_DIM ? SSDA_MAX_DIM : (uint32_t)h;
 }
 
-uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
+uint32_t ssda__stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
 {
     const ssda_source_config_t *c = &s->cfg;
     const size_t rows = (size_t)h + (tiled(s) || STREAM_READ_SIZE(c) == 1u ? 0u : 1u);
@@ -94,19 +94,19 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
     return (uint32_t)w;
 }
 
-int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+int ssda__stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
                       uint32_t rows, uint32_t q, size_t extra)
 {
     uint32_t w = r->width;
-    uint32_t h = stream_plate_fit_h(s, w, extra);
+    uint32_t h = ssda__stream_plate_fit_h(s, w, extra);
     size_t pitch;
     if (h < rows) {
-        w = stream_plate_fit_w(s, rows, extra);
+        w = ssda__stream_plate_fit_w(s, rows, extra);
         if (w >= span) {
             h = rows;
         } else {
             w = span;
-            h = stream_plate_fit_h(s, w, 0u);
+            h = ssda__stream_plate_fit_h(s, w, 0u);
             if (h == 0u) {
                 return SSDA_ERR_BUFFER;
             }
@@ -321,7 +321,7 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
     return err;
 }
 
-int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
+int ssda__stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
 {
     if (s->rows != 0u && s->px0 == x0 && s->py0 == y0) {
         s->stats.hits++;
@@ -331,7 +331,7 @@ int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
     return move(s, x0, y0);
 }
 
-int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
+int ssda__stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
                        const uint8_t **px)
 {
     const bool have = s->rows != 0u;

@@ -29,7 +29,7 @@ static int ring_fits(uint8_t format, uint32_t w, uint32_t band, const void *ring
     if ((((uintptr_t)ring) & 3u) != 0u || ring_size / pitch < band) {
         return SSDA_ERR_BUFFER;
     }
-    if (stream_plate_overlaps(other, ring, ring_size)) {
+    if (ssda__stream_plate_overlaps(other, ring, ring_size)) {
         return SSDA_ERR_ARG;
     }
     return SSDA_OK;
@@ -61,7 +61,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (push == NULL || window == NULL || result == NULL || ring == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(window)) {
+    if (!ssda__stream_ready(window)) {
         return SSDA_ERR_STATE;
     }
     if (!format_ok(format) || window->cfg.format != format) {
@@ -79,7 +79,7 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
         (uint32_t)area.y + area.height > height) {
         return SSDA_ERR_SIZE;
     }
-    err = stream_rect(window, window_rect, &wr);
+    err = ssda__stream_rect(window, window_rect, &wr);
     if (err != SSDA_OK) {
         return err;
     }
@@ -89,11 +89,11 @@ int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (cfg == NULL) {
         cfg = &defaults;
     }
-    err = ssda_match_check_config(cfg, area.width, area.height, wr.width, wr.height);
+    err = ssda__match_check_config(cfg, area.width, area.height, wr.width, wr.height);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!stream_holds(window, wr.width, 1u, 0u)) {
+    if (!ssda__stream_holds(window, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     err = ring_fits(format, area.width, area.height, ring, ring_size, window);
@@ -131,7 +131,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
                          void *ring, size_t ring_size)
 {
     static const ssda_track_config_t defaults;
-    ssda_track_plan_t plan;
+    ssda__track_plan_t plan;
     ssda_rect_t ar, wr;
     uint32_t fw, fh, sw, sh, lo, hi, x0 = 0u, w = 1u, band = 1u;
     bool first;
@@ -139,7 +139,7 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     if (push == NULL || other == NULL || out == NULL || ring == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(other)) {
+    if (!ssda__stream_ready(other)) {
         return SSDA_ERR_STATE;
     }
     if (role > (uint8_t)SSDA_PUSH_SECOND) {
@@ -159,15 +159,15 @@ int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uin
     fh = first ? height : other->cfg.height;
     sw = first ? other->cfg.width : width;
     sh = first ? other->cfg.height : height;
-    err = ssda_track_plan(cfg, format, sw, sh, &plan);
+    err = ssda__track_plan(cfg, format, sw, sh, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda_track_out_fits(plan.grid.count, out_count) ||
-        !stream_holds(other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
+    if (!ssda__track_out_fits(plan.grid.count, out_count) ||
+        !ssda__stream_holds(other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    if (stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
+    if (ssda__stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
         const ssda_rect_t *kept = first ? &ar : &wr;
         x0 = kept->x;
         w = kept->width;
@@ -218,7 +218,7 @@ static void ring_put(ssda_push_t *p, uint32_t y, const uint8_t *row, uint32_t fr
 }
 
 /* The ring's rows from image row top, band rows tall, as a row source. */
-static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda_rows_t *rows)
+static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda__rows_t *rows)
 {
     rows->base = p->ring + (size_t)(top - p->first_row) * p->pitch;
     rows->stride = p->pitch;
@@ -235,16 +235,16 @@ static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda_ro
    on the frame above the search. */
 static SSDA_NOINLINE int run_match(ssda_push_t *p)
 {
-    ssda_rows_t a, w;
-    stream_rows_ctx_t wctx;
+    ssda__rows_t a, w;
+    ssda__stream_rows_ctx_t wctx;
     if (p->other->view == NULL) {
-        (void)stream_plate_plan(p->other, &p->other_rect, p->other_rect.width,
+        (void)ssda__stream_plate_plan(p->other, &p->other_rect, p->other_rect.width,
                                 p->other_rect.height, 0u, 0u);
     }
     ring_rows(p, p->area.y, p->area.height, &a);
-    stream_rows_make(&w, &wctx, p->other, &p->other_rect);
+    ssda__stream_rows_make(&w, &wctx, p->other, &p->other_rect);
     {
-        int err = ssda_match_rows(&a, &w, &p->match, p->result);
+        int err = ssda__match_rows(&a, &w, &p->match, p->result);
         return err != SSDA_OK ? err : 1;
     }
 }
@@ -254,26 +254,26 @@ static SSDA_NOINLINE int run_match(ssda_push_t *p)
 static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
 {
     const bool first = p->role == (uint8_t)SSDA_PUSH_FIRST;
-    ssda_track_plan_t plan;
+    ssda__track_plan_t plan;
     ssda_rect_t ar, wr, all;
-    ssda_rows_t pushed, whole;
-    stream_rows_ctx_t wctx;
+    ssda__rows_t pushed, whole;
+    ssda__stream_rows_ctx_t wctx;
     uint32_t fw, fh, sw, sh, lo = 1u, hi = 0u, hy, band;
     int solved = 0;
     image_sizes(p, &fw, &fh, &sw, &sh);
-    (void)ssda_track_plan(&p->track, p->format, sw, sh, &plan); /* checked at init */
+    (void)ssda__track_plan(&p->track, p->format, sw, sh, &plan); /* checked at init */
     hy = ((uint32_t)plan.grid.search_h - plan.grid.win_h) / 2u;
     band = first ? plan.grid.search_h : plan.grid.win_h;
-    if (!stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
+    if (!ssda__stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
         lo = plan.grid.rows; /* no grid row reads anything */
         hi = 0u;
     }
-    (void)stream_rect(p->other, NULL, &all);
-    stream_rows_make(&whole, &wctx, p->other, &all);
+    (void)ssda__stream_rect(p->other, NULL, &all);
+    ssda__stream_rows_make(&whole, &wctx, p->other, &all);
     while (p->next_grid_row < plan.grid.rows) {
         const uint32_t r = p->next_grid_row;
         const uint32_t wy = plan.grid.roi_y + r * plan.grid.step_y;
-        ssda_track_origin_t o;
+        ssda__track_origin_t o;
         int err;
         o.first_w = fw;
         o.first_h = fh;
@@ -285,7 +285,7 @@ static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
             const uint32_t top = first ? wy - hy : wy;
             const ssda_rect_t *oreg = first ? &wr : &ar;
             const uint32_t oband = first ? plan.grid.win_h : plan.grid.search_h;
-            ssda_rows_t other_rows;
+            ssda__rows_t other_rows;
             uint32_t ox = 0u, oy = 0u;
             if (rows_in < top + band) {
                 break; /* the band is not complete yet */
@@ -293,12 +293,12 @@ static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
             ring_rows(p, top, band, &pushed);
             other_rows = whole;
             if (p->other->view == NULL) {
-                (void)stream_plate_plan(p->other, oreg, first ? plan.grid.win_w : plan.grid.search_w,
+                (void)ssda__stream_plate_plan(p->other, oreg, first ? plan.grid.win_w : plan.grid.search_w,
                                         oband, plan.grid.step_y,
-                                        stream_run_extra(p->other, plan.grid.step_y));
+                                        ssda__stream_run_extra(p->other, plan.grid.step_y));
             }
-            if (p->other->view == NULL && stream_holds_band(p->other, oreg, oband)) {
-                err = stream_band_rows(p->other, oreg, oreg->x, first ? wy : wy - hy, &other_rows,
+            if (p->other->view == NULL && ssda__stream_holds_band(p->other, oreg, oband)) {
+                err = ssda__stream_band_rows(p->other, oreg, oreg->x, first ? wy : wy - hy, &other_rows,
                                        &ox, &oy);
                 if (err != SSDA_OK) {
                     return err;
@@ -315,12 +315,12 @@ static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
                 o.second_x = p->x0;
                 o.second_y = top;
             }
-            err = ssda_track_part(first ? &pushed : &other_rows, first ? &other_rows : &pushed,
+            err = ssda__track_part(first ? &pushed : &other_rows, first ? &other_rows : &pushed,
                                   &plan, 0u, plan.grid.cols, r, r + 1u, &o, p->out, &p->acc);
         } else {
             /* EDGE row: no pixel is read, any row sources do */
             ring_rows(p, p->first_row, 0u, &pushed);
-            err = ssda_track_part(&pushed, &pushed, &plan, 0u, plan.grid.cols, r, r + 1u, &o,
+            err = ssda__track_part(&pushed, &pushed, &plan, 0u, plan.grid.cols, r, r + 1u, &o,
                                   p->out, &p->acc);
         }
         if (err != SSDA_OK) {
@@ -343,10 +343,10 @@ static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
 static SSDA_NOINLINE uint32_t needed_from(const ssda_push_t *p)
 {
     if (p->kind == KIND_TRACK) {
-        ssda_track_plan_t plan;
+        ssda__track_plan_t plan;
         uint32_t fw, fh, sw, sh, top;
         image_sizes(p, &fw, &fh, &sw, &sh);
-        (void)ssda_track_plan(&p->track, p->format, sw, sh, &plan);
+        (void)ssda__track_plan(&p->track, p->format, sw, sh, &plan);
         top = plan.grid.roi_y + (uint32_t)p->next_grid_row * plan.grid.step_y;
         if (p->role == (uint8_t)SSDA_PUSH_FIRST) {
             uint32_t hy = ((uint32_t)plan.grid.search_h - plan.grid.win_h) / 2u;

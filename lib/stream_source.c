@@ -129,7 +129,7 @@ int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
     all.height = c.height;
     /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
        plate fits (checked above), so this cannot fail. */
-    (void)stream_plate_plan(src, &all, 1u, 1u, 0u, 0u);
+    (void)ssda__stream_plate_plan(src, &all, 1u, 1u, 0u, 0u);
     return SSDA_OK;
 }
 
@@ -157,7 +157,7 @@ int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view)
     return SSDA_OK;
 }
 
-int stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out)
+int ssda__stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out)
 {
     if (in == NULL) {
         out->x = 0u;
@@ -182,7 +182,7 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     if (src == NULL || px == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(src)) {
+    if (!ssda__stream_ready(src)) {
         return SSDA_ERR_STATE;
     }
     if (n == 0u || x >= src->cfg.width || n > src->cfg.width - x || y >= src->cfg.height) {
@@ -192,10 +192,10 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
         *px = src->view + (size_t)y * src->cfg.stride + (size_t)x * src->cfg.format;
         return SSDA_OK;
     }
-    (void)stream_rect(src, NULL, &all);
+    (void)ssda__stream_rect(src, NULL, &all);
     if (n > src->pw) {
         /* Reshape for this width: whole rows if they fit, else n px. */
-        int err = stream_plate_plan(src, &all, n, 1u, 0u, 0u);
+        int err = ssda__stream_plate_plan(src, &all, n, 1u, 0u, 0u);
         if (err != SSDA_OK) {
             return err;
         }
@@ -205,17 +205,17 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     src->rw = all.width;
     src->rh = all.height;
     src->qy = src->ph; /* a miss jumps a whole plate: reading in order is read once */
-    return stream_fetch(src, x, y, n, px);
+    return ssda__stream_fetch(src, x, y, n, px);
 }
 
 static int rows_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
 {
-    const stream_rows_ctx_t *c = ctx;
+    const ssda__stream_rows_ctx_t *c = ctx;
     /* cppcheck-suppress misra-c2012-11.8 ; no cast: c->src is a pointer member */
-    return stream_fetch(c->src, c->x0 + x, c->y0 + y, n, px);
+    return ssda__stream_fetch(c->src, c->x0 + x, c->y0 + y, n, px);
 }
 
-void stream_rows_make(ssda_rows_t *rows, stream_rows_ctx_t *ctx, ssda_source_t *s,
+void ssda__stream_rows_make(ssda__rows_t *rows, ssda__stream_rows_ctx_t *ctx, ssda_source_t *s,
                       const ssda_rect_t *r)
 {
     rows->width = r->width;

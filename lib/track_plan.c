@@ -76,8 +76,8 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
     return err;
 }
 
-int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda_track_plan_t *plan)
+int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
+                    uint32_t second_h, ssda__track_plan_t *plan)
 {
     const uint32_t maxval = format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
     /* built in *plan directly (no copy of a plan on the stack): on error it
@@ -120,6 +120,6 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
             plan->match.scan = (uint8_t)SSDA_SCAN_PREDICT;
         }
     }
-    return ssda_match_check_config(&plan->match, plan->grid.search_w, plan->grid.search_h,
+    return ssda__match_check_config(&plan->match, plan->grid.search_w, plan->grid.search_h,
                                    plan->grid.win_w, plan->grid.win_h);
 }

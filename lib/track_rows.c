@@ -1,25 +1,25 @@
 /*
  * track_rows.c - grid tracking over row sources: window statuses (edge,
- * mask, texture), prediction from solved neighbours, one ssda_match_rows per
+ * mask, texture), prediction from solved neighbours, one ssda__match_rows per
  * window on sub-sources of the two images.
  */
 #include "track_rows.h"
 
 /* A rectangle of a parent row source, seen as a row source of its own. */
 typedef struct {
-    const ssda_rows_t *parent;
+    const ssda__rows_t *parent;
     uint32_t x0, y0;
 } sub_ctx_t;
 
 static int sub_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
 {
     const sub_ctx_t *s = (const sub_ctx_t *)ctx;
-    return ssda_rows_get(s->parent, s->x0 + x, s->y0 + y, n, px);
+    return ssda__rows_get(s->parent, s->x0 + x, s->y0 + y, n, px);
 }
 
 /* Make *sub the w x h rectangle at (x0, y0) of parent (inside it). In RAM
    it is a plain pointer offset; otherwise fetches are forwarded. */
-static void make_sub(ssda_rows_t *sub, sub_ctx_t *ctx, const ssda_rows_t *parent,
+static void make_sub(ssda__rows_t *sub, sub_ctx_t *ctx, const ssda__rows_t *parent,
                      uint32_t x0, uint32_t y0, uint32_t w, uint32_t h)
 {
     sub->width = (uint16_t)w;
@@ -40,7 +40,7 @@ static void make_sub(ssda_rows_t *sub, sub_ctx_t *ctx, const ssda_rows_t *parent
     }
 }
 
-static int check_rows(const ssda_rows_t *r)
+static int check_rows(const ssda__rows_t *r)
 {
     if (r->format != (uint8_t)SSDA_PIX_U8 && r->format != (uint8_t)SSDA_PIX_U16) {
         return SSDA_ERR_FORMAT;
@@ -106,7 +106,7 @@ static uint32_t count_above_u16(const uint16_t *p, uint32_t n, uint32_t thr)
    mask) and count pixels above the texture threshold (if texture). Stops
    at the first row holding the mask value (the status is then decided).
    Returns SSDA_OK or a fetch error. */
-static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool mask,
+static int scan_pixels(const ssda__rows_t *src, const ssda__track_plan_t *p, bool mask,
                        bool texture, scan_t *s, uint64_t *pixels_read)
 {
     const uint32_t n = src->width;
@@ -117,7 +117,7 @@ static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool 
     for (y = 0u; y < src->height && !s->masked; y++) {
         const uint8_t *px;
         const uint16_t *q;
-        int err = ssda_rows_get(src, 0u, y, n, &px);
+        int err = ssda__rows_get(src, 0u, y, n, &px);
         if (err != SSDA_OK) {
             return err;
         }
@@ -150,7 +150,7 @@ static int32_t med3(int32_t a, int32_t b, int32_t c)
 /* Predicted vector of window (col, row) from the solved entries of out:
    every column left of the strip, and the strip's windows solved before
    this one; col1 (the strip's end) and beyond are not solved yet. */
-static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
+static void predict(const ssda__track_plan_t *p, const ssda_track_vector_t *out,
                     uint32_t col, uint32_t row, uint32_t col1, int32_t *pdx, int32_t *pdy)
 {
     const uint32_t cols = p->grid.cols;
@@ -190,9 +190,9 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
 }
 
 /* Status and vector of window k; on OK also runs the search. */
-static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
-                        ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
-                        uint32_t row, uint32_t col1, const ssda_track_origin_t *o,
+static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
+                        ssda__track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
+                        uint32_t row, uint32_t col1, const ssda__track_origin_t *o,
                         ssda_track_vector_t *v, ssda_track_stats_t *st)
 {
     const ssda_track_grid_t *g = &p->grid;
@@ -202,7 +202,7 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     const uint32_t wy = g->roi_y + row * g->step_y;
     const bool mask = (p->flags & SSDA_TRACK_MASK) != 0u;
     const bool texture = (p->flags & SSDA_TRACK_EXCLUDE) != 0u;
-    ssda_rows_t win, area;
+    ssda__rows_t win, area;
     sub_ctx_t win_ctx, area_ctx;
     ssda_match_result_t res;
     scan_t s;
@@ -262,7 +262,7 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
         p->match.predict_x = (int32_t)hx; /* zero motion, for a PREDICT scan */
         p->match.predict_y = (int32_t)hy;
     }
-    err = ssda_match_rows(&area, &win, &p->match, &res);
+    err = ssda__match_rows(&area, &win, &p->match, &res);
     if (err != SSDA_OK) {
         return err;
     }
@@ -290,9 +290,9 @@ static void stats_zero(ssda_track_stats_t *st)
     st->edge = 0u;
 }
 
-int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
-                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
+int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
+                    ssda__track_plan_t *plan, uint32_t col0, uint32_t col1,
+                    uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
     uint32_t row, col;
@@ -316,12 +316,12 @@ int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
     return SSDA_OK;
 }
 
-int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
+int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats)
 {
     static const ssda_track_config_t defaults;
-    ssda_track_plan_t plan;
+    ssda__track_plan_t plan;
     ssda_track_stats_t st;
     int err;
 
@@ -338,16 +338,16 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
     if (first->format != second->format) {
         return SSDA_ERR_FORMAT;
     }
-    err = ssda_track_plan(cfg != NULL ? cfg : &defaults, second->format, second->width,
+    err = ssda__track_plan(cfg != NULL ? cfg : &defaults, second->format, second->width,
                           second->height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda_track_out_fits(plan.grid.count, out_count)) {
+    if (!ssda__track_out_fits(plan.grid.count, out_count)) {
         return SSDA_ERR_BUFFER;
     }
     stats_zero(&st);
-    err = ssda_track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);
+    err = ssda__track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);
     if (err == SSDA_OK && stats != NULL) {
         *stats = st;
     }

@@ -2,7 +2,7 @@
  * track_rows.h - internal: grid tracking over row sources, so the same code
  * serves images in RAM (ssda_track) and block-streamed images (the stream
  * layer). Every pixel read, for the mask and texture tests as for the
- * search, is a row span through ssda_rows_get(): never a call per pixel.
+ * search, is a row span through ssda__rows_get(): never a call per pixel.
  */
 #ifndef SSDA_TRACK_ROWS_H
 #define SSDA_TRACK_ROWS_H
@@ -16,7 +16,7 @@
  * windows (about 179 million) would need an array beyond the address space,
  * so SSDA_TRACK_OUT_SIZE wraps there and no out can hold it: refused.
  */
-static inline bool ssda_track_out_fits(uint32_t count, size_t out_count)
+static inline bool ssda__track_out_fits(uint32_t count, size_t out_count)
 {
 #if SIZE_MAX <= UINT32_MAX
     if (count > SIZE_MAX / sizeof(ssda_track_vector_t)) {
@@ -35,7 +35,7 @@ typedef struct {
     uint32_t mask_value;        /* <= the format's maximum */
     uint8_t predict;
     uint8_t flags;
-} ssda_track_plan_t;
+} ssda__track_plan_t;
 
 /*
  * Resolve and check cfg (never NULL) for images of the given format whose
@@ -43,8 +43,8 @@ typedef struct {
  * configuration (SSDA_ERR_SIZE, _ARG, _NULL, _BUFFER of the match options).
  * On error *plan holds scratch (the callers discard it).
  */
-int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda_track_plan_t *plan);
+SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
+                    uint32_t second_h, ssda__track_plan_t *plan);
 
 /*
  * ssda_track over row sources. first and second are checked here (non-NULL,
@@ -58,12 +58,12 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
  * the rest of out and *stats are untouched (a streamed call cannot undo
  * what it wrote; argument errors still write nothing).
  */
-int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
+SSDA_INTERNAL int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats);
 
 /*
- * Where the row sources given to ssda_track_part lie in the images, for a
+ * Where the row sources given to ssda__track_part lie in the images, for a
  * caller that keeps only a band of each image in RAM (the stream layer's
  * plates): pixel (0, 0) of first is FIRST's pixel (first_x, first_y) and
  * pixel (0, 0) of second is SECOND's (second_x, second_y); FIRST is
@@ -74,26 +74,26 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
 typedef struct {
     uint32_t first_x, first_y, first_w, first_h;
     uint32_t second_x, second_y;
-} ssda_track_origin_t;
+} ssda__track_origin_t;
 
 /*
- * ssda_track_strip over grid rows row0 .. row1-1 only (row0 < row1 <=
+ * ssda__track_strip over grid rows row0 .. row1-1 only (row0 < row1 <=
  * plan->grid.rows), with row sources placed by origin (NULL: the whole
  * images). Prediction takes every row above row0 as solved, besides what
- * ssda_track_strip takes, so calling it row by row, strip by strip, gives
- * what one ssda_track_strip call per strip gives. Same returns and effects.
+ * ssda__track_strip takes, so calling it row by row, strip by strip, gives
+ * what one ssda__track_strip call per strip gives. Same returns and effects.
  */
-int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
-                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
+SSDA_INTERNAL int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
+                    ssda__track_plan_t *plan, uint32_t col0, uint32_t col1,
+                    uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                     ssda_track_vector_t *out, ssda_track_stats_t *acc);
 
 /*
  * For callers that cut the grid into vertical strips (the stream layer):
  * solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of
  * every grid row, row by row, left to right within the strip. plan comes
- * from ssda_track_plan (its match.predict_x/y are scratch); first and second
- * must already satisfy ssda_track_rows' checks and out must hold the whole
+ * from ssda__track_plan (its match.predict_x/y are scratch); first and second
+ * must already satisfy ssda__track_rows' checks and out must hold the whole
  * grid (entry row * cols + col). Prediction takes as solved every window
  * left of col0 (so solve strips left to right) and the strip's windows
  * solved before; up-right neighbours in column col1 are not solved yet, so
@@ -104,14 +104,14 @@ int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
  * callers discard it; it is not copied onto the caller's stack, to keep
  * the deepest call chain short) and out holds the strip's windows solved
  * before the failing one.
- * Inline, as ssda_track_part over every grid row of whole images: a frame
+ * Inline, as ssda__track_part over every grid row of whole images: a frame
  * less on the deepest call chain.
  */
-static inline int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
-                                   ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+static inline int ssda__track_strip(const ssda__rows_t *first, const ssda__rows_t *second,
+                                   ssda__track_plan_t *plan, uint32_t col0, uint32_t col1,
                                    ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    return ssda_track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
+    return ssda__track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
                            acc);
 }
 

@@ -10,19 +10,21 @@
 
 #include <stdint.h>
 
+#include "compiler.h"
+
 /* Sum of |a[i] - b[i]| for i < n, n <= 65535.
    Worst case 255 * 65535 = 16 711 425 < 2^32. */
-uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n);
+SSDA_INTERNAL uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n);
 
 /* Sum of |a[i] - b[i]| for i < n, n <= 65535.
    Worst case 65535 * 65535 = 4 294 836 225 < 2^32 - 1. */
-uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n);
+SSDA_INTERNAL uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n);
 
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
-uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
+SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
 
 /* Name of the compiled kernel set ("portable", "sse2", "armv7em"). */
-const char *ssda_kernel_name(void);
+SSDA_INTERNAL const char *ssda__kernel_name(void);
 
 #endif /* SSDA_KERNEL_KERNELS_H */
