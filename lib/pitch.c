@@ -4,7 +4,8 @@
 
 #include <string.h>
 
-#define PITCH_MAGIC 0x50495443u /* "PITC" */
+#include "slide.h"
+#include "state.h"
 
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 {
@@ -39,7 +40,7 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     }
     p->info = info;
     p->buf = (int16_t *)buffer;
-    p->magic = PITCH_MAGIC;
+    p->magic = SSDA__MAGIC_PITCH;
     return ssda_pitch_reset(p);
 }
 
@@ -48,7 +49,7 @@ int ssda_pitch_reset(ssda_pitch_t *p)
     if (p == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     p->fill = 0u;
@@ -66,7 +67,7 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     if (p == NULL || info == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     *info = p->info;
@@ -104,7 +105,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
     if (p == NULL || consumed == NULL || est == NULL || (samples == NULL && count > 0u)) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     while (used < count) {
@@ -137,16 +138,10 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             p->frame++;
             p->predict_lag = est->voiced ? est->lag : 0u;
             if (p->info.hop < span) {
-                /* Slide the kept samples down by hop in blocks of at most hop
-                   samples: source and destination of each memcpy never
-                   overlap (memmove is not in the library's freestanding set). */
-                uint32_t moved = 0u;
+                /* the kept samples slide down by hop */
                 p->fill = span - p->info.hop;
-                while (moved < p->fill) {
-                    uint32_t n = p->fill - moved < p->info.hop ? p->fill - moved : p->info.hop;
-                    (void)memcpy(p->buf + moved, p->buf + moved + p->info.hop, n * sizeof(int16_t));
-                    moved += n;
-                }
+                ssda__slide(p->buf, (size_t)p->info.hop * sizeof(int16_t),
+                            (size_t)span * sizeof(int16_t));
             } else {
                 p->fill = 0u;
                 p->skip = p->info.hop - span;

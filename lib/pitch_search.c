@@ -246,172 +246,210 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     est->diffs = w->diffs;
 }
 
+/* The scan's flags (scan_lags), a local of it: its helpers are inlined. */
+typedef struct {
+    bool armed;           /* a peak n > rearm was seen since the last run began
+                             (at the start: n(lag_min - 1) > threshold, or
+                             n(lag_min / 2) > rearm), so the next run is a dip */
+    bool in_run;          /* the current lag is in a run under the threshold */
+    bool run_armed;       /* the open run was entered armed */
+    bool best_need_right; /* the best lag's right neighbour is the next lag */
+    bool run_need_right;  /* the run minimum's right neighbour is the next lag */
+    bool found;           /* a valid dip was found: its minimum is in w->t_* */
+} scan_flags_t;
+
+/*
+ * Before the scan: the predicted lag (SSDA_PITCH_TRACK: the seed's
+ * prediction, summed first, in full; its value becomes the best so far and
+ * tightens every later bound), then lag_min - 1 and the first arming test.
+ * Returns the predicted lag (0: none) and B(lag_min - 1) in *b_sum.
+ */
+static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t predict_lag,
+                                              uint32_t rearm, uint32_t *b_sum,
+                                              scan_flags_t *f)
+{
+    const ssda_pitch_info_t *info = w->info;
+    const int16_t *x = w->x;
+    const uint32_t k = info->frame_len;
+    const bool full = SSDA_PITCH_HAS_FULL(info->flags);
+    const uint32_t thr = info->threshold_q15;
+    uint32_t pred = 0u;
+    if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
+        predict_lag >= info->lag_min && predict_lag <= info->lag_max) {
+        pred = predict_lag;
+        evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, w->mean), NO_BOUND, &w->pred);
+        w->best = w->pred;
+        w->best_lag = pred;
+    } else {
+        w->pred = w->best;
+    }
+    /* lag_min - 1 is only a neighbour and the first arming test: needed
+       exactly when n <= threshold. */
+    *b_sum = ssda__pitch_level(x + info->lag_min - 1u, k, w->mean);
+    evaluate(w, info->lag_min - 1u, w->level + *b_sum,
+             full ? NO_BOUND : threshold_bound(thr, w->level + *b_sum), &w->prev);
+    f->armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
+    if (!f->armed) {
+        /* lag_min - 1 lies in a dip already: a period just above lag_min
+           (f0 just below f0_max), or the lag-0 tail of a slow signal. The
+           first has its half-period peak near lag_min / 2, the second stays
+           low there. Exact up to rearm; a cut proves n > rearm. */
+        const uint32_t half = info->lag_min / 2u; /* >= 2 */
+        const uint32_t sh = w->level + ssda__pitch_level(x + half, k, w->mean);
+        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
+        f->armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
+    }
+    return pred;
+}
+
+/* The bound lag is cut at (s: its scale): exact when n <= threshold; when
+   not armed, also exact up to the re-arming level, so a cut proves
+   n > rearm; for a candidate also whatever still beats the best lag (the
+   seed's automatic threshold, Fig. 9; the first candidate in full). */
+static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_t lag,
+                                             uint32_t s, bool candidate, bool armed,
+                                             uint32_t rearm)
+{
+    uint32_t bound = threshold_bound(armed || !candidate ? w->info->threshold_q15 : rearm, s);
+    if (candidate) {
+        uint32_t bb;
+        if (w->best_lag == 0u) {
+            bound = NO_BOUND;
+        } else if (best_bound(&w->best, lag > w->best_lag, s, &bb) && bb > bound) {
+            bound = bb;
+        } else {
+            /* the threshold's bound is the tighter one */
+        }
+    }
+    return bound;
+}
+
+/* An exact candidate w->cur at lag: the new best lag (the global-minimum
+   fallback) if it beats it by the tie rule (smaller n, then smaller lag). */
+static SSDA_ALWAYS_INLINE void note_best(ssda_pitch_work_t *w, uint32_t lag, scan_flags_t *f)
+{
+    bool better;
+    if (w->best_lag == 0u) {
+        better = true;
+    } else if (lag > w->best_lag) {
+        better = n_less(&w->cur, &w->best);
+    } else {
+        better = !n_less(&w->best, &w->cur); /* before best: ties win */
+    }
+    if (better && lag != w->best_lag) {
+        w->best = w->cur;
+        w->best_lag = lag;
+        w->best_left = w->prev;
+        f->best_need_right = true;
+    } else if (lag == w->best_lag) {
+        w->best_left = w->prev; /* the predicted lag, reached by the scan */
+        f->best_need_right = true;
+    } else {
+        /* not better: the best lag stays */
+    }
+}
+
+/* The run ended at lag - 1. It is a dip if it was entered from a peak,
+   and its minimum is neither a lag_max that still falls (a period beyond
+   lag_max) nor a lag_min below which it still falls (the tail of a dip
+   below lag_min, e.g. a strong 2nd harmonic's, which may now arm: its
+   multiple follows). The first dip's minimum becomes the chosen lag;
+   returns true when the scan can stop (no later lag can change it). */
+static SSDA_ALWAYS_INLINE bool end_run(ssda_pitch_work_t *w, scan_flags_t *f)
+{
+    const ssda_pitch_info_t *info = w->info;
+    bool valid = f->run_armed &&
+                 (w->run_lag != info->lag_max || !n_less(&w->run_right, &w->run)) &&
+                 (w->run_lag != info->lag_min || !n_less(&w->run_left, &w->run));
+    f->in_run = false;
+    if (valid && !f->found) {
+        f->found = true;
+        w->t_lag = w->run_lag;
+        w->t_left = w->run_left;
+        w->t_mid = w->run;
+        w->t_right = w->run_right;
+        return !SSDA_PITCH_HAS_FULL(info->flags);
+    }
+    return false;
+}
+
 /*
  * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
  * (w set up by ssda__pitch_analyze_in): the first valid dip run's minimum in
- * w->t_* (returns true), else the global minimum (false). Out of line, so
- * that its locals are gone when refine() runs.
+ * w->t_* (returns true), else the global minimum (false). In *w: the best
+ * lag so far (the global-minimum fallback) and the open run under the
+ * threshold (its minimum), each with its neighbours; the predicted lag's
+ * value; the chosen lag (t_*). Out of line, so that its locals are gone
+ * when refine() runs.
  */
 static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 {
     const ssda_pitch_info_t *info = w->info;
     const int16_t *x = w->x;
     const uint32_t k = info->frame_len;
-    const uint32_t lag_min = info->lag_min, lag_max = info->lag_max;
+    const uint32_t lag_max = info->lag_max;
     const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
     const int32_t mean = w->mean;
-    uint32_t b_sum, lag, pred = 0u;
-    /* In *w: the best lag so far (the global-minimum fallback) and the open
-       run under the threshold (its minimum), each with its neighbours; the
-       predicted lag's value; the chosen lag (t_*). */
-    bool best_need_right = false;
-    bool in_run = false, run_need_right = false, run_armed = false;
-    /* Armed: a peak n > rearm was seen since the last run began (at the
-       start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so the
-       next run is a real dip. */
     const uint32_t rearm = ssda__pitch_rearm_q15(thr);
-    bool armed;
-    bool found = false;
+    scan_flags_t f = {false, false, false, false, false, false};
+    uint32_t b_sum, lag;
+    const uint32_t pred = scan_start(w, predict_lag, rearm, &b_sum, &f);
 
-    if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
-        predict_lag >= lag_min && predict_lag <= lag_max) {
-        /* The seed's prediction: sum the predicted lag first, in full; its
-           value becomes the best so far and tightens every later bound. */
-        pred = predict_lag;
-        evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, mean), NO_BOUND, &w->pred);
-        w->best = w->pred;
-        w->best_lag = pred;
-    } else {
-        w->pred = w->best;
-    }
-
-    /* lag_min - 1 is only a neighbour and the first arming test: needed
-       exactly when n <= threshold. */
-    b_sum = ssda__pitch_level(x + lag_min - 1u, k, mean);
-    evaluate(w, lag_min - 1u, w->level + b_sum,
-             full ? NO_BOUND : threshold_bound(thr, w->level + b_sum), &w->prev);
-    armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
-    if (!armed) {
-        /* lag_min - 1 lies in a dip already: a period just above lag_min
-           (f0 just below f0_max), or the lag-0 tail of a slow signal. The
-           first has its half-period peak near lag_min / 2, the second stays
-           low there. Exact up to rearm; a cut proves n > rearm. */
-        const uint32_t half = lag_min / 2u; /* >= 2 */
-        const uint32_t sh = w->level + ssda__pitch_level(x + half, k, mean);
-        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
-        armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
-    }
-
-    for (lag = lag_min; lag <= lag_max + 1u; lag++) {
+    for (lag = info->lag_min; lag <= lag_max + 1u; lag++) {
         const bool candidate = lag <= lag_max;
         uint32_t s;
         /* Slide B: drop x[lag - 1], add x[lag - 1 + K]. B stays <= K * 65535. */
         b_sum = b_sum - abs_dev(x[lag - 1u], mean) + abs_dev(x[lag - 1u + k], mean);
         s = w->level + b_sum;
-
         if (lag == pred) {
             w->cur = w->pred;
         } else {
-            uint32_t bound = NO_BOUND;
-            if (!full) {
-                /* Exact when n <= threshold; when not armed, also exact up
-                   to the re-arming level, so a cut proves n > rearm. */
-                bound = threshold_bound(armed || !candidate ? thr : rearm, s);
-                if (candidate) {
-                    uint32_t bb;
-                    if (w->best_lag == 0u) {
-                        bound = NO_BOUND; /* first candidate: summed in full (Fig. 9) */
-                    } else if (best_bound(&w->best, lag > w->best_lag, s, &bb) && bb > bound) {
-                        bound = bb;
-                    } else {
-                        /* the threshold's bound is the tighter one */
-                    }
-                }
-            }
-            evaluate(w, lag, s, bound, &w->cur);
+            evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, f.armed, rearm),
+                     &w->cur);
         }
-
         /* Neighbours wanted by the best lag and by the run minimum. */
-        if (best_need_right) {
+        if (f.best_need_right) {
             w->best_right = w->cur;
-            best_need_right = false;
+            f.best_need_right = false;
         }
-        if (run_need_right) {
+        if (f.run_need_right) {
             w->run_right = w->cur;
-            run_need_right = false;
+            f.run_need_right = false;
         }
-
         if (candidate && is_exact(&w->cur)) {
-            bool better;
-            if (w->best_lag == 0u) {
-                better = true;
-            } else if (lag > w->best_lag) {
-                better = n_less(&w->cur, &w->best);
-            } else {
-                better = !n_less(&w->best, &w->cur); /* before best: ties win */
-            }
-            if (better && lag != w->best_lag) {
-                w->best = w->cur;
-                w->best_lag = lag;
-                w->best_left = w->prev;
-                best_need_right = true;
-            } else if (lag == w->best_lag) {
-                w->best_left = w->prev; /* the predicted lag, reached by the scan */
-                best_need_right = true;
-            } else {
-                /* not better: the best lag stays */
-            }
+            note_best(w, lag, &f);
         }
-
         if (candidate && is_exact(&w->cur) && n_at_most_q15(&w->cur, thr)) {
-            if (!in_run) {
-                run_armed = armed; /* the run uses up the arming */
-                armed = false;
+            if (!f.in_run) {
+                f.run_armed = f.armed; /* the run uses up the arming */
+                f.armed = false;
             }
-            if (!in_run || n_less(&w->cur, &w->run)) {
+            if (!f.in_run || n_less(&w->cur, &w->run)) {
                 w->run = w->cur;
                 w->run_lag = lag;
                 w->run_left = w->prev;
-                run_need_right = true;
+                f.run_need_right = true;
             }
-            in_run = true;
-        } else if (in_run) {
-            /* The run ended at lag - 1. It is a dip if it was entered from a
-               peak, and its minimum is neither a lag_max that still falls
-               (a period beyond lag_max) nor a lag_min below which it still
-               falls (the tail of a dip below lag_min, e.g. a strong 2nd
-               harmonic's, which may now arm: its multiple follows). */
-            bool valid = run_armed &&
-                         (w->run_lag != lag_max || !n_less(&w->run_right, &w->run)) &&
-                         (w->run_lag != lag_min || !n_less(&w->run_left, &w->run));
-            in_run = false;
-            if (valid && !found) {
-                found = true;
-                w->t_lag = w->run_lag;
-                w->t_left = w->run_left;
-                w->t_mid = w->run;
-                w->t_right = w->run_right;
-                if (!full) {
-                    break; /* no later lag can change the choice */
-                }
-            }
+            f.in_run = true;
+        } else if (f.in_run && end_run(w, &f)) {
+            break; /* no later lag can change the choice */
         } else {
-            /* outside a run, and still outside */
+            /* outside a run, and still outside (or a run just ended) */
         }
-        if (!in_run && !armed && candidate && !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm))) {
-            armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
+        if (!f.in_run && !f.armed && candidate && !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm))) {
+            f.armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
         }
         w->prev = w->cur;
     }
 
-    if (!found) {
+    if (!f.found) {
         w->t_lag = w->best_lag;
         w->t_left = w->best_left;
         w->t_mid = w->best;
         w->t_right = w->best_right;
     }
-    return found;
+    return f.found;
 }
 
 void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,

@@ -10,9 +10,31 @@ static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
     return (cfg->flags & SSDA_MATCH_BOUNDS) != 0u ? a->width : w->width;
 }
 
-static bool fits(const ssda_source_t *s, uint32_t span)
+/* Plan and shape the plates of the streamed operands for the search: the
+   raster scan revisits a band of window-height rows moving down; the other
+   scans jump around the whole area. Out of line: the plans stay off the
+   frame the search runs under. */
+static SSDA_NOINLINE void shape_plates(ssda_source_t *area, const ssda_rect_t *ar,
+                                       ssda_source_t *window, const ssda_rect_t *wr,
+                                       const ssda_match_config_t *cfg)
 {
-    return s->view != NULL || ssda__stream_plate_fit_h(s, span, 0u) >= 1u;
+    ssda_source_plan_t plan;
+    if (area->view == NULL) {
+        const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
+        (void)ssda__stream_plate_plan(area, ar, area_span(cfg, ar, wr),
+                                      raster ? wr->height : ar->height, 1u, 0u, &plan);
+        /* A raster scan's band of window-height rows moves down one row at
+           a time: a plate with spare rows jumps by them (rows needed are
+           read once, each slide copies the band's rows in the arena). */
+        if (raster && plan.ph >= wr->height) {
+            plan.qy = (uint16_t)(plan.ph - wr->height + 1u);
+        }
+        ssda__stream_plate_use(area, &plan);
+    }
+    if (window->view == NULL) {
+        (void)ssda__stream_plate_plan(window, wr, wr->width, wr->height, 0u, 0u, &plan);
+        ssda__stream_plate_use(window, &plan);
+    }
 }
 
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
@@ -20,9 +42,9 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
                       const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
     static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
+    ssda_match_plan_t plan;
     ssda_rect_t ar, wr;
     ssda__rows_t a, w;
-    ssda__stream_rows_ctx_t actx, wctx;
     int err;
 
     if (area == NULL || window == NULL || result == NULL) {
@@ -50,30 +72,16 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
     if (cfg == NULL) {
         cfg = &defaults;
     }
-    err = ssda__match_check_config(cfg, ar.width, ar.height, wr.width, wr.height);
+    err = ssda__match_plan(cfg, ar.width, ar.height, wr.width, wr.height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!fits(area, area_span(cfg, &ar, &wr)) || !fits(window, wr.width)) {
+    if (!ssda__stream_holds(area, area_span(cfg, &ar, &wr), 1u, 0u) ||
+        !ssda__stream_holds(window, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    if (area->view == NULL) {
-        /* The raster scan revisits a band of window-height rows moving
-           down; the other scans jump around the whole area. */
-        const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
-        (void)ssda__stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
-                                raster ? wr.height : ar.height, 1u, 0u);
-        /* A raster scan's band of window-height rows moves down one row at
-           a time: a plate with spare rows jumps by them (rows needed are
-           read once, each slide copies the band's rows in the arena). */
-        if (raster && area->ph >= wr.height) {
-            area->qy = (uint16_t)(area->ph - wr.height + 1u);
-        }
-    }
-    if (window->view == NULL) {
-        (void)ssda__stream_plate_plan(window, &wr, wr.width, wr.height, 0u, 0u);
-    }
-    ssda__stream_rows_make(&a, &actx, area, &ar);
-    ssda__stream_rows_make(&w, &wctx, window, &wr);
-    return ssda__match_rows(&a, &w, cfg, result);
+    shape_plates(area, &ar, window, &wr, cfg);
+    ssda__stream_rows(&a, area, &ar);
+    ssda__stream_rows(&w, window, &wr);
+    return ssda__match_rows(&a, &w, &plan, cfg->predict_x, cfg->predict_y, result);
 }

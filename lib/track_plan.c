@@ -76,12 +76,14 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
     return err;
 }
 
-int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda__track_plan_t *plan)
+int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t first_w,
+                     uint32_t first_h, uint32_t second_w, uint32_t second_h,
+                     ssda_track_plan_t *plan)
 {
     const uint32_t maxval = format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
     /* built in *plan directly (no copy of a plan on the stack): on error it
        is scratch, which every caller discards */
+    ssda_match_config_t match; /* the search of every window */
     uint32_t pixels; /* win_w * win_h <= 65535^2 < 2^32 */
     int err = resolve_grid(cfg, second_w, second_h, &plan->grid);
     if (err != SSDA_OK) {
@@ -94,6 +96,8 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t se
     plan->predict = cfg->predict;
     plan->flags = cfg->flags;
     plan->mask_value = cfg->mask_value;
+    plan->first_w = (uint16_t)first_w;
+    plan->first_h = (uint16_t)first_h;
     if ((plan->flags & SSDA_TRACK_MASK) != 0u && plan->mask_value > maxval) {
         return SSDA_ERR_ARG;
     }
@@ -111,15 +115,15 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t se
         (plan->texture_threshold >= maxval || plan->texture_min_count > pixels / 2u)) {
         return SSDA_ERR_ARG;
     }
-    plan->match = cfg->match;
+    match = cfg->match;
     if (plan->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
-        if (plan->match.scan == (uint8_t)SSDA_SCAN_COARSE) {
+        if (match.scan == (uint8_t)SSDA_SCAN_COARSE) {
             return SSDA_ERR_ARG;
         }
-        if (plan->match.scan == (uint8_t)SSDA_SCAN_RASTER) {
-            plan->match.scan = (uint8_t)SSDA_SCAN_PREDICT;
+        if (match.scan == (uint8_t)SSDA_SCAN_RASTER) {
+            match.scan = (uint8_t)SSDA_SCAN_PREDICT;
         }
     }
-    return ssda__match_check_config(&plan->match, plan->grid.search_w, plan->grid.search_h,
-                                   plan->grid.win_w, plan->grid.win_h);
+    return ssda__match_plan(&match, plan->grid.search_w, plan->grid.search_h,
+                            plan->grid.win_w, plan->grid.win_h, &plan->match);
 }

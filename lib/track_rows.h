@@ -26,25 +26,17 @@ static inline bool ssda__track_out_fits(uint32_t count, size_t out_count)
     return out_count >= count;
 }
 
-/* A checked configuration with every default resolved. */
-typedef struct {
-    ssda_track_grid_t grid;
-    ssda_match_config_t match; /* scan set for the prediction mode */
-    uint32_t texture_threshold; /* resolved; < the format's maximum */
-    uint32_t texture_min_count; /* resolved; 1 .. win_w * win_h / 2 */
-    uint32_t mask_value;        /* <= the format's maximum */
-    uint8_t predict;
-    uint8_t flags;
-} ssda__track_plan_t;
-
 /*
- * Resolve and check cfg (never NULL) for images of the given format whose
- * SECOND is second_w x second_h: every error ssda_track documents for the
- * configuration (SSDA_ERR_SIZE, _ARG, _NULL, _BUFFER of the match options).
- * On error *plan holds scratch (the callers discard it).
+ * Resolve and check cfg (never NULL) for images of the given format, FIRST
+ * first_w x first_h and SECOND second_w x second_h, into *plan
+ * (ssda_track_plan_t, track.h):
+ * every error ssda_track documents for the configuration (SSDA_ERR_SIZE,
+ * _ARG, _NULL, _BUFFER of the match options). On error *plan holds scratch
+ * (the callers discard it).
  */
-SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda__track_plan_t *plan);
+SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format,
+                                   uint32_t first_w, uint32_t first_h, uint32_t second_w,
+                                   uint32_t second_h, ssda_track_plan_t *plan);
 
 /*
  * ssda_track over row sources. first and second are checked here (non-NULL,
@@ -59,60 +51,58 @@ SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t forma
  * what it wrote; argument errors still write nothing).
  */
 SSDA_INTERNAL int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
-                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
-                    size_t out_count, ssda_track_stats_t *stats);
+                                   const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                                   size_t out_count, ssda_track_stats_t *stats);
 
 /*
  * Where the row sources given to ssda__track_part lie in the images, for a
  * caller that keeps only a band of each image in RAM (the stream layer's
- * plates): pixel (0, 0) of first is FIRST's pixel (first_x, first_y) and
- * pixel (0, 0) of second is SECOND's (second_x, second_y); FIRST is
- * first_w x first_h pixels (the EDGE test uses these, not first's size).
+ * plates and push rings): pixel (0, 0) of first is FIRST's pixel (first_x,
+ * first_y) and pixel (0, 0) of second is SECOND's (second_x, second_y).
  * The search area and window of every non-EDGE window of the part must lie
- * inside first and second.
+ * inside first and second (the EDGE test uses FIRST's size from the plan,
+ * not first's). Whole images have the identity origin.
  */
 typedef struct {
-    uint32_t first_x, first_y, first_w, first_h;
+    uint32_t first_x, first_y;
     uint32_t second_x, second_y;
 } ssda__track_origin_t;
 
-/*
- * ssda__track_strip over grid rows row0 .. row1-1 only (row0 < row1 <=
- * plan->grid.rows), with row sources placed by origin (NULL: the whole
- * images). Prediction takes every row above row0 as solved, besides what
- * ssda__track_strip takes, so calling it row by row, strip by strip, gives
- * what one ssda__track_strip call per strip gives. Same returns and effects.
- */
-SSDA_INTERNAL int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
-                    ssda__track_plan_t *plan, uint32_t col0, uint32_t col1,
-                    uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
-                    ssda_track_vector_t *out, ssda_track_stats_t *acc);
+/* The identity origin (all zero): the row sources are the whole images. */
+SSDA_INTERNAL extern const ssda__track_origin_t ssda__track_origin_whole;
 
 /*
- * For callers that cut the grid into vertical strips (the stream layer):
- * solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of
- * every grid row, row by row, left to right within the strip. plan comes
- * from ssda__track_plan (its match.predict_x/y are scratch); first and second
- * must already satisfy ssda__track_rows' checks and out must hold the whole
- * grid (entry row * cols + col). Prediction takes as solved every window
- * left of col0 (so solve strips left to right) and the strip's windows
- * solved before; up-right neighbours in column col1 are not solved yet, so
- * with prediction on, the work (not the vectors, in exact modes) can differ
- * from one whole-grid call. Counts are added to *acc (zero it before the
- * first strip; windows counts the strip's windows). Returns SSDA_OK or a
- * fetch error unchanged, in which case *acc holds partial counts (the
- * callers discard it; it is not copied onto the caller's stack, to keep
- * the deepest call chain short) and out holds the strip's windows solved
- * before the failing one.
- * Inline, as ssda__track_part over every grid row of whole images: a frame
- * less on the deepest call chain.
+ * Solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of grid
+ * rows row0 .. row1-1 (row0 < row1 <= plan->grid.rows), row by row, left to
+ * right, with row sources placed by origin. plan comes from
+ * ssda__track_plan and is only read; first and second must already satisfy
+ * ssda__track_rows' checks and out must hold the whole grid (entry row *
+ * cols + col). For callers that cut the grid into vertical strips and
+ * bands of rows (the stream layer): prediction takes as solved every window
+ * left of col0 and above row0 (so solve strips left to right, rows top to
+ * bottom) and the part's windows solved before; up-right neighbours in
+ * column col1 are not solved yet, so with prediction on, the work (not the
+ * vectors, in exact modes) can differ from one whole-grid call. Counts are
+ * added to *acc (zero it before the first part; windows counts the part's
+ * windows). Returns SSDA_OK or a fetch error unchanged, in which case *acc
+ * holds partial counts (the callers discard it; it is not copied onto the
+ * caller's stack, to keep the deepest call chain short) and out holds the
+ * part's windows solved before the failing one.
  */
+SSDA_INTERNAL int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
+                                   const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                                   uint32_t row0, uint32_t row1,
+                                   const ssda__track_origin_t *origin, ssda_track_vector_t *out,
+                                   ssda_track_stats_t *acc);
+
+/* ssda__track_part over every grid row of whole images (the identity
+   origin): one vertical strip. */
 static inline int ssda__track_strip(const ssda__rows_t *first, const ssda__rows_t *second,
-                                   ssda__track_plan_t *plan, uint32_t col0, uint32_t col1,
-                                   ssda_track_vector_t *out, ssda_track_stats_t *acc)
+                                    const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                                    ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    return ssda__track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
-                           acc);
+    return ssda__track_part(first, second, plan, col0, col1, 0u, plan->grid.rows,
+                            &ssda__track_origin_whole, out, acc);
 }
 
 #endif /* SSDA_TRACK_ROWS_H */

@@ -251,13 +251,15 @@ static void test_plate_slides_keep_rows(void)
     ssda_source_config_t c;
     ssda_source_t s;
     ssda_rect_t all = {0, 0, IW, IH};
+    ssda_source_plan_t plan;
     const uint8_t *px;
     uint32_t y;
     make_images(6u);
     c = setup(&g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 8u, 2u, 1u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_plate_plan(&s, &all, IW, 8u, 3u, 0u));
-    TEST_ASSERT_EQUAL_UINT(8, s.ph);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_plate_plan(&s, &all, IW, 8u, 3u, 0u, &plan));
+    ssda__stream_plate_use(&s, &plan);
+    TEST_ASSERT_EQUAL_UINT(8, s.plate.ph);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_plate_fetch(&s, 0, 0, IW, &px)); /* rows 0..7 */
     TEST_ASSERT_EQUAL_UINT64(8u * row_bytes, s.stats.bytes_read);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_fetch(&s, 0, 8, IW, &px)); /* rows 3..10 */

@@ -254,7 +254,7 @@ static void test_strips_equal_whole_grid(void)
         for (width = 1; width <= 4u; width++) {
             ssda_track_config_t cfg;
             ssda_track_stats_t st_ram, acc;
-            ssda__track_plan_t plan;
+            ssda_track_plan_t plan;
             ssda_view_t a, b;
             ssda__rows_t ra, rb;
             fake_src_t fa, fb;
@@ -265,7 +265,7 @@ static void test_strips_equal_whole_grid(void)
             TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_ram, NMAX, &st_ram));
             fake_init(&fa, &ra, g_first, SSDA_PIX_U16);
             fake_init(&fb, &rb, g_second, SSDA_PIX_U16);
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_plan(&cfg, SSDA_PIX_U16, IMG, IMG, &plan));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_plan(&cfg, SSDA_PIX_U16, IMG, IMG, IMG, IMG, &plan));
             memset(&acc, 0, sizeof acc);
             memset(g_out, 0xA5, sizeof g_out);
             for (col0 = 0; col0 < plan.grid.cols; col0 += width) {

@@ -47,8 +47,10 @@ static void push_rows(void *ctx)
 /* A fresh job with rows 0 .. upto-1 pushed; the timed job pushes upto .. end-1. */
 static void prepare(push_job_t *j, uint32_t upto, uint32_t end)
 {
-    j->err = ssda_push_init_track(&j->push, IMG, IMG, SSDA_PIX_U8, SSDA_PUSH_SECOND, &j->first,
-                                  &j->cfg, j->out, GRID, &j->stats, g_ring, sizeof g_ring);
+    ssda_push_config_t pc = {IMG, IMG, SSDA_PIX_U8, SSDA_PUSH_SECOND, NULL, NULL, NULL,
+                             g_ring, sizeof g_ring};
+    pc.other = &j->first;
+    j->err = ssda_push_init_track(&j->push, &pc, &j->cfg, j->out, GRID, &j->stats);
     j->row0 = 0u;
     j->row1 = upto;
     push_rows(j);
