@@ -58,8 +58,8 @@ static int check_device(ssda_source_config_t *c)
    below 2^32) or SSDA_ERR_STRIDE. */
 static int image_extent(ssda_source_config_t *c, uint32_t row_bytes, uint32_t *extent)
 {
-    const uint32_t bpp = c->format;
     if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
+        const uint32_t bpp = c->format;
         /* tiles <= 65535^2 < 2^32 */
         uint32_t tiles = SSDA_DIV32((uint32_t)c->width + c->tile_w - 1u, c->tile_w) *
                          SSDA_DIV32((uint32_t)c->height + c->tile_h - 1u, c->tile_h);
