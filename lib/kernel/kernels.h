@@ -29,9 +29,9 @@ SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b,
    row r of a at a + r * astride bytes (b likewise), n * rows <= 65536.
    8-bit worst case 65536 * 255^2 = 4 261 478 400 < 2^32; 16-bit
    65536 * 65535^2 < 2^48. */
-uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+SSDA_INTERNAL uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
                       size_t bstride, uint32_t n, uint32_t rows);
-uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+SSDA_INTERNAL uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                        size_t bstride, uint32_t n, uint32_t rows);
 
 /* Name of the compiled kernel set ("portable", "sse2", "armv7em"). */
