@@ -34,9 +34,17 @@ typedef struct {
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
     int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
+    uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
+    uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
     bool u8;             /* 8-bit samples (else 16-bit) */
+    /* the plan's flags the per-position path tests, copied at the start
+       (one load from the engine, not two through the plan) */
+    bool use_ref;        /* positions are cut once they cannot beat ref */
+    bool bounds;         /* successive elimination active */
+    bool ramp_mode;      /* RAMP or AUTO_RAMP */
 #ifdef ENGINE_FALLBACK
+    bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
 #endif
     uint8_t n_best;      /* 0, 1 or 2 valid entries */
@@ -146,7 +154,7 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
    if it is the fallback so far (most pixels, then the tie rule). */
 static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint32_t pixels)
 {
-    if (!e->plan->fallback) {
+    if (!e->need_fb) {
         return; /* a mode whose first placement always completes */
     }
     if (e->have_fb && pixels == e->fb_pixels) {
@@ -199,8 +207,8 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
    plan's fixed cut, lowered to what can still beat the reference. */
 static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
 {
-    uint64_t cut_at = e->plan->fixed_cut;
-    if (e->plan->use_ref && e->ref != NULL) {
+    uint64_t cut_at = e->fixed_cut;
+    if (e->use_ref && e->ref != NULL) {
         /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
         const cand_t *ref = e->ref;
         bool before = y < ref->y || (y == ref->y && x < ref->x);
@@ -212,39 +220,21 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
     return cut_at;
 }
 
-/* A placement's first row (most placements are cut on it), in chunks of
-   SSDA_FIRST_ROW_CHUNK pixels with the cut tested after each but the last
-   (the caller tests the whole row): adds its SAD to *partial and returns
-   0, or the pixels summed when cut. */
-static SSDA_ALWAYS_INLINE uint32_t first_row(engine_t *e, const uint8_t *ap, const uint8_t *wp,
-                                             uint64_t *partial, uint64_t rest, uint64_t cut_at)
-{
-    uint32_t done = 0u;
-    while (done < e->L) {
-        uint32_t n = e->L - done < SSDA_FIRST_ROW_CHUNK ? e->L - done : SSDA_FIRST_ROW_CHUNK;
-        *partial += row_sad(e, ap + (size_t)done * e->area->format,
-                            wp + (size_t)done * e->area->format, n);
-        e->ops += n;
-        done += n;
-        if (done < e->L && *partial + rest >= cut_at) {
-            return done;
-        }
-    }
-    return 0u;
-}
-
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
  * summed over all pixels without being cut, 0 when cut, or a fetch error.
+ * Longer than the library's ~80 lines on purpose: it is the innermost
+ * per-position loop, and the first-row chunk loop moved into a helper
+ * (even always inlined, with the partial sum through a pointer) cost 2.3 %
+ * more instructions per search on the Cortex-M4 (tools/budget.sh,
+ * match.none), for the same results.
  */
 static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
-    const ssda_match_plan_t *plan = e->plan;
 #ifndef SSDA_CFG_NO_RAMP
-    const bool ramp = plan->ramp &&
-                      (plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
+    const bool ramp = e->ramp_mode &&
+                      (e->plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
 #endif
-    const uint32_t row_step = plan->row_step;
     uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
     uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
     const uint64_t cut_at = cut_level(e, x, y); /* cut once partial + rest >= cut_at */
@@ -259,13 +249,13 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         return 0;
     }
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (plan->bounds) {
+    if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
             NOTE_CUT(e, x, y, 0u, 0u);
             return 0;
         }
-        if (row_step != 1u) {
+        if (e->row_step != 1u) {
             rest = 0u; /* spread order: the bound serves as a pre-check only */
         }
     }
@@ -292,16 +282,24 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         }
 #endif
         if (k == 0u && e->L >= 2u * SSDA_FIRST_ROW_CHUNK) {
-            uint32_t done = first_row(e, ap, wp, &partial, rest, cut_at);
-            if (done != 0u) {
-                NOTE_CUT(e, x, y, partial, done);
-                return 0;
+            /* Most placements are cut on their first row: test it in chunks. */
+            uint32_t done = 0u;
+            while (done < e->L) {
+                uint32_t n = e->L - done < SSDA_FIRST_ROW_CHUNK ? e->L - done : SSDA_FIRST_ROW_CHUNK;
+                partial += row_sad(e, ap + (size_t)done * e->area->format,
+                                   wp + (size_t)done * e->area->format, n);
+                e->ops += n;
+                done += n;
+                if (done < e->L && partial + rest >= cut_at) {
+                    NOTE_CUT(e, x, y, partial, done);
+                    return 0;
+                }
             }
         } else {
             partial += row_sad(e, ap, wp, e->L);
             e->ops += e->L;
         }
-        r += row_step;
+        r += e->row_step;
         if (r >= e->M) {
             r -= e->M;
         }
@@ -684,6 +682,14 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.px = predict_x;
     e.py = predict_y;
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+    e.row_step = plan->row_step;
+    e.fixed_cut = plan->fixed_cut;
+    e.use_ref = plan->use_ref;
+    e.bounds = plan->bounds;
+    e.ramp_mode = plan->ramp;
+#ifdef ENGINE_FALLBACK
+    e.need_fb = plan->fallback;
+#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     if (plan->bounds) {
         err = build_bounds(&e);
