@@ -20,7 +20,17 @@ void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride, uint3
 
 void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view)
 {
-    ssda__rows_mem(rows, view->data, view->stride, view->width, view->height, view->format);
+    /* ssda__rows_mem of the view's fields, written out: a search on views
+       links this one constructor only */
+    rows->base = (const uint8_t *)view->data;
+    rows->stride = view->stride;
+    rows->fetch = NULL;
+    rows->ctx = NULL;
+    rows->x0 = 0u;
+    rows->y0 = 0u;
+    rows->width = view->width;
+    rows->height = view->height;
+    rows->format = view->format;
 }
 
 void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx, uint32_t w,
@@ -168,20 +178,11 @@ int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t a
         plan->row_step = spread_step(win_h);
     }
 #endif
-    plan->bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
-    plan->ramp = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
-    plan->fallback = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
+    plan->flags = cfg->flags;
     plan->fixed_cut = UINT64_MAX;
     if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
         plan->fixed_cut = cfg->fixed_threshold + 1u;
     }
-    plan->use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                    mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
-                    (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
-                     (plan->bounds || cfg->scan == (uint8_t)SSDA_SCAN_COARSE));
-    plan->exact = cfg->scan != (uint8_t)SSDA_SCAN_COARSE &&
-                  (mode == (uint8_t)SSDA_THRESHOLD_AUTO || mode == (uint8_t)SSDA_THRESHOLD_NONE ||
-                   mode == (uint8_t)SSDA_THRESHOLD_FIXED);
     return SSDA_OK;
 }
 

@@ -665,6 +665,7 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      ssda_match_result_t *result)
 {
     engine_t e = {0};
+    const uint8_t mode = plan->threshold;
     int err;
 #ifdef SSDA_CFG_NO_U16
     if (area->format != (uint8_t)SSDA_PIX_U8) {
@@ -684,14 +685,18 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
     e.row_step = plan->row_step;
     e.fixed_cut = plan->fixed_cut;
-    e.use_ref = plan->use_ref;
-    e.bounds = plan->bounds;
-    e.ramp_mode = plan->ramp;
+    /* the mode's flags, derived from the plan */
+    e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
 #ifdef ENGINE_FALLBACK
-    e.need_fb = plan->fallback;
+    e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
 #endif
+    e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
+                (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
+                 (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (plan->bounds) {
+    if (e.bounds) {
         err = build_bounds(&e);
         if (err != SSDA_OK) {
             return err;
@@ -728,7 +733,10 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
         result->sad = e.best.sad;
         result->x = (uint16_t)e.best.x;
         result->y = (uint16_t)e.best.y;
-        result->exact = plan->exact;
+        result->exact = plan->scan != (uint8_t)SSDA_SCAN_COARSE &&
+                        (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                         mode == (uint8_t)SSDA_THRESHOLD_NONE ||
+                         mode == (uint8_t)SSDA_THRESHOLD_FIXED);
     }
     result->positions = e.positions;
     result->completed = e.completed;

@@ -150,11 +150,7 @@ typedef struct {
     uint16_t coarse_step; /* SSDA_SCAN_COARSE grid step (default resolved) */
     uint8_t threshold;    /* ssda_threshold_t */
     uint8_t scan;         /* ssda_scan_t */
-    bool bounds;          /* successive elimination on (never with NONE) */
-    bool use_ref;         /* positions are cut once they cannot beat the reference */
-    bool ramp;            /* RAMP or AUTO_RAMP */
-    bool fallback;        /* FIXED or RAMP: the all-cut fallback may be needed */
-    bool exact;           /* a completed best is the true minimum */
+    uint8_t flags;        /* SSDA_MATCH_BOUNDS or 0 */
 } ssda_match_plan_t;
 
 /* Outcome of one search. */
