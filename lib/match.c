@@ -131,6 +131,8 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
     return SSDA_OK;
 }
 
+const ssda_match_config_t ssda__match_defaults; /* all zero */
+
 #ifndef SSDA_CFG_NO_SPREAD
 static uint32_t gcd_u32(uint32_t a, uint32_t b)
 {
@@ -213,7 +215,6 @@ static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
 int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
     ssda_match_plan_t plan;
     ssda__rows_t a, w;
     int err;
@@ -225,7 +226,7 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
         return err;
     }
     if (cfg == NULL) {
-        cfg = &defaults;
+        cfg = &ssda__match_defaults;
     }
     err = ssda__match_plan(cfg, area->width, area->height, window->width, window->height,
                            &plan);
