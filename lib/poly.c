@@ -46,10 +46,10 @@ int ssda_poly_init(ssda_poly_t *poly, uint16_t ref_w, uint16_t ref_h, uint8_t or
     return SSDA_OK;
 }
 
-ssda__w_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx, int32_t dy)
+ssda__i128_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx, int32_t dy)
 {
     const uint32_t terms = SSDA_POLY_TERMS(p->order);
-    ssda__w_t sum = {0u, 0u};
+    ssda__i128_t sum = {0u, 0u}; /* hi, lo */
     uint32_t t;
     for (t = 0u; t < terms; t++) {
         const uint32_t i = ssda__poly_ex[t], j = ssda__poly_ey[t];
@@ -73,12 +73,12 @@ ssda__w_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx, int32
 void ssda__poly_fd_start(const ssda_poly_t *p, const int64_t *c, int32_t dx0, int32_t dy,
                          ssda__poly_fd_t *fd)
 {
-    const ssda__w_t p0 = ssda__poly_p(p, c, dx0, dy);
-    const ssda__w_t p1 = ssda__poly_p(p, c, dx0 + 1, dy);
-    const ssda__w_t p2 = ssda__poly_p(p, c, dx0 + 2, dy);
-    const ssda__w_t p3 = ssda__poly_p(p, c, dx0 + 3, dy);
-    const ssda__w_t e1 = ssda__w_sub(p1, p0), e2 = ssda__w_sub(p2, p1), e3 = ssda__w_sub(p3, p2);
-    const ssda__w_t f1 = ssda__w_sub(e2, e1), f2 = ssda__w_sub(e3, e2);
+    const ssda__i128_t p0 = ssda__poly_p(p, c, dx0, dy);
+    const ssda__i128_t p1 = ssda__poly_p(p, c, dx0 + 1, dy);
+    const ssda__i128_t p2 = ssda__poly_p(p, c, dx0 + 2, dy);
+    const ssda__i128_t p3 = ssda__poly_p(p, c, dx0 + 3, dy);
+    const ssda__i128_t e1 = ssda__w_sub(p1, p0), e2 = ssda__w_sub(p2, p1), e3 = ssda__w_sub(p3, p2);
+    const ssda__i128_t f1 = ssda__w_sub(e2, e1), f2 = ssda__w_sub(e3, e2);
     fd->d[0] = p0;
     fd->d[1] = e1;
     fd->d[2] = f1;
@@ -86,10 +86,10 @@ void ssda__poly_fd_start(const ssda_poly_t *p, const int64_t *c, int32_t dx0, in
 }
 
 /* floor(P / 2^64) (P's high word, signed) as int32, if it fits. */
-static bool poly_q8_of(ssda__w_t pv, int32_t *out)
+static bool poly_q8_of(ssda__i128_t pv, int32_t *out)
 {
-    const ssda__w_t q = {pv.hi, ssda__w_neg_p(pv) ? UINT64_MAX : 0u};
-    const int64_t v = ssda__w_to64(q);
+    const ssda__i128_t q = {ssda__w_neg_p(pv) ? UINT64_MAX : 0u, pv.hi}; /* hi, lo */
+    const int64_t v = ssda__i128_to64(q);
     if (v < INT32_MIN || v > INT32_MAX) {
         return false;
     }

@@ -19,26 +19,26 @@
 /* Exact sums over the used pairs (n <= 2^14, |phi| <= 2^30, |d| < 2^32):
    g <= 2^14 * 2^60 = 2^74, r <= 2^14 * 2^62 = 2^76. */
 typedef struct {
-    ssda__w_t g[TRI_SIZE];                /* sum phi_s phi_t, Q60 */
-    ssda__w_t r[2][SSDA_POLY_MAX_TERMS];  /* sum phi_s d, Q38 (x, y) */
+    ssda__i128_t g[TRI_SIZE];                /* sum phi_s phi_t, Q60 */
+    ssda__i128_t r[2][SSDA_POLY_MAX_TERMS];  /* sum phi_s d, Q38 (x, y) */
     uint32_t count;
 } sums_t;
 
 /* The factor and the solution. */
 typedef struct {
     int64_t l[TRI_SIZE];                  /* Cholesky factor of the mean sums, Q30 */
-    ssda__w_t c[2][SSDA_POLY_MAX_TERMS];  /* displacement coefficients, Q24 */
+    ssda__i128_t c[2][SSDA_POLY_MAX_TERMS];  /* displacement coefficients, Q24 */
     uint32_t cond;
     uint8_t steps;
 } solve_t;
 
-static const ssda__w_t W_ONE = {1u, 0u};
+static const ssda__i128_t W_ONE = {0u, 1u}; /* hi, lo */
 
 /* floor((p + 2^(n-1)) / 2^n): p rounded to n fewer fraction bits. */
 static int64_t round_shift(int64_t p, uint32_t n)
 {
-    const ssda__w_t half = ssda__w_shl(W_ONE, n - 1u);
-    return ssda__w_to64(ssda__w_sar(ssda__w_add(ssda__w_i64(p), half), n));
+    const ssda__i128_t half = ssda__w_shl(W_ONE, n - 1u);
+    return ssda__i128_to64(ssda__w_sar(ssda__w_add(ssda__w_i64(p), half), n));
 }
 
 /* Normalised terms of a pair's reference position, Q30. False if it lies
@@ -79,11 +79,11 @@ static void sums_update(sums_t *s, const ssda_poly_pair_t *pr, const int64_t *ph
     uint32_t i, j, a;
     for (i = 0u; i < m; i++) {
         for (j = 0u; j <= i; j++) {
-            const ssda__w_t v = ssda__w_mul64(phi[i], phi[j]); /* <= 2^60 */
+            const ssda__i128_t v = ssda__w_mul64(phi[i], phi[j]); /* <= 2^60 */
             s->g[TRI(i, j)] = add ? ssda__w_add(s->g[TRI(i, j)], v) : ssda__w_sub(s->g[TRI(i, j)], v);
         }
         for (a = 0u; a < 2u; a++) {
-            const ssda__w_t v = ssda__w_mul64(phi[i], d[a]); /* < 2^62 */
+            const ssda__i128_t v = ssda__w_mul64(phi[i], d[a]); /* < 2^62 */
             s->r[a][i] = add ? ssda__w_add(s->r[a][i], v) : ssda__w_sub(s->r[a][i], v);
         }
     }
@@ -91,9 +91,9 @@ static void sums_update(sums_t *s, const ssda_poly_pair_t *pr, const int64_t *ph
 }
 
 /* |v| <= 2^e. */
-static bool w_small(ssda__w_t v, uint32_t e)
+static bool w_small(ssda__i128_t v, uint32_t e)
 {
-    const ssda__w_t lim = ssda__w_shl(W_ONE, e);
+    const ssda__i128_t lim = ssda__w_shl(W_ONE, e);
     return !ssda__w_lt(lim, v) && !ssda__w_lt(v, ssda__w_neg(lim));
 }
 
@@ -102,14 +102,14 @@ static bool w_small(ssda__w_t v, uint32_t e)
    128 bits: |l| <= 2^31 is checked, so each product is below 2^62. */
 static int factor(const sums_t *s, uint32_t m, solve_t *out)
 {
-    const ssda__w_t n = ssda__w_i64((int64_t)s->count);
+    const ssda__i128_t n = ssda__w_i64((int64_t)s->count);
     uint64_t pmax = 0u, pmin = UINT64_MAX;
     uint32_t i, j, k;
     for (j = 0u; j < m; j++) {
         /* the mean diagonal (<= 2^60) minus the squares of the row so far:
            the pivot^2 (Schur complement), >= 0 up to rounding */
-        const ssda__w_t diag = ssda__w_div_round(s->g[TRI(j, j)], n);
-        ssda__w_t piv = diag;
+        const ssda__i128_t diag = ssda__w_div_round(s->g[TRI(j, j)], n);
+        ssda__i128_t piv = diag;
         int64_t lj;
         for (k = 0u; k < j; k++) {
             piv = ssda__w_sub(piv, ssda__w_mul64(out->l[TRI(j, k)], out->l[TRI(j, k)]));
@@ -118,13 +118,13 @@ static int factor(const sums_t *s, uint32_t m, solve_t *out)
             return SSDA_ERR_SIZE;
         }
         /* 0 < piv <= diag <= 2^60 */
-        lj = (int64_t)ssda_isqrt64(piv.lo);
+        lj = (int64_t)ssda__isqrt64(piv.lo);
         out->l[TRI(j, j)] = lj;
         pmax = piv.lo > pmax ? piv.lo : pmax;
         pmin = piv.lo < pmin ? piv.lo : pmin;
         for (i = j + 1u; i < m; i++) {
-            ssda__w_t num = ssda__w_div_round(s->g[TRI(i, j)], n); /* |.| <= 2^60 */
-            ssda__w_t q;
+            ssda__i128_t num = ssda__w_div_round(s->g[TRI(i, j)], n); /* |.| <= 2^60 */
+            ssda__i128_t q;
             for (k = 0u; k < j; k++) {
                 num = ssda__w_sub(num, ssda__w_mul64(out->l[TRI(i, k)], out->l[TRI(j, k)]));
             }
@@ -132,11 +132,11 @@ static int factor(const sums_t *s, uint32_t m, solve_t *out)
             if (!w_small(q, 31u)) { /* true factor: |l_ij| <= sqrt(mean_ii) <= 2^30 */
                 return SSDA_ERR_SIZE;
             }
-            out->l[TRI(i, j)] = ssda__w_to64(q);
+            out->l[TRI(i, j)] = ssda__i128_to64(q);
         }
     }
     {
-        const ssda__w_t q = ssda__w_div_floor(ssda__w_i64((int64_t)pmax), ssda__w_i64((int64_t)pmin));
+        const ssda__i128_t q = ssda__w_div_floor(ssda__w_i64((int64_t)pmax), ssda__w_i64((int64_t)pmin));
         out->cond = q.hi != 0u || q.lo > UINT32_MAX ? UINT32_MAX : (uint32_t)q.lo;
     }
     return SSDA_OK;
@@ -145,12 +145,12 @@ static int factor(const sums_t *s, uint32_t m, solve_t *out)
 /* Solve (L L^T) x = b: b in Q84 (mean sums scaled by 2^46), x in Q24.
    SSDA_ERR_OVERFLOW when an intermediate leaves its bound (|z| <= 2^90,
    |x| <= 2^48: a map no image pair has). */
-static int solve(const int64_t *l, uint32_t m, const ssda__w_t *b, ssda__w_t *x)
+static int solve(const int64_t *l, uint32_t m, const ssda__i128_t *b, ssda__i128_t *x)
 {
-    ssda__w_t z[SSDA_POLY_MAX_TERMS];
+    ssda__i128_t z[SSDA_POLY_MAX_TERMS];
     uint32_t i, k;
     for (i = 0u; i < m; i++) {
-        ssda__w_t acc = b[i]; /* |b| <= 2^124 */
+        ssda__i128_t acc = b[i]; /* |b| <= 2^124 */
         for (k = 0u; k < i; k++) { /* |l| <= 2^31, |z| <= 2^90: < 2^121 each */
             acc = ssda__w_sub(acc, ssda__w_mul(z[k], l[TRI(i, k)]));
         }
@@ -161,7 +161,7 @@ static int solve(const int64_t *l, uint32_t m, const ssda__w_t *b, ssda__w_t *x)
     }
     i = m;
     while (i > 0u) {
-        ssda__w_t acc;
+        ssda__i128_t acc;
         i--;
         acc = z[i];
         for (k = i + 1u; k < m; k++) { /* |x| <= 2^48: < 2^79 each */
@@ -180,7 +180,7 @@ static int solve(const int64_t *l, uint32_t m, const ssda__w_t *b, ssda__w_t *x)
    |G c| <= 10 * 2^74 * 2^48 < 2^126). */
 static int fit_sums(const sums_t *s, uint32_t m, solve_t *out)
 {
-    const ssda__w_t n = ssda__w_i64((int64_t)s->count);
+    const ssda__i128_t n = ssda__w_i64((int64_t)s->count);
     uint32_t a, i, k, step;
     int err = factor(s, m, out);
     if (err != SSDA_OK) {
@@ -188,17 +188,17 @@ static int fit_sums(const sums_t *s, uint32_t m, solve_t *out)
     }
     out->steps = 0u;
     for (a = 0u; a < 2u; a++) {
-        ssda__w_t b[SSDA_POLY_MAX_TERMS], dx[SSDA_POLY_MAX_TERMS];
+        ssda__i128_t b[SSDA_POLY_MAX_TERMS], dx[SSDA_POLY_MAX_TERMS];
         for (i = 0u; i < m; i++) {
             out->c[a][i] = ssda__w_i64(0);
         }
         for (step = 0u; step <= FIT_MAX_STEPS; step++) {
             bool moved = false;
             for (i = 0u; i < m; i++) {
-                ssda__w_t e = ssda__w_shl(s->r[a][i], 46u);
+                ssda__i128_t e = ssda__w_shl(s->r[a][i], 46u);
                 for (k = 0u; k < m; k++) {
-                    const ssda__w_t g = i >= k ? s->g[TRI(i, k)] : s->g[TRI(k, i)];
-                    e = ssda__w_sub(e, ssda__w_mul(g, ssda__w_to64(out->c[a][k])));
+                    const ssda__i128_t g = i >= k ? s->g[TRI(i, k)] : s->g[TRI(k, i)];
+                    e = ssda__w_sub(e, ssda__w_mul(g, ssda__i128_to64(out->c[a][k])));
                 }
                 b[i] = ssda__w_div_round(e, n);
             }
@@ -234,7 +234,7 @@ static uint32_t residual_of(const solve_t *sv, uint32_t m, const ssda_poly_pair_
     uint64_t e2 = 0u;
     uint32_t a, t;
     for (a = 0u; a < 2u; a++) {
-        ssda__w_t f = ssda__w_shl(W_ONE, 45u); /* Q54 -> Q8: + 2^45, floor / 2^46 */
+        ssda__i128_t f = ssda__w_shl(W_ONE, 45u); /* Q54 -> Q8: + 2^45, floor / 2^46 */
         for (t = 0u; t < m; t++) { /* |phi| <= 2^30, |c| <= 2^48 */
             f = ssda__w_add(f, ssda__w_mul(sv->c[a][t], phi[t]));
         }
@@ -249,7 +249,7 @@ static uint32_t residual_of(const solve_t *sv, uint32_t m, const ssda_poly_pair_
         }
     }
     *sq = e2;
-    return ssda_isqrt64(e2);
+    return ssda__isqrt64(e2);
 }
 
 /* The used pair with the largest residual (ties: lowest index) under the
@@ -287,15 +287,15 @@ static void write_out(const ssda_poly_t *dom, const ssda_poly_pair_t *pairs, siz
                       uint8_t *used, ssda_poly_fit_result_t *result)
 {
     ssda_poly_fit_result_t res;
-    ssda__w_t sum = {0u, 0u}; /* <= n * 2^63 < 2^77 */
+    ssda__i128_t sum = {0u, 0u}; /* hi, lo; <= n * 2^63 < 2^77 */
     uint32_t t;
     size_t k;
     ssda_poly_t p;
     (void)memset(&res, 0, sizeof res);
     p = *dom;
     for (t = 0u; t < m; t++) {
-        p.u_q24[t] = ssda__w_to64(sv->c[0][t]);
-        p.v_q24[t] = ssda__w_to64(sv->c[1][t]);
+        p.u_q24[t] = ssda__i128_to64(sv->c[0][t]);
+        p.v_q24[t] = ssda__i128_to64(sv->c[1][t]);
     }
     /* x = X + dx: X = cx + 2^kx xn (|c| <= 2^48: no overflow) */
     p.u_q24[0] += (int64_t)p.cx * ssda__pow2(24u);
@@ -317,14 +317,14 @@ static void write_out(const ssda_poly_t *dom, const ssda_poly_pair_t *pairs, siz
         if (flags[k] != 0u) {
             res.used++;
             res.max_q8 = r > res.max_q8 ? r : res.max_q8;
-            const ssda__w_t w = {sq, 0u};
+            const ssda__i128_t w = {0u, sq}; /* hi, lo */
             sum = ssda__w_add(sum, w);
         }
     }
     {
         /* the mean of squares of at most 2^63 each: < 2^64 */
-        const ssda__w_t mean = ssda__w_div_round(sum, ssda__w_i64((int64_t)res.used));
-        res.rms_q8 = mean.hi != 0u ? UINT32_MAX : ssda_isqrt64(mean.lo);
+        const ssda__i128_t mean = ssda__w_div_round(sum, ssda__w_i64((int64_t)res.used));
+        res.rms_q8 = mean.hi != 0u ? UINT32_MAX : ssda__isqrt64(mean.lo);
     }
     res.cond = sv->cond;
     res.rejected = rejected;

@@ -7,7 +7,7 @@
 #define SSDA_POLY_INTERNAL_H
 
 #include "ssda/poly.h"
-#include "i128.h"
+#include "wide.h"
 
 /* Exponents of xn (i) and yn (j) of each term, in poly.h's order. */
 SSDA_INTERNAL extern const uint8_t ssda__poly_ex[SSDA_POLY_MAX_TERMS];
@@ -23,13 +23,13 @@ SSDA_INTERNAL bool ssda__poly_valid(const ssda_poly_t *p);
    map's u_q24 or v_q24), at dx = X - cx, dy = Y - cy with
    |dx| <= 2^(kx+1) + 3, |dy| <= 2^(ky+1) + 3: every term is below 2^118,
    the sum below 2^122. */
-SSDA_INTERNAL ssda__w_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx,
+SSDA_INTERNAL ssda__i128_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx,
                                      int32_t dy);
 
 /* Forward differences of P along a row: d[0] = P(x0), d[k] = the k-th
    difference at x0 (d[3] constant: the row is a cubic in x). */
 typedef struct {
-    ssda__w_t d[4];
+    ssda__i128_t d[4];
 } ssda__poly_fd_t;
 
 /* Start the differences of coefficients c at (dx0, dy): from P at

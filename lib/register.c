@@ -4,7 +4,7 @@
  */
 #include <string.h>
 #include "ssda/register.h"
-#include "i128.h"
+#include "wide.h"
 #include "stream_internal.h"
 #include "fixmath.h"
 
@@ -72,7 +72,7 @@ static int copy_rect(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint3
 
 /* n sum v^2 - (sum v)^2 of the win x win window at (x, y): exact (n <=
    65025, sum v < 2^32, sum v^2 < 2^48; the result < 2^64 + fits 128). */
-static int window_spread(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t win, ssda__w_t *out)
+static int window_spread(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t win, ssda__i128_t *out)
 {
     uint64_t s1 = 0u, s2 = 0u;
     uint32_t r, i;
@@ -114,7 +114,7 @@ static void area_of(const reg_cfg_t *c, uint32_t wx, uint32_t wy, int64_t *a)
    edge of an area could not tell a window half outside the image; only
    when no window has such an area are the others taken. */
 static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *cell,
-                         uint32_t mw, uint32_t mh, uint32_t *bx, uint32_t *by, ssda__w_t *best)
+                         uint32_t mw, uint32_t mh, uint32_t *bx, uint32_t *by, ssda__i128_t *best)
 {
     uint32_t pass, x, y;
     bool any = false;
@@ -122,7 +122,7 @@ static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *c
         for (y = cell[2]; y + c->win <= cell[3]; y += c->step) {
             for (x = cell[0]; x + c->win <= cell[1]; x += c->step) {
                 int64_t a[4];
-                ssda__w_t v;
+                ssda__i128_t v;
                 int err;
                 area_of(c, x, y, a);
                 if (pass == 0u && (a[0] < 0 || a[1] < 0 || a[2] > (int64_t)mw || a[3] > (int64_t)mh)) {
@@ -148,13 +148,13 @@ static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *c
    0: the vertex of a fit through (-1, a), (0, m), (1, b). */
 static int32_t vertex_q8(int64_t a, int64_t b, int64_t den)
 {
-    ssda__w_t q;
+    ssda__i128_t q;
     int64_t v;
     if (den == 0) {
         return 0;
     }
     q = ssda__w_div_round(ssda__w_mul64(a - b, 128), ssda__w_i64(den));
-    v = ssda__w_fits64(q) ? ssda__w_to64(q) : 0;
+    v = ssda__w_fits64(q) ? ssda__i128_to64(q) : 0;
     v = v > 128 ? 128 : (v < -128 ? -128 : v);
     return (int32_t)v;
 }
@@ -280,7 +280,7 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
     found_t f;
     int64_t ax0, ay0, ax1, ay1;
     uint32_t aw, ah;
-    ssda__w_t spread = {0u, 0u};
+    ssda__i128_t spread = {0u, 0u}; /* hi, lo */
     ssda_view_t av, wv;
     int err;
     (void)memset(pt, 0, sizeof *pt);
@@ -292,7 +292,7 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
     }
     {
         /* texture = spread / n^2 (grey^2), saturated */
-        const ssda__w_t t = ssda__w_div_floor(spread, ssda__w_i64(n2));
+        const ssda__i128_t t = ssda__w_div_floor(spread, ssda__w_i64(n2));
         pt->texture = t.hi != 0u || t.lo > UINT32_MAX ? UINT32_MAX : (uint32_t)t.lo;
     }
     {
@@ -370,7 +370,7 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
     if (ref == NULL || mov == NULL || out == NULL || work == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(ref) || !stream_ready(mov)) {
+    if (!ssda__stream_ready(ref) || !ssda__stream_ready(mov)) {
         return SSDA_ERR_STATE;
     }
     if (ref->cfg.format != mov->cfg.format) {
@@ -380,7 +380,7 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
     if (err != SSDA_OK) {
         return err;
     }
-    if (stream_plates_clash(ref, mov)) {
+    if (ssda__stream_plates_clash(ref, mov)) {
         return SSDA_ERR_ARG;
     }
     if (SSDA_DIV32(ref->cfg.width, c.gx) < c.win || SSDA_DIV32(ref->cfg.height, c.gy) < c.win ||
@@ -394,9 +394,9 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
         return SSDA_ERR_BUFFER;
     }
     /* a streamed source must hold the widest span it is asked for */
-    if ((ref->view == NULL && stream_plate_fit_w(ref, 1u, 0u) < c.win) ||
-        (mov->view == NULL && stream_plate_fit_w(mov, 1u, 0u) < c.search &&
-         stream_plate_fit_w(mov, 1u, 0u) < mov->cfg.width)) {
+    if ((ref->view == NULL && ssda__stream_plate_fit_w(ref, 1u, 0u) < c.win) ||
+        (mov->view == NULL && ssda__stream_plate_fit_w(mov, 1u, 0u) < c.search &&
+         ssda__stream_plate_fit_w(mov, 1u, 0u) < mov->cfg.width)) {
         return SSDA_ERR_BUFFER;
     }
     w.win = (uint8_t *)work;

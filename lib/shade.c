@@ -5,10 +5,9 @@
 #include <string.h>
 #include "ssda/shade.h"
 #include "fixmath.h"
-#include "i128.h"
+#include "wide.h"
+#include "state.h"
 
-#define SHADE_OPEN 1u
-#define SHADE_DONE 2u
 
 /* floor(a * b / 2^30) for |a * b| < 2^62 (shifted as unsigned). */
 static int64_t mul_q30(int64_t a, int64_t b)
@@ -77,20 +76,20 @@ int ssda_shade_init(ssda_shade_t *sh, uint16_t width, uint16_t height, uint8_t f
         s.step_x = SSDA_DIV64_32(nw, width);
         s.step_y = SSDA_DIV64_32(nh, height);
     }
-    s.state = SHADE_OPEN;
+    s.magic = SSDA__MAGIC_SHADE_OPEN;
     *sh = s;
     return SSDA_OK;
 }
 
-static ssda__w_t load(const uint64_t *w)
+static ssda__i128_t load(const uint64_t *w)
 {
-    ssda__w_t v;
+    ssda__i128_t v;
     v.lo = w[0];
     v.hi = w[1];
     return v;
 }
 
-static void store(uint64_t *w, ssda__w_t v)
+static void store(uint64_t *w, ssda__i128_t v)
 {
     w[0] = v.lo;
     w[1] = v.hi;
@@ -104,7 +103,7 @@ int ssda_shade_add_row(ssda_shade_t *sh, const void *row)
     if (sh == NULL || row == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (sh->state != SHADE_OPEN || (sh->images == UINT16_MAX)) {
+    if (!ssda__valid(sh->magic, SSDA__MAGIC_SHADE_OPEN) || (sh->images == UINT16_MAX)) {
         return SSDA_ERR_STATE;
     }
     for (x = 0u; x < sh->width; x++) {
@@ -235,12 +234,12 @@ static void find_centre(ssda_shade_t *sh, int32_t sign)
 
 int ssda_shade_finish(ssda_shade_t *sh, uint8_t mode)
 {
-    ssda__w_t den;
+    ssda__i128_t den;
     uint32_t p, q;
     if (sh == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (sh->state != SHADE_OPEN || sh->images == 0u || sh->y != 0u) {
+    if (!ssda__valid(sh->magic, SSDA__MAGIC_SHADE_OPEN) || sh->images == 0u || sh->y != 0u) {
         return SSDA_ERR_STATE;
     }
     if (mode > (uint8_t)SSDA_SHADE_CENTRE_MIN) {
@@ -259,11 +258,11 @@ int ssda_shade_finish(ssda_shade_t *sh, uint8_t mode)
                 s *= 2;
             }
             /* |acc| <= n w h 65535 2^30, so |K| <= 4 * 65535 * 2^8 < 2^27 */
-            sh->k_q8[p * 3u + q] = (int32_t)ssda__w_to64(
+            sh->k_q8[p * 3u + q] = (int32_t)ssda__i128_to64(
                 ssda__w_div_round(ssda__w_mul(load(sh->acc[p * 3u + q]), s), den));
         }
     }
-    sh->state = SHADE_DONE;
+    sh->magic = SSDA__MAGIC_SHADE_DONE;
     find_centre(sh, mode == (uint8_t)SSDA_SHADE_CENTRE_MAX ? 1 : -1);
     return SSDA_OK;
 }
@@ -273,7 +272,7 @@ int ssda_shade_set_centre(ssda_shade_t *sh, uint16_t x, uint16_t y)
     if (sh == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (sh->state != SHADE_DONE) {
+    if (!ssda__valid(sh->magic, SSDA__MAGIC_SHADE_DONE)) {
         return SSDA_ERR_STATE;
     }
     if (x >= sh->width || y >= sh->height) {
@@ -290,7 +289,7 @@ int ssda_shade_eval(const ssda_shade_t *sh, uint32_t x, uint32_t y, int32_t *s_q
     if (sh == NULL || s_q8 == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (sh->state != SHADE_DONE) {
+    if (!ssda__valid(sh->magic, SSDA__MAGIC_SHADE_DONE)) {
         return SSDA_ERR_STATE;
     }
     if (x >= sh->width || y >= sh->height) {
@@ -308,7 +307,7 @@ int ssda_shade_apply_row(const ssda_shade_t *sh, uint32_t y, const void *in, voi
     if (sh == NULL || in == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (sh->state != SHADE_DONE) {
+    if (!ssda__valid(sh->magic, SSDA__MAGIC_SHADE_DONE)) {
         return SSDA_ERR_STATE;
     }
     if (y >= sh->height) {

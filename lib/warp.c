@@ -5,8 +5,8 @@
 #include <string.h>
 #include "warp_internal.h"
 #include "stream_internal.h"
+#include "state.h"
 
-#define WARP_READY 0x57u
 
 /* Where the sampled pixels are: the plate of a streamed source or the
    whole image in RAM. x0, y0: image position of `base`; pw x ph pixels
@@ -39,10 +39,10 @@ static void cache_set(cache_t *c, const ssda_source_t *s, bool bilinear)
         c->ph = s->cfg.height;
     } else {
         c->base = (const uint8_t *)s->cfg.arena;
-        c->pitch = s->pitch;
+        c->pitch = s->plate.pitch;
         c->x0 = s->px0;
         c->y0 = s->py0;
-        c->pw = s->rows != 0u ? s->pw : 0u;
+        c->pw = s->rows != 0u ? s->plate.pw : 0u;
         c->ph = s->rows;
     }
     c->x0_q8 = (uint64_t)c->x0 << 8;
@@ -70,7 +70,7 @@ int ssda_warp_init(ssda_warp_t *job, const ssda_warp_config_t *cfg, ssda_source_
         src == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(src)) {
+    if (!ssda__stream_ready(src)) {
         return SSDA_ERR_STATE;
     }
     format = src->cfg.format;
@@ -108,16 +108,16 @@ int ssda_warp_init(ssda_warp_t *job, const ssda_warp_config_t *cfg, ssda_source_
     j.fill = cfg->fill;
     j.resample = cfg->resample;
     j.format = format;
-    j.ready = WARP_READY;
+    j.magic = SSDA__MAGIC_WARP; /* last (state.h) */
     *job = j;
     return SSDA_OK;
 }
 
 /* The high word of P: floor(256 * coordinate), as a signed value. */
-static int64_t warp_q8_of(ssda__w_t p)
+static int64_t warp_q8_of(ssda__i128_t p)
 {
-    const ssda__w_t h = {p.hi, ssda__w_neg_p(p) ? UINT64_MAX : 0u};
-    return ssda__w_to64(h);
+    const ssda__i128_t h = {ssda__w_neg_p(p) ? UINT64_MAX : 0u, p.hi}; /* hi, lo */
+    return ssda__i128_to64(h);
 }
 
 /* The source rectangle of tile [x0, x0+n) x [y0, y0+m) of the output: the
@@ -181,7 +181,7 @@ static int place(tile_t *t, uint32_t xa, uint32_t xb, uint32_t ya, uint32_t yb)
 {
     ssda_source_t *s = t->job->src;
     const uint32_t W = s->cfg.width, H = s->cfg.height;
-    const uint32_t pw = s->pw, ph = s->ph;
+    const uint32_t pw = s->plate.pw, ph = s->plate.ph;
     uint32_t x0 = s->px0, y0;
     int err;
     if (s->rows == 0u || xa < s->px0 || xb >= (uint32_t)s->px0 + pw) {
@@ -200,7 +200,7 @@ static int place(tile_t *t, uint32_t xa, uint32_t xb, uint32_t ya, uint32_t yb)
         y0 = yb + 1u > ph ? yb + 1u - ph : 0u;
     }
     y0 = y0 > H - ph ? H - ph : y0;
-    err = stream_plate_place(s, x0, y0);
+    err = ssda__stream_plate_place(s, x0, y0);
     t->moves++;
     cache_set(&t->c, s, t->job->resample == (uint8_t)SSDA_WARP_BILINEAR);
     return err;
@@ -277,7 +277,7 @@ static inline uint32_t blend(uint32_t p00, uint32_t p01, uint32_t p10, uint32_t 
    that a row whose v falls along it (a rotation one way) does not move the
    plate once per pixel. Only when they fit the plate; else the pixels
    move it as needed. */
-static int segment_rows(tile_t *t, uint32_t x, uint32_t y, uint32_t n, ssda__w_t v_first)
+static int segment_rows(tile_t *t, uint32_t x, uint32_t y, uint32_t n, ssda__i128_t v_first)
 {
     const ssda_warp_t *job = t->job;
     const ssda_poly_t *p = &job->map;
@@ -293,7 +293,7 @@ static int segment_rows(tile_t *t, uint32_t x, uint32_t y, uint32_t n, ssda__w_t
     uint32_t xa;
     ra = ra < (int64_t)t->region.y ? (int64_t)t->region.y : ra;
     rb = rb >= (int64_t)t->region.y + t->region.height ? (int64_t)t->region.y + t->region.height - 1 : rb;
-    if (s->view != NULL || !t->has_region || ra > rb || rb - ra + 1 > (int64_t)s->ph ||
+    if (s->view != NULL || !t->has_region || ra > rb || rb - ra + 1 > (int64_t)s->plate.ph ||
         (t->c.ph != 0u && ra >= (int64_t)t->c.y0 && rb < (int64_t)c_end)) {
         return SSDA_OK;
     }
@@ -379,7 +379,7 @@ static void tile_begin(tile_t *t, uint32_t x0, uint32_t y0, uint32_t n, uint32_t
             span = 2u;
         }
         /* the arena holds a span x 2 plate (checked at init): no error */
-        (void)stream_plate_plan(s, &t->region, span, rows, 1u, 0u);
+        (void)ssda__stream_plate_shape(s, &t->region, span, rows, 1u, 0u);
     }
     cache_set(&t->c, s, bil);
 }
@@ -392,7 +392,7 @@ int ssda_warp_run(ssda_warp_t *job, ssda_warp_stats_t *stats)
     if (job == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (job->ready != WARP_READY) {
+    if (!ssda__valid(job->magic, SSDA__MAGIC_WARP)) {
         return SSDA_ERR_STATE;
     }
     (void)memset(&t, 0, sizeof t);

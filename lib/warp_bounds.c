@@ -10,10 +10,10 @@ static uint64_t mag(int64_t v)
 }
 
 /* ceil(a / 2^n) for a >= 0, saturated at BOUND_MAX. */
-static int64_t ceil_shift(ssda__w_t a, uint32_t n)
+static int64_t ceil_shift(ssda__i128_t a, uint32_t n)
 {
-    const ssda__w_t one = {1u, 0u};
-    const ssda__w_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__w_shl(one, n), one)), n);
+    const ssda__i128_t one = {0u, 1u}; /* hi, lo */
+    const ssda__i128_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__w_shl(one, n), one)), n);
     return q.hi != 0u || q.lo > (uint64_t)BOUND_MAX ? BOUND_MAX : (int64_t)q.lo;
 }
 
@@ -21,11 +21,11 @@ int64_t ssda__warp_slope(const ssda_poly_t *p, const int64_t *c, uint32_t axis, 
 {
     const uint32_t terms = SSDA_POLY_TERMS(p->order);
     const uint32_t k = axis == 0u ? p->kx : p->ky;
-    ssda__w_t sum = {0u, 0u};
+    ssda__i128_t sum = {0u, 0u}; /* hi, lo */
     uint32_t t;
     for (t = 0u; t < terms; t++) {
         const uint32_t e = axis == 0u ? ssda__poly_ex[t] : ssda__poly_ey[t];
-        const ssda__w_t a = {mag(c[t]), 0u};
+        const ssda__i128_t a = {0u, mag(c[t])}; /* hi, lo */
         /* |c| <= 2^63, e * s < 2^18: < 2^81; ten terms < 2^85 */
         sum = ssda__w_add(sum, ssda__w_mul(a, (int64_t)e * (int64_t)s));
     }
@@ -40,7 +40,7 @@ int64_t ssda__warp_curve(const ssda_poly_t *p, const int64_t *c, uint32_t sx, ui
     uint32_t t;
     for (t = 0u; t < terms; t++) {
         const int64_t i = (int64_t)ssda__poly_ex[t], j = (int64_t)ssda__poly_ey[t];
-        const ssda__w_t a = {mag(c[t]), 0u};
+        const ssda__i128_t a = {0u, mag(c[t])}; /* hi, lo */
         /* |c| i(i-1) sx^2 <= 2^63 * 6 * 2^32 < 2^98, over 2^(2k + 19):
            2^-24 (Q24) * 2^8 (Q8) / 8; the parts are rounded up apart */
         const int64_t fx = ceil_shift(ssda__w_mul(a, i * (i > 0 ? i - 1 : 0) * sx2), 2u * p->kx + 19u);

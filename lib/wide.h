@@ -2,12 +2,16 @@
  * wide.h - internal: exact unsigned products and comparisons wider than 64
  * bits, in portable C99 (32-bit partial products, no compiler extension),
  * for the correlation search (ncc.h): its comparisons need num^2 * var, up
- * to 2^124 * 2^62 = 2^186.
+ * to 2^124 * 2^62 = 2^186; and signed 128-bit arithmetic (ssda__i128_t,
+ * ssda__w_*) for the polynomial maps (poly.h, warp.h) and shading sums.
  */
 #ifndef SSDA_WIDE_H
 #define SSDA_WIDE_H
 
+#include <stdbool.h>
 #include <stdint.h>
+
+#include "compiler.h"
 
 typedef struct {
     uint64_t hi, lo; /* value = hi * 2^64 + lo */
@@ -20,7 +24,7 @@ typedef struct {
 /* a * b exactly: on compilers with a native 128-bit type (64-bit GCC and
    clang) through it, elsewhere from four 32-bit partial products
    (ssda__mul_64x64_parts); the same value either way. */
-ssda__u128_t ssda__mul_64x64_parts(uint64_t a, uint64_t b);
+SSDA_INTERNAL ssda__u128_t ssda__mul_64x64_parts(uint64_t a, uint64_t b);
 #if defined(__SIZEOF_INT128__) && (defined(__GNUC__) || defined(__clang__))
 __extension__ typedef unsigned __int128 ssda__native_u128_t;
 static inline ssda__u128_t ssda__mul_64x64(uint64_t a, uint64_t b)
@@ -36,7 +40,7 @@ static inline ssda__u128_t ssda__mul_64x64(uint64_t a, uint64_t b)
 #endif
 
 /* a * b exactly (< 2^192). */
-ssda__u192_t ssda__mul_128x64(ssda__u128_t a, uint64_t b);
+SSDA_INTERNAL ssda__u192_t ssda__mul_128x64(ssda__u128_t a, uint64_t b);
 
 /* -1, 0 or 1 as a <, = or > b. */
 static inline int ssda__cmp_128(ssda__u128_t a, ssda__u128_t b)
@@ -49,11 +53,11 @@ static inline int ssda__cmp_128(ssda__u128_t a, ssda__u128_t b)
     }
     return 0;
 }
-int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b);
+SSDA_INTERNAL int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b);
 
 /* floor(n / d) for d > 0 and n.hi < d (the quotient fits 64 bits), by
    restoring shift-and-subtract (64 steps). */
-uint64_t ssda__div_128_64(ssda__u128_t n, uint64_t d);
+SSDA_INTERNAL uint64_t ssda__div_128_64(ssda__u128_t n, uint64_t d);
 
 /* Number of significant bits of v (0 for 0, 64 for v >= 2^63). */
 #if defined(__GNUC__) || defined(__clang__)
@@ -62,7 +66,106 @@ static inline uint32_t ssda__bitlen64(uint64_t v)
     return v == 0u ? 0u : 64u - (uint32_t)__builtin_clzll(v);
 }
 #else
-uint32_t ssda__bitlen64(uint64_t v);
+SSDA_INTERNAL uint32_t ssda__bitlen64(uint64_t v);
 #endif
+
+/* Signed 128-bit integers on the same two words, in two's complement (hi's
+   top bit is the sign), for the exact polynomial evaluation of the warp
+   (add only, per pixel) and the least-squares fit and shading sums
+   (multiply and divide, per fit or row). Arithmetic is modulo 2^128, so
+   callers keep every value inside (-2^127, 2^127) (each use writes its
+   bound beside it). Unsigned words only: no signed overflow, no
+   implementation-defined shift. */
+typedef ssda__u128_t ssda__i128_t;
+
+static inline ssda__i128_t ssda__w_i64(int64_t v)
+{
+    ssda__i128_t r;
+    r.lo = (uint64_t)v; /* two's complement: the conversion is modulo 2^64 */
+    r.hi = v < 0 ? UINT64_MAX : 0u;
+    return r;
+}
+
+static inline ssda__i128_t ssda__w_add(ssda__i128_t a, ssda__i128_t b)
+{
+    ssda__i128_t r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
+    return r;
+}
+
+static inline ssda__i128_t ssda__w_sub(ssda__i128_t a, ssda__i128_t b)
+{
+    ssda__i128_t r;
+    r.lo = a.lo - b.lo;
+    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
+    return r;
+}
+
+static inline bool ssda__w_neg_p(ssda__i128_t a)
+{
+    return (a.hi >> 63) != 0u;
+}
+
+static inline bool ssda__w_zero_p(ssda__i128_t a)
+{
+    return a.lo == 0u && a.hi == 0u;
+}
+
+static inline ssda__i128_t ssda__w_neg(ssda__i128_t a)
+{
+    const ssda__i128_t z = {0u, 0u}; /* hi, lo */
+    return ssda__w_sub(z, a);
+}
+
+/* a < b, signed. */
+static inline bool ssda__w_lt(ssda__i128_t a, ssda__i128_t b)
+{
+    const uint64_t sa = a.hi ^ ((uint64_t)1u << 63); /* order-preserving bias */
+    const uint64_t sb = b.hi ^ ((uint64_t)1u << 63);
+    return sa < sb || (sa == sb && a.lo < b.lo);
+}
+
+/* a * 2^n, 0 <= n < 128 (bits shifted out are lost). */
+SSDA_INTERNAL ssda__i128_t ssda__w_shl(ssda__i128_t a, uint32_t n);
+
+/* floor(a / 2^n), 0 <= n < 128 (arithmetic shift). */
+SSDA_INTERNAL ssda__i128_t ssda__w_sar(ssda__i128_t a, uint32_t n);
+
+/* a * b exactly (|a|, |b| <= 2^63: |a * b| <= 2^126). */
+SSDA_INTERNAL ssda__i128_t ssda__w_mul64(int64_t a, int64_t b);
+
+/* a * b modulo 2^128: exact when the true product lies in (-2^127, 2^127). */
+SSDA_INTERNAL ssda__i128_t ssda__w_mul(ssda__i128_t a, int64_t b);
+
+/* n / d rounded to nearest, halves away from zero; d != 0. The quotient
+   must fit (it does whenever |n| < 2^127). Shift-and-subtract, 128 steps:
+   for setup paths (fits, per-row coefficients), never per pixel. */
+SSDA_INTERNAL ssda__i128_t ssda__w_div_round(ssda__i128_t n, ssda__i128_t d);
+
+/* floor(n / d); d > 0. As above. */
+SSDA_INTERNAL ssda__i128_t ssda__w_div_floor(ssda__i128_t n, ssda__i128_t d);
+
+/* Does a lie in [INT64_MIN, INT64_MAX]? */
+static inline bool ssda__w_fits64(ssda__i128_t a)
+{
+    return a.hi == ((a.lo >> 63) != 0u ? UINT64_MAX : 0u);
+}
+
+/* a as int64_t; a must fit (ssda__w_fits64). */
+static inline int64_t ssda__i128_to64(ssda__i128_t a)
+{
+    /* two's complement words back to a signed value without an
+       implementation-defined conversion of a value above INT64_MAX */
+    const uint64_t inv = ~a.lo;
+    return (a.lo >> 63) != 0u ? -(int64_t)inv - 1 : (int64_t)a.lo;
+}
+
+/* 2^n as int64_t, 0 <= n <= 62 (an unsigned shift: no signed shift). */
+static inline int64_t ssda__pow2(uint32_t n)
+{
+    const uint64_t v = (uint64_t)1u << n;
+    return (int64_t)v;
+}
 
 #endif /* SSDA_WIDE_H */

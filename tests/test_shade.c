@@ -7,6 +7,7 @@
  */
 #include <string.h>
 #include "unity.h"
+#include "state.h"
 #include "ssda/shade.h"
 #include "test_rng.h"
 #include "test_signal.h"
@@ -173,7 +174,7 @@ static void test_known_shading_centre_and_correction(void)
     /* the dark corner: the minimum of S, opposite the peak */
     {
         ssda_shade_t sh2 = sh;
-        sh2.state = 1; /* refinish from the same sums */
+        sh2.magic = SSDA__MAGIC_SHADE_OPEN; /* refinish from the same sums */
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_finish(&sh2, SSDA_SHADE_CENTRE_MIN));
         TEST_ASSERT_UINT32_WITHIN(2, (x0 + w / 2) % w, sh2.centre_x);
         TEST_ASSERT_UINT32_WITHIN(2, (y0 + h / 2) % h, sh2.centre_y);
@@ -288,7 +289,7 @@ static void test_clamp(void)
     memset(in, 255, sizeof in);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_apply_row(&sh, 2, in, out));
     TEST_ASSERT_EACH_EQUAL_UINT8(255, out, 8);
-    sh.state = 1;
+    sh.magic = SSDA__MAGIC_SHADE_OPEN;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_finish(&sh, SSDA_SHADE_CENTRE_MIN));
     memset(in, 0, sizeof in);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_apply_row(&sh, 2, in, out));

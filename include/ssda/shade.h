@@ -61,7 +61,7 @@ typedef struct {
     uint16_t y;            /* next row to push */
     uint16_t images;       /* complete images pushed (<= 65535) */
     uint8_t format;
-    uint8_t state;
+    uint32_t magic;        /* which phase: accumulating or finished */
     /* public after ssda_shade_finish (or ssda_shade_set_centre): */
     uint16_t centre_x, centre_y; /* the shading centre, px */
     int32_t centre_q8;     /* S at the centre, Q8 grey */

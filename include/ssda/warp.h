@@ -123,7 +123,7 @@ typedef struct {
     uint16_t fill;
     uint8_t resample;
     uint8_t format;
-    uint8_t ready;
+    uint32_t magic; /* written last by ssda_warp_init */
 } ssda_warp_t;
 
 /* What a run did. */
