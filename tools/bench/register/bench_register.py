@@ -22,7 +22,7 @@ Pairs (REF, MOV, truth: REF pixel -> MOV pixel):
 
 Mapping error: RMS and max distance to the truth over a 21 x 21 grid of REF
 points (those whose true position lies inside MOV). CPU time: medians of
---reps interleaved runs, user + system; for ssda the whole process (PNG
+--reps interleaved runs (ssda, ssda SAD, ECC, ORB in turn), user + system; for ssda the whole process (PNG
 decoding, control points, fit, resampling, PNG encoding) and its own
 control points + fit; for the peers the estimate and the estimate +
 resampling (no file I/O).
@@ -293,27 +293,31 @@ def main():
     print("Load average at start: %.2f; reps %d (medians); error: RMS / max px over a %dx%d grid; "
           "time: CPU s" % (load, a.reps, GRID, GRID))
     print()
-    print("| pair | ssda seed | ssda wide | ssda sad (wide) | GDAL -order N (wide's points) | ECC affine | ECC homography | ORB + RANSAC affine | ssda wide CPU: whole / points+fit | ECC affine CPU: estimate / +resample | ORB CPU |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| pair | ssda seed | ssda wide | ssda sad (wide) | GDAL -order N (wide's points) | ECC affine | ECC homography | ORB + RANSAC affine | ssda wide CPU: whole / offset+points+fit | ssda sad CPU: offset+points+fit | ECC affine CPU: estimate / +resample | ECC (+resample) / ssda whole | ORB CPU | gdalwarp CPU |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for label, rp, mp, ref, mov, truth, order in cases:
         h, w = ref.shape
         mh, mw = mov.shape
         check = check_points(w, h, truth, mw, mh)
         res = {}
         seed, doc_seed, _, _ = run_ssda(a.ssda, rp, mp, tmp, order, "absncc", 1)
-        sad, doc_s, _, _ = run_ssda(a.ssda, rp, mp, tmp, order, "sad", 1, WIDE)
-        ours, doc, t_whole, t_own = run_ssda(a.ssda, rp, mp, tmp, order, "absncc", a.reps, WIDE)
-        ecc_t, orb_t = [], []
+        ecc_t, orb_t, ours_t, sad_t = [], [], [], []
         ea = eh = ob = None
-        for _ in range(a.reps):
+        for _ in range(a.reps):  # interleaved: ssda, SAD, ECC, ORB in turn
+            ours, doc, tw, to = run_ssda(a.ssda, rp, mp, tmp, order, "absncc", 1, WIDE)
+            if ours is not None:
+                ours_t.append((tw, to))
+            sad, doc_s, _, ts = run_ssda(a.ssda, rp, mp, tmp, order, "sad", 1, WIDE)
+            if sad is not None:
+                sad_t.append(ts)
             ea, te, tr = ecc(ref, mov, cv2.MOTION_AFFINE)
             ecc_t.append((te, tr if tr is not None else float("nan")))
             ob, to, _ = orb(ref, mov)
             orb_t.append(to)
         eh, _, _ = ecc(ref, mov, cv2.MOTION_HOMOGRAPHY)
-        gd = None
+        gd = t_gd = None
         if ours is not None:
-            gd, _, _ = gdal(doc, mp, tmp, order, check)
+            gd, t_gd, _ = gdal(doc, mp, tmp, order, check)
         if truth is None:
             # no truth: ECC affine as the reference, and ssda's round trip
             ref_map = ea
@@ -333,12 +337,18 @@ def main():
             row[1] = "fail: " + str(doc_seed)[:70]
         if ours is None:
             row[2] = "fail: " + str(doc)[:70]
+        t_whole = float(np.median([x[0] for x in ours_t])) if ours_t else float("nan")
+        t_own = float(np.median([x[1] for x in ours_t])) if ours_t else float("nan")
+        t_sad = float(np.median(sad_t)) if sad_t else None
         te = float(np.median([x[0] for x in ecc_t]))
         trs = [x[1] for x in ecc_t if not math.isnan(x[1])]
         tr = float(np.median(trs)) if trs else float("nan")
         row.append("%.3f / %.3f" % (t_whole, t_own) if ours is not None else "-")
+        row.append("%.3f" % t_sad if sad is not None else "-")
         row.append("%.3f / %.3f" % (te, tr))
+        row.append("%.1fx" % (tr / t_whole) if ours is not None and not math.isnan(tr) else "-")
         row.append("%.3f" % float(np.median(orb_t)))
+        row.append("%.3f" % t_gd if t_gd is not None else "-")
         print("| " + " | ".join(row) + " |")
         sys.stdout.flush()
 
