@@ -29,6 +29,7 @@ int main(void)
 #endif
 #ifdef SSDA_BUDGET_HAVE_SYMREG
     jobs_symreg();
+#endif
 #ifdef SSDA_BUDGET_HAVE_REGISTER
     jobs_register();
 #endif

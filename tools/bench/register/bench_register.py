@@ -20,12 +20,15 @@ Pairs (REF, MOV, truth: REF pixel -> MOV pixel):
   multiband bands 2-5 against band 1 (no truth: agreement with ECC affine, and
   ssda's round trip REF -> MOV -> REF).
 
+[used/cells]: control points used by the fit / cells of the grid.
 Mapping error: RMS and max distance to the truth over a 21 x 21 grid of REF
 points (those whose true position lies inside MOV). CPU time: medians of
 --reps interleaved runs (ssda, ssda SAD, ECC, ORB in turn), user + system; for ssda the whole process (PNG
-decoding, control points, fit, resampling, PNG encoding) and its own
-control points + fit; for the peers the estimate and the estimate +
-resampling (no file I/O).
+decoding, offset, control points, fit, resampling, PNG and JSON encoding),
+its registration without file I/O (offset + points + fit + warp, clock()
+inside the process) and its map alone (offset + points + fit); the
+control points alone with |rho| and with SAD (the seed's speed claim); for
+the peers the estimate and the estimate + resampling (no file I/O).
 
   bench_register.py --ssda build/bench/tools/cli/ssda --data ../shared/data [--reps 3]
 """
@@ -143,9 +146,10 @@ def run_ssda(ssda, ref_path, mov_path, tmp, order, metric, reps, extra=()):
             return None, txt.strip().splitlines()[-1] if txt.strip() else "exit %d" % rc, None, None
         doc = json.load(open(js))
         times.append(t)
-        own.append(doc["cpu_offset_s"] + doc["cpu_points_s"] + doc["cpu_fit_s"])
+        own.append((doc["cpu_offset_s"] + doc["cpu_points_s"] + doc["cpu_fit_s"],
+                    doc["cpu_warp_s"], doc["cpu_points_s"]))
     m = poly_map(doc["coeffs_x"], doc["coeffs_y"])
-    return m, doc, float(np.median(times)), float(np.median(own))
+    return m, doc, float(np.median(times)), tuple(np.median(np.array(own), 0))
 
 
 def ecc(ref, mov, mode):
@@ -293,7 +297,7 @@ def main():
     print("Load average at start: %.2f; reps %d (medians); error: RMS / max px over a %dx%d grid; "
           "time: CPU s" % (load, a.reps, GRID, GRID))
     print()
-    print("| pair | ssda seed | ssda wide | ssda sad (wide) | GDAL -order N (wide's points) | ECC affine | ECC homography | ORB + RANSAC affine | ssda wide CPU: whole / offset+points+fit | ssda sad CPU: offset+points+fit | ECC affine CPU: estimate / +resample | ECC (+resample) / ssda whole | ORB CPU | gdalwarp CPU |")
+    print("| pair | ssda seed | ssda wide | ssda sad (wide) | GDAL -order N (wide's points) | ECC affine | ECC homography | ORB + RANSAC affine | ssda wide CPU: process / map + warp / map | control points CPU: \\|rho\\| / SAD | ECC affine CPU: estimate / +resample | ECC (+resample) over ssda: map + warp / process | ORB CPU | gdalwarp CPU |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for label, rp, mp, ref, mov, truth, order in cases:
         h, w = ref.shape
@@ -328,25 +332,35 @@ def main():
             if ours is not None and back is not None:
                 p = check
                 rt = np.hypot(*(back(ours(p)) - p).T)
-                row[2] += " (round trip %.3f / %.2f)" % (math.sqrt(np.mean(rt * rt)), rt.max())
+                row[2] += " (round trip %.3f / %.2f" % (math.sqrt(np.mean(rt * rt)), rt.max())
+                if ob is not None:
+                    row[2] += "; vs ORB %s" % fmt(err_of(ours, ob, check))
+                row[2] += ")"
         else:
             row = [label]
             for est in (seed, ours, sad, gd, ea, eh, ob):
                 row.append(fmt(err_of(est, truth, check)))
         if seed is None:
-            row[1] = "fail: " + str(doc_seed)[:70]
+            row[1] = "fail: " + str(doc_seed).split(": ", 2)[-1][:60]
+        else:
+            row[1] += " [%d/%d]" % (doc_seed["used"], doc_seed["grid_x"] * doc_seed["grid_y"])
         if ours is None:
-            row[2] = "fail: " + str(doc)[:70]
+            row[2] = "fail: " + str(doc).split(": ", 2)[-1][:60]
+        else:
+            row[2] += " [%d/%d]" % (doc["used"], doc["grid_x"] * doc["grid_y"])
         t_whole = float(np.median([x[0] for x in ours_t])) if ours_t else float("nan")
-        t_own = float(np.median([x[1] for x in ours_t])) if ours_t else float("nan")
-        t_sad = float(np.median(sad_t)) if sad_t else None
+        t_map = float(np.median([x[1][0] for x in ours_t])) if ours_t else float("nan")
+        t_reg = float(np.median([x[1][0] + x[1][1] for x in ours_t])) if ours_t else float("nan")
+        t_pts = float(np.median([x[1][2] for x in ours_t])) if ours_t else float("nan")
+        t_sad = float(np.median([x[2] for x in sad_t])) if sad_t else None
         te = float(np.median([x[0] for x in ecc_t]))
         trs = [x[1] for x in ecc_t if not math.isnan(x[1])]
         tr = float(np.median(trs)) if trs else float("nan")
-        row.append("%.3f / %.3f" % (t_whole, t_own) if ours is not None else "-")
-        row.append("%.3f" % t_sad if sad is not None else "-")
+        row.append("%.3f / %.3f / %.3f" % (t_whole, t_reg, t_map) if ours is not None else "-")
+        row.append("%.4f / %.4f" % (t_pts, t_sad) if sad is not None and ours is not None else "-")
         row.append("%.3f / %.3f" % (te, tr))
-        row.append("%.1fx" % (tr / t_whole) if ours is not None and not math.isnan(tr) else "-")
+        row.append("%.1fx / %.1fx" % (tr / t_reg, tr / t_whole)
+                   if ours is not None and not math.isnan(tr) else "-")
         row.append("%.3f" % float(np.median(orb_t)))
         row.append("%.3f" % t_gd if t_gd is not None else "-")
         print("| " + " | ".join(row) + " |")
