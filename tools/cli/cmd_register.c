@@ -886,6 +886,21 @@ done:
     return rc;
 }
 
+/* A map fixed by fewer than half the cells is often wrong without its
+   residuals showing it: a large rotation, low texture or a repeated
+   pattern leave a few chance matches, which fit a low-order map closely
+   (measured in docs/registration.md). Said on stderr, also under -q. */
+static void few_points_warning(const char *cmd, const reg_one_t *r)
+{
+    if ((size_t)r->fit.used * 2u < r->ncells) {
+        fprintf(stderr,
+                "ssda %s: warning: '%s': only %u of %zu cells gave the map's control points; "
+                "it may be wrong (large rotation, low texture, repeated pattern): check "
+                "--flicker or --checker\n",
+                cmd, r->path, r->fit.used, r->ncells);
+    }
+}
+
 static void summary(const reg_one_t *r, const reg_opts_t *o)
 {
     double px[10], py[10];
@@ -992,6 +1007,9 @@ int cmd_register(int argc, char **argv)
         }
     }
     rc = write_outputs(a.cmd, &ref, r, n, &o, a.pos[0]);
+    for (i = 0; rc == CLI_OK && i < n; i++) {
+        few_points_warning(a.cmd, &r[i]);
+    }
     if (rc == CLI_OK && !o.quiet) {
         for (i = 0; i < n; i++) {
             summary(&r[i], &o);

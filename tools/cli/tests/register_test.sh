@@ -73,6 +73,11 @@ run 0 register ref.png mov.png mov.png -o a.png -o b.png --stack s3.png --json t
 # JSON on stdout
 run 0 register ref.png mov.png --json - && grep -q '"coeffs_x"' out.txt || fail "--json - printed no JSON"
 
+# a map from fewer than half the cells: a warning on stderr, also with -q (a
+# tiny outlier bound drops pairs down to terms + 1 = 4 of 16)
+run 0 register ref.png mov.png --order 1 --max-residual 0.01 --json w.json -q &&
+  stderr_has "only 4 of 16 cells gave the map's control points"
+run 0 register ref.png mov.png --json w2.json -q && [ -s err.txt ] && fail "warning on a good run: $(cat err.txt)"
 # too few control points: exit 1, the counts named, no output at all
 run 1 register ref.png flat.png -o x.png --json x.json --flicker x.gif && {
   stderr_has "found 0 control points of 16 cells; order 2 needs at least 6"; absent x.png x.json x.gif
