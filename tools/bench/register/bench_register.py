@@ -341,11 +341,11 @@ def main():
             for est in (seed, ours, sad, gd, ea, eh, ob):
                 row.append(fmt(err_of(est, truth, check)))
         if seed is None:
-            row[1] = "fail: " + str(doc_seed).split(": ", 2)[-1][:60]
+            row[1] = "fail: " + str(doc_seed).split(": ", 2)[-1].split(" (")[0]
         else:
             row[1] += " [%d/%d]" % (doc_seed["used"], doc_seed["grid_x"] * doc_seed["grid_y"])
         if ours is None:
-            row[2] = "fail: " + str(doc).split(": ", 2)[-1][:60]
+            row[2] = "fail: " + str(doc).split(": ", 2)[-1].split(" (")[0]
         else:
             row[2] += " [%d/%d]" % (doc["used"], doc["grid_x"] * doc["grid_y"])
         t_whole = float(np.median([x[0] for x in ours_t])) if ours_t else float("nan")
