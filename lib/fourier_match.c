@@ -127,56 +127,75 @@ static uint32_t refine(const zpoly_t *p, uint32_t j, bool fixed)
     return lo + width / 2u;
 }
 
-/* Scores at the GRID points alpha_j = j / GRID turn: there k alpha_j is a
+/* Score at grid point j, alpha_j = j / GRID turn: there k alpha_j is a
    whole number of grid steps, so exp(i k alpha_j) comes from one table of
-   GRID entries (no interpolation, no per-term cos/sin). */
-static void grid_scores(const zpoly_t *p, bool fixed, uint64_t *g)
+   GRID entries (Q14: the scan only ranks the grid points). */
+static uint64_t grid_score(const zpoly_t *p, bool fixed, const int16_t *tc, const int16_t *ts,
+                           uint32_t j)
 {
-    int32_t tc[GRID], ts[GRID];
-    uint32_t j, t;
-    for (j = 0u; j < GRID; j++) {
-        tc[j] = ssda__cos_q15(j * CELL);
-        ts[j] = ssda__sin_q15(j * CELL);
+    zval_t v = {0, 0, 0, 0};
+    uint32_t t;
+    for (t = 0u; t < p->count; t++) {
+        const uint32_t m = ((uint32_t)p->k[t] * j) & (GRID - 1u);
+        v.zr += (int64_t)p->re[t] * tc[m] - (int64_t)p->im[t] * ts[m]; /* < 2^42 each */
+        v.zi += (int64_t)p->re[t] * ts[m] + (int64_t)p->im[t] * tc[m];
     }
-    for (j = 0u; j < GRID; j++) {
-        zval_t v = {0, 0, 0, 0};
-        for (t = 0u; t < p->count; t++) {
-            const uint32_t m = ((uint32_t)p->k[t] * j) & (GRID - 1u);
-            v.zr += (int64_t)p->re[t] * tc[m] - (int64_t)p->im[t] * ts[m];
-            v.zi += (int64_t)p->re[t] * ts[m] + (int64_t)p->im[t] * tc[m];
-        }
-        if (fixed) {
-            const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
-            g[j] = (uint64_t)lifted;
-        } else {
-            g[j] = power(&v);
-        }
+    if (fixed) {
+        const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
+        return (uint64_t)lifted;
     }
+    return power(&v);
 }
 
-/* The alpha maximising the score: grid scan, the PEAKS best local maxima
-   refined, the best refined kept (ties: the smaller alpha). */
+/* Keep the PEAKS best (value, then the smaller index) grid maxima. */
+static void peak_insert(uint32_t *peak, uint64_t *val, uint32_t *n, uint32_t j, uint64_t v)
+{
+    uint32_t at = *n, i;
+    while (at > 0u && (val[at - 1u] < v || (val[at - 1u] == v && peak[at - 1u] > j))) {
+        at--;
+    }
+    if (at >= PEAKS) {
+        return;
+    }
+    for (i = (*n < PEAKS ? *n : PEAKS - 1u); i > at; i--) {
+        peak[i] = peak[i - 1u];
+        val[i] = val[i - 1u];
+    }
+    peak[at] = j;
+    val[at] = v;
+    *n = *n < PEAKS ? *n + 1u : PEAKS;
+}
+
+/* The alpha maximising the score: a scan of the GRID points kept as it
+   goes (local maxima: >= the previous point, > the next, cyclically), the
+   PEAKS best refined, the best refined kept (ties: the smaller alpha). */
 static uint32_t best_alpha(const zpoly_t *p, bool fixed)
 {
-    uint64_t g[GRID];
+    int16_t tc[GRID], ts[GRID];
     uint32_t peak[PEAKS], npeak = 0u, j, i, best_alpha = 0u;
-    uint64_t best = 0u;
-    grid_scores(p, fixed, g);
-    for (j = 0u; j < GRID; j++) { /* local maxima, kept best first */
-        const uint64_t prev = g[(j + GRID - 1u) & (GRID - 1u)], next = g[(j + 1u) & (GRID - 1u)];
-        if (g[j] >= prev && g[j] > next) {
-            uint32_t at = npeak < PEAKS ? npeak : PEAKS;
-            while (at > 0u && g[peak[at - 1u]] < g[j]) {
-                at--;
-            }
-            if (at < PEAKS) {
-                for (i = (npeak < PEAKS ? npeak : PEAKS - 1u); i > at; i--) {
-                    peak[i] = peak[i - 1u];
-                }
-                peak[at] = j;
-                npeak = npeak < PEAKS ? npeak + 1u : PEAKS;
-            }
+    uint64_t val[PEAKS], first = 0u, second = 0u, prev2 = 0u, prev = 0u, best = 0u;
+    for (j = 0u; j < GRID; j++) {
+        tc[j] = (int16_t)(ssda__cos_q15(j * CELL) / 2); /* Q14 */
+        ts[j] = (int16_t)(ssda__sin_q15(j * CELL) / 2);
+    }
+    for (j = 0u; j < GRID + 2u; j++) {
+        uint64_t cur;
+        if (j < GRID) {
+            cur = grid_score(p, fixed, tc, ts, j);
+        } else {
+            cur = j == GRID ? first : second; /* wrap round to points 0 and 1 */
         }
+        if (j == 0u) {
+            first = cur;
+        } else if (j == 1u) {
+            second = cur;
+        } else if (prev >= prev2 && prev > cur) { /* j - 1 is a local maximum */
+            peak_insert(peak, val, &npeak, (j - 1u) & (GRID - 1u), prev);
+        } else {
+            /* not a maximum */
+        }
+        prev2 = prev;
+        prev = cur;
     }
     if (npeak == 0u) { /* a flat score (a circle): any alpha */
         return 0u;
@@ -248,8 +267,8 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
 {
     zpoly_t p;
     zval_t v;
-    uint32_t alpha, j, t1, t2;
-    uint64_t e2;
+    uint32_t alpha, j, ab;
+    uint64_t e2, t1, t2;
     const int32_t cs = ssda__cos_q15(phi), sn = ssda__sin_q15(phi);
     const int err = check(a, b, m);
     if (err != SSDA_OK) {
@@ -267,18 +286,22 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
     }
     alpha = best_alpha(&p, true);
     v = zpoly_eval(&p, alpha);
-    /* E^2 = (B + s^2 A - 2 s R) / B with R = Re(exp(i phi) Z) */
-    t1 = ssda__mulshr_sat(ssda__mulshr_sat(s_q16, s_q16, 16u),
-                          ssda__ratio_q16(a->energy_q16, 0, b->energy_q16), 16u);
-    t2 = ssda__mulshr_sat(2u * s_q16,
-                          ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15,
-                                          b->energy_q16),
-                          16u);
-    e2 = 65536u + (uint64_t)t1;
-    if (v.zr >= 0) {
-        e2 = e2 > t2 ? e2 - t2 : 0u;
+    /* E^2 = (B + s^2 A - 2 s R) / B with R = Re(exp(i phi) Z). t1 = s^2 A / B
+       (Q16); since R <= sqrt(A B), 2 s R / B <= 2 sqrt(t1): when t1 does not
+       fit 32 bits, E^2 >= (sqrt(t1) - 1)^2 > 255^2 and saturates. */
+    ab = ssda__ratio_q16(a->energy_q16, 0, b->energy_q16);
+    t1 = ((uint64_t)ssda__mulshr_sat(s_q16, s_q16, 16u) * ab) >> 16; /* < 2^48 */
+    if (ab == 0xFFFFFFFFu || t1 > 0xFFFFFFFFu) {
+        e2 = 0xFFFFFFFFu;
     } else {
-        e2 += t2;
+        t2 = ((uint64_t)(2u * s_q16) *
+              ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15, b->energy_q16)) >> 16;
+        e2 = 65536u + t1; /* t2 < 2^41 */
+        if (v.zr >= 0) {
+            e2 = e2 > t2 ? e2 - t2 : 0u;
+        } else {
+            e2 += t2;
+        }
     }
     m->s_q16 = s_q16;
     m->phi = phi;

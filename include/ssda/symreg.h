@@ -12,7 +12,8 @@
  *     bound cannot enter the lists below is skipped without the search).
  *     The `nuclei` pairs of smallest E^2 (<= e2_nucleus), at most two from
  *     any one REF loop, are the nuclei (ties: the earlier pair).
- * [2] For each nucleus in order of E^2:
+ * [2] For each nucleus in order of E^2 (one already paired in the best
+ *     final set is skipped: it grows into that set again, seed (a)):
  *   [2.1] start from the similarity of eq. 16: MOV = s R(phi) (REF - c_ref)
  *         + c_mov with the nucleus's s, phi and centroids;
  *   [2.2] every REF loop's centroid is mapped; MOV loops within
@@ -20,7 +21,8 @@
  *         area fits (area_ratio) are matched with scale and rotation fixed
  *         (ssda_fd_match_fixed; s = sqrt|ae - bd| and phi the mean angle of
  *         the mapped axes, eqs. 14-15); the best E^2 <= e2_grow pairs it
- *         (each MOV loop used once: the smaller E^2 keeps it). Fewer than
+ *         (each MOV loop used once: the smaller E^2 keeps it; a pair whose
+ *         E^2 lower bound is above e2_grow is not searched). Fewer than
  *         min_pairs pairs, or no more than the last final set: next nucleus;
  *   [2.3] the affine transform is fitted to the pairs' centroids by least
  *         squares (eq. 17);
