@@ -139,7 +139,10 @@ uint32_t ssda__fd_fixed_bound(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s
         return 0xFFFFFFFFu; /* E^2 >= (sqrt(t1) - 1)^2, as ssda_fd_match_fixed */
     }
     sb = ssda__ratio_q16(abs_products(a, b), 0, b->energy_q16);
-    t2 = (((uint64_t)(2u * s_q16) * ((uint64_t)sb + 1u)) >> 16) + 1u; /* < 2^42 */
+    {
+        const uint64_t s2 = (uint64_t)s_q16 * 2u;
+        t2 = ((s2 * ((uint64_t)sb + 1u)) >> 16) + 1u; /* < 2^25 * 2^32 */
+    }
     e = 65536u + t1;
     e = e > t2 + 4u ? e - t2 - 4u : 0u;
     return e > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)e;

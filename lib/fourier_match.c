@@ -268,7 +268,7 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
     zpoly_t p;
     zval_t v;
     uint32_t alpha, j, ab;
-    uint64_t e2, t1, t2;
+    uint64_t e2, t1;
     const int32_t cs = ssda__cos_q15(phi), sn = ssda__sin_q15(phi);
     const int err = check(a, b, m);
     if (err != SSDA_OK) {
@@ -294,8 +294,10 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
     if (ab == 0xFFFFFFFFu || t1 > 0xFFFFFFFFu) {
         e2 = 0xFFFFFFFFu;
     } else {
-        t2 = ((uint64_t)(2u * s_q16) *
-              ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15, b->energy_q16)) >> 16;
+        const uint64_t s2 = (uint64_t)s_q16 * 2u;
+        const uint64_t t2 =
+            (s2 * ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15, b->energy_q16)) >>
+            16;
         e2 = 65536u + t1; /* t2 < 2^41 */
         if (v.zr >= 0) {
             e2 = e2 > t2 ? e2 - t2 : 0u;
