@@ -346,7 +346,7 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     p->n_ref = n_ref;
     p->n_mov = n_mov;
     p->k = def(c->nuclei, SSDA_SYMREG_DEFAULT_NUCLEI);
-    p->min_pairs = def(c->min_pairs, 3u);
+    p->min_pairs = def(c->min_pairs, SSDA_SYMREG_DEFAULT_MIN_PAIRS);
     p->e2_nucleus = def(c->e2_nucleus_q16, 3277u);   /* 0.05 */
     p->e2_grow = def(c->e2_grow_q16, 16384u);        /* 0.25 */
     p->e2_final = def(c->e2_final_q16, 9830u);       /* 0.15 */

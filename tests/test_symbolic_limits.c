@@ -268,6 +268,7 @@ static void test_symreg_arguments(void)
     }
     memset(&c, 0, sizeof c);
     c.nuclei = 1u;
+    c.min_pairs = 3u; /* four loops only */
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_symreg(l, f, 4u, l, f, 4u, &c, g_work, sizeof g_work,
                                                &pair, 1u, &res));
     TEST_ASSERT_EQUAL_UINT32(4u, res.pairs);         /* an image against itself */
