@@ -1,0 +1,203 @@
+/* kl_map.c - the per-pixel K-L transform into feature values (kl.h):
+   integer weights planned once, then 9 multiply-adds per pixel. */
+#include "kl_internal.h"
+
+#include "fixmath.h"
+
+/* Bounds of the plan. 8-bit input: |w| <= 2^21 and |x - 128| <= 128 give
+   |sum w (x - c)| <= 3 2^28, |b| <= 2^30, so the int32 sum stays below
+   2^31. 16-bit input (int64 sums): |w| <= 2^30, |x - 32768| <= 2^15,
+   |b| <= 2^60. */
+#define W_MAX_U8 ((int64_t)1 << 21)
+#define B_MAX_U8 ((int64_t)1 << 30)
+#define W_MAX_U16 ((int64_t)1 << 30)
+#define B_MAX_U16 ((int64_t)1 << 60)
+#define GAIN_CAP 4096u /* output steps per sample step, at most */
+
+/* The gain g_k = num / den of feature k (kl.h), capped at GAIN_CAP. */
+static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
+{
+    const uint64_t top = kl->format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
+    if (kl->range == (uint8_t)SSDA_KL_RANGE_SIGMA) {
+        /* sd = sqrt(zvar_q16 / 2^16) in Q24: zvar_q16 < 2^50, sd_q24 < 2^49 */
+        const uint64_t sd_q24 =
+            ssda__u128_isqrt(ssda__u128_shl(ssda__u128_from(kl->zvar_q16[k]), 32u));
+        *num = (uint64_t)kl->out_max << 24; /* < 2^40 */
+        *den = 2u * kl->nsigma * sd_q24;    /* < 2^54 */
+    } else {
+        uint64_t l1 = 0u; /* sum |v| in Q30, < 2^32 */
+        uint32_t j;
+        for (j = 0u; j < 3u; j++) {
+            l1 += (uint64_t)(kl->vec_q30[k][j] < 0 ? -(int64_t)kl->vec_q30[k][j]
+                                                   : (int64_t)kl->vec_q30[k][j]);
+        }
+        *num = (uint64_t)kl->out_max << 30; /* < 2^46 */
+        *den = 2u * top * l1;               /* < 2^49 */
+    }
+    if (*den == 0u || *num / GAIN_CAP > *den) {
+        *num = GAIN_CAP;
+        *den = 1u;
+    }
+}
+
+/* round(|v| num 2^sh / (den 2^30)) with v's sign: |v| num < 2^76, sh <= 46 */
+static int64_t weight(int32_t v, uint64_t num, uint64_t den, uint32_t sh)
+{
+    const uint64_t mag = (uint64_t)(v < 0 ? -(int64_t)v : (int64_t)v);
+    const ssda__u128_t d = ssda__u128_shl(ssda__u128_from(den), 30u);
+    ssda__u128_t n = ssda__u128_shl(ssda__u128_mul64(mag, num), sh);
+    int64_t w;
+    n = ssda__u128_add(n, ssda__u128_shr(d, 1u));
+    w = (int64_t)ssda__u128_sat64(ssda__u128_div(n, d));
+    return v < 0 ? -w : w;
+}
+
+/* Try the plan at shift sh: false if a weight or offset exceeds its bound. */
+static bool plan_at(ssda_kl_t *kl, const uint64_t num[3], const uint64_t den[3],
+                    const int64_t dm_q16[3], uint32_t sh)
+{
+    const bool u8 = kl->format == (uint8_t)SSDA_PIX_U8;
+    const int64_t wmax = u8 ? W_MAX_U8 : W_MAX_U16;
+    const int64_t bmax = u8 ? B_MAX_U8 : B_MAX_U16;
+    uint32_t k, j;
+    for (k = 0u; k < 3u; k++) {
+        int64_t s = 0; /* sum w (m - c) in Q16: |w| 2^31 each, < 1.5 2^62 */
+        for (j = 0u; j < 3u; j++) {
+            const int64_t w = weight(kl->vec_q30[k][j], num[k], den[k], sh);
+            if (w > wmax || w < -wmax) {
+                return false;
+            }
+            kl->w[k][j] = (int32_t)w;
+            s += w * dm_q16[j];
+        }
+        /* b = (mid + 1/2) 2^sh - sum w (m - c): mid + 1/2 = (out_max + 1) / 2 */
+        kl->b[k] = (int64_t)(((uint64_t)kl->out_max + 1u) << (sh - 1u)) -
+                   ssda__round_shift(s, 16u);
+        if (kl->b[k] > bmax || kl->b[k] < -bmax) {
+            return false;
+        }
+    }
+    kl->shift = sh;
+    return true;
+}
+
+void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3])
+{
+    const bool u8 = kl->format == (uint8_t)SSDA_PIX_U8;
+    const int64_t c_q16 = u8 ? ((int64_t)128 << 16) : ((int64_t)32768 << 16);
+    uint64_t num[3], den[3];
+    int64_t dm_q16[3];
+    uint32_t k, sh;
+    for (k = 0u; k < 3u; k++) {
+        /* the mean in Q16 (sum 2^16 < 2^64, mean < 2^32) minus the centre */
+        const uint64_t n = sum[k] > (UINT64_MAX >> 16) ? UINT64_MAX : sum[k] << 16;
+        dm_q16[k] = (int64_t)SSDA_DIV64_32(n + (kl->count >> 1), kl->count) - c_q16;
+        gain(kl, k, &num[k], &den[k]);
+    }
+    /* the largest shift whose weights and offsets fit: 8-bit input reaches
+       sh >= 9 and 16-bit sh >= 18 whatever the gain (<= 2^12), so each z is
+       within 1 of the exact formula (docs/segmentation.md) */
+    for (sh = u8 ? 30u : 46u; sh > 1u; sh--) {
+        if (plan_at(kl, num, den, dm_q16, sh)) {
+            return;
+        }
+    }
+    (void)plan_at(kl, num, den, dm_q16, 1u); /* unreachable by the bounds above */
+}
+
+/* z from the plan's sum, clamped to 0..out_max; counts clamps. */
+static uint16_t clamp_z(int64_t acc, uint32_t sh, uint32_t out_max, uint32_t *clamped)
+{
+    uint64_t z;
+    if (acc < 0) {
+        (*clamped)++;
+        return 0u;
+    }
+    z = (uint64_t)acc >> sh;
+    if (z > out_max) {
+        (*clamped)++;
+        return (uint16_t)out_max;
+    }
+    return (uint16_t)z;
+}
+
+static uint32_t row_u8(const ssda_kl_t *kl, const ssda_kl_row_t *row, uint32_t width,
+                       uint16_t *const out[3])
+{
+    const uint8_t *p0 = (const uint8_t *)row->band[0];
+    const uint8_t *p1 = (const uint8_t *)row->band[1];
+    const uint8_t *p2 = (const uint8_t *)row->band[2];
+    const bool mask = (kl->flags & SSDA_KL_MASK_NODATA) != 0u;
+    uint32_t i, k, clamped = 0u;
+    size_t o = 0u;
+    int32_t b[3];
+    for (k = 0u; k < 3u; k++) {
+        b[k] = (int32_t)kl->b[k]; /* |b| <= 2^30 (plan bound) */
+    }
+    for (i = 0u; i < width; i++, o += row->step) {
+        const int32_t x0 = (int32_t)p0[o] - 128, x1 = (int32_t)p1[o] - 128;
+        const int32_t x2 = (int32_t)p2[o] - 128;
+        const bool masked = mask && p0[o] == kl->nodata && p1[o] == kl->nodata &&
+                            p2[o] == kl->nodata;
+        for (k = 0u; k < 3u; k++) {
+            if (out[k] != NULL) {
+                /* |sum| <= 3 2^21 2^7 + 2^30 < 2^31 */
+                const int32_t acc = kl->w[k][0] * x0 + kl->w[k][1] * x1 + kl->w[k][2] * x2 + b[k];
+                out[k][i] = masked ? (uint16_t)SSDA_KL_NODATA
+                                   : clamp_z(acc, kl->shift, kl->out_max, &clamped);
+            }
+        }
+    }
+    return clamped;
+}
+
+static uint32_t row_u16(const ssda_kl_t *kl, const ssda_kl_row_t *row, uint32_t width,
+                        uint16_t *const out[3])
+{
+    const uint16_t *p0 = (const uint16_t *)row->band[0];
+    const uint16_t *p1 = (const uint16_t *)row->band[1];
+    const uint16_t *p2 = (const uint16_t *)row->band[2];
+    const bool mask = (kl->flags & SSDA_KL_MASK_NODATA) != 0u;
+    uint32_t i, k, clamped = 0u;
+    size_t o = 0u;
+    for (i = 0u; i < width; i++, o += row->step) {
+        const int64_t x0 = (int64_t)p0[o] - 32768, x1 = (int64_t)p1[o] - 32768;
+        const int64_t x2 = (int64_t)p2[o] - 32768;
+        const bool masked = mask && p0[o] == kl->nodata && p1[o] == kl->nodata &&
+                            p2[o] == kl->nodata;
+        for (k = 0u; k < 3u; k++) {
+            if (out[k] != NULL) {
+                /* |sum| <= 3 2^30 2^15 + 2^60 */
+                const int64_t acc = kl->w[k][0] * x0 + kl->w[k][1] * x1 + kl->w[k][2] * x2 + kl->b[k];
+                out[k][i] = masked ? (uint16_t)SSDA_KL_NODATA
+                                   : clamp_z(acc, kl->shift, kl->out_max, &clamped);
+            }
+        }
+    }
+    return clamped;
+}
+
+int ssda_kl_transform_row(const ssda_kl_t *kl, const ssda_kl_row_t *row, uint32_t width,
+                          uint16_t *const out[3], uint32_t *clamped)
+{
+    uint32_t n;
+    if (kl == NULL || row == NULL || out == NULL || row->band[0] == NULL ||
+        row->band[1] == NULL || row->band[2] == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (kl->magic != SSDA__KL_MAGIC) {
+        return SSDA_ERR_STATE;
+    }
+    if (width == 0u || width > SSDA_MAX_DIM) {
+        return SSDA_ERR_SIZE;
+    }
+    if (row->step == 0u) {
+        return SSDA_ERR_ARG;
+    }
+    n = kl->format == (uint8_t)SSDA_PIX_U8 ? row_u8(kl, row, width, out)
+                                           : row_u16(kl, row, width, out);
+    if (clamped != NULL) {
+        *clamped = *clamped > UINT32_MAX - n ? UINT32_MAX : *clamped + n;
+    }
+    return SSDA_OK;
+}

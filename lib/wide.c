@@ -1,0 +1,161 @@
+/* wide.c - unsigned 128-bit helpers for setup paths (see wide.h). */
+#include "wide.h"
+
+ssda__u128_t ssda__u128_from(uint64_t v)
+{
+    ssda__u128_t r;
+    r.hi = 0u;
+    r.lo = v;
+    return r;
+}
+
+ssda__u128_t ssda__u128_mul64(uint64_t a, uint64_t b)
+{
+    const uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32;
+    const uint64_t b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
+    const uint64_t p00 = a0 * b0, p01 = a0 * b1; /* each < 2^64 */
+    const uint64_t p10 = a1 * b0, p11 = a1 * b1;
+    /* middle column: (p00 >> 32) + low halves of p01 and p10, < 3 * 2^32 */
+    const uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+    ssda__u128_t r;
+    r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
+    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32); /* the product < 2^128 */
+    return r;
+}
+
+ssda__u128_t ssda__u128_add(ssda__u128_t a, ssda__u128_t b)
+{
+    ssda__u128_t r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
+    return r;
+}
+
+ssda__u128_t ssda__u128_sub(ssda__u128_t a, ssda__u128_t b)
+{
+    ssda__u128_t r;
+    r.lo = a.lo - b.lo;
+    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
+    return r;
+}
+
+int ssda__u128_cmp(ssda__u128_t a, ssda__u128_t b)
+{
+    if (a.hi != b.hi) {
+        return a.hi < b.hi ? -1 : 1;
+    }
+    if (a.lo != b.lo) {
+        return a.lo < b.lo ? -1 : 1;
+    }
+    return 0;
+}
+
+ssda__u128_t ssda__u128_shl(ssda__u128_t a, uint32_t s)
+{
+    ssda__u128_t r;
+    if (s == 0u) {
+        r = a;
+    } else if (s >= 64u) {
+        r.hi = a.lo << (s - 64u);
+        r.lo = 0u;
+    } else {
+        r.hi = (a.hi << s) | (a.lo >> (64u - s));
+        r.lo = a.lo << s;
+    }
+    return r;
+}
+
+ssda__u128_t ssda__u128_shr(ssda__u128_t a, uint32_t s)
+{
+    ssda__u128_t r;
+    if (s == 0u) {
+        r = a;
+    } else if (s >= 64u) {
+        r.lo = a.hi >> (s - 64u);
+        r.hi = 0u;
+    } else {
+        r.lo = (a.lo >> s) | (a.hi << (64u - s));
+        r.hi = a.hi >> s;
+    }
+    return r;
+}
+
+uint32_t ssda__bits64(uint64_t v)
+{
+    uint32_t n = 0u;
+    while (v != 0u) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+
+uint32_t ssda__u128_bits(ssda__u128_t a)
+{
+    return a.hi != 0u ? 64u + ssda__bits64(a.hi) : ssda__bits64(a.lo);
+}
+
+ssda__u128_t ssda__u128_div(ssda__u128_t n, ssda__u128_t d)
+{
+    ssda__u128_t q = ssda__u128_from(0u);
+    ssda__u128_t rem = ssda__u128_from(0u);
+    uint32_t i = ssda__u128_bits(n);
+    if (d.hi == 0u && d.lo == 0u) {
+        q.hi = UINT64_MAX;
+        q.lo = UINT64_MAX;
+        return q;
+    }
+    while (i > 0u) {
+        i--;
+        /* rem * 2 + next bit: 129 bits, the top one in carry */
+        const uint64_t carry = rem.hi >> 63;
+        rem = ssda__u128_shl(rem, 1u);
+        rem.lo |= (i >= 64u ? (n.hi >> (i - 64u)) : (n.lo >> i)) & 1u;
+        q = ssda__u128_shl(q, 1u);
+        if (carry != 0u || ssda__u128_cmp(rem, d) >= 0) {
+            /* modulo 2^128: the true difference is < d */
+            rem = ssda__u128_sub(rem, d);
+            q.lo |= 1u;
+        }
+    }
+    return q;
+}
+
+uint64_t ssda__u128_isqrt(ssda__u128_t a)
+{
+    ssda__u128_t rem = a;
+    ssda__u128_t root = ssda__u128_from(0u);
+    uint32_t b = ssda__u128_bits(a);
+    ssda__u128_t bit;
+    if (b == 0u) {
+        return 0u;
+    }
+    /* the highest power of 4 <= a */
+    bit = ssda__u128_shl(ssda__u128_from(1u), (b - 1u) & ~1u);
+    while (bit.hi != 0u || bit.lo != 0u) {
+        const ssda__u128_t trial = ssda__u128_add(root, bit);
+        if (ssda__u128_cmp(rem, trial) >= 0) {
+            rem = ssda__u128_sub(rem, trial);
+            root = ssda__u128_add(ssda__u128_shr(root, 1u), bit);
+        } else {
+            root = ssda__u128_shr(root, 1u);
+        }
+        bit = ssda__u128_shr(bit, 2u);
+    }
+    return root.lo; /* sqrt(2^128 - 1) < 2^64 */
+}
+
+uint64_t ssda__u128_sat64(ssda__u128_t a)
+{
+    return a.hi != 0u ? UINT64_MAX : a.lo;
+}
+
+int64_t ssda__round_shift(int64_t v, uint32_t s)
+{
+    const uint64_t half = (uint64_t)1u << (s - 1u);
+    if (v >= 0) {
+        return (int64_t)(((uint64_t)v + half) >> s);
+    }
+    /* -(v + 1) + 1 = |v| without negating INT64_MIN */
+    return -(int64_t)(((uint64_t)(-(v + 1)) + 1u + half) >> s);
+}
