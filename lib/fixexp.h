@@ -9,7 +9,7 @@
 #include <stdint.h>
 
 /* 1.0 in Q30. */
-#define SSDA__ONE_Q30 ((int64_t)1 << 30)
+#define SSDA__ONE_Q30 1073741824
 
 /* ln(2) in Q16 and Q24, rounded. */
 #define SSDA__LN2_Q16 45426

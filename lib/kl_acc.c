@@ -14,7 +14,7 @@ int ssda_kl_acc_init(ssda_kl_acc_t *acc, const ssda_kl_acc_config_t *cfg)
     if (cfg != NULL) {
         c = *cfg;
     } else {
-        memset(&c, 0, sizeof c);
+        (void)memset(&c, 0, sizeof c);
     }
     if (c.format == 0u) {
         c.format = (uint8_t)SSDA_PIX_U8;
@@ -26,7 +26,7 @@ int ssda_kl_acc_init(ssda_kl_acc_t *acc, const ssda_kl_acc_config_t *cfg)
         (c.format == (uint8_t)SSDA_PIX_U8 && c.nodata > 255u)) {
         return SSDA_ERR_ARG;
     }
-    memset(acc, 0, sizeof *acc);
+    (void)memset(acc, 0, sizeof *acc);
     acc->format = c.format;
     acc->flags = c.flags;
     acc->nodata = c.nodata;
@@ -92,22 +92,24 @@ static void sums_u16(const ssda_kl_acc_t *acc, const ssda_kl_row_t *row, uint32_
     const bool mask = (acc->flags & SSDA_KL_MASK_NODATA) != 0u;
     uint32_t i, n = 0u;
     size_t o = 0u;
-    memset(rs, 0, sizeof *rs);
+    (void)memset(rs, 0, sizeof *rs);
     for (i = 0u; i < width; i++, o += row->step) {
         const uint32_t a = p0[o], b = p1[o], c = p2[o];
         if (mask && a == acc->nodata && b == acc->nodata && c == acc->nodata) {
             continue;
         }
+        const uint32_t aa = a * a, ab = a * b, ac = a * c; /* each < 2^32 */
+        const uint32_t bb = b * b, bc = b * c, cc = c * c;
         n++;
         rs->sum[0] += a;
         rs->sum[1] += b;
         rs->sum[2] += c;
-        rs->sum_xy[0] += (uint64_t)(a * a); /* each < 2^32 */
-        rs->sum_xy[1] += (uint64_t)(a * b);
-        rs->sum_xy[2] += (uint64_t)(a * c);
-        rs->sum_xy[3] += (uint64_t)(b * b);
-        rs->sum_xy[4] += (uint64_t)(b * c);
-        rs->sum_xy[5] += (uint64_t)(c * c);
+        rs->sum_xy[0] += aa;
+        rs->sum_xy[1] += ab;
+        rs->sum_xy[2] += ac;
+        rs->sum_xy[3] += bb;
+        rs->sum_xy[4] += bc;
+        rs->sum_xy[5] += cc;
     }
     rs->count = n;
     rs->masked = width - n;
@@ -165,7 +167,8 @@ int ssda_kl_acc_add_source(ssda_kl_acc_t *acc, ssda_source_t *src, const ssda_re
 {
     ssda_kl_acc_t work;
     ssda_rect_t r;
-    uint32_t y, bpp;
+    uint32_t y;
+    size_t bpp;
     if (acc == NULL || src == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -210,7 +213,7 @@ int ssda_kl_acc_add_source(ssda_kl_acc_t *acc, ssda_source_t *src, const ssda_re
         }
         row.band[0] = px;
         row.band[1] = px + bpp;
-        row.band[2] = px + 2u * bpp;
+        row.band[2] = px + (bpp + bpp);
         row.step = channels;
         row_sums(&work, &row, r.width, &rs);
         add_sums(&work, &rs);

@@ -9,7 +9,7 @@
 #define SSDA__KL_MAGIC 0x4B4C5458u       /* "KLTX" */
 
 /* 1.0 in Q30. */
-#define SSDA__ONE_Q30_KL ((int64_t)1 << 30)
+#define SSDA__ONE_Q30_KL 1073741824
 
 /* Jacobi sweeps at most (a 3 x 3 matrix needs 4 to 6 in practice). */
 #define SSDA__KL_MAX_SWEEPS 12u

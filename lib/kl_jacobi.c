@@ -27,15 +27,18 @@ static rot_t rotation(int64_t app, int64_t aqq, int64_t apq)
     const int64_t e = 2 * apq;   /* |e| < 2^33 */
     uint64_t ad = mag64(d), ae = mag64(e);
     const uint32_t bits = ssda__bits64(ad > ae ? ad : ae);
-    uint64_t hyp, den, r;
+    uint64_t hyp, den, r, t2;
+    uint32_t sh;
     rot_t rot;
     /* scale |d| and |e| alike so the larger lies in [2^29, 2^30) */
     if (bits > 30u) {
-        ad >>= bits - 30u;
-        ae >>= bits - 30u;
+        sh = bits - 30u;
+        ad >>= sh;
+        ae >>= sh;
     } else {
-        ad <<= 30u - bits;
-        ae <<= 30u - bits;
+        sh = 30u - bits;
+        ad <<= sh;
+        ae <<= sh;
     }
     hyp = ssda_isqrt64(ad * ad + ae * ae); /* sum < 2^61 */
     den = ad + hyp;                        /* >= hyp >= ae, < 2^32 */
@@ -45,7 +48,8 @@ static rot_t rotation(int64_t app, int64_t aqq, int64_t apq)
         rot.t = -rot.t;
     }
     /* c = 1 / sqrt(1 + t^2): r = sqrt(2^60 + t^2) in [2^30, 2^30.5] */
-    r = ssda_isqrt64(((uint64_t)1u << 60) + (uint64_t)(rot.t * rot.t));
+    t2 = mag64(rot.t);
+    r = ssda_isqrt64(((uint64_t)1u << 60) + (t2 * t2));
     rot.c = (int64_t)SSDA_DIV64_32(((uint64_t)1u << 60) + (r >> 1), (uint32_t)r);
     rot.s = mulq(rot.t, rot.c);
     return rot;
@@ -80,8 +84,9 @@ uint32_t ssda__kl_jacobi(int64_t a[3][3], int64_t v[3][3])
     uint32_t sweep, i, j;
     for (i = 0u; i < 3u; i++) {
         for (j = 0u; j < 3u; j++) {
-            v[i][j] = i == j ? SSDA__ONE_Q30_KL : 0;
+            v[i][j] = 0;
         }
+        v[i][i] = SSDA__ONE_Q30_KL;
     }
     for (sweep = 1u; sweep <= SSDA__KL_MAX_SWEEPS; sweep++) {
         for (i = 0u; i < 3u; i++) {

@@ -8,22 +8,25 @@
    |sum w (x - c)| <= 3 2^28, |b| <= 2^30, so the int32 sum stays below
    2^31. 16-bit input (int64 sums): |w| <= 2^30, |x - 32768| <= 2^15,
    |b| <= 2^60. */
-#define W_MAX_U8 ((int64_t)1 << 21)
-#define B_MAX_U8 ((int64_t)1 << 30)
-#define W_MAX_U16 ((int64_t)1 << 30)
-#define B_MAX_U16 ((int64_t)1 << 60)
+#define W_MAX_U8 2097152                 /* 2^21 */
+#define B_MAX_U8 1073741824              /* 2^30 */
+#define W_MAX_U16 1073741824             /* 2^30 */
+#define B_MAX_U16 1152921504606846976LL  /* 2^60 */
 #define GAIN_CAP 4096u /* output steps per sample step, at most */
 
 /* The gain g_k = num / den of feature k (kl.h), capped at GAIN_CAP. */
 static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
 {
-    const uint64_t top = kl->format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
+    uint64_t top = 65535u;
+    if (kl->format == (uint8_t)SSDA_PIX_U8) {
+        top = 255u;
+    }
     if (kl->range == (uint8_t)SSDA_KL_RANGE_SIGMA) {
         /* sd = sqrt(zvar_q16 / 2^16) in Q24: zvar_q16 < 2^50, sd_q24 < 2^49 */
         const uint64_t sd_q24 =
             ssda__u128_isqrt(ssda__u128_shl(ssda__u128_from(kl->zvar_q16[k]), 32u));
         *num = (uint64_t)kl->out_max << 24; /* < 2^40 */
-        *den = 2u * kl->nsigma * sd_q24;    /* < 2^54 */
+        *den = sd_q24 * 2u * kl->nsigma;    /* < 2^54 */
     } else {
         uint64_t l1 = 0u; /* sum |v| in Q30, < 2^32 */
         uint32_t j;
@@ -32,7 +35,7 @@ static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
                                                    : (int64_t)kl->vec_q30[k][j]);
         }
         *num = (uint64_t)kl->out_max << 30; /* < 2^46 */
-        *den = 2u * top * l1;               /* < 2^49 */
+        *den = l1 * 2u * top;               /* < 2^49 */
     }
     if (*den == 0u || *num / GAIN_CAP > *den) {
         *num = GAIN_CAP;
@@ -57,9 +60,13 @@ static bool plan_at(ssda_kl_t *kl, const uint64_t num[3], const uint64_t den[3],
                     const int64_t dm_q16[3], uint32_t sh)
 {
     const bool u8 = kl->format == (uint8_t)SSDA_PIX_U8;
-    const int64_t wmax = u8 ? W_MAX_U8 : W_MAX_U16;
-    const int64_t bmax = u8 ? B_MAX_U8 : B_MAX_U16;
+    int64_t wmax = W_MAX_U16, bmax = B_MAX_U16;
+    const uint32_t sh1 = sh - 1u;
     uint32_t k, j;
+    if (u8) {
+        wmax = W_MAX_U8;
+        bmax = B_MAX_U8;
+    }
     for (k = 0u; k < 3u; k++) {
         int64_t s = 0; /* sum w (m - c) in Q16: |w| 2^31 each, < 1.5 2^62 */
         for (j = 0u; j < 3u; j++) {
@@ -71,8 +78,8 @@ static bool plan_at(ssda_kl_t *kl, const uint64_t num[3], const uint64_t den[3],
             s += w * dm_q16[j];
         }
         /* b = (mid + 1/2) 2^sh - sum w (m - c): mid + 1/2 = (out_max + 1) / 2 */
-        kl->b[k] = (int64_t)(((uint64_t)kl->out_max + 1u) << (sh - 1u)) -
-                   ssda__round_shift(s, 16u);
+        const uint64_t mid = ((uint64_t)kl->out_max + 1u) << sh1; /* < 2^62 */
+        kl->b[k] = (int64_t)mid - ssda__round_shift(s, 16u);
         if (kl->b[k] > bmax || kl->b[k] < -bmax) {
             return false;
         }
@@ -84,10 +91,14 @@ static bool plan_at(ssda_kl_t *kl, const uint64_t num[3], const uint64_t den[3],
 void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3])
 {
     const bool u8 = kl->format == (uint8_t)SSDA_PIX_U8;
-    const int64_t c_q16 = u8 ? ((int64_t)128 << 16) : ((int64_t)32768 << 16);
+    int64_t c_q16 = 2147483648LL; /* the centre 32768 in Q16 */
     uint64_t num[3], den[3];
     int64_t dm_q16[3];
-    uint32_t k, sh;
+    uint32_t k, sh = 46u;
+    if (u8) {
+        c_q16 = 8388608; /* 128 in Q16 */
+        sh = 30u;
+    }
     for (k = 0u; k < 3u; k++) {
         /* the mean in Q16 (sum 2^16 < 2^64, mean < 2^32) minus the centre */
         const uint64_t n = sum[k] > (UINT64_MAX >> 16) ? UINT64_MAX : sum[k] << 16;
@@ -97,7 +108,7 @@ void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3])
     /* the largest shift whose weights and offsets fit: 8-bit input reaches
        sh >= 9 and 16-bit sh >= 18 whatever the gain (<= 2^12), so each z is
        within 1 of the exact formula (docs/segmentation.md) */
-    for (sh = u8 ? 30u : 46u; sh > 1u; sh--) {
+    for (; sh > 1u; sh--) {
         if (plan_at(kl, num, den, dm_q16, sh)) {
             return;
         }

@@ -6,9 +6,6 @@
 
 #include "fixmath.h"
 
-/* Index of the product sum of bands k, l in sum_xy (00 01 02 11 12 22). */
-static const uint8_t k_pair[3][3] = {{0u, 1u, 2u}, {1u, 3u, 4u}, {2u, 4u, 5u}};
-
 /* The centred matrix C = n sum(xy) - sum(x) sum(y) (= n^2 cov), exact:
    magnitudes (< 2^96) and signs. */
 typedef struct {
@@ -19,6 +16,8 @@ typedef struct {
 
 static void centre(const ssda_kl_acc_t *acc, centred_t *c)
 {
+    /* index of the product sum of bands k, l in sum_xy (00 01 02 11 12 22) */
+    static const uint8_t k_pair[3][3] = {{0u, 1u, 2u}, {1u, 3u, 4u}, {2u, 4u, 5u}};
     uint32_t k, l;
     c->top_bits = 0u;
     for (k = 0u; k < 3u; k++) {
@@ -38,7 +37,8 @@ static void centre(const ssda_kl_acc_t *acc, centred_t *c)
    every entry is at most the largest diagonal one (Cauchy-Schwarz). */
 static uint64_t scaled(ssda__u128_t m, int32_t e)
 {
-    return e >= 0 ? ssda__u128_shr(m, (uint32_t)e).lo : ssda__u128_shl(m, (uint32_t)-e).lo;
+    const int32_t left = -e;
+    return e >= 0 ? ssda__u128_shr(m, (uint32_t)e).lo : ssda__u128_shl(m, (uint32_t)left).lo;
 }
 
 /* Covariance in Q30: C 2^-e with e such that the largest diagonal entry
@@ -71,7 +71,9 @@ static void correlation_q30(const centred_t *c, int64_t a[3][3])
             int64_t r = 0;
             if (k == l) {
                 r = SSDA__ONE_Q30_KL;
-            } else if (d[k] != 0u && d[l] != 0u) {
+            } else if (d[k] == 0u || d[l] == 0u) {
+                r = 0; /* a constant band */
+            } else {
                 const uint64_t den = ssda__u128_isqrt(ssda__u128_mul64(d[k], d[l])); /* < 2^62 */
                 ssda__u128_t num = ssda__u128_shl(ssda__u128_from(scaled(c->mag[k][l], e)), 30u);
                 num = ssda__u128_add(num, ssda__u128_from(den >> 1));
@@ -92,10 +94,12 @@ static uint64_t cov_q16(uint64_t x, int32_t e, uint32_t n)
 {
     ssda__u128_t num = ssda__u128_from(x);     /* < 2^34 */
     ssda__u128_t den = ssda__u128_mul64(n, n); /* < 2^64 */
-    if (e >= -16) {
-        num = ssda__u128_shl(num, (uint32_t)(e + 16)); /* e <= 66: < 2^116 */
+    const int32_t up = e + 16;
+    if (up >= 0) {
+        num = ssda__u128_shl(num, (uint32_t)up); /* e <= 66: < 2^116 */
     } else {
-        den = ssda__u128_shl(den, (uint32_t)(-16 - e)); /* e >= -30: < 2^78 */
+        const int32_t down = -up;
+        den = ssda__u128_shl(den, (uint32_t)down); /* e >= -30: < 2^78 */
     }
     num = ssda__u128_add(num, ssda__u128_shr(den, 1u));
     return ssda__u128_sat64(ssda__u128_div(num, den));
@@ -132,8 +136,10 @@ static void unit_row(int64_t v[3][3], uint32_t col, int32_t out[3])
     nrm = ssda_isqrt64(norm2); /* about 2^30: the rotations keep the norm near 1 */
     for (k = 0u; k < 3u; k++) {
         const uint64_t m = (uint64_t)(v[k][col] < 0 ? -v[k][col] : v[k][col]);
-        const uint64_t u = nrm == 0u ? 0u
-                                     : SSDA_DIV64_32((m << 30) + (nrm >> 1), (uint32_t)nrm);
+        uint64_t u = 0u;
+        if (nrm != 0u) {
+            u = SSDA_DIV64_32((m << 30) + (nrm >> 1), (uint32_t)nrm);
+        }
         out[k] = (int32_t)(v[k][col] < 0 ? -(int64_t)u : (int64_t)u);
         if (u > big) {
             big = u;
@@ -167,7 +173,7 @@ static int check_config(const ssda_kl_config_t *cfg, ssda_kl_config_t *c)
     if (cfg != NULL) {
         *c = *cfg;
     } else {
-        memset(c, 0, sizeof *c);
+        (void)memset(c, 0, sizeof *c);
     }
     if (c->matrix > (uint8_t)SSDA_KL_COVARIANCE || c->range > (uint8_t)SSDA_KL_RANGE_FULL ||
         c->nsigma > 16u || c->out_max >= SSDA_KL_NODATA) {
@@ -203,7 +209,7 @@ static void decompose(const ssda_kl_acc_t *acc, const ssda_kl_config_t *c, ssda_
     if (c->matrix == (uint8_t)SSDA_KL_CORRELATION) {
         correlation_q30(&cm, a);
     } else {
-        memcpy(a, cov, sizeof a);
+        (void)memcpy(a, cov, sizeof a);
     }
     for (k = 0u; k < 3u; k++) {
         for (l = 0u; l < 3u; l++) {
@@ -238,7 +244,7 @@ int ssda_kl_solve(const ssda_kl_acc_t *acc, const ssda_kl_config_t *cfg, ssda_kl
     if (err != SSDA_OK) {
         return err;
     }
-    memset(&out, 0, sizeof out);
+    (void)memset(&out, 0, sizeof out);
     out.count = acc->count;
     out.out_max = c.out_max;
     out.matrix = c.matrix;

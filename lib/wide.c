@@ -152,10 +152,15 @@ uint64_t ssda__u128_sat64(ssda__u128_t a)
 
 int64_t ssda__round_shift(int64_t v, uint32_t s)
 {
-    const uint64_t half = (uint64_t)1u << (s - 1u);
+    const uint32_t s1 = s - 1u;
+    const uint64_t half = (uint64_t)1u << s1;
+    uint64_t q;
     if (v >= 0) {
-        return (int64_t)(((uint64_t)v + half) >> s);
+        q = ((uint64_t)v + half) >> s;
+        return (int64_t)q;
     }
     /* -(v + 1) + 1 = |v| without negating INT64_MIN */
-    return -(int64_t)(((uint64_t)(-(v + 1)) + 1u + half) >> s);
+    q = (uint64_t)(-(v + 1));
+    q = (q + 1u + half) >> s;
+    return -(int64_t)q;
 }
