@@ -34,7 +34,8 @@ static int64_t bic(int64_t ll, uint32_t k, uint32_t total)
 {
     /* ln(total) in Q16 (< 23 nats), (3k - 1) of them */
     const int64_t ln_n = ssda__round_shift((int64_t)ssda__ln_q24(total), 8u);
-    return (-2 * ll) + ((int64_t)(3u * k - 1u) * ln_n);
+    const uint32_t params = (3u * k) - 1u;
+    return (-2 * ll) + ((int64_t)params * ln_n);
 }
 
 /* Components of w->p[0..k) into m: shares, sorted by mean (ties: smaller

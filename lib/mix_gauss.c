@@ -26,7 +26,6 @@ void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum, uint32_t 
     /* sqrt2 sigma in Q46 (sigma_q16 < 2^29): 2^31 <= s2 < 2^60 */
     const uint64_t s2 = (uint64_t)sigma_q16 * SQRT2_Q30;
     const uint32_t b = ssda__bits64(s2);
-    int64_t lw;
     g->mean_q16 = mean_q16;
     g->ks = b - 23u;
     /* km = 2^(46 + ks) / s2 = 2^(23 + b) / s2 in (2^23, 2^24] */
@@ -36,7 +35,7 @@ void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum, uint32_t 
     g->lw_q16 = 0;
     if (g->active) {
         /* ln(n / sum) - ln(sigma_q16 / 2^16), Q24 (each ln < 45 nats) */
-        lw = (int64_t)ssda__ln_q24(n) - (int64_t)ssda__ln_q24(sum) -
+        const int64_t lw = (int64_t)ssda__ln_q24(n) - (int64_t)ssda__ln_q24(sum) -
              (int64_t)ssda__ln_q24(sigma_q16) + (16 * (int64_t)SSDA__LN2_Q24);
         g->lw_q16 = (int32_t)ssda__round_shift(lw, 8u);
     }
@@ -98,8 +97,9 @@ int64_t ssda__mix_estep(const uint32_t *hist, uint32_t bins, const ssda__mix_gau
     }
     for (z = 0u; z < bins; z++) {
         const uint32_t h = hist[z];
-        int32_t smax = INT32_MIN;
+        int32_t smax = 0;
         uint32_t sum = 0u;
+        bool any = false;
         int64_t lnp;
         if (h == 0u) {
             continue;
@@ -107,17 +107,21 @@ int64_t ssda__mix_estep(const uint32_t *hist, uint32_t bins, const ssda__mix_gau
         for (j = 0u; j < k; j++) {
             /* lw in +-2^22, q <= 2^30: s in [-2^30 - 2^22, 2^22] */
             s[j] = g[j].lw_q16 - (int32_t)ssda__mix_q(&g[j], z);
-            if (g[j].active && s[j] > smax) {
+            if (g[j].active && (!any || s[j] > smax)) {
                 smax = s[j];
+                any = true;
             }
         }
         for (j = 0u; j < k; j++) {
             e[j] = 0u;
             if (g[j].active) {
-                const uint32_t x = (uint32_t)(smax - s[j]); /* < 2^31 */
-                e[j] = ssda__exp_neg_q16(x) >> 3;           /* Q27 */
+                const int32_t diff = smax - s[j]; /* in [0, 2^31) */
+                e[j] = ssda__exp_neg_q16((uint32_t)diff) >> 3; /* Q27 */
                 sum += e[j]; /* the largest is 2^27: 2^27 <= sum <= 2^31 */
             }
+        }
+        if (!any) {
+            continue; /* no component left (every weight 0): nothing to add */
         }
         lnp = (int64_t)smax + ssda__round_shift(ssda__ln_q24(sum), 8u) -
               (LN2_Q16_X27 + LN_SQRT2PI_Q16);

@@ -19,8 +19,10 @@ static uint32_t half_width(const int32_t *r, uint32_t bins, uint32_t zp, int32_t
         }
         if (2 * (int64_t)r[next] <= (int64_t)a) {
             /* 2 r[z] > a >= 2 r[next]: the crossing is frac of the way */
-            const uint64_t num = (uint64_t)(2 * (int64_t)r[z] - (int64_t)a);  /* < 2^18 */
-            const uint64_t den = (uint64_t)(2 * ((int64_t)r[z] - (int64_t)r[next])); /* >= num */
+            const int64_t above = (2 * (int64_t)r[z]) - (int64_t)a;            /* > 0 */
+            const int64_t drop = 2 * ((int64_t)r[z] - (int64_t)r[next]);     /* >= above */
+            const uint64_t num = (uint64_t)above;                            /* < 2^18 */
+            const uint64_t den = (uint64_t)drop;
             const uint32_t dist = dir < 0 ? zp - z : z - zp;
             return (dist << 16) + SSDA_DIV64_32(num << 16, (uint32_t)den); /* frac <= 2^16 */
         }
@@ -85,14 +87,21 @@ static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_pa
 static void quantiles(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t k,
                       uint32_t sigma_min_q16, ssda__mix_param_t *p)
 {
-    uint64_t n[SSDA__MIX_K] = {0u}, s1[SSDA__MIX_K] = {0u}, s2[SSDA__MIX_K] = {0u};
+    uint64_t n[SSDA__MIX_K], s1[SSDA__MIX_K], s2[SSDA__MIX_K];
     uint64_t cum = 0u;
     uint32_t z, j, last = 0u;
+    for (j = 0u; j < SSDA__MIX_K; j++) {
+        n[j] = 0u;
+        s1[j] = 0u;
+        s2[j] = 0u;
+    }
     for (z = 0u; z < bins; z++) {
         const uint32_t h = hist[z];
         if (h != 0u) {
             /* the slice of the bin's middle count: k (cum + h/2) / total < k */
-            j = SSDA_DIV64_32((uint64_t)k * (cum + (h >> 1)), total);
+            const uint32_t half = h >> 1;
+            const uint64_t middle = cum + half;
+            j = SSDA_DIV64_32((uint64_t)k * middle, total);
             j = j >= k ? k - 1u : j;
             n[j] += h;
             s1[j] += (uint64_t)h * z;             /* < 2^44 */
@@ -142,11 +151,12 @@ static void heights(uint32_t total, uint32_t hs, uint32_t k, ssda__mix_work_t *w
 void ssda__mix_init(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t hs,
                     const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w)
 {
-    uint32_t z, j;
     bool ok = c->init == (uint32_t)SSDA_MIX_INIT_PEAKS;
     if (ok) {
+        uint32_t z, j;
         for (z = 0u; z < bins; z++) {
-            w->cache[z] = (int32_t)(hist[z] >> hs); /* < 2^16 */
+            const uint32_t v = hist[z] >> hs; /* < 2^16 */
+            w->cache[z] = (int32_t)v;
         }
         for (j = 0u; j < k && ok; j++) {
             int32_t a = 0;

@@ -69,7 +69,7 @@ int ssda_mix_lut(const ssda_mix_model_t *model, uint8_t rule, uint32_t band_q8, 
     }
     for (z = 0u; z < model->bins; z++) {
         uint8_t label = 0u;
-        int32_t best = INT32_MIN;
+        int32_t best = 0;
         for (k = 0u; k < model->count; k++) {
             const int32_t s = g[k].lw_q16 - (int32_t)ssda__mix_q(&g[k], z);
             const bool eligible = g[k].active &&

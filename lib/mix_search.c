@@ -52,11 +52,10 @@ static uint64_t window_error(const search_t *s, uint32_t j, int32_t a, uint32_t 
     ssda__mix_prepare(&g, 1u, 1u, mean_q16, sigma_q16);
     for (z = w->lo[j]; z <= w->hi[j]; z++) {
         const uint32_t target = (s->hist[z] >> s->hs) << 8; /* < 2^24 */
-        uint32_t m = (uint32_t)w->cache[z] + comp_at(&g, a, z);
-        uint32_t d;
-        m = m > MODEL_CAP ? MODEL_CAP : m;
-        d = m > target ? m - target : target - m;
-        e += (uint64_t)d * d;
+        const uint32_t m = (uint32_t)w->cache[z] + comp_at(&g, a, z);
+        const int64_t diff = (int64_t)(m > MODEL_CAP ? MODEL_CAP : m) - (int64_t)target;
+        const uint64_t d = (uint64_t)(diff < 0 ? -diff : diff); /* < 2^26 */
+        e += d * d;
     }
     return e;
 }
@@ -64,12 +63,14 @@ static uint64_t window_error(const search_t *s, uint32_t j, int32_t a, uint32_t 
 /* Parameter `which` (0 height, 1 mean, 2 sigma) of component j, clamped. */
 static uint32_t clamp_param(const search_t *s, uint32_t which, int64_t v)
 {
+    const uint32_t top_mean = (s->bins - 1u) << 16; /* < 2^28 */
+    const uint32_t top_sigma = s->bins << 16;       /* <= 2^28 */
     int64_t lo = 0, hi = HEIGHT_MAX;
     if (which == 1u) {
-        hi = (int64_t)(s->bins - 1u) << 16;
+        hi = (int64_t)top_mean;
     } else if (which == 2u) {
         lo = (int64_t)s->sigma_min_q16;
-        hi = (int64_t)s->bins << 16;
+        hi = (int64_t)top_sigma;
     } else {
         /* height: the defaults above */
     }
@@ -128,19 +129,16 @@ static bool step_param(search_t *s, uint32_t j, uint32_t which)
     bool moved = false;
     int32_t dir;
     for (dir = 1; dir >= -1 && !moved; dir -= 2) {
-        for (;;) {
+        bool falling = true;
+        while (falling) {
             const uint32_t trial = clamp_param(s, which, (int64_t)cur + (dir * step));
-            uint64_t e;
-            if (trial == cur) {
-                break;
+            const uint64_t e = trial == cur ? best : error_with(s, j, which, trial);
+            falling = e < best;
+            if (falling) {
+                best = e;
+                cur = trial;
+                moved = true;
             }
-            e = error_with(s, j, which, trial);
-            if (e >= best) {
-                break;
-            }
-            best = e;
-            cur = trial;
-            moved = true;
         }
     }
     if (moved) {

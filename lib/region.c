@@ -118,13 +118,15 @@ static void emit(const ssda_region_t *job, uint32_t y, uint8_t *out)
 int ssda_region_push(ssda_region_t *job, const uint8_t *labels, uint8_t *out)
 {
     uint8_t *slot;
+    uint32_t index;
     if (job == NULL || labels == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
     if (job->magic != REGION_MAGIC || job->pushed >= job->height) {
         return SSDA_ERR_STATE;
     }
-    slot = job->ring + ((size_t)((uint32_t)job->pushed % 3u) * job->width);
+    index = (uint32_t)job->pushed % 3u;
+    slot = job->ring + ((size_t)index * job->width);
     (void)memcpy(slot, labels, job->width);
     job->pushed++;
     if (job->pushed == 1u) {
