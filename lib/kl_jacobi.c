@@ -94,7 +94,8 @@ uint32_t ssda__kl_jacobi(int64_t a[3][3], int64_t v[3][3])
                 rotate(a, v, pairs[i][0], pairs[i][1]);
             }
         }
-        if (a[0][1] == 0 && a[0][2] == 0 && a[1][2] == 0) {
+        /* the sweep's last rotation left a12 = 0 */
+        if (a[0][1] == 0 && a[0][2] == 0) {
             break;
         }
     }

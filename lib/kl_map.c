@@ -80,7 +80,9 @@ static bool plan_at(ssda_kl_t *kl, const uint64_t num[3], const uint64_t den[3],
         /* b = (mid + 1/2) 2^sh - sum w (m - c): mid + 1/2 = (out_max + 1) / 2 */
         const uint64_t mid = ((uint64_t)kl->out_max + 1u) << sh1; /* < 2^62 */
         kl->b[k] = (int64_t)mid - ssda__round_shift(s, 16u);
-        if (kl->b[k] > bmax || kl->b[k] < -bmax) {
+        /* |sum w (m - c)| <= 3 wmax 2^15 (16-bit) or 3 wmax 2^7 (8-bit) is
+           below bmax: b can pass its bound upwards only */
+        if (kl->b[k] > bmax) {
             return false;
         }
     }
@@ -100,20 +102,20 @@ void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3])
         sh = 30u;
     }
     for (k = 0u; k < 3u; k++) {
-        /* the mean in Q16 (sum 2^16 < 2^64, mean < 2^32) minus the centre */
-        const uint64_t n = sum[k] > (UINT64_MAX >> 16) ? UINT64_MAX : sum[k] << 16;
+        /* the mean in Q16 (sum < 2^48: sum 2^16 < 2^64, mean < 2^32) minus
+           the centre */
+        const uint64_t n = sum[k] << 16;
         dm_q16[k] = (int64_t)SSDA_DIV64_32(n + (kl->count >> 1), kl->count) - c_q16;
         gain(kl, k, &num[k], &den[k]);
     }
-    /* the largest shift whose weights and offsets fit: 8-bit input reaches
-       sh >= 9 and 16-bit sh >= 18 whatever the gain (<= 2^12), so each z is
-       within 1 of the exact formula (docs/segmentation.md) */
-    for (; sh > 1u; sh--) {
-        if (plan_at(kl, num, den, dm_q16, sh)) {
-            return;
-        }
+    /* the largest shift whose weights and offsets fit. It ends: with
+       g <= 2^12 and |v| <= 1, |w| <= 2^(12 + sh) fits at sh = 9 (8-bit,
+       wmax 2^21) and sh = 18 (16-bit, wmax 2^30), where b <= 2^16 2^(sh-1)
+       + 3 wmax 2^7 (or 2^15) is within bmax; so each z is within 1 of the
+       exact formula (docs/segmentation.md) */
+    while (!plan_at(kl, num, den, dm_q16, sh)) {
+        sh--;
     }
-    (void)plan_at(kl, num, den, dm_q16, 1u); /* unreachable by the bounds above */
 }
 
 /* z from the plan's sum, clamped to 0..out_max; counts clamps. */

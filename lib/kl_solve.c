@@ -133,13 +133,12 @@ static void unit_row(int64_t v[3][3], uint32_t col, int32_t out[3])
         const uint64_t m = (uint64_t)(v[k][col] < 0 ? -v[k][col] : v[k][col]); /* ~2^30 */
         norm2 += m * m;                                                        /* < 2^62 */
     }
-    nrm = ssda_isqrt64(norm2); /* about 2^30: the rotations keep the norm near 1 */
+    /* about 2^30: V starts as the identity and each rotation keeps a
+       column's norm within a few 2^-30 of 1 */
+    nrm = ssda_isqrt64(norm2);
     for (k = 0u; k < 3u; k++) {
         const uint64_t m = (uint64_t)(v[k][col] < 0 ? -v[k][col] : v[k][col]);
-        uint64_t u = 0u;
-        if (nrm != 0u) {
-            u = SSDA_DIV64_32((m << 30) + (nrm >> 1), (uint32_t)nrm);
-        }
+        const uint64_t u = SSDA_DIV64_32((m << 30) + (nrm >> 1), (uint32_t)nrm);
         out[k] = (int32_t)(v[k][col] < 0 ? -(int64_t)u : (int64_t)u);
         if (u > big) {
             big = u;

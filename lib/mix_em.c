@@ -30,22 +30,25 @@ uint32_t ssda__mix_em(const uint32_t *hist, uint32_t bins, uint32_t total,
        tol total 2^-14 (< 2^50) */
     const int64_t stop = (int64_t)(((uint64_t)c->tol_q30 * total) >> 14);
     int64_t ll = 0, prev = 0;
-    uint32_t it, j;
-    for (it = 1u; it <= c->max_iter; it++) {
+    uint32_t it = 0u, j;
+    bool done;
+    do {
+        it++;
         ssda__mix_prepare_all(w, k);
         ll = ssda__mix_estep(hist, bins, w->g, k, w->acc);
-        if ((it > 1u && ll - prev <= stop) || it == c->max_iter) {
-            break; /* w->p is the model whose log-likelihood is ll */
-        }
-        prev = ll;
-        for (j = 0u; j < k; j++) {
-            if (w->acc[j].n_q8 != 0u) {
-                m_step(&w->p[j], &w->acc[j], c->sigma_min_q16);
-            } else {
-                w->p[j].n = 0u; /* dead: stays at weight 0 */
+        /* when done, w->p is the model whose log-likelihood is ll */
+        done = (it > 1u && ll - prev <= stop) || it == c->max_iter;
+        if (!done) {
+            prev = ll;
+            for (j = 0u; j < k; j++) {
+                if (w->acc[j].n_q8 != 0u) {
+                    m_step(&w->p[j], &w->acc[j], c->sigma_min_q16);
+                } else {
+                    w->p[j].n = 0u; /* dead: stays at weight 0 */
+                }
             }
         }
-    }
+    } while (!done);
     *loglik = ll;
-    return it > c->max_iter ? c->max_iter : it;
+    return it;
 }

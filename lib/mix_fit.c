@@ -38,8 +38,9 @@ static int64_t bic(int64_t ll, uint32_t k, uint32_t total)
     return (-2 * ll) + ((int64_t)params * ln_n);
 }
 
-/* Components of w->p[0..k) into m: shares, sorted by mean (ties: smaller
-   sigma, then the order found). */
+/* Components of w->p[0..k) into m: shares, sorted by mean (ties: the
+   order found). sum > 0: EM gives every occupied bin's most responsible
+   component >= 16 Q8 pixels, the search keeps heights >= 1. */
 static void to_model(const ssda__mix_work_t *w, uint32_t k, ssda_mix_model_t *m)
 {
     uint64_t sum = 0u;
@@ -49,14 +50,11 @@ static void to_model(const ssda__mix_work_t *w, uint32_t k, ssda_mix_model_t *m)
     }
     for (j = 0u; j < k; j++) {
         ssda_mix_component_t c;
-        c.weight_q16 = sum == 0u ? 0u : (uint32_t)ssda__mix_ratio(w->p[j].n, 16u, sum);
+        c.weight_q16 = (uint32_t)ssda__mix_ratio(w->p[j].n, 16u, sum);
         c.mean_q16 = w->p[j].mean_q16;
         c.sigma_q16 = w->p[j].sigma_q16;
         /* insertion: stable, so equal (mean, sigma) keep their order */
-        for (i = j; i > 0u && (m->comp[i - 1u].mean_q16 > c.mean_q16 ||
-                               (m->comp[i - 1u].mean_q16 == c.mean_q16 &&
-                                m->comp[i - 1u].sigma_q16 > c.sigma_q16));
-             i--) {
+        for (i = j; i > 0u && m->comp[i - 1u].mean_q16 > c.mean_q16; i--) {
             m->comp[i] = m->comp[i - 1u];
         }
         m->comp[i] = c;

@@ -31,7 +31,7 @@ void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum, uint32_t 
     /* km = 2^(46 + ks) / s2 = 2^(23 + b) / s2 in (2^23, 2^24] */
     g->km = (uint32_t)ssda__u128_div(ssda__u128_shl(ssda__u128_from(1u), 23u + b),
                                      ssda__u128_from(s2)).lo;
-    g->active = n != 0u && sum != 0u;
+    g->active = n != 0u; /* and so sum >= n > 0 */
     g->lw_q16 = 0;
     if (g->active) {
         /* ln(n / sum) - ln(sigma_q16 / 2^16), Q24 (each ln < 45 nats) */

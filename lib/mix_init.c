@@ -67,12 +67,10 @@ static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_pa
     } else {
         fwhm = wl + wr;
     }
+    /* fwhm <= 2 bins: sigma <= 0.85 bins */
     sigma = ((uint64_t)fwhm * INV_FWHM_Q16) >> 16;
     if (sigma < sigma_min_q16) {
         sigma = sigma_min_q16;
-    }
-    if (sigma > ((uint64_t)bins << 16)) {
-        sigma = (uint64_t)bins << 16;
     }
     p->mean_q16 = zp << 16;
     p->sigma_q16 = (uint32_t)sigma;
@@ -98,11 +96,11 @@ static void quantiles(const uint32_t *hist, uint32_t bins, uint32_t total, uint3
     for (z = 0u; z < bins; z++) {
         const uint32_t h = hist[z];
         if (h != 0u) {
-            /* the slice of the bin's middle count: k (cum + h/2) / total < k */
+            /* the slice of the bin's middle count: cum + h <= total and
+               h >= 1 give cum + h/2 < total, so j < k */
             const uint32_t half = h >> 1;
             const uint64_t middle = cum + half;
             j = SSDA_DIV64_32((uint64_t)k * middle, total);
-            j = j >= k ? k - 1u : j;
             n[j] += h;
             s1[j] += (uint64_t)h * z;             /* < 2^44 */
             s2[j] += (uint64_t)h * ((uint64_t)z * z); /* < 2^56 */
@@ -144,7 +142,8 @@ static void heights(uint32_t total, uint32_t hs, uint32_t k, ssda__mix_work_t *w
            height in Q8 is n total 2^24 / (sum sigma_q16 2.5066) */
         const uint64_t num = ssda__mix_ratio(w->p[j].n, 8u, sum) * (total >> hs); /* < 2^40 */
         const uint64_t h = ssda__mix_ratio(num, 16u, ((uint64_t)w->p[j].sigma_q16 * 164274u) >> 16);
-        w->height_q8[j] = h > 33554432u ? 33554432 : (int32_t)h;
+        /* within the search's range 1..2^25 */
+        w->height_q8[j] = h > 33554432u ? 33554432 : h == 0u ? 1 : (int32_t)h;
     }
 }
 

@@ -65,7 +65,7 @@ static uint32_t clamp_param(const search_t *s, uint32_t which, int64_t v)
 {
     const uint32_t top_mean = (s->bins - 1u) << 16; /* < 2^28 */
     const uint32_t top_sigma = s->bins << 16;       /* <= 2^28 */
-    int64_t lo = 0, hi = HEIGHT_MAX;
+    int64_t lo = 1, hi = HEIGHT_MAX; /* heights >= 1: never a weight of 0 */
     if (which == 1u) {
         hi = (int64_t)top_mean;
     } else if (which == 2u) {

@@ -107,13 +107,11 @@ ssda__u128_t ssda__u128_div(ssda__u128_t n, ssda__u128_t d)
     }
     while (i > 0u) {
         i--;
-        /* rem * 2 + next bit: 129 bits, the top one in carry */
-        const uint64_t carry = rem.hi >> 63;
+        /* rem * 2 + next bit: rem <= n >> (i + 1) < 2^127, so no carry */
         rem = ssda__u128_shl(rem, 1u);
         rem.lo |= (i >= 64u ? (n.hi >> (i - 64u)) : (n.lo >> i)) & 1u;
         q = ssda__u128_shl(q, 1u);
-        if (carry != 0u || ssda__u128_cmp(rem, d) >= 0) {
-            /* modulo 2^128: the true difference is < d */
+        if (ssda__u128_cmp(rem, d) >= 0) {
             rem = ssda__u128_sub(rem, d);
             q.lo |= 1u;
         }

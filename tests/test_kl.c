@@ -693,6 +693,10 @@ static void test_stream_source(void)
             rect.width = 0u;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_kl_acc_add_source(&a_src, &src, &rect, ch));
             rect.width = 4u;
+            rect.height = 0u;
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_kl_acc_add_source(&a_src, &src, &rect, ch));
+            rect.height = 10u;
+            rect.width = 4u;
             rect.y = H;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_kl_acc_add_source(&a_src, &src, &rect, ch));
             TEST_ASSERT_EQUAL_INT(ch == 3u ? SSDA_ERR_SIZE : SSDA_OK,
@@ -704,6 +708,121 @@ static void test_stream_source(void)
             a_src.count = 4294967295u - 100u;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_OVERFLOW, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
         }
+    }
+}
+
+/* Partial nodata matches, saturating masked counts, a constant band, the
+   16-bit masked path with outputs skipped, and rows given by pointers. */
+static void test_mask_paths(void)
+{
+    static uint8_t p8[5 * 3] = {7, 7, 8, 7, 8, 7, 8, 7, 7, 7, 7, 7, 1, 2, 3};
+    static uint16_t p16[5 * 3] = {7, 7, 8, 7, 8, 7, 8, 7, 7, 7, 7, 7, 1, 2, 3};
+    ssda_kl_acc_config_t cfg;
+    ssda_kl_acc_t acc;
+    ssda_kl_row_t row;
+    ssda_kl_t kl;
+    uint16_t *out[3] = {NULL, g_z[1], NULL};
+    uint32_t f;
+    for (f = 0; f < 2u; f++) {
+        memset(&cfg, 0, sizeof cfg);
+        cfg.format = f == 0u ? SSDA_PIX_U8 : SSDA_PIX_U16;
+        cfg.flags = SSDA_KL_MASK_NODATA;
+        cfg.nodata = 7u;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&acc, &cfg));
+        row.band[0] = f == 0u ? (const void *)p8 : (const void *)p16;
+        row.band[1] = f == 0u ? (const void *)(p8 + 1) : (const void *)(p16 + 1);
+        row.band[2] = f == 0u ? (const void *)(p8 + 2) : (const void *)(p16 + 2);
+        row.step = 3u;
+        acc.masked = UINT32_MAX;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_add_row(&acc, &row, 5u));
+        TEST_ASSERT_EQUAL_UINT32(4u, acc.count);         /* only (7, 7, 7) is masked */
+        TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, acc.masked); /* saturated */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, NULL, &kl));
+        memset(g_z, 0x5A, sizeof g_z);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_transform_row(&kl, &row, 5u, out, NULL));
+        TEST_ASSERT_EQUAL_UINT16(SSDA_KL_NODATA, g_z[1][3]);
+        TEST_ASSERT_TRUE(g_z[1][0] <= 1023u && g_z[1][4] <= 1023u);
+        TEST_ASSERT_EQUAL_UINT16(0x5A5Au, g_z[0][0]); /* skipped outputs untouched */
+        TEST_ASSERT_EQUAL_UINT16(0x5A5Au, g_z[2][0]);
+    }
+}
+
+/* One constant band: correlation 0 with the others, its eigenvector alone. */
+static void test_constant_band(void)
+{
+    test_rng_t r;
+    ssda_kl_acc_t acc;
+    ssda_kl_t kl;
+    ref_stats_t s;
+    uint32_t i;
+    test_rng_seed(&r, 8u);
+    make_image(&r, W, H, 3u, 255u);
+    for (i = 0; i < W * H; i++) {
+        g_img[i * 3u + 1u] = 77u;
+    }
+    accumulate(&acc, SSDA_PIX_U8, W, H, 3u, 0u, 0u);
+    ref_stats(W, H, 3u, 0u, 0u, &s);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, NULL, &kl));
+    TEST_ASSERT_EQUAL_INT32(0, kl.matrix_q30[0][1]);
+    TEST_ASSERT_EQUAL_INT32(0, kl.matrix_q30[2][1]);
+    TEST_ASSERT_EQUAL_INT32(1 << 30, kl.matrix_q30[1][1]);
+    check_solution(&kl, &s);
+    /* a nearly constant band (77 or 78): with +-1 sd into 0..65534 its
+       feature's gain is capped at 4096 steps per sample step */
+    for (i = 0; i < W * H; i++) {
+        g_img[i * 3u + 1u] = (uint16_t)(77u + test_rng_next(&r) % 2u);
+    }
+    accumulate(&acc, SSDA_PIX_U8, W, H, 3u, 0u, 0u);
+    ref_stats(W, H, 3u, 0u, 0u, &s);
+    {
+        ssda_kl_config_t c;
+        memset(&c, 0, sizeof c);
+        c.matrix = SSDA_KL_COVARIANCE;
+        c.nsigma = 1u;
+        c.out_max = 65534u;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, &c, &kl));
+        TEST_ASSERT_TRUE(gain_ref(&kl, &s, 2u) == 4096.0);
+        check_transform(&kl, &s, W, H, 3u, 0u);
+    }
+}
+
+/* Perfectly correlated bands of unequal variance at the largest count: the
+   matrix is scaled down before the root, whose floor may push |r| past 1. */
+static void test_perfect_correlation(void)
+{
+    static const uint64_t lo = 0u, hi = 65535u;
+    const uint64_t half = 2147483647u;
+    uint32_t pass;
+    for (pass = 0; pass < 2u; pass++) {
+    const uint64_t third = pass == 0u ? 21845u : 1u;
+    ssda_kl_acc_config_t cfg;
+    ssda_kl_acc_t acc;
+    ssda_kl_t kl;
+    uint32_t k, l;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.format = SSDA_PIX_U16;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&acc, &cfg));
+    /* half the pixels (0, 0, 65535), half (65535, 21845, 0) */
+    acc.count = 2u * (uint32_t)half;
+    acc.sum[0] = half * hi;
+    acc.sum[1] = half * third;
+    acc.sum[2] = half * hi;
+    acc.sum_xy[0] = half * hi * hi;       /* 00 */
+    acc.sum_xy[1] = half * hi * third;    /* 01 */
+    acc.sum_xy[2] = lo;                   /* 02 */
+    acc.sum_xy[3] = half * third * third; /* 11 */
+    acc.sum_xy[4] = lo;                   /* 12 */
+    acc.sum_xy[5] = half * hi * hi;       /* 22 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, NULL, &kl));
+    for (k = 0; k < 3u; k++) {
+        for (l = 0; l < 3u; l++) {
+            const double want = (k == 2u) != (l == 2u) ? -1.0 : 1.0;
+            TEST_ASSERT_TRUE(kl.matrix_q30[k][l] <= (1 << 30) && kl.matrix_q30[k][l] >= -(1 << 30));
+            TEST_ASSERT_DOUBLE_WITHIN(2.0, want * Q30, (double)kl.matrix_q30[k][l]);
+        }
+    }
+    /* rank one: lambda = 3, the others 0 */
+    TEST_ASSERT_DOUBLE_WITHIN(4.0, 3.0 * 65536.0, (double)kl.lambda_q16[0]);
     }
 }
 
@@ -769,11 +888,19 @@ static void test_errors(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&acc, NULL));
     TEST_ASSERT_EQUAL_UINT8(SSDA_PIX_U8, acc.format);
 
-    row.band[0] = px;
+    row.band[0] = NULL;
     row.band[1] = px + 1;
-    row.band[2] = NULL;
+    row.band[2] = px + 2;
     row.step = 3u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_acc_add_row(&acc, &row, 4u));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_transform_row(&kpoison, &row, 4u, out, NULL));
+    row.band[0] = px;
+    row.band[1] = NULL;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_acc_add_row(&acc, &row, 4u));
+    row.band[1] = px + 1;
+    row.band[2] = NULL;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_acc_add_row(&acc, &row, 4u));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_transform_row(&kpoison, &row, 4u, out, NULL));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_acc_add_row(&acc, NULL, 4u));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_kl_acc_add_row(NULL, &row, 4u));
     row.band[2] = px + 2;
@@ -859,6 +986,9 @@ int main(void)
     RUN_TEST(test_worst_case_sums);
     RUN_TEST(test_nodata_mask);
     RUN_TEST(test_stream_source);
+    RUN_TEST(test_mask_paths);
+    RUN_TEST(test_constant_band);
+    RUN_TEST(test_perfect_correlation);
     RUN_TEST(test_source_errors);
     RUN_TEST(test_errors);
     return UNITY_END();

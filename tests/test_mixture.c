@@ -601,6 +601,84 @@ static void test_worst_case(void)
     TEST_ASSERT_EQUAL_UINT32(15u * 65536u, m.comp[0].mean_q16);
 }
 
+/* Internal paths the public fits reach only on rare data. */
+static void test_internal_paths(void)
+{
+    ssda__mix_work_t *w = (ssda__mix_work_t *)(void *)g_work_mem;
+    ssda__mix_cfg_t c;
+    ssda__mix_gauss_t g[2];
+    ssda_mix_model_t m;
+    ssda_mix_config_t cfg;
+    uint8_t lut[64];
+    uint32_t px[2];
+    int64_t ll = 0;
+    memset(&c, 0, sizeof c);
+    c.max_iter = 5u;
+    c.sigma_min_q16 = 4u; /* below 8: steps of sigma / 8 round to 0 */
+    w->cache = (int32_t *)(void *)((uint8_t *)g_work_mem + SSDA_MIX_WORK_FIXED);
+    memset(g_hist, 0, sizeof g_hist);
+    g_hist[2] = 1000u;
+    g_hist[3] = 500u;
+    /* a component far from every count owns none of it: dead, weight 0 */
+    w->p[0].n = 1000u;
+    w->p[0].mean_q16 = 2u << 16;
+    w->p[0].sigma_q16 = 65536u;
+    w->p[1].n = 1u;
+    w->p[1].mean_q16 = 60u << 16;
+    w->p[1].sigma_q16 = 32768u;
+    TEST_ASSERT_TRUE(ssda__mix_em(g_hist, 64u, 1500u, &c, 2u, w, &ll) >= 2u);
+    TEST_ASSERT_EQUAL_UINT64(0u, w->p[1].n);
+    /* no component active: nothing is added */
+    ssda__mix_prepare(&g[0], 0u, 1u, 0u, 65536u);
+    ssda__mix_prepare(&g[1], 0u, 1u, 0u, 65536u);
+    TEST_ASSERT_EQUAL_INT64(0, ssda__mix_estep(g_hist, 64u, g, 2u, NULL));
+    /* a search window narrower than a bin between two bins, sigma < 8 */
+    w->p[0].mean_q16 = (2u << 16) + 32768u;
+    w->p[0].sigma_q16 = 4u;
+    w->height_q8[0] = 1000;
+    w->p[1].mean_q16 = 3u << 16;
+    w->p[1].sigma_q16 = 65536u;
+    w->height_q8[1] = 2000;
+    TEST_ASSERT_TRUE(ssda__mix_search(g_hist, 64u, 0u, &c, 2u, w) >= 1u);
+    TEST_ASSERT_EQUAL_UINT32(w->lo[0], w->hi[0]);
+    /* a model with a zero weight: that component never labels */
+    memset(&m, 0, sizeof m);
+    m.count = 2u;
+    m.bins = 64u;
+    m.comp[0].weight_q16 = 0u;
+    m.comp[0].mean_q16 = 10u << 16;
+    m.comp[0].sigma_q16 = 65536u;
+    m.comp[1].weight_q16 = 65536u;
+    m.comp[1].mean_q16 = 40u << 16;
+    m.comp[1].sigma_q16 = 65536u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, SSDA_MIX_LABEL_LIKELY, 0u, lut));
+    TEST_ASSERT_EQUAL_UINT8(2u, lut[10]);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, SSDA_MIX_LABEL_BAND, 0u, lut));
+    TEST_ASSERT_EQUAL_UINT8(0u, lut[10]);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_band_pixels(&m, g_hist, 256u * 9u, px));
+    TEST_ASSERT_EQUAL_UINT32(1500u, px[0]); /* 2 and 3 are within 9 sigma of 10 */
+    TEST_ASSERT_EQUAL_UINT32(0u, px[1]);
+    /* one spike and a small sigma floor: the quantile start's height is
+       capped at 2^25 for the search */
+    memset(g_hist, 0, sizeof g_hist);
+    g_hist[30] = 65535u;
+    cfg = config(1u, SSDA_MIX_FIT_SEARCH);
+    cfg.init = SSDA_MIX_INIT_QUANTILES;
+    cfg.sigma_min_q16 = 6554u; /* 0.1 bin */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, fit(64u, &cfg, &m));
+    TEST_ASSERT_EQUAL_UINT32(30u << 16, m.comp[0].mean_q16);
+    TEST_ASSERT_TRUE(m.comp[0].sigma_q16 >= 6554u);
+    /* a peak at the left end: one-sided width */
+    memset(g_hist, 0, sizeof g_hist);
+    g_hist[0] = 100u;
+    g_hist[1] = 60u;
+    g_hist[2] = 40u;
+    cfg = config(1u, SSDA_MIX_FIT_EM);
+    cfg.max_iter = 1u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, fit(16u, &cfg, &m));
+    TEST_ASSERT_EQUAL_UINT32(0u, m.comp[0].mean_q16);
+}
+
 static void test_errors(void)
 {
     ssda_mix_model_t m, poison;
@@ -687,6 +765,7 @@ int main(void)
     RUN_TEST(test_lut);
     RUN_TEST(test_hist_add);
     RUN_TEST(test_worst_case);
+    RUN_TEST(test_internal_paths);
     RUN_TEST(test_errors);
     return UNITY_END();
 }
