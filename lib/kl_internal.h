@@ -11,6 +11,9 @@
 /* 1.0 in Q30. */
 #define SSDA__ONE_Q30_KL 1073741824
 
+/* The largest gain, output steps per sample step, Q16: 4096. */
+#define SSDA__KL_GAIN_CAP_Q16 268435456u
+
 /* Jacobi sweeps at most (a 3 x 3 matrix needs 4 to 6 in practice). */
 #define SSDA__KL_MAX_SWEEPS 12u
 

@@ -12,12 +12,17 @@
 #define B_MAX_U8 1073741824              /* 2^30 */
 #define W_MAX_U16 1073741824             /* 2^30 */
 #define B_MAX_U16 1152921504606846976LL  /* 2^60 */
-#define GAIN_CAP 4096u /* output steps per sample step, at most */
 
-/* The gain g_k = num / den of feature k (kl.h), capped at GAIN_CAP. */
+/* The gain g_k = num / den of feature k (kl.h), capped at gain_max. */
 static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
 {
-    uint64_t top = 65535u;
+    uint64_t top = 65535u, vmax = 0u; /* the largest |v_kj|, Q30: >= 2^30 / sqrt(3) */
+    uint32_t j;
+    for (j = 0u; j < 3u; j++) {
+        const uint64_t m = (uint64_t)(kl->vec_q30[k][j] < 0 ? -(int64_t)kl->vec_q30[k][j]
+                                                           : (int64_t)kl->vec_q30[k][j]);
+        vmax = m > vmax ? m : vmax;
+    }
     if (kl->format == (uint8_t)SSDA_PIX_U8) {
         top = 255u;
     }
@@ -29,7 +34,6 @@ static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
         *den = sd_q24 * 2u * kl->nsigma;    /* < 2^54 */
     } else {
         uint64_t l1 = 0u; /* sum |v| in Q30, < 2^32 */
-        uint32_t j;
         for (j = 0u; j < 3u; j++) {
             l1 += (uint64_t)(kl->vec_q30[k][j] < 0 ? -(int64_t)kl->vec_q30[k][j]
                                                    : (int64_t)kl->vec_q30[k][j]);
@@ -37,9 +41,13 @@ static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
         *num = (uint64_t)kl->out_max << 30; /* < 2^46 */
         *den = l1 * 2u * top;               /* < 2^49 */
     }
-    if (*den == 0u || *num / GAIN_CAP > *den) {
-        *num = GAIN_CAP;
-        *den = 1u;
+    /* g vmax > gain_max: a step of one band would move z more than gain_max
+       steps. num 2^16 vmax < 2^92, gain_max den 2^30 < 2^112 */
+    if (*den == 0u ||
+        ssda__u128_cmp(ssda__u128_mul64(*num << 16, vmax),
+                       ssda__u128_shl(ssda__u128_mul64(kl->gain_max_q16, *den), 30u)) > 0) {
+        *num = (uint64_t)kl->gain_max_q16 << 30; /* g = gain_max / vmax */
+        *den = vmax << 16;
     }
 }
 

@@ -175,9 +175,10 @@ static int check_config(const ssda_kl_config_t *cfg, ssda_kl_config_t *c)
         (void)memset(c, 0, sizeof *c);
     }
     if (c->matrix > (uint8_t)SSDA_KL_COVARIANCE || c->range > (uint8_t)SSDA_KL_RANGE_FULL ||
-        c->nsigma > 16u || c->out_max >= SSDA_KL_NODATA) {
+        c->nsigma > 16u || c->out_max >= SSDA_KL_NODATA || c->gain_max_q16 > SSDA__KL_GAIN_CAP_Q16) {
         return SSDA_ERR_ARG;
     }
+    c->gain_max_q16 = c->gain_max_q16 == 0u ? SSDA__KL_GAIN_CAP_Q16 : c->gain_max_q16;
     c->nsigma = c->nsigma == 0u ? 4u : c->nsigma;
     c->out_max = c->out_max == 0u ? 1023u : c->out_max;
     return SSDA_OK;
@@ -246,6 +247,7 @@ int ssda_kl_solve(const ssda_kl_acc_t *acc, const ssda_kl_config_t *cfg, ssda_kl
     (void)memset(&out, 0, sizeof out);
     out.count = acc->count;
     out.out_max = c.out_max;
+    out.gain_max_q16 = c.gain_max_q16;
     out.matrix = c.matrix;
     out.range = c.range;
     out.nsigma = c.nsigma;

@@ -425,7 +425,14 @@ static double gain_ref(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t k)
     } else {
         g = (kl->out_max / 2.0) / (top * l1);
     }
-    return g > 4096.0 ? 4096.0 : g;
+    {
+        /* g max |v| <= gain_max */
+        double vmax = 0.0;
+        for (l = 0; l < 3u; l++) {
+            vmax = fabs(vq(kl, k, l)) > vmax ? fabs(vq(kl, k, l)) : vmax;
+        }
+        return g * vmax > kl->gain_max_q16 / 65536.0 ? kl->gain_max_q16 / 65536.0 / vmax : g;
+    }
 }
 
 static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t w, uint32_t h,
@@ -506,6 +513,8 @@ static void test_images_vs_double(void)
         cfg.range = (uint8_t)((n >> 3) & 1u);
         cfg.nsigma = (uint8_t)(test_rng_next(&r) % 17u);
         cfg.out_max = (uint16_t)(n % 5u == 0u ? 65534u : n % 5u == 1u ? 255u : 0u);
+        /* every 7th: a gain of at most 0.75 or 1 step per sample step */
+        cfg.gain_max_q16 = n % 7u == 3u ? 49152u : n % 7u == 5u ? 65536u : 0u;
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, &cfg, &kl));
         check_solution(&kl, &s);
         check_transform(&kl, &s, W, H, ch, 0u);
@@ -781,7 +790,11 @@ static void test_constant_band(void)
         c.nsigma = 1u;
         c.out_max = 65534u;
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, &c, &kl));
-        TEST_ASSERT_TRUE(gain_ref(&kl, &s, 2u) == 4096.0);
+        double vmax = 0.0;
+        for (i = 0; i < 3u; i++) {
+            vmax = fabs(vq(&kl, 2u, i)) > vmax ? fabs(vq(&kl, 2u, i)) : vmax;
+        }
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 4096.0, gain_ref(&kl, &s, 2u) * vmax);
         check_transform(&kl, &s, W, H, 3u, 0u);
     }
 }
@@ -932,11 +945,16 @@ static void test_errors(void)
     kc.nsigma = 0u;
     kc.out_max = 65535u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_kl_solve(&acc, &kc, &kl));
+    kc.out_max = 0u;
+    kc.gain_max_q16 = 4096u * 65536u + 1u;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_kl_solve(&acc, &kc, &kl));
+    kc.gain_max_q16 = 0u;
     TEST_ASSERT_EQUAL_MEMORY(&kpoison, &kl, sizeof kl);
     kc.out_max = 0u;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, &kc, &kl));
     TEST_ASSERT_EQUAL_UINT16(1023u, kl.out_max);
     TEST_ASSERT_EQUAL_UINT8(4u, kl.nsigma);
+    TEST_ASSERT_EQUAL_UINT32(4096u * 65536u, kl.gain_max_q16);
 
     /* transform */
     memset(g_z, 0x5A, sizeof g_z);

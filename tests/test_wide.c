@@ -201,7 +201,8 @@ static void test_round_shift(void)
     TEST_ASSERT_EQUAL_INT64((int64_t)1 << 60, ssda__round_shift(INT64_MAX, 3));
     test_rng_seed(&r, 15u);
     for (i = 0; i < RANDOM; i++) {
-        const int64_t v = (int64_t)(rand64(&r) >> 1) * ((test_rng_next(&r) & 1u) != 0u ? -1 : 1);
+        /* |v| < 2^62: q 2^s, up to |v| + 2^(s-1), stays in range */
+        const int64_t v = (int64_t)(rand64(&r) >> 2) * ((test_rng_next(&r) & 1u) != 0u ? -1 : 1);
         const uint32_t s = 1u + test_rng_next(&r) % 62u;
         const int64_t q = ssda__round_shift(v, s);
         const int64_t back = q * ((int64_t)1 << s); /* |q| 2^s <= |v| + 2^(s-1) */

@@ -64,8 +64,12 @@
  *         (the histogram models live in the middle anyway);
  *     SSDA_KL_RANGE_FULL: g_k = (out_max / 2) / (M sum_j |v_kj|), M the
  *         largest sample (255 or 65535): no pixel can clamp.
- * g_k is capped at 4096 output steps per sample step (a nearly constant
- * feature). The weights are integers (|w| <= 2^20 for 8-bit input, int32
+ * g_k is capped so that g_k max_j |v_kj| <= gain_max: a step of one sample
+ * in any one band moves z_k by at most gain_max steps (default and largest
+ * 4096: a nearly constant feature). With 8-bit input a cap of 1 keeps
+ * feature histograms free of combs: the features of integer samples take
+ * values on a lattice, and bins finer than one band's step leave regular
+ * gaps that a mixture fit reads as spikes (ssda segment's default). The weights are integers (|w| <= 2^20 for 8-bit input, int32
  * arithmetic, 9 multiply-adds per pixel; 16-bit input uses int64
  * multiply-adds), and every z_k is within 1 of the formula above
  * (tests/test_kl.c, against the formula in double).
@@ -178,6 +182,8 @@ typedef struct {
     uint8_t nsigma;    /* SIGMA range: mean +- nsigma sd fills 0..out_max, 1..16 (0 = 4) */
     uint16_t out_max;  /* largest feature value, 1..65534 (0 = 1023, about the
                           seed's 1000 histogram bins) */
+    uint32_t gain_max_q16; /* largest move of z_k for a one-sample step of one
+                              band, output steps, Q16, 1..4096 2^16 (0 = 4096) */
 } ssda_kl_config_t;
 
 /* A solved transform. Public fields may be read; the plan is private. */
@@ -193,6 +199,7 @@ typedef struct {
     uint32_t count;           /* pixels the statistics came from */
     uint32_t sweeps;          /* Jacobi sweeps run (1..12) */
     uint16_t out_max;         /* resolved options */
+    uint32_t gain_max_q16;
     uint8_t matrix, range, nsigma;
     uint8_t format;           /* input sample format, from the accumulator */
     uint8_t flags;            /* mask flag and value, from the accumulator */
@@ -210,7 +217,8 @@ typedef struct {
  * with other options at will).
  * Returns SSDA_OK, or with *kl untouched: SSDA_ERR_NULL, SSDA_ERR_STATE (acc
  * not initialised), SSDA_ERR_SIZE (no pixel counted), SSDA_ERR_ARG (unknown
- * matrix or range, nsigma above 16, out_max above 65534).
+ * matrix or range, nsigma above 16, out_max above 65534, gain_max_q16 above
+ * 4096 2^16).
  */
 int ssda_kl_solve(const ssda_kl_acc_t *acc, const ssda_kl_config_t *cfg, ssda_kl_t *kl);
 
