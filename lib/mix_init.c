@@ -6,28 +6,46 @@
 
 #define INV_FWHM_Q16 27831u /* 1 / (2 sqrt(2 ln 2)) = sigma / FWHM */
 
-/* Half width at half height on one side of the peak at zp (height a),
-   Q16 bins, interpolated linearly between the last bin above half height
-   and the first at or below it; 0 if the histogram ends first. */
-static uint32_t half_width(const int32_t *r, uint32_t bins, uint32_t zp, int32_t a, int32_t dir)
+/* The residual smoothed over 5 bins (fewer at the ends), times 60: each
+   bin of a histogram of integer samples may hold one or two of the values
+   they give (a comb), which would end a half width at the first bin. */
+static int64_t smooth(const int32_t *r, uint32_t bins, uint32_t z)
+{
+    const uint32_t lo = z >= 2u ? z - 2u : 0u;
+    const uint32_t hi = z + 2u < bins ? z + 2u : bins - 1u;
+    int64_t s = 0; /* |r| < 2^17: |s| < 2^20 */
+    uint32_t i;
+    for (i = lo; i <= hi; i++) {
+        s += r[i];
+    }
+    return s * (int64_t)(60u / (hi - lo + 1u)); /* 60 / 3, 4 or 5 */
+}
+
+/* Half width at half height on one side of the smoothed peak at zp
+   (height a), Q16 bins, interpolated linearly between the last bin above
+   half height and the first at or below it; 0 if the histogram ends
+   first. */
+static uint32_t half_width(const int32_t *r, uint32_t bins, uint32_t zp, int64_t a, int32_t dir)
 {
     uint32_t z = zp;
-    for (;;) {
+    int64_t sz = a;
+    bool found = false;
+    uint32_t width = 0u;
+    while (!found && !((dir < 0 && z == 0u) || (dir > 0 && z + 1u >= bins))) {
         const uint32_t next = dir < 0 ? z - 1u : z + 1u;
-        if ((dir < 0 && z == 0u) || (dir > 0 && next >= bins)) {
-            return 0u;
-        }
-        if (2 * (int64_t)r[next] <= (int64_t)a) {
-            /* 2 r[z] > a >= 2 r[next]: the crossing is frac of the way */
-            const int64_t above = (2 * (int64_t)r[z]) - (int64_t)a;            /* > 0 */
-            const int64_t drop = 2 * ((int64_t)r[z] - (int64_t)r[next]);     /* >= above */
-            const uint64_t num = (uint64_t)above;                            /* < 2^18 */
-            const uint64_t den = (uint64_t)drop;
+        const int64_t sn = smooth(r, bins, next);
+        if (2 * sn <= a) {
+            /* 2 s(z) > a >= 2 s(next): the crossing is frac of the way */
+            const uint64_t num = (uint64_t)((2 * sz) - a);  /* > 0, < 2^23 */
+            const uint64_t den = (uint64_t)(2 * (sz - sn)); /* >= num */
             const uint32_t dist = dir < 0 ? zp - z : z - zp;
-            return (dist << 16) + SSDA_DIV64_32(num << 16, (uint32_t)den); /* frac <= 2^16 */
+            width = (dist << 16) + SSDA_DIV64_32(num << 16, (uint32_t)den); /* frac <= 2^16 */
+            found = true;
         }
         z = next;
+        sz = sn;
     }
+    return width;
 }
 
 /* Subtract a exp(-q) from the residual over every bin. */
@@ -40,26 +58,30 @@ static void subtract(int32_t *r, uint32_t bins, const ssda__mix_gauss_t *g, int3
     }
 }
 
-/* One peak of the residual: its parameters into p, height into *height.
-   false if no bin is positive. */
+/* One peak of the residual, found and measured on the smoothed residual:
+   its parameters into p, height into *height. false if no height is
+   positive. */
 static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_param_t *p,
                  int32_t *height)
 {
     ssda__mix_gauss_t g;
     uint32_t z, zp = 0u, wl, wr, fwhm;
     uint64_t sigma;
-    int32_t a = 0;
+    int64_t top = 0;
+    int32_t a;
     for (z = 0u; z < bins; z++) {
-        if (r[z] > a) {
-            a = r[z];
+        const int64_t sz = smooth(r, bins, z);
+        if (sz > top) {
+            top = sz;
             zp = z;
         }
     }
+    a = (int32_t)(top / 60); /* the mean height around the peak */
     if (a <= 0) {
         return false;
     }
-    wl = half_width(r, bins, zp, a, -1);
-    wr = half_width(r, bins, zp, a, 1);
+    wl = half_width(r, bins, zp, top, -1);
+    wr = half_width(r, bins, zp, top, 1);
     if (wl == 0u && wr == 0u) {
         fwhm = bins << 16; /* flat to both ends */
     } else if (wl == 0u || wr == 0u) {
@@ -67,7 +89,7 @@ static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_pa
     } else {
         fwhm = wl + wr;
     }
-    /* fwhm <= 2 bins: sigma <= 0.85 bins */
+    /* fwhm <= 2 bins 2^16: sigma <= 0.85 bins */
     sigma = ((uint64_t)fwhm * INV_FWHM_Q16) >> 16;
     if (sigma < sigma_min_q16) {
         sigma = sigma_min_q16;

@@ -64,12 +64,14 @@
  *
  * INITIALISATION (no interactive step, deterministic):
  *   SSDA_MIX_INIT_PEAKS (default): the seed's manual procedure made
- *     automatic: take the highest bin of the residual (ties: the lowest
- *     bin), its height and half-width at half height (interpolated;
- *     sigma = FWHM / 2.3548, the one-sided width if the other side meets
- *     the histogram's end), subtract that Gaussian from the residual, and
- *     repeat; shoulders of a peak become the next components. If the
- *     residual runs out (no positive bin left) the quantile start is used.
+ *     automatic: on the residual smoothed over 5 bins (a histogram of
+ *     integer samples can be a comb of fuller and emptier bins), take the
+ *     highest bin (ties: the lowest bin), its mean height and half width at
+ *     half height (interpolated; sigma = FWHM / 2.3548, twice the one-sided
+ *     width if the other side meets the histogram's end), subtract that
+ *     Gaussian from the residual, and repeat; shoulders of a peak become the
+ *     next components. If the residual runs out (no positive 5-bin mean
+ *     left) the quantile start is used.
  *   SSDA_MIX_INIT_QUANTILES: K slices of equal count along the histogram,
  *     each slice's mean, standard deviation and share.
  *
