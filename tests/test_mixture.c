@@ -203,6 +203,7 @@ static void test_em_vs_double(void)
                                     {0.4, 520.0, 15.0}, {0.1, 700.0, 60.0}};
     test_rng_t r;
     uint32_t run;
+    double worst_w = 0.0, worst_m = 0.0, worst_s = 0.0;
     test_rng_seed(&r, 31u);
     for (run = 0; run < RUNS; run++) {
         const uint32_t k = 2u + run % 3u, steps = 5u + run * 3u;
@@ -245,10 +246,17 @@ static void test_em_vs_double(void)
         model_comps(&m, got);
         for (j = 0; j < k; j++) {
             /* rounding (Q30 responsibilities, Q8 counts, Q16 results)
-               carried through the iterations: 1e-4 sigma and 1e-3 bin */
-            TEST_ASSERT_DOUBLE_WITHIN(1e-4, ref[j].w, got[j].w);
-            TEST_ASSERT_DOUBLE_WITHIN(1e-4 * ref[j].sd + 1e-3, ref[j].mu, got[j].mu);
-            TEST_ASSERT_DOUBLE_WITHIN(1e-4 * ref[j].sd + 1e-3, ref[j].sd, got[j].sd);
+               carried through up to 38 iterations, which amplify it the more
+               the flatter the likelihood (fewer samples): measured worst
+               1.5e-4 in weight with 20 000 samples, 7e-6 with 400 000 */
+            const double dw = fabs(ref[j].w - got[j].w), dm = fabs(ref[j].mu - got[j].mu);
+            const double ds = fabs(ref[j].sd - got[j].sd);
+            worst_w = dw > worst_w ? dw : worst_w;
+            worst_m = dm / ref[j].sd > worst_m ? dm / ref[j].sd : worst_m;
+            worst_s = ds / ref[j].sd > worst_s ? ds / ref[j].sd : worst_s;
+            TEST_ASSERT_DOUBLE_WITHIN(5e-4, ref[j].w, got[j].w);
+            TEST_ASSERT_DOUBLE_WITHIN(5e-4 * ref[j].sd + 1e-3, ref[j].mu, got[j].mu);
+            TEST_ASSERT_DOUBLE_WITHIN(5e-4 * ref[j].sd + 1e-3, ref[j].sd, got[j].sd);
         }
         /* the log-likelihood reported is that of the returned model, up to
            the Q16 rounding of its weights (<= 2^-17 each: a pixel of
@@ -261,6 +269,9 @@ static void test_em_vs_double(void)
                                       (double)m.bic_q16 / Q16);
         }
     }
+    /* (integers: newlib-nano's printf has no floating point) */
+    printf("EM vs double: worst weight %u e-6, mean %u e-6 sd, sd %u e-6 sd\n",
+           (unsigned)(worst_w * 1e6), (unsigned)(worst_m * 1e6), (unsigned)(worst_s * 1e6));
 }
 
 /* ---- recovery of known mixtures, both fits ---- */
@@ -386,9 +397,9 @@ static void test_search(void)
         const double e1 = seed_error(c1, 4u, total_d, lo, hi, hs);
         const double e2 = seed_error(c2, 4u, total_d, lo, hi, hs);
         char msg[120];
-        snprintf(msg, sizeof msg, "search: error over the windows %.4g at start, %.4g seed steps, "
-                 "%.4g refined (%u, %u cycles)", e0, e1, e2, (unsigned)seed.iterations,
-                 (unsigned)refined.iterations);
+        snprintf(msg, sizeof msg, "search: error over the windows %lu at start, %lu seed steps, "
+                 "%lu refined (%u, %u cycles)", (unsigned long)e0, (unsigned long)e1,
+                 (unsigned long)e2, (unsigned)seed.iterations, (unsigned)refined.iterations);
         printf("%s\n", msg);
         TEST_ASSERT_TRUE(e1 < e0);
         TEST_ASSERT_TRUE(e2 <= e1 * 1.01);
