@@ -25,7 +25,7 @@ static int resolve(const ssda_mix_config_t *cfg, uint32_t bins, ssda__mix_cfg_t 
     c->flags = z.flags;
     c->max_iter = z.max_iter != 0u ? z.max_iter : SSDA_MIX_DEFAULT_MAX_ITER;
     c->sigma_min_q16 = z.sigma_min_q16 != 0u ? z.sigma_min_q16 : SSDA_MIX_DEFAULT_SIGMA_MIN_Q16;
-    c->tol_q30 = z.tol_q30 != 0u ? z.tol_q30 : SSDA_MIX_DEFAULT_TOL_Q30;
+    c->tol_q24 = z.tol_q24 != 0u ? z.tol_q24 : SSDA_MIX_DEFAULT_TOL_Q24;
     return SSDA_OK;
 }
 
@@ -71,7 +71,7 @@ static void fit_em(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t
 {
     int64_t ll = 0;
     ssda__mix_init(hist, bins, total, hs, c, k, w);
-    m->iterations = ssda__mix_em(hist, bins, total, c, k, w, &ll);
+    m->iterations = ssda__mix_em(hist, bins, c, k, w, &ll);
     to_model(w, k, m);
     m->loglik_q16 = ll;
     m->bic_q16 = bic(ll, k, total);

@@ -14,11 +14,13 @@ static int64_t smooth(const int32_t *r, uint32_t bins, uint32_t z)
     const uint32_t lo = z >= 2u ? z - 2u : 0u;
     const uint32_t hi = z + 2u < bins ? z + 2u : bins - 1u;
     int64_t s = 0; /* |r| < 2^17: |s| < 2^20 */
-    uint32_t i;
+    uint32_t i, n, scale;
     for (i = lo; i <= hi; i++) {
         s += r[i];
     }
-    return s * (int64_t)(60u / (hi - lo + 1u)); /* 60 / 3, 4 or 5 */
+    n = (hi - lo) + 1u;
+    scale = 60u / n; /* 60 / 3, 4 or 5: exact */
+    return s * (int64_t)scale;
 }
 
 /* Half width at half height on one side of the smoothed peak at zp
@@ -36,10 +38,11 @@ static uint32_t half_width(const int32_t *r, uint32_t bins, uint32_t zp, int64_t
         const int64_t sn = smooth(r, bins, next);
         if (2 * sn <= a) {
             /* 2 s(z) > a >= 2 s(next): the crossing is frac of the way */
-            const uint64_t num = (uint64_t)((2 * sz) - a);  /* > 0, < 2^23 */
-            const uint64_t den = (uint64_t)(2 * (sz - sn)); /* >= num */
+            const int64_t above = (2 * sz) - a;       /* > 0, < 2^23 */
+            const int64_t drop = 2 * (sz - sn);       /* >= above */
             const uint32_t dist = dir < 0 ? zp - z : z - zp;
-            width = (dist << 16) + SSDA_DIV64_32(num << 16, (uint32_t)den); /* frac <= 2^16 */
+            width = (dist << 16) +
+                    (uint32_t)ssda__mix_ratio((uint64_t)above, 16u, (uint64_t)drop); /* <= 2^16 */
             found = true;
         }
         z = next;

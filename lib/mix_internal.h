@@ -38,7 +38,7 @@ typedef struct {
 /* The resolved configuration. */
 typedef struct {
     uint32_t k, kmax, fit, init, flags, max_iter;
-    uint32_t sigma_min_q16, tol_q30;
+    uint32_t sigma_min_q16, tol_q24;
 } ssda__mix_cfg_t;
 
 /* The work buffer: this fixed part (<= SSDA_MIX_WORK_FIXED bytes, checked
@@ -78,9 +78,8 @@ void ssda__mix_init(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_
 
 /* EM from w->p[0..k): returns the iterations (E-steps) run and sets
    *loglik to the log-likelihood of the final w->p. */
-uint32_t ssda__mix_em(const uint32_t *hist, uint32_t bins, uint32_t total,
-                      const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w,
-                      int64_t *loglik);
+uint32_t ssda__mix_em(const uint32_t *hist, uint32_t bins, const ssda__mix_cfg_t *c, uint32_t k,
+                      ssda__mix_work_t *w, int64_t *loglik);
 
 /* The seed's coordinate search from w->p / w->height_q8; leaves the final
    parameters in w->p (n = height x sigma); returns the cycles run. */

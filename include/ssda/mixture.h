@@ -39,10 +39,12 @@
  * < 2^52, second moment about the old mean < 2^64); the new mean and
  * variance from 128-bit quotients. Sigma is floored at sigma_min (a
  * histogram of integers has no narrower component). A component whose
- * weight reaches 0 stays at weight 0. Stops when the log-likelihood per
- * pixel gains less than tol_q30 / 2^30 nats (or falls: rounding) or after
- * max_iter iterations; the model returned is the one whose log-likelihood
- * was measured last.
+ * weight reaches 0 stays at weight 0. Stops when an iteration moves no
+ * mean and no sigma by more than tol of its sigma, and no weight by more
+ * than tol (tol_q24 / 2^24), or after max_iter iterations; the model
+ * returned is the one whose log-likelihood was measured last. (A stop on
+ * the log-likelihood's gain would end early: near a ridge the gain per
+ * iteration is smaller than the rounding of the fixed-point sum.)
  *
  * SEARCH (SSDA_MIX_FIT_SEARCH, the seed's Fig. 2.2.1): parameters height
  * a_k, mean, sigma; the histogram is scaled by a power of two to a peak
@@ -107,7 +109,7 @@ extern "C" {
 #define SSDA_MIX_DEFAULT_MAX_COMPONENTS 8u
 #define SSDA_MIX_DEFAULT_MAX_ITER 500u
 #define SSDA_MIX_DEFAULT_SIGMA_MIN_Q16 32768u /* 0.5 bin */
-#define SSDA_MIX_DEFAULT_TOL_Q30 1074u        /* 1e-6 nats per pixel */
+#define SSDA_MIX_DEFAULT_TOL_Q24 1024u        /* 2^-14, about 6e-5 */
 #define SSDA_MIX_DEFAULT_BAND_Q8 512u         /* +-2 sigma, the seed's band */
 /* The search's error window: +-2 sigma of each initial component. */
 #define SSDA_MIX_SEARCH_WINDOW 2u
@@ -141,8 +143,9 @@ typedef struct {
     uint8_t flags;          /* SSDA_MIX_SEED_STEPS */
     uint16_t max_iter;      /* EM iterations, or search cycles, per fit (0 = 500) */
     uint32_t sigma_min_q16; /* smallest sigma, bins Q16, 1..bins 2^16 (0 = 0.5 bin) */
-    uint32_t tol_q30;       /* EM stop: mean log-likelihood gain per pixel, nats Q30
-                               (0 = 1074, about 1e-6) */
+    uint32_t tol_q24;       /* EM stop: the largest move of a mean or sigma (in
+                               sigmas) or of a weight in one iteration, Q24
+                               (0 = 1024: 2^-14, about 6e-5) */
 } ssda_mix_config_t;
 
 /* One component. */

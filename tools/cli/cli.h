@@ -101,7 +101,7 @@ int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_imag
  * Each output is written to a temp file beside its final name; only when
  * every output is complete are they renamed into place. On any failure,
  * cli_outputs_abort deletes the temp files: no output is created or changed. */
-#define CLI_MAX_OUTPUTS 8
+#define CLI_MAX_OUTPUTS 12
 
 typedef struct {
     const char *cmd;

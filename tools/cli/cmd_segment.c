@@ -30,6 +30,8 @@ static const char help[] =
     "                      sum (the seed's Figs. 2.3-2.5)\n"
     "  --picture F         PNG: the labels colour-coded, one panel per feature, with\n"
     "                      legends\n"
+    "  --features F        16-bit gray PNG of each feature's values (the histogram\n"
+    "                      bins before the shift; nodata 65535), named as -o\n"
     "\n"
     "options:\n"
     "  --components S      auto (by BIC, default), N (every feature) or N1,N2,N3\n"
@@ -62,7 +64,7 @@ static const char help[] =
 
 typedef struct {
     seg_opts_t run;
-    const char *out, *json, *plot, *picture;
+    const char *out, *json, *plot, *picture, *features;
     int quiet;
 } seg_cli_t;
 
@@ -182,7 +184,7 @@ static int parse(int argc, char **argv, cli_args_t *a, seg_cli_t *c)
             return -1;
         } else if (cli_opt(a, "-o", &c->out) || cli_opt(a, "--output", &c->out) ||
                    cli_opt(a, "--json", &c->json) || cli_opt(a, "--plot", &c->plot) ||
-                   cli_opt(a, "--picture", &c->picture)) {
+                   cli_opt(a, "--picture", &c->picture) || cli_opt(a, "--features", &c->features)) {
             /* paths */
         } else if (cli_flag(a, "--seed-steps")) {
             c->run.seed_steps = 1;
@@ -209,9 +211,10 @@ static int parse(int argc, char **argv, cli_args_t *a, seg_cli_t *c)
     if (a->npos != 1) {
         return cli_usage_error(a->cmd, "need one input IN.png");
     }
-    if (c->out == NULL && c->json == NULL && c->plot == NULL && c->picture == NULL && c->quiet) {
-        return cli_usage_error(a->cmd, "nothing to do: give -o, --json, --plot or --picture "
-                                       "(or drop --quiet)");
+    if (c->out == NULL && c->json == NULL && c->plot == NULL && c->picture == NULL &&
+        c->features == NULL && c->quiet) {
+        return cli_usage_error(a->cmd, "nothing to do: give -o, --json, --plot, --picture or "
+                                       "--features (or drop --quiet)");
     }
     return CLI_OK;
 }
@@ -235,7 +238,8 @@ static void feature_path(const char *path, int k, char *buf, size_t len)
     }
 }
 
-static int write_labels(cli_outputs_t *out, const seg_cli_t *c, const seg_result_t *r)
+/* One gray PNG per feature: its labels (8-bit) or its values (16-bit). */
+static int write_images(cli_outputs_t *out, const char *base, int values, const seg_result_t *r)
 {
     int k;
     for (k = 0; k < r->nfeat; k++) {
@@ -243,15 +247,15 @@ static int write_labels(cli_outputs_t *out, const seg_cli_t *c, const seg_result
         gray_image_t g;
         FILE *f;
         if (r->nfeat > 1) {
-            feature_path(c->out, r->feat[k].index, path, sizeof path);
+            feature_path(base, r->feat[k].index, path, sizeof path);
         } else {
-            snprintf(path, sizeof path, "%s", c->out);
+            snprintf(path, sizeof path, "%s", base);
         }
-        g.pixels = r->feat[k].labels;
+        g.pixels = values ? (void *)r->feat[k].values : (void *)r->feat[k].labels;
         g.width = r->width;
         g.height = r->height;
-        g.stride = r->width;
-        g.bits = 8;
+        g.stride = values ? 2u * r->width : r->width;
+        g.bits = values ? 16 : 8;
         if ((f = cli_outputs_open(out, path)) == NULL) {
             return CLI_INPUT;
         }
@@ -513,13 +517,17 @@ int cmd_segment(int argc, char **argv)
     cli_warn_png_name(a.cmd, "-o", c.out);
     cli_warn_png_name(a.cmd, "--plot", c.plot);
     cli_warn_png_name(a.cmd, "--picture", c.picture);
+    cli_warn_png_name(a.cmd, "--features", c.features);
     if (seg_run(a.cmd, a.pos[0], &c.run, &r) != CLI_OK) {
         seg_result_free(&r);
         return CLI_INPUT;
     }
     cli_outputs_begin(&out, a.cmd);
     rc = CLI_INPUT;
-    if (c.out != NULL && write_labels(&out, &c, &r) != CLI_OK) {
+    if (c.out != NULL && write_images(&out, c.out, 0, &r) != CLI_OK) {
+        goto done;
+    }
+    if (c.features != NULL && write_images(&out, c.features, 1, &r) != CLI_OK) {
         goto done;
     }
     if (c.json != NULL && ((f = cli_outputs_open(&out, c.json)) == NULL ||

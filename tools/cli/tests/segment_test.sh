@@ -83,8 +83,8 @@ chk json hol.json 1 3
 grep -q '"masked_pixels":[[:space:]]*210' hol.json || fail "masked pixels: $(grep masked hol.json)"
 # every feature: three label files, the plot, the picture, JSON with the K-L part
 run 0 segment bright.png --components 3,3,2 -o all.png --json all.json --plot h.png \
-      --picture p.png --contours --matrix covariance --rule likely || true
-for k in 1 2 3; do chk png "all-z$k.png" 120 90; done
+      --picture p.png --contours --matrix covariance --rule likely --features f.png || true
+for k in 1 2 3; do chk png "all-z$k.png" 120 90; chk png "f-z$k.png" 120 90; done
 chk json all.json 3 3
 [ -s h.png ] || fail "no plot"
 [ -s p.png ] || fail "no picture"
