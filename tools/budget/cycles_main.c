@@ -24,5 +24,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SEGMENT
+    jobs_segment();
+#endif
     return budget_failed();
 }

@@ -19,6 +19,8 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* kl.h, mixture.h, region.h: per pixel and per fit. */
+void jobs_segment(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);
