@@ -67,7 +67,7 @@ int32_t ssda__ln_q24(uint64_t v)
         33040817u,  96220323u,  155887996u, 212413774u, 266112055u, 317252283u,
         366067135u, 412758919u, 457504636u, 500460037u, 541762891u, 581535654u,
         619887653u, 656916903u, 692711611u, 727351448u};
-    const uint32_t bits = ssda__bits64(v);
+    const uint32_t bits = ssda__bitlen64(v);
     uint32_t e, m, i, sh;
     uint64_t u;
     int64_t r, s;

@@ -26,7 +26,7 @@ static rot_t rotation(int64_t app, int64_t aqq, int64_t apq)
     const int64_t d = aqq - app; /* |d| < 2^33 */
     const int64_t e = 2 * apq;   /* |e| < 2^33 */
     uint64_t ad = mag64(d), ae = mag64(e);
-    const uint32_t bits = ssda__bits64(ad > ae ? ad : ae);
+    const uint32_t bits = ssda__bitlen64(ad > ae ? ad : ae);
     uint64_t hyp, den, r, t2;
     uint32_t sh;
     rot_t rot;

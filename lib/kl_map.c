@@ -44,8 +44,8 @@ static void gain(const ssda_kl_t *kl, uint32_t k, uint64_t *num, uint64_t *den)
     /* g vmax > gain_max: a step of one band would move z more than gain_max
        steps. num 2^16 vmax < 2^92, gain_max den 2^30 < 2^112 */
     if (*den == 0u ||
-        ssda__u128_cmp(ssda__u128_mul64(*num << 16, vmax),
-                       ssda__u128_shl(ssda__u128_mul64(kl->gain_max_q16, *den), 30u)) > 0) {
+        ssda__cmp_128(ssda__mul_64x64(*num << 16, vmax),
+                       ssda__u128_shl(ssda__mul_64x64(kl->gain_max_q16, *den), 30u)) > 0) {
         *num = (uint64_t)kl->gain_max_q16 << 30; /* g = gain_max / vmax */
         *den = vmax << 16;
     }
@@ -56,7 +56,7 @@ static int64_t weight(int32_t v, uint64_t num, uint64_t den, uint32_t sh)
 {
     const uint64_t mag = (uint64_t)(v < 0 ? -(int64_t)v : (int64_t)v);
     const ssda__u128_t d = ssda__u128_shl(ssda__u128_from(den), 30u);
-    ssda__u128_t n = ssda__u128_shl(ssda__u128_mul64(mag, num), sh);
+    ssda__u128_t n = ssda__u128_shl(ssda__mul_64x64(mag, num), sh);
     int64_t w;
     n = ssda__u128_add(n, ssda__u128_shr(d, 1u));
     w = (int64_t)ssda__u128_sat64(ssda__u128_div(n, d));

@@ -22,9 +22,9 @@ static void centre(const ssda_kl_acc_t *acc, centred_t *c)
     c->top_bits = 0u;
     for (k = 0u; k < 3u; k++) {
         for (l = 0u; l < 3u; l++) {
-            const ssda__u128_t p = ssda__u128_mul64(acc->count, acc->sum_xy[k_pair[k][l]]);
-            const ssda__u128_t q = ssda__u128_mul64(acc->sum[k], acc->sum[l]);
-            c->neg[k][l] = ssda__u128_cmp(p, q) < 0;
+            const ssda__u128_t p = ssda__mul_64x64(acc->count, acc->sum_xy[k_pair[k][l]]);
+            const ssda__u128_t q = ssda__mul_64x64(acc->sum[k], acc->sum[l]);
+            c->neg[k][l] = ssda__cmp_128(p, q) < 0;
             c->mag[k][l] = c->neg[k][l] ? ssda__u128_sub(q, p) : ssda__u128_sub(p, q);
         }
         if (ssda__u128_bits(c->mag[k][k]) > c->top_bits) {
@@ -74,7 +74,7 @@ static void correlation_q30(const centred_t *c, int64_t a[3][3])
             } else if (d[k] == 0u || d[l] == 0u) {
                 r = 0; /* a constant band */
             } else {
-                const uint64_t den = ssda__u128_isqrt(ssda__u128_mul64(d[k], d[l])); /* < 2^62 */
+                const uint64_t den = ssda__u128_isqrt(ssda__mul_64x64(d[k], d[l])); /* < 2^62 */
                 ssda__u128_t num = ssda__u128_shl(ssda__u128_from(scaled(c->mag[k][l], e)), 30u);
                 num = ssda__u128_add(num, ssda__u128_from(den >> 1));
                 r = (int64_t)ssda__u128_div(num, ssda__u128_from(den)).lo;
@@ -93,7 +93,7 @@ static void correlation_q30(const centred_t *c, int64_t a[3][3])
 static uint64_t cov_q16(uint64_t x, int32_t e, uint32_t n)
 {
     ssda__u128_t num = ssda__u128_from(x);     /* < 2^34 */
-    ssda__u128_t den = ssda__u128_mul64(n, n); /* < 2^64 */
+    ssda__u128_t den = ssda__mul_64x64(n, n); /* < 2^64 */
     const int32_t up = e + 16;
     if (up >= 0) {
         num = ssda__u128_shl(num, (uint32_t)up); /* e <= 66: < 2^116 */

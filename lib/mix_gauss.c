@@ -25,7 +25,7 @@ void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum, uint32_t 
 {
     /* sqrt2 sigma in Q46 (sigma_q16 < 2^29): 2^31 <= s2 < 2^60 */
     const uint64_t s2 = (uint64_t)sigma_q16 * SQRT2_Q30;
-    const uint32_t b = ssda__bits64(s2);
+    const uint32_t b = ssda__bitlen64(s2);
     g->mean_q16 = mean_q16;
     g->ks = b - 23u;
     /* km = 2^(46 + ks) / s2 = 2^(23 + b) / s2 in (2^23, 2^24] */
@@ -139,6 +139,6 @@ uint32_t ssda__mix_scale_shift(const uint32_t *hist, uint32_t bins)
     for (z = 0u; z < bins; z++) {
         top = hist[z] > top ? hist[z] : top;
     }
-    b = ssda__bits64(top);
+    b = ssda__bitlen64(top);
     return b > 16u ? b - 16u : 0u;
 }

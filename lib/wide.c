@@ -1,25 +1,86 @@
-/* wide.c - unsigned 128-bit helpers for setup paths (see wide.h). */
+/* wide.c - 128- and 192-bit unsigned arithmetic (wide.h). */
 #include "wide.h"
+
+ssda__u128_t ssda__mul_64x64_parts(uint64_t a, uint64_t b)
+{
+    const uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32;
+    const uint64_t b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
+    const uint64_t p00 = a0 * b0; /* each partial product < 2^64 */
+    const uint64_t p01 = a0 * b1;
+    const uint64_t p10 = a1 * b0;
+    const uint64_t p11 = a1 * b1;
+    /* the middle column: three terms < 2^32 each, sum < 2^34 */
+    const uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
+    ssda__u128_t r;
+    r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
+    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32); /* < 2^64: a * b < 2^128 */
+    return r;
+}
+
+ssda__u192_t ssda__mul_128x64(ssda__u128_t a, uint64_t b)
+{
+    const ssda__u128_t l = ssda__mul_64x64(a.lo, b);
+    const ssda__u128_t h = ssda__mul_64x64(a.hi, b);
+    ssda__u192_t r;
+    r.w0 = l.lo;
+    r.w1 = l.hi + h.lo;
+    r.w2 = h.hi + (r.w1 < h.lo ? 1u : 0u); /* carry; < 2^64 as a * b < 2^192 */
+    return r;
+}
+
+int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b)
+{
+    if (a->w2 != b->w2) {
+        return a->w2 < b->w2 ? -1 : 1;
+    }
+    if (a->w1 != b->w1) {
+        return a->w1 < b->w1 ? -1 : 1;
+    }
+    if (a->w0 != b->w0) {
+        return a->w0 < b->w0 ? -1 : 1;
+    }
+    return 0;
+}
+
+uint64_t ssda__div_128_64(ssda__u128_t n, uint64_t d)
+{
+    uint64_t rem = n.hi; /* < d throughout */
+    uint64_t lo = n.lo;
+    uint64_t q = 0u;
+    uint32_t i;
+    for (i = 0u; i < 64u; i++) {
+        /* rem * 2 + next bit: 65 bits, the top one in carry */
+        const uint64_t carry = rem >> 63;
+        rem = (rem << 1) | (lo >> 63);
+        lo <<= 1;
+        q <<= 1;
+        if (carry != 0u || rem >= d) {
+            rem -= d; /* modulo 2^64: the true difference is < d */
+            q |= 1u;
+        }
+    }
+    return q;
+}
+
+#if !defined(__GNUC__) && !defined(__clang__)
+uint32_t ssda__bitlen64(uint64_t v)
+{
+    uint32_t n = 0u;
+    while (v != 0u) {
+        v >>= 1;
+        n++;
+    }
+    return n;
+}
+#endif
+
+/* ---- sums, shifts, quotients and roots (kl_*.c, mix_*.c) ---- */
 
 ssda__u128_t ssda__u128_from(uint64_t v)
 {
     ssda__u128_t r;
     r.hi = 0u;
     r.lo = v;
-    return r;
-}
-
-ssda__u128_t ssda__u128_mul64(uint64_t a, uint64_t b)
-{
-    const uint64_t a0 = a & 0xFFFFFFFFu, a1 = a >> 32;
-    const uint64_t b0 = b & 0xFFFFFFFFu, b1 = b >> 32;
-    const uint64_t p00 = a0 * b0, p01 = a0 * b1; /* each < 2^64 */
-    const uint64_t p10 = a1 * b0, p11 = a1 * b1;
-    /* middle column: (p00 >> 32) + low halves of p01 and p10, < 3 * 2^32 */
-    const uint64_t mid = (p00 >> 32) + (p01 & 0xFFFFFFFFu) + (p10 & 0xFFFFFFFFu);
-    ssda__u128_t r;
-    r.lo = (mid << 32) | (p00 & 0xFFFFFFFFu);
-    r.hi = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32); /* the product < 2^128 */
     return r;
 }
 
@@ -37,17 +98,6 @@ ssda__u128_t ssda__u128_sub(ssda__u128_t a, ssda__u128_t b)
     r.lo = a.lo - b.lo;
     r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
     return r;
-}
-
-int ssda__u128_cmp(ssda__u128_t a, ssda__u128_t b)
-{
-    if (a.hi != b.hi) {
-        return a.hi < b.hi ? -1 : 1;
-    }
-    if (a.lo != b.lo) {
-        return a.lo < b.lo ? -1 : 1;
-    }
-    return 0;
 }
 
 ssda__u128_t ssda__u128_shl(ssda__u128_t a, uint32_t s)
@@ -80,19 +130,9 @@ ssda__u128_t ssda__u128_shr(ssda__u128_t a, uint32_t s)
     return r;
 }
 
-uint32_t ssda__bits64(uint64_t v)
-{
-    uint32_t n = 0u;
-    while (v != 0u) {
-        v >>= 1;
-        n++;
-    }
-    return n;
-}
-
 uint32_t ssda__u128_bits(ssda__u128_t a)
 {
-    return a.hi != 0u ? 64u + ssda__bits64(a.hi) : ssda__bits64(a.lo);
+    return a.hi != 0u ? 64u + ssda__bitlen64(a.hi) : ssda__bitlen64(a.lo);
 }
 
 ssda__u128_t ssda__u128_div(ssda__u128_t n, ssda__u128_t d)
@@ -111,7 +151,7 @@ ssda__u128_t ssda__u128_div(ssda__u128_t n, ssda__u128_t d)
         rem = ssda__u128_shl(rem, 1u);
         rem.lo |= (i >= 64u ? (n.hi >> (i - 64u)) : (n.lo >> i)) & 1u;
         q = ssda__u128_shl(q, 1u);
-        if (ssda__u128_cmp(rem, d) >= 0) {
+        if (ssda__cmp_128(rem, d) >= 0) {
             rem = ssda__u128_sub(rem, d);
             q.lo |= 1u;
         }
@@ -132,7 +172,7 @@ uint64_t ssda__u128_isqrt(ssda__u128_t a)
     bit = ssda__u128_shl(ssda__u128_from(1u), (b - 1u) & ~1u);
     while (bit.hi != 0u || bit.lo != 0u) {
         const ssda__u128_t trial = ssda__u128_add(root, bit);
-        if (ssda__u128_cmp(rem, trial) >= 0) {
+        if (ssda__cmp_128(rem, trial) >= 0) {
             rem = ssda__u128_sub(rem, trial);
             root = ssda__u128_add(ssda__u128_shr(root, 1u), bit);
         } else {

@@ -1,9 +1,8 @@
 /*
- * test_wide.c - the 128-bit helpers of lib/wide.c, by identities that hold
- * on every target (no __int128 needed): a product against its operands'
- * 32-bit pieces summed column by column, q * d + r == n with r < d for
- * divisions, r^2 <= a < (r + 1)^2 for square roots, shifts inverse to each
- * other, and the symmetric rounding shift against its definition.
+ * test_wide.c - the 128/192-bit helpers of lib/wide.c (the correlation
+ * search's exact comparisons) against an independent schoolbook product in
+ * 16-bit limbs written here: random and extreme operands, comparisons,
+ * the 128-by-64 division and bit lengths.
  */
 #include "unity.h"
 #include "wide.h"
@@ -12,215 +11,137 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-#ifdef SSDA_TEST_SMALL
-#define RANDOM 300u
-#else
-#define RANDOM 20000u
-#endif
+/* out[0..na+nb) = a * b, little-endian 16-bit limbs */
+static void ref_mul(const uint16_t *a, int na, const uint16_t *b, int nb, uint16_t *out)
+{
+    int i, j;
+    for (i = 0; i < na + nb; i++) {
+        out[i] = 0;
+    }
+    for (i = 0; i < na; i++) {
+        uint32_t carry = 0;
+        for (j = 0; j < nb; j++) {
+            uint32_t t = (uint32_t)a[i] * b[j] + out[i + j] + carry;
+            out[i + j] = (uint16_t)t;
+            carry = t >> 16;
+        }
+        out[i + nb] = (uint16_t)carry;
+    }
+}
+
+static void limbs(uint64_t v, uint16_t *out)
+{
+    int i;
+    for (i = 0; i < 4; i++) {
+        out[i] = (uint16_t)(v >> (16 * i));
+    }
+}
+
+static uint64_t word(const uint16_t *l)
+{
+    return (uint64_t)l[0] | ((uint64_t)l[1] << 16) | ((uint64_t)l[2] << 32) | ((uint64_t)l[3] << 48);
+}
 
 static uint64_t rand64(test_rng_t *r)
 {
-    const uint64_t v = ((uint64_t)test_rng_next(r) << 32) | test_rng_next(r);
-    return v >> (test_rng_next(r) % 64u);
-}
-
-static ssda__u128_t rand128(test_rng_t *r)
-{
-    ssda__u128_t v;
-    v.hi = rand64(r);
-    v.lo = ((uint64_t)test_rng_next(r) << 32) | test_rng_next(r);
-    if (test_rng_next(r) % 3u == 0u) {
-        v.hi = 0u;
-        v.lo = rand64(r);
+    uint64_t v = ((uint64_t)test_rng_next(r) << 32) | test_rng_next(r);
+    switch (test_rng_range(r, 0, 5)) {
+    case 0: return v >> test_rng_range(r, 0, 63);
+    case 1: return UINT64_MAX - (v & 0xFFu);
+    case 2: return v & 0xFFFFFFFFu;
+    default: return v;
     }
-    return v;
 }
 
-static void assert_eq(ssda__u128_t a, ssda__u128_t b)
-{
-    TEST_ASSERT_EQUAL_HEX64(a.hi, b.hi);
-    TEST_ASSERT_EQUAL_HEX64(a.lo, b.lo);
-}
-
-/* a * b by 16-bit digits, schoolbook, as a reference */
-static ssda__u128_t mul_ref(uint64_t a, uint64_t b)
-{
-    uint32_t d[8] = {0};
-    uint32_t i, j;
-    ssda__u128_t r;
-    for (i = 0; i < 4u; i++) {
-        uint32_t carry = 0u;
-        for (j = 0; j < 4u; j++) {
-            const uint32_t t = (uint32_t)((a >> (16u * i)) & 0xFFFFu) *
-                               (uint32_t)((b >> (16u * j)) & 0xFFFFu);
-            /* d + t + carry < 2^16 + 2^32 - 2^17 + 1 + 2^16: fits 32 bits after splitting */
-            const uint64_t s = (uint64_t)d[i + j] + t + carry;
-            d[i + j] = (uint32_t)(s & 0xFFFFu);
-            carry = (uint32_t)(s >> 16);
-        }
-        for (j = i + 4u; j < 8u && carry != 0u; j++) {
-            const uint32_t s = d[j] + carry;
-            d[j] = s & 0xFFFFu;
-            carry = s >> 16;
-        }
-    }
-    r.lo = (uint64_t)d[0] | ((uint64_t)d[1] << 16) | ((uint64_t)d[2] << 32) | ((uint64_t)d[3] << 48);
-    r.hi = (uint64_t)d[4] | ((uint64_t)d[5] << 16) | ((uint64_t)d[6] << 32) | ((uint64_t)d[7] << 48);
-    return r;
-}
-
-static void test_mul(void)
+static void test_products_against_schoolbook(void)
 {
     test_rng_t r;
-    uint32_t i;
-    assert_eq(mul_ref(UINT64_MAX, UINT64_MAX), ssda__u128_mul64(UINT64_MAX, UINT64_MAX));
-    TEST_ASSERT_EQUAL_HEX64(UINT64_MAX - 1u, ssda__u128_mul64(UINT64_MAX, UINT64_MAX).hi);
-    TEST_ASSERT_EQUAL_HEX64(1u, ssda__u128_mul64(UINT64_MAX, UINT64_MAX).lo);
-    test_rng_seed(&r, 11u);
-    for (i = 0; i < RANDOM; i++) {
-        const uint64_t a = rand64(&r), b = rand64(&r);
-        assert_eq(mul_ref(a, b), ssda__u128_mul64(a, b));
+    uint32_t t;
+    test_rng_seed(&r, 21u);
+    for (t = 0; t < 20000u; t++) {
+        uint64_t a = rand64(&r), b = rand64(&r), c = rand64(&r);
+        uint16_t la[8], lb[4], lc[4], p[8], q[12];
+        ssda__u128_t ab = ssda__mul_64x64(a, b), ab2 = ssda__mul_64x64_parts(a, b);
+        ssda__u192_t abc;
+        limbs(a, la);
+        limbs(b, lb);
+        limbs(c, lc);
+        ref_mul(la, 4, lb, 4, p);
+        TEST_ASSERT_EQUAL_UINT64(word(p), ab.lo);
+        TEST_ASSERT_EQUAL_UINT64(word(p + 4), ab.hi);
+        TEST_ASSERT_EQUAL_UINT64(ab.lo, ab2.lo);
+        TEST_ASSERT_EQUAL_UINT64(ab.hi, ab2.hi);
+        abc = ssda__mul_128x64(ab, c);
+        ref_mul(p, 8, lc, 4, q);
+        TEST_ASSERT_EQUAL_UINT64(word(q), abc.w0);
+        TEST_ASSERT_EQUAL_UINT64(word(q + 4), abc.w1);
+        TEST_ASSERT_EQUAL_UINT64(word(q + 8), abc.w2);
     }
 }
 
-static void test_add_sub_shift_cmp(void)
+static void test_extremes(void)
+{
+    ssda__u128_t m = ssda__mul_64x64(UINT64_MAX, UINT64_MAX);
+    ssda__u192_t w = ssda__mul_128x64(m, UINT64_MAX);
+    /* (2^64 - 1)^2 = 2^128 - 2^65 + 1 */
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX - 1u, m.hi);
+    TEST_ASSERT_EQUAL_UINT64(1u, m.lo);
+    /* (2^64 - 1)^3 = 2^192 - 3 * 2^128 + 3 * 2^64 - 1 */
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX - 2u, w.w2);
+    TEST_ASSERT_EQUAL_UINT64(2u, w.w1);
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, w.w0);
+    m = ssda__mul_64x64_parts(UINT64_MAX, UINT64_MAX);
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX - 1u, m.hi);
+    TEST_ASSERT_EQUAL_UINT64(1u, m.lo);
+}
+
+static void test_compare_and_divide(void)
 {
     test_rng_t r;
+    uint32_t t;
+    ssda__u192_t a = {1, 2, 3}, b = {1, 2, 3};
+    ssda__u128_t x = {5, 6}, y = {5, 6};
+    TEST_ASSERT_EQUAL_INT(0, ssda__cmp_192(&a, &b));
+    TEST_ASSERT_EQUAL_INT(0, ssda__cmp_128(x, y));
+    b.w0 = 4;
+    TEST_ASSERT_EQUAL_INT(-1, ssda__cmp_192(&a, &b));
+    TEST_ASSERT_EQUAL_INT(1, ssda__cmp_192(&b, &a));
+    b.w1 = 1;
+    TEST_ASSERT_EQUAL_INT(1, ssda__cmp_192(&a, &b));
+    b.w2 = 2;
+    TEST_ASSERT_EQUAL_INT(-1, ssda__cmp_192(&a, &b));
+    y.lo = 7;
+    TEST_ASSERT_EQUAL_INT(-1, ssda__cmp_128(x, y));
+    y.hi = 4;
+    TEST_ASSERT_EQUAL_INT(1, ssda__cmp_128(x, y));
+    test_rng_seed(&r, 22u);
+    for (t = 0; t < 5000u; t++) {
+        /* n = q d + rem with rem < d: the quotient must come back */
+        uint64_t d = rand64(&r) | 1u, q = rand64(&r), rem = rand64(&r) % d;
+        ssda__u128_t n = ssda__mul_64x64(q, d);
+        n.lo += rem;
+        n.hi += n.lo < rem ? 1u : 0u;
+        TEST_ASSERT_EQUAL_UINT64(q, ssda__div_128_64(n, d));
+    }
+}
+
+static void test_bit_length(void)
+{
     uint32_t i;
-    test_rng_seed(&r, 12u);
-    for (i = 0; i < RANDOM; i++) {
-        const ssda__u128_t a = rand128(&r), b = rand128(&r);
-        const uint32_t s = test_rng_next(&r) % 128u;
-        const ssda__u128_t sum = ssda__u128_add(a, b);
-        assert_eq(a, ssda__u128_sub(sum, b));
-        TEST_ASSERT_EQUAL_INT(0, ssda__u128_cmp(a, a));
-        TEST_ASSERT_EQUAL_INT(-ssda__u128_cmp(a, b), ssda__u128_cmp(b, a));
-        if (ssda__u128_bits(a) + s <= 128u) {
-            assert_eq(a, ssda__u128_shr(ssda__u128_shl(a, s), s));
-            TEST_ASSERT_EQUAL_UINT32(a.hi == 0u && a.lo == 0u ? 0u : ssda__u128_bits(a) + s,
-                                     ssda__u128_bits(ssda__u128_shl(a, s)));
-        }
-        /* shr then shl clears exactly the low s bits */
-        {
-            const ssda__u128_t back = ssda__u128_shl(ssda__u128_shr(a, s), s);
-            const ssda__u128_t low = ssda__u128_sub(a, back);
-            TEST_ASSERT_TRUE(ssda__u128_bits(low) <= s);
-        }
+    TEST_ASSERT_EQUAL_UINT32(0, ssda__bitlen64(0));
+    for (i = 0; i < 64u; i++) {
+        TEST_ASSERT_EQUAL_UINT32(i + 1u, ssda__bitlen64((uint64_t)1u << i));
+        TEST_ASSERT_EQUAL_UINT32(i + 1u, ssda__bitlen64(((uint64_t)1u << i) | 1u));
     }
-    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, ssda__u128_sat64(ssda__u128_shl(ssda__u128_from(1u), 64u)));
-    TEST_ASSERT_EQUAL_UINT64(5u, ssda__u128_sat64(ssda__u128_from(5u)));
-    TEST_ASSERT_EQUAL_UINT32(0u, ssda__bits64(0u));
-    TEST_ASSERT_EQUAL_UINT32(64u, ssda__bits64(UINT64_MAX));
-}
-
-static void check_div(ssda__u128_t n, ssda__u128_t d)
-{
-    const ssda__u128_t q = ssda__u128_div(n, d);
-    ssda__u128_t prod, rem;
-    /* q * d without overflow: q < 2^(bits(n) - bits(d) + 1) */
-    TEST_ASSERT_TRUE(q.hi == 0u || d.hi == 0u);
-    if (q.hi == 0u) {
-        prod = ssda__u128_mul64(q.lo, d.lo);
-        prod.hi += q.lo * d.hi;
-    } else {
-        prod = ssda__u128_mul64(q.hi, d.lo);
-        prod.hi = prod.lo;
-        prod.lo = 0u;
-        prod = ssda__u128_add(prod, ssda__u128_mul64(q.lo, d.lo));
-    }
-    TEST_ASSERT_TRUE(ssda__u128_cmp(prod, n) <= 0);
-    rem = ssda__u128_sub(n, prod);
-    TEST_ASSERT_TRUE(ssda__u128_cmp(rem, d) < 0);
-}
-
-static void test_div(void)
-{
-    test_rng_t r;
-    uint32_t i;
-    ssda__u128_t top, big;
-    top.hi = UINT64_MAX;
-    top.lo = UINT64_MAX;
-    big.hi = (uint64_t)1u << 63;
-    big.lo = 1u;
-    check_div(top, ssda__u128_from(1u));
-    check_div(top, top);
-    check_div(top, big);          /* a divisor >= 2^127: the carry path */
-    check_div(big, top);
-    check_div(ssda__u128_from(0u), ssda__u128_from(3u));
-    assert_eq(top, ssda__u128_div(ssda__u128_from(7u), ssda__u128_from(0u)));
-    test_rng_seed(&r, 13u);
-    for (i = 0; i < RANDOM; i++) {
-        ssda__u128_t d = rand128(&r);
-        if (d.hi == 0u && d.lo == 0u) {
-            d.lo = 1u;
-        }
-        check_div(rand128(&r), d);
-    }
-}
-
-static void check_isqrt(ssda__u128_t a)
-{
-    const uint64_t s = ssda__u128_isqrt(a);
-    TEST_ASSERT_TRUE(ssda__u128_cmp(ssda__u128_mul64(s, s), a) <= 0);
-    if (s != UINT64_MAX) {
-        TEST_ASSERT_TRUE(ssda__u128_cmp(ssda__u128_mul64(s + 1u, s + 1u), a) > 0);
-    }
-}
-
-static void test_isqrt(void)
-{
-    test_rng_t r;
-    uint32_t i;
-    ssda__u128_t top;
-    top.hi = UINT64_MAX;
-    top.lo = UINT64_MAX;
-    check_isqrt(top);
-    TEST_ASSERT_EQUAL_HEX64(UINT64_MAX, ssda__u128_isqrt(top));
-    TEST_ASSERT_EQUAL_HEX64(0u, ssda__u128_isqrt(ssda__u128_from(0u)));
-    for (i = 1u; i < 300u; i++) {
-        check_isqrt(ssda__u128_from(i));
-        check_isqrt(ssda__u128_mul64(i, i));
-        check_isqrt(ssda__u128_sub(ssda__u128_mul64((uint64_t)i << 40, (uint64_t)i << 40),
-                                   ssda__u128_from(1u)));
-    }
-    test_rng_seed(&r, 14u);
-    for (i = 0; i < RANDOM; i++) {
-        check_isqrt(rand128(&r));
-    }
-}
-
-static void test_round_shift(void)
-{
-    test_rng_t r;
-    uint32_t i;
-    TEST_ASSERT_EQUAL_INT64(1, ssda__round_shift(1, 1));   /* 0.5 -> 1 */
-    TEST_ASSERT_EQUAL_INT64(-1, ssda__round_shift(-1, 1)); /* -0.5 -> -1 */
-    TEST_ASSERT_EQUAL_INT64(0, ssda__round_shift(-1, 2));
-    TEST_ASSERT_EQUAL_INT64(-2, ssda__round_shift(-6, 2)); /* -1.5 -> -2 */
-    TEST_ASSERT_EQUAL_INT64(-((int64_t)1 << 60), ssda__round_shift(INT64_MIN, 3));
-    TEST_ASSERT_EQUAL_INT64((int64_t)1 << 60, ssda__round_shift(INT64_MAX, 3));
-    test_rng_seed(&r, 15u);
-    for (i = 0; i < RANDOM; i++) {
-        /* |v| < 2^62: q 2^s, up to |v| + 2^(s-1), stays in range */
-        const int64_t v = (int64_t)(rand64(&r) >> 2) * ((test_rng_next(&r) & 1u) != 0u ? -1 : 1);
-        const uint32_t s = 1u + test_rng_next(&r) % 62u;
-        const int64_t q = ssda__round_shift(v, s);
-        const int64_t back = q * ((int64_t)1 << s); /* |q| 2^s <= |v| + 2^(s-1) */
-        TEST_ASSERT_EQUAL_INT64(-q, ssda__round_shift(-v, s));
-        /* |v - q 2^s| <= 2^(s-1), with equality rounding away from zero */
-        if (v >= 0) {
-            TEST_ASSERT_TRUE(v - back <= ((int64_t)1 << (s - 1u)) - 1 && back - v <= ((int64_t)1 << (s - 1u)));
-        }
-    }
+    TEST_ASSERT_EQUAL_UINT32(64, ssda__bitlen64(UINT64_MAX));
 }
 
 int main(void)
 {
     UNITY_BEGIN();
-    RUN_TEST(test_mul);
-    RUN_TEST(test_add_sub_shift_cmp);
-    RUN_TEST(test_div);
-    RUN_TEST(test_isqrt);
-    RUN_TEST(test_round_shift);
+    RUN_TEST(test_products_against_schoolbook);
+    RUN_TEST(test_extremes);
+    RUN_TEST(test_compare_and_divide);
+    RUN_TEST(test_bit_length);
     return UNITY_END();
 }
