@@ -10,7 +10,8 @@
 #      (tools/bench/seg_compare.py, /usr/bin/python3 with numpy, scikit-learn,
 #      scikit-image).
 #   tools/bench-segment.sh [--reps R] [IMAGE:NODATA:K1,K2,K3 ...]
-# Without images it uses ../shared/data when present: the Landsat scene
+# Without images it uses the data folder given as SSDA_DATA (default
+# ../shared/data beside the repository) when present: the Landsat scene
 # (nodata 0; the seed's 6, 5, 4 components), camera and moon (gray, 4 and 3),
 # and band 3 of the MicaSense capture (16-bit gray, 4). Data is read where it
 # is, never copied. SSDA_BENCH_DIR sets the build directory (default
@@ -28,7 +29,7 @@ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
 cmake --build "$dir" --target ssda_cli ssda-bench-segment -j "$(nproc 2>/dev/null || echo 2)" >&2
 
 images=("$@")
-data=$root/../shared/data
+data=${SSDA_DATA:-$root/../shared/data}
 if [ ${#images[@]} -eq 0 ] && [ -d "$data" ]; then
   for spec in "aerial/RGB.byte.png:0:6,5,4" "classic/camera.png::4" "classic/moon.png::3" \
               "multiband/IMG_0001_3.png::4"; do

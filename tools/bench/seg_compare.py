@@ -132,8 +132,8 @@ def scene(kind, seed):
         noise = 5.0
     else:  # three regions: gray levels (brightness) or equal-brightness hues
         colours = np.array([[60, 60, 60], [130, 130, 130], [200, 200, 200]], float) \
-            if kind == "brightness" else np.array([[160, 115, 95], [125, 125, 125],
-                                                   [95, 125, 165]], float)
+            if kind == "brightness" else np.array([[160, 115, 100], [125, 125, 125],
+                                                   [95, 120, 160]], float)  # sums 375
         lab = np.where(((x - 128) / 90) ** 2 + ((y - 128) / 70) ** 2 <= 1, 1,
                        np.where(np.abs(x - 1.2 * y - 90) < 40, 2, 3))
         noise = 4.0 if kind == "brightness" else 12.0
