@@ -83,5 +83,10 @@ int demo_pitch(const demo_ctx_t *c, const demo_signal_t *sig, int synthetic,
    regions: K-L transform, mixtures, labels, scores; writes scene.png,
    segment_hist.png and segment_labels.png. Returns 0 or -1. */
 int demo_segment(const demo_ctx_t *c);
+/* Part 3: registration by closed loops (seed 001) of a synthetic aerial
+   pair with a known similarity and gain; writes the inputs and
+   symreg_overlay.png. Returns 0, or -1 on failure or when the corners are
+   off by 2 px or more. */
+int demo_symreg(const demo_ctx_t *c, const char *label_prefix);
 
 #endif /* SSDA_DEMO_H */

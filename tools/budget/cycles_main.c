@@ -27,5 +27,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_SEGMENT
     jobs_segment();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SYMREG
+    jobs_symreg();
+#endif
     return budget_failed();
 }
