@@ -5,7 +5,7 @@
 #include "draw_seg.h"
 #include "segment_run.h"
 
-#include <cjson/cJSON.h>
+#include "json_out.h"
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -259,7 +259,7 @@ static int write_images(cli_outputs_t *out, const char *base, int values, const 
         if ((f = cli_outputs_open(out, path)) == NULL) {
             return CLI_INPUT;
         }
-        if (png_write_gray_fp(f, path, &g, err, sizeof err) != 0) {
+        if (png_write_gray_to(f, path, &g, err, sizeof err) != 0) {
             return cli_input_error(out->cmd, "%s", err);
         }
     }
@@ -283,9 +283,9 @@ static cJSON *json_feature(const seg_result_t *r, const seg_feature_t *f)
     cJSON_AddStringToObject(o, "fit", m->fit == SSDA_MIX_FIT_EM ? "em" : "search");
     cJSON_AddNumberToObject(o, "count", m->count);
     cJSON_AddNumberToObject(o, "iterations", m->iterations);
-    cJSON_AddNumberToObject(o, "loglik", (double)m->loglik_q16 / 65536.0);
-    cJSON_AddNumberToObject(o, "bic", (double)m->bic_q16 / 65536.0);
-    cJSON_AddNumberToObject(o, "fit_seconds", f->fit_secs);
+    json_out_add_fixed(o, "loglik", (double)m->loglik_q16 / 65536.0, 5); /* Q16: 5 decimals */
+    json_out_add_fixed(o, "bic", (double)m->bic_q16 / 65536.0, 5);
+    json_out_add_fixed(o, "fit_seconds", f->fit_secs, 6);
     cJSON_AddNumberToObject(o, "unlabelled_pixels", f->counts[0] - r->masked); /* not nodata */
     for (j = 0; j < m->count; j++) {
         cJSON *c = cJSON_CreateObject();
@@ -322,12 +322,40 @@ static cJSON *json_matrix(const int32_t m[3][3], int l1)
     return rows;
 }
 
+/* The K-L part: matrix, eigenvalues, vectors (unit, and scaled as the
+   seed prints eq. 2.3), band means, feature sds, counts. */
+static cJSON *json_kl(const seg_result_t *r)
+{
+    cJSON *kl = cJSON_CreateObject();
+    double lam[3], mean[3], zsd[3];
+    int k;
+    for (k = 0; k < 3; k++) {
+        lam[k] = (double)r->kl.lambda_q16[k] / 65536.0;
+        mean[k] = r->kl.mean_q8[k] / 256.0;
+        zsd[k] = sqrt((double)r->kl.zvar_q16[k] / 65536.0);
+    }
+    cJSON_AddStringToObject(kl, "matrix",
+                            r->kl.matrix == SSDA_KL_CORRELATION ? "correlation" : "covariance");
+    cJSON_AddItemToObject(kl, "matrix_values", json_matrix(r->kl.matrix_q30, 0));
+    cJSON_AddItemToObject(kl, "eigenvalues", cJSON_CreateDoubleArray(lam, 3));
+    cJSON_AddItemToObject(kl, "vectors", json_matrix(r->kl.vec_q30, 0));
+    cJSON_AddItemToObject(kl, "vectors_l1", json_matrix(r->kl.vec_q30, 1));
+    cJSON_AddItemToObject(kl, "band_means", cJSON_CreateDoubleArray(mean, 3));
+    cJSON_AddItemToObject(kl, "feature_sd", cJSON_CreateDoubleArray(zsd, 3));
+    cJSON_AddNumberToObject(kl, "pixels", r->kl.count);
+    cJSON_AddNumberToObject(kl, "clamped_values", r->clamped);
+    return kl;
+}
+
 static int write_json(FILE *f, const seg_cli_t *c, const char *in, const seg_result_t *r)
 {
-    cJSON *root = cJSON_CreateObject(), *feats = cJSON_CreateArray();
-    char *text;
-    int k, rc = 0;
-    cJSON_AddStringToObject(root, "input", in);
+    cJSON *root = json_out_object(), *feats = cJSON_CreateArray();
+    int k, rc;
+    if (root == NULL) {
+        cJSON_Delete(feats);
+        return -1;
+    }
+    json_out_add_string(root, "input", in);
     cJSON_AddNumberToObject(root, "width", r->width);
     cJSON_AddNumberToObject(root, "height", r->height);
     cJSON_AddStringToObject(root, "kind", r->color ? "rgb" : "gray");
@@ -339,36 +367,15 @@ static int write_json(FILE *f, const seg_cli_t *c, const char *in, const seg_res
     cJSON_AddStringToObject(root, "rule", c->run.rule == SSDA_MIX_LABEL_BAND ? "band" : "likely");
     cJSON_AddNumberToObject(root, "band_sigma", (c->run.band_q8 ? c->run.band_q8 : 512) / 256.0);
     cJSON_AddBoolToObject(root, "clean", c->run.clean);
-    cJSON_AddNumberToObject(root, "seconds", r->secs);
+    json_out_add_fixed(root, "seconds", r->secs, 6);
     if (r->color) {
-        cJSON *kl = cJSON_CreateObject();
-        double lam[3], mean[3], zsd[3];
-        for (k = 0; k < 3; k++) {
-            lam[k] = (double)r->kl.lambda_q16[k] / 65536.0;
-            mean[k] = r->kl.mean_q8[k] / 256.0;
-            zsd[k] = sqrt((double)r->kl.zvar_q16[k] / 65536.0);
-        }
-        cJSON_AddStringToObject(kl, "matrix",
-                                r->kl.matrix == SSDA_KL_CORRELATION ? "correlation" : "covariance");
-        cJSON_AddItemToObject(kl, "matrix_values", json_matrix(r->kl.matrix_q30, 0));
-        cJSON_AddItemToObject(kl, "eigenvalues", cJSON_CreateDoubleArray(lam, 3));
-        cJSON_AddItemToObject(kl, "vectors", json_matrix(r->kl.vec_q30, 0));
-        cJSON_AddItemToObject(kl, "vectors_l1", json_matrix(r->kl.vec_q30, 1));
-        cJSON_AddItemToObject(kl, "band_means", cJSON_CreateDoubleArray(mean, 3));
-        cJSON_AddItemToObject(kl, "feature_sd", cJSON_CreateDoubleArray(zsd, 3));
-        cJSON_AddNumberToObject(kl, "pixels", r->kl.count);
-        cJSON_AddNumberToObject(kl, "clamped_values", r->clamped);
-        cJSON_AddItemToObject(root, "kl", kl);
+        cJSON_AddItemToObject(root, "kl", json_kl(r));
     }
     for (k = 0; k < r->nfeat; k++) {
         cJSON_AddItemToArray(feats, json_feature(r, &r->feat[k]));
     }
     cJSON_AddItemToObject(root, "features", feats);
-    text = cJSON_Print(root);
-    if (text == NULL || fputs(text, f) < 0 || fputc('\n', f) == EOF) {
-        rc = -1;
-    }
-    free(text);
+    rc = json_out_print(f, root, NULL);
     cJSON_Delete(root);
     return rc;
 }
@@ -518,6 +525,13 @@ int cmd_segment(int argc, char **argv)
     cli_warn_png_name(a.cmd, "--plot", c.plot);
     cli_warn_png_name(a.cmd, "--picture", c.picture);
     cli_warn_png_name(a.cmd, "--features", c.features);
+    /* every destination checked before the work (with several features the
+       names gain -z1.. -z3 in the same folder) */
+    if (cli_output_check(a.cmd, c.out) != 0 || cli_output_check(a.cmd, c.json) != 0 ||
+        cli_output_check(a.cmd, c.plot) != 0 || cli_output_check(a.cmd, c.picture) != 0 ||
+        cli_output_check(a.cmd, c.features) != 0) {
+        return CLI_INPUT;
+    }
     if (seg_run(a.cmd, a.pos[0], &c.run, &r) != CLI_OK) {
         seg_result_free(&r);
         return CLI_INPUT;
@@ -545,7 +559,7 @@ int cmd_segment(int argc, char **argv)
     if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
         goto done;
     }
-    if (!c.quiet && !(c.json != NULL && strcmp(c.json, "-") == 0)) {
+    if (!c.quiet && !cli_is_stdout(c.json)) {
         summary(&c, a.pos[0], &r);
     }
 done:

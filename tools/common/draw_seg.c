@@ -1,25 +1,14 @@
 /* draw_seg.c - histogram mixtures and label pictures with cairo (draw_seg.h). */
 #include "draw_seg.h"
+#include "tool_err.h"
 
 #include <cairo.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define FONT "DejaVu Sans"
 #define PI 3.14159265358979323846
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static cairo_status_t write_fp(void *closure, const unsigned char *data, unsigned int len)
 {
@@ -38,7 +27,7 @@ static int finish(cairo_surface_t *s, cairo_t *cr, FILE *fp, const char *name, c
         st = cairo_surface_write_to_png_stream(s, write_fp, fp);
     }
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot draw '%s': %s", name, cairo_status_to_string(st));
+        tool_set_err(err, errlen, "cannot draw '%s': %s", name, cairo_status_to_string(st));
         rc = -1;
     }
     cairo_surface_destroy(s);
@@ -103,84 +92,91 @@ static double comp_count(const draw_hist_panel_t *p, uint32_t k, double z)
     return p->total * p->weight[k] / (p->sigma[k] * sqrt(2.0 * PI)) * exp(-0.5 * t * t);
 }
 
-static void hist_panel(cairo_t *cr, const draw_hist_panel_t *p, double y0)
+/* A panel's plotting frame: bins lo..hi across, counts 0..ymax up. */
+typedef struct {
+    double left, top, w, h; /* px */
+    uint32_t lo, hi;
+    double ymax;
+} frame_t;
+
+static double px_of(const frame_t *f, double v)
 {
-    const double pw = HP_W - HP_L - HP_R, ph = HP_H - 70.0, top = y0 + 30.0;
-    uint32_t lo, hi, z, k;
-    double ymax = 1.0, x, step;
-    char s[160];
-    occupied(p, &lo, &hi);
-    for (z = lo; z <= hi; z++) {
-        double sum = 0.0;
-        ymax = p->hist[z] > ymax ? p->hist[z] : ymax;
-        for (k = 0; k < p->count; k++) {
-            sum += comp_count(p, k, z);
-        }
-        ymax = sum > ymax ? sum : ymax;
-    }
-    ymax *= 1.08;
-#define PX(v) (HP_L + ((v) - (double)lo + 0.5) / ((double)(hi - lo) + 1.0) * pw)
-#define PY(c) (top + ph - (c) / ymax * ph)
+    return f->left + (v - (double)f->lo + 0.5) / ((double)(f->hi - f->lo) + 1.0) * f->w;
+}
+
+static double py_of(const frame_t *f, double c)
+{
+    return f->top + f->h - c / f->ymax * f->h;
+}
+
+/* The frame, x ticks every 1, 2, 5 x 10^k bins, axis labels. */
+static void hist_axes(cairo_t *cr, const frame_t *f)
+{
+    double step = pow(10.0, floor(log10((double)(f->hi - f->lo + 1u) / 5.0))), x;
+    char s[64];
+    step = (f->hi - f->lo + 1u) / step > 10.0 ? step * 2.0 : step;
     cairo_set_source_rgb(cr, 0, 0, 0);
-    text_at(cr, HP_L, y0 + 20.0, 14, 1, p->title);
-    /* frame and x ticks (bins) */
     cairo_set_line_width(cr, 1.0);
-    cairo_rectangle(cr, HP_L, top, pw, ph);
+    cairo_rectangle(cr, f->left, f->top, f->w, f->h);
     cairo_stroke(cr);
-    step = pow(10.0, floor(log10((double)(hi - lo + 1u) / 5.0)));
-    step = (hi - lo + 1u) / step > 10.0 ? step * 2.0 : step;
-    for (x = ceil(lo / step) * step; x <= hi; x += step) {
-        cairo_move_to(cr, PX(x), top + ph);
-        cairo_line_to(cr, PX(x), top + ph + 5.0);
+    for (x = ceil(f->lo / step) * step; x <= f->hi; x += step) {
+        cairo_move_to(cr, px_of(f, x), f->top + f->h);
+        cairo_line_to(cr, px_of(f, x), f->top + f->h + 5.0);
         cairo_stroke(cr);
         snprintf(s, sizeof s, "%.0f", x);
-        text_at(cr, PX(x) - 10.0, top + ph + 18.0, 10, 0, s);
+        text_at(cr, px_of(f, x) - 10.0, f->top + f->h + 18.0, 10, 0, s);
     }
-    text_at(cr, HP_L + pw / 2.0 - 40.0, top + ph + 34.0, 11, 0, "feature value (bin)");
-    snprintf(s, sizeof s, "%.0f", ymax / 1.08);
-    text_at(cr, 6.0, PY(ymax / 1.08) + 4.0, 10, 0, s);
-    text_at(cr, 6.0, top + ph, 10, 0, "0");
-    /* the histogram: grey bars */
+    text_at(cr, f->left + f->w / 2.0 - 40.0, f->top + f->h + 34.0, 11, 0, "feature value (bin)");
+    snprintf(s, sizeof s, "%.0f", f->ymax / 1.08);
+    text_at(cr, 6.0, py_of(f, f->ymax / 1.08) + 4.0, 10, 0, s);
+    text_at(cr, 6.0, f->top + f->h, 10, 0, "0");
+}
+
+/* The histogram as grey bars; each component (its label's colour) and
+   their sum (black), sampled 4 times per bin. */
+static void hist_curves(cairo_t *cr, const draw_hist_panel_t *p, const frame_t *f)
+{
+    uint32_t z, k;
     cairo_set_source_rgb(cr, 0.72, 0.72, 0.72);
-    for (z = lo; z <= hi; z++) {
-        const double x0 = PX((double)z - 0.5), x1 = PX((double)z + 0.5);
-        cairo_rectangle(cr, x0, PY((double)p->hist[z]), x1 - x0, PY(0.0) - PY((double)p->hist[z]));
+    for (z = f->lo; z <= f->hi; z++) {
+        const double x0 = px_of(f, (double)z - 0.5), x1 = px_of(f, (double)z + 0.5);
+        cairo_rectangle(cr, x0, py_of(f, (double)p->hist[z]), x1 - x0,
+                        py_of(f, 0.0) - py_of(f, (double)p->hist[z]));
     }
     cairo_fill(cr);
-    /* components and their sum, sampled 4 times per bin */
     cairo_save(cr);
-    cairo_rectangle(cr, HP_L, top, pw, ph);
+    cairo_rectangle(cr, f->left, f->top, f->w, f->h);
     cairo_clip(cr);
     for (k = 0; k <= p->count; k++) {
-        double rgb[3] = {0, 0, 0};
-        double v;
+        double rgb[3] = {0, 0, 0}, v;
         int first = 1;
         if (k < p->count) {
             draw_label_rgb(k + 1u, rgb);
         }
         cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
         cairo_set_line_width(cr, k < p->count ? 1.6 : 2.2);
-        for (v = lo - 0.5; v <= hi + 0.5; v += 0.25) {
+        for (v = f->lo - 0.5; v <= f->hi + 0.5; v += 0.25) {
             double c = 0.0;
             uint32_t j;
-            if (k < p->count) {
-                c = comp_count(p, k, v);
-            } else {
-                for (j = 0; j < p->count; j++) {
-                    c += comp_count(p, j, v);
-                }
+            for (j = 0; j < p->count; j++) {
+                c += (k == p->count || j == k) ? comp_count(p, j, v) : 0.0;
             }
             if (first) {
-                cairo_move_to(cr, PX(v), PY(c));
+                cairo_move_to(cr, px_of(f, v), py_of(f, c));
                 first = 0;
             } else {
-                cairo_line_to(cr, PX(v), PY(c));
+                cairo_line_to(cr, px_of(f, v), py_of(f, c));
             }
         }
         cairo_stroke(cr);
     }
     cairo_restore(cr);
-    /* legend */
+}
+
+static void hist_legend(cairo_t *cr, const draw_hist_panel_t *p, double top)
+{
+    uint32_t k;
+    char s[160];
     for (k = 0; k <= p->count; k++) {
         double rgb[3] = {0, 0, 0};
         const double ly = top + 12.0 + 15.0 * k;
@@ -200,8 +196,32 @@ static void hist_panel(cairo_t *cr, const draw_hist_panel_t *p, double y0)
     cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
     text_at(cr, HP_W - HP_R + 12.0, top + 12.0 + 15.0 * (p->count + 1u), 10.5, 0,
             "grey: histogram");
-#undef PX
-#undef PY
+}
+
+static void hist_panel(cairo_t *cr, const draw_hist_panel_t *p, double y0)
+{
+    frame_t f;
+    uint32_t z, k;
+    f.left = HP_L;
+    f.top = y0 + 30.0;
+    f.w = HP_W - HP_L - HP_R;
+    f.h = HP_H - 70.0;
+    f.ymax = 1.0;
+    occupied(p, &f.lo, &f.hi);
+    for (z = f.lo; z <= f.hi; z++) {
+        double sum = 0.0;
+        f.ymax = p->hist[z] > f.ymax ? p->hist[z] : f.ymax;
+        for (k = 0; k < p->count; k++) {
+            sum += comp_count(p, k, z);
+        }
+        f.ymax = sum > f.ymax ? sum : f.ymax;
+    }
+    f.ymax *= 1.08;
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    text_at(cr, HP_L, y0 + 20.0, 14, 1, p->title);
+    hist_axes(cr, &f);
+    hist_curves(cr, p, &f);
+    hist_legend(cr, p, f.top);
 }
 
 int draw_hist_to(FILE *fp, const char *name, const char *title, const draw_hist_panel_t *p,

@@ -123,10 +123,4 @@ int png_read_rgb(const char *path, rgb_image_t *img, png_source_info_t *info, ch
 /* Free the pixels and zero the struct (safe on a zeroed struct). */
 void rgb_image_free(rgb_image_t *img);
 
-/* Write img as an 8- or 16-bit gray PNG to an open stream (name is for
-   messages; the caller owns fp, e.g. an output committed with others).
-   Returns 0, or -1 with a message in err. */
-int png_write_gray_fp(FILE *fp, const char *name, const gray_image_t *img, char *err,
-                      size_t errlen);
-
 #endif /* SSDA_PNG_IO_H */

@@ -1,11 +1,11 @@
 /* png_rgb.c - PNG to interleaved RGB with libpng, samples as stored
    (png_io.h, "colour"). */
 #include "png_io.h"
+#include "tool_err.h"
 
 #include <errno.h>
 #include <png.h>
 #include <setjmp.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,17 +27,6 @@ static void on_warning(png_structp png, png_const_charp text)
 {
     (void)png;
     (void)text;
-}
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
 }
 
 /* State the setjmp-protected part touches, kept outside its frame. */
@@ -161,36 +150,36 @@ int png_read_rgb(const char *path, rgb_image_t *img, png_source_info_t *info, ch
     size_t got, y;
     int rc = -1;
     if (r == NULL) {
-        set_err(err, errlen, "'%s': out of memory", path);
+        tool_set_err(err, errlen, "'%s': out of memory", path);
         return -1;
     }
     r->fp = fopen(path, "rb");
     if (r->fp == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
         goto done;
     }
     got = fread(sig, 1, sizeof sig, r->fp);
     if (got == 0) {
-        set_err(err, errlen, "'%s' is empty, not a PNG file", path);
+        tool_set_err(err, errlen, "'%s' is empty, not a PNG file", path);
         goto done;
     }
     if (got < sizeof sig || png_sig_cmp(sig, 0, sizeof sig) != 0) {
-        set_err(err, errlen, "'%s' is not a PNG file (bad signature)", path);
+        tool_set_err(err, errlen, "'%s' is not a PNG file (bad signature)", path);
         goto done;
     }
     r->png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r->e, on_error, on_warning);
     if (r->png == NULL || (r->info = png_create_info_struct(r->png)) == NULL) {
-        set_err(err, errlen, "'%s': out of memory", path);
+        tool_set_err(err, errlen, "'%s': out of memory", path);
         goto done;
     }
     if (read_protected(r) != 0) {
         if (r->why[0] != '\0') {
-            set_err(err, errlen, "'%s': %s", path, r->why);
+            tool_set_err(err, errlen, "'%s': %s", path, r->why);
         } else {
             const char *m = strcmp(r->e.msg, "Read Error") == 0 ? "file ends early"
                             : r->e.msg[0] != '\0'            ? r->e.msg
                                                              : "libpng error";
-            set_err(err, errlen, "'%s': corrupt or truncated PNG (%s)", path, m);
+            tool_set_err(err, errlen, "'%s': corrupt or truncated PNG (%s)", path, m);
         }
         goto done;
     }
@@ -215,69 +204,5 @@ done:
     }
     free(r->out.pixels);
     free(r);
-    return rc;
-}
-
-/* ---- writing gray to a stream ---- */
-
-typedef struct {
-    png_structp png;
-    png_infop info;
-    png_bytep row;
-    rgb_err_t e;
-} gray_writer_t;
-
-static int write_rows(gray_writer_t *w, FILE *fp, const gray_image_t *img)
-{
-    uint32_t x, y;
-    if (setjmp(png_jmpbuf(w->png))) {
-        return -1;
-    }
-    png_init_io(w->png, fp);
-    png_set_IHDR(w->png, w->info, img->width, img->height, img->bits, PNG_COLOR_TYPE_GRAY,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(w->png, w->info);
-    for (y = 0; y < img->height; y++) {
-        const uint8_t *src = (const uint8_t *)img->pixels + (size_t)y * img->stride;
-        if (img->bits == 16) {
-            for (x = 0; x < img->width; x++) { /* PNG is big-endian */
-                const uint16_t v = ((const uint16_t *)(const void *)src)[x];
-                w->row[2 * x] = (png_byte)(v >> 8);
-                w->row[2 * x + 1] = (png_byte)(v & 0xffu);
-            }
-        } else {
-            memcpy(w->row, src, img->width);
-        }
-        png_write_row(w->png, w->row);
-    }
-    png_write_end(w->png, NULL);
-    return 0;
-}
-
-int png_write_gray_fp(FILE *fp, const char *name, const gray_image_t *img, char *err,
-                      size_t errlen)
-{
-    gray_writer_t w;
-    int rc = -1;
-    memset(&w, 0, sizeof w);
-    if (img == NULL || img->pixels == NULL || img->width == 0 || img->height == 0 ||
-        img->width > SSDA_MAX_DIM || img->height > SSDA_MAX_DIM ||
-        (img->bits != 8 && img->bits != 16)) {
-        set_err(err, errlen, "'%s': nothing valid to write", name);
-        return -1;
-    }
-    w.row = malloc((size_t)img->width * 2u);
-    w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.e, on_error, on_warning);
-    if (w.row == NULL || w.png == NULL || (w.info = png_create_info_struct(w.png)) == NULL) {
-        set_err(err, errlen, "'%s': out of memory", name);
-    } else if (write_rows(&w, fp, img) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", name, w.e.msg);
-    } else {
-        rc = 0;
-    }
-    if (w.png != NULL) {
-        png_destroy_write_struct(&w.png, w.info != NULL ? &w.info : NULL);
-    }
-    free(w.row);
     return rc;
 }
