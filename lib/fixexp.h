@@ -8,6 +8,8 @@
 
 #include <stdint.h>
 
+#include "compiler.h"
+
 /* 1.0 in Q30. */
 #define SSDA__ONE_Q30 1073741824
 
@@ -23,7 +25,7 @@
  * g < ln(2) / 16 a degree-5 polynomial (truncation < 2^-36).
  * Error: at most 2 Q30 steps (2^-29) from exp(-x_q16 / 65536), whatever x.
  */
-uint32_t ssda__exp_neg_q16(uint32_t x_q16);
+SSDA_INTERNAL uint32_t ssda__exp_neg_q16(uint32_t x_q16);
 
 /*
  * ln(v) in Q24 nats for v >= 1 (ln 0 is returned as INT32_MIN).
@@ -33,6 +35,6 @@ uint32_t ssda__exp_neg_q16(uint32_t x_q16);
  * Error: at most 1 Q24 step (2^-24) from ln(v), plus the 2^-31 relative
  * truncation of v above 2^32.
  */
-int32_t ssda__ln_q24(uint64_t v);
+SSDA_INTERNAL int32_t ssda__ln_q24(uint64_t v);
 
 #endif /* SSDA_FIXEXP_H */

@@ -30,7 +30,7 @@ int ssda_kl_acc_init(ssda_kl_acc_t *acc, const ssda_kl_acc_config_t *cfg)
     acc->format = c.format;
     acc->flags = c.flags;
     acc->nodata = c.nodata;
-    acc->magic = SSDA__KL_ACC_MAGIC;
+    acc->magic = SSDA__MAGIC_KL_ACC;
     return SSDA_OK;
 }
 
@@ -145,7 +145,7 @@ int ssda_kl_acc_add_row(ssda_kl_acc_t *acc, const ssda_kl_row_t *row, uint32_t w
         row->band[2] == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (acc->magic != SSDA__KL_ACC_MAGIC) {
+    if (!ssda__valid(acc->magic, SSDA__MAGIC_KL_ACC)) {
         return SSDA_ERR_STATE;
     }
     if (width == 0u || width > SSDA_MAX_DIM) {
@@ -172,7 +172,7 @@ int ssda_kl_acc_add_source(ssda_kl_acc_t *acc, ssda_source_t *src, const ssda_re
     if (acc == NULL || src == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (acc->magic != SSDA__KL_ACC_MAGIC || src->cfg.width == 0u) {
+    if (!ssda__valid(acc->magic, SSDA__MAGIC_KL_ACC) || src->cfg.width == 0u) {
         return SSDA_ERR_STATE;
     }
     if (src->cfg.format != acc->format) {

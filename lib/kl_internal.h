@@ -3,10 +3,9 @@
 #define SSDA_KL_INTERNAL_H
 
 #include "ssda/kl.h"
+#include "state.h"
 #include "wide.h"
 
-#define SSDA__KL_ACC_MAGIC 0x4B4C4143u   /* "KLAC" */
-#define SSDA__KL_MAGIC 0x4B4C5458u       /* "KLTX" */
 
 /* 1.0 in Q30. */
 #define SSDA__ONE_Q30_KL 1073741824
@@ -22,7 +21,7 @@
  * place by cyclic Jacobi rotations; v receives the rotations' product
  * (columns: eigenvectors, Q30). Returns the sweeps run (1..12).
  */
-uint32_t ssda__kl_jacobi(int64_t a[3][3], int64_t v[3][3]);
+SSDA_INTERNAL uint32_t ssda__kl_jacobi(int64_t a[3][3], int64_t v[3][3]);
 
 /*
  * Eigenvectors and eigenvalues of the symmetric Q30 matrix a (destroyed):
@@ -30,13 +29,14 @@ uint32_t ssda__kl_jacobi(int64_t a[3][3], int64_t v[3][3]);
  * renormalised to unit length, largest-magnitude component positive (ties:
  * the first); eigenvalues clamped at 0. Returns the sweeps run.
  */
-uint32_t ssda__kl_eigen(int64_t a[3][3], int32_t vec_q30[3][3], int64_t lambda_q30[3]);
+SSDA_INTERNAL uint32_t ssda__kl_eigen(int64_t a[3][3], int32_t vec_q30[3][3],
+                                      int64_t lambda_q30[3]);
 
 /*
  * The per-pixel plan of kl (w, b, shift) for its range mode, from its
  * vectors, zvar_q16, out_max, nsigma and format, and the exact band means
  * sum / count (sum of acc).
  */
-void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3]);
+SSDA_INTERNAL void ssda__kl_plan(ssda_kl_t *kl, const uint64_t sum[3]);
 
 #endif /* SSDA_KL_INTERNAL_H */

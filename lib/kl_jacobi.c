@@ -40,7 +40,7 @@ static rot_t rotation(int64_t app, int64_t aqq, int64_t apq)
         ad <<= sh;
         ae <<= sh;
     }
-    hyp = ssda_isqrt64(ad * ad + ae * ae); /* sum < 2^61 */
+    hyp = ssda__isqrt64(ad * ad + ae * ae); /* sum < 2^61 */
     den = ad + hyp;                        /* >= hyp >= ae, < 2^32 */
     /* t = sign(d) sign(e) |e| / (|d| + sqrt(d^2 + e^2)), sign(0) = +1 */
     rot.t = (int64_t)SSDA_DIV64_32((ae << 30) + (den >> 1), (uint32_t)den); /* <= 2^30 */
@@ -49,7 +49,7 @@ static rot_t rotation(int64_t app, int64_t aqq, int64_t apq)
     }
     /* c = 1 / sqrt(1 + t^2): r = sqrt(2^60 + t^2) in [2^30, 2^30.5] */
     t2 = mag64(rot.t);
-    r = ssda_isqrt64(((uint64_t)1u << 60) + (t2 * t2));
+    r = ssda__isqrt64(((uint64_t)1u << 60) + (t2 * t2));
     rot.c = (int64_t)SSDA_DIV64_32(((uint64_t)1u << 60) + (r >> 1), (uint32_t)r);
     rot.s = mulq(rot.t, rot.c);
     return rot;

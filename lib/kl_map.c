@@ -206,7 +206,7 @@ int ssda_kl_transform_row(const ssda_kl_t *kl, const ssda_kl_row_t *row, uint32_
         row->band[1] == NULL || row->band[2] == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (kl->magic != SSDA__KL_MAGIC) {
+    if (!ssda__valid(kl->magic, SSDA__MAGIC_KL)) {
         return SSDA_ERR_STATE;
     }
     if (width == 0u || width > SSDA_MAX_DIM) {

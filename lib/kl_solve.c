@@ -135,7 +135,7 @@ static void unit_row(int64_t v[3][3], uint32_t col, int32_t out[3])
     }
     /* about 2^30: V starts as the identity and each rotation keeps a
        column's norm within a few 2^-30 of 1 */
-    nrm = ssda_isqrt64(norm2);
+    nrm = ssda__isqrt64(norm2);
     for (k = 0u; k < 3u; k++) {
         const uint64_t m = (uint64_t)(v[k][col] < 0 ? -v[k][col] : v[k][col]);
         const uint64_t u = SSDA_DIV64_32((m << 30) + (nrm >> 1), (uint32_t)nrm);
@@ -234,7 +234,7 @@ int ssda_kl_solve(const ssda_kl_acc_t *acc, const ssda_kl_config_t *cfg, ssda_kl
     if (acc == NULL || kl == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (acc->magic != SSDA__KL_ACC_MAGIC) {
+    if (!ssda__valid(acc->magic, SSDA__MAGIC_KL_ACC)) {
         return SSDA_ERR_STATE;
     }
     if (acc->count == 0u) {
@@ -260,7 +260,7 @@ int ssda_kl_solve(const ssda_kl_acc_t *acc, const ssda_kl_config_t *cfg, ssda_kl
     }
     decompose(acc, &c, &out);
     ssda__kl_plan(&out, acc->sum);
-    out.magic = SSDA__KL_MAGIC;
+    out.magic = SSDA__MAGIC_KL;
     *kl = out;
     return SSDA_OK;
 }

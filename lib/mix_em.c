@@ -15,7 +15,7 @@ static void m_step(ssda__mix_param_t *p, const ssda__mix_acc_t *a, uint32_t sigm
     const uint64_t d2 = dm * dm;
     uint64_t sigma = 0u;
     if (e2_q32 > d2) {
-        sigma = ssda_isqrt64(e2_q32 - d2); /* variance <= bins^2: sigma < 2^28 */
+        sigma = ssda__isqrt64(e2_q32 - d2); /* variance <= bins^2: sigma < 2^28 */
     }
     p->n = a->n_q8;
     p->mean_q16 = (uint32_t)mean_q16;

@@ -143,7 +143,7 @@ static void quantiles(const uint32_t *hist, uint32_t bins, uint32_t total, uint3
             const uint64_t mean = ssda__mix_ratio(s1[j], 16u, n[j]); /* Q16 */
             const uint64_t e2 = ssda__mix_ratio(s2[j], 32u, n[j]);   /* Q32 */
             const uint64_t m2 = mean * mean;
-            uint64_t sd = e2 > m2 ? ssda_isqrt64(e2 - m2) : 0u;
+            uint64_t sd = e2 > m2 ? ssda__isqrt64(e2 - m2) : 0u;
             sd = sd < sigma_min_q16 ? sigma_min_q16 : sd;
             p[j].n = n[j] << 8;
             p[j].mean_q16 = (uint32_t)mean;

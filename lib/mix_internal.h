@@ -56,40 +56,40 @@ typedef struct {
 
 /* Prepare component g from its share n / sum (n > 0, else inactive), mean
    and sigma. */
-void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum, uint32_t mean_q16,
-                       uint32_t sigma_q16);
+SSDA_INTERNAL void ssda__mix_prepare(ssda__mix_gauss_t *g, uint64_t n, uint64_t sum,
+                                     uint32_t mean_q16, uint32_t sigma_q16);
 
 /* q(z) = ((z - mean) / (sqrt2 sigma))^2 in nats Q16, capped at 2^30. */
-uint32_t ssda__mix_q(const ssda__mix_gauss_t *g, uint32_t z);
+SSDA_INTERNAL uint32_t ssda__mix_q(const ssda__mix_gauss_t *g, uint32_t z);
 
 /* One pass over hist: returns sum h(z) ln p(z) (nats Q16) for the k
    prepared components; with acc != NULL also fills acc[] (zeroed here,
    acc[j].c set from g[j].mean_q16). */
-int64_t ssda__mix_estep(const uint32_t *hist, uint32_t bins, const ssda__mix_gauss_t *g,
-                        uint32_t k, ssda__mix_acc_t *acc);
+SSDA_INTERNAL int64_t ssda__mix_estep(const uint32_t *hist, uint32_t bins,
+                                      const ssda__mix_gauss_t *g, uint32_t k, ssda__mix_acc_t *acc);
 
 /* Prepare w->g[0..k) from w->p[0..k). */
-void ssda__mix_prepare_all(ssda__mix_work_t *w, uint32_t k);
+SSDA_INTERNAL void ssda__mix_prepare_all(ssda__mix_work_t *w, uint32_t k);
 
 /* Initial parameters w->p[0..k) (and w->height_q8 for the search). hs: the
    histogram's scale shift (h >> hs < 2^16). */
-void ssda__mix_init(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t hs,
-                    const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w);
+SSDA_INTERNAL void ssda__mix_init(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t hs,
+                                  const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w);
 
 /* EM from w->p[0..k): returns the iterations (E-steps) run and sets
    *loglik to the log-likelihood of the final w->p. */
-uint32_t ssda__mix_em(const uint32_t *hist, uint32_t bins, const ssda__mix_cfg_t *c, uint32_t k,
-                      ssda__mix_work_t *w, int64_t *loglik);
+SSDA_INTERNAL uint32_t ssda__mix_em(const uint32_t *hist, uint32_t bins, const ssda__mix_cfg_t *c,
+                                    uint32_t k, ssda__mix_work_t *w, int64_t *loglik);
 
 /* The seed's coordinate search from w->p / w->height_q8; leaves the final
    parameters in w->p (n = height x sigma); returns the cycles run. */
-uint32_t ssda__mix_search(const uint32_t *hist, uint32_t bins, uint32_t hs,
-                          const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w);
+SSDA_INTERNAL uint32_t ssda__mix_search(const uint32_t *hist, uint32_t bins, uint32_t hs,
+                                        const ssda__mix_cfg_t *c, uint32_t k, ssda__mix_work_t *w);
 
 /* h >> hs < 2^16 for every bin. */
-uint32_t ssda__mix_scale_shift(const uint32_t *hist, uint32_t bins);
+SSDA_INTERNAL uint32_t ssda__mix_scale_shift(const uint32_t *hist, uint32_t bins);
 
 /* round(num 2^s / den) for den > 0 (128-bit quotient, saturated to 64). */
-uint64_t ssda__mix_ratio(uint64_t num, uint32_t s, uint64_t den);
+SSDA_INTERNAL uint64_t ssda__mix_ratio(uint64_t num, uint32_t s, uint64_t den);
 
 #endif /* SSDA_MIX_INTERNAL_H */

@@ -2,9 +2,10 @@
    streamed label image (region.h). */
 #include "ssda/region.h"
 
+#include "state.h"
+
 #include <string.h>
 
-#define REGION_MAGIC 0x52454749u /* "REGI" */
 
 int ssda_region_init(ssda_region_t *job, const ssda_region_config_t *cfg, void *ring,
                      size_t ring_size)
@@ -28,7 +29,7 @@ int ssda_region_init(ssda_region_t *job, const ssda_region_config_t *cfg, void *
     job->op = cfg->op;
     job->pushed = 0u;
     job->flushed = 0u;
-    job->magic = REGION_MAGIC;
+    job->magic = SSDA__MAGIC_REGION;
     return SSDA_OK;
 }
 
@@ -122,7 +123,7 @@ int ssda_region_push(ssda_region_t *job, const uint8_t *labels, uint8_t *out)
     if (job == NULL || labels == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (job->magic != REGION_MAGIC || job->pushed >= job->height) {
+    if (!ssda__valid(job->magic, SSDA__MAGIC_REGION) || job->pushed >= job->height) {
         return SSDA_ERR_STATE;
     }
     index = (uint32_t)job->pushed % 3u;
@@ -141,7 +142,8 @@ int ssda_region_flush(ssda_region_t *job, uint8_t *out)
     if (job == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (job->magic != REGION_MAGIC || job->pushed != job->height || job->flushed != 0u) {
+    if (!ssda__valid(job->magic, SSDA__MAGIC_REGION) || job->pushed != job->height ||
+        job->flushed != 0u) {
         return SSDA_ERR_STATE;
     }
     emit(job, (uint32_t)job->height - 1u, out);

@@ -11,7 +11,7 @@
 
 /* A known loop (2 instructions per iteration) to check the method. */
 void jobs_calibrate(void);
-/* ssda_sad_row_u8/u16, ssda_absdiff_row_i16: instructions per pixel. */
+/* ssda__sad_row_u8/u16, ssda__absdiff_row_i16: instructions per pixel. */
 void jobs_kernel(void);
 /* ssda_match, 16 x 16 windows in 32 x 32 areas, by mode. */
 void jobs_match(void);
@@ -21,6 +21,8 @@ void jobs_track(void);
 void jobs_pitch(void);
 /* kl.h, mixture.h, region.h: per pixel and per fit. */
 void jobs_segment(void);
+/* ssda_push_row of push-mode tracking: one row, and a whole frame. */
+void jobs_stream(void);
 /* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,
    registration. */
 void jobs_symreg(void);
