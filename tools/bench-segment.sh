@@ -12,7 +12,8 @@
 #   tools/bench-segment.sh [--reps R] [IMAGE:NODATA:K1,K2,K3 ...]
 # Without images it uses the data folder given as SSDA_DATA (default
 # ../shared/data beside the repository) when present: the Landsat scene
-# (nodata 0; the seed's 6, 5, 4 components), camera and moon (gray, 4 and 3),
+# (nodata 0; the seed's 6, 5, 4 components), the graffiti wall img1 (RGB,
+# 6, 5, 4), camera and moon (gray, 4 and 3),
 # and band 3 of the MicaSense capture (16-bit gray, 4). Data is read where it
 # is, never copied. SSDA_BENCH_DIR sets the build directory (default
 # build/bench-segment).
@@ -31,7 +32,8 @@ cmake --build "$dir" --target ssda_cli ssda-bench-segment -j "$(nproc 2>/dev/nul
 images=("$@")
 data=${SSDA_DATA:-$root/../shared/data}
 if [ ${#images[@]} -eq 0 ] && [ -d "$data" ]; then
-  for spec in "aerial/RGB.byte.png:0:6,5,4" "classic/camera.png::4" "classic/moon.png::3" \
+  for spec in "aerial/RGB.byte.png:0:6,5,4" "homography/graf/img1.png::6,5,4" \
+              "classic/camera.png::4" "classic/moon.png::3" \
               "multiband/IMG_0001_3.png::4"; do
     [ -f "$data/${spec%%:*}" ] && images+=("$data/$spec")
   done
