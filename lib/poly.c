@@ -64,7 +64,7 @@ ssda__i128_t ssda__poly_p(const ssda_poly_t *p, const int64_t *c, int32_t dx, in
         }
         /* |c| < 2^63, |m| < 2^(i (kx+1) + j (ky+1) + 1): the shifted product
            is below 2^(63 + 48 + i + j + 1) <= 2^115 */
-        sum = ssda__w_add(sum, ssda__w_shl(ssda__w_mul64(c[t], m),
+        sum = ssda__w_add(sum, ssda__u128_shl(ssda__w_mul64(c[t], m),
                                            48u - i * p->kx - j * p->ky));
     }
     return sum;

@@ -37,7 +37,7 @@ static const ssda__i128_t W_ONE = {0u, 1u}; /* hi, lo */
 /* floor((p + 2^(n-1)) / 2^n): p rounded to n fewer fraction bits. */
 static int64_t round_shift(int64_t p, uint32_t n)
 {
-    const ssda__i128_t half = ssda__w_shl(W_ONE, n - 1u);
+    const ssda__i128_t half = ssda__u128_shl(W_ONE, n - 1u);
     return ssda__i128_to64(ssda__w_sar(ssda__w_add(ssda__w_i64(p), half), n));
 }
 
@@ -93,7 +93,7 @@ static void sums_update(sums_t *s, const ssda_poly_pair_t *pr, const int64_t *ph
 /* |v| <= 2^e. */
 static bool w_small(ssda__i128_t v, uint32_t e)
 {
-    const ssda__i128_t lim = ssda__w_shl(W_ONE, e);
+    const ssda__i128_t lim = ssda__u128_shl(W_ONE, e);
     return !ssda__w_lt(lim, v) && !ssda__w_lt(v, ssda__w_neg(lim));
 }
 
@@ -195,7 +195,7 @@ static int fit_sums(const sums_t *s, uint32_t m, solve_t *out)
         for (step = 0u; step <= FIT_MAX_STEPS; step++) {
             bool moved = false;
             for (i = 0u; i < m; i++) {
-                ssda__i128_t e = ssda__w_shl(s->r[a][i], 46u);
+                ssda__i128_t e = ssda__u128_shl(s->r[a][i], 46u);
                 for (k = 0u; k < m; k++) {
                     const ssda__i128_t g = i >= k ? s->g[TRI(i, k)] : s->g[TRI(k, i)];
                     e = ssda__w_sub(e, ssda__w_mul(g, ssda__i128_to64(out->c[a][k])));
@@ -234,7 +234,7 @@ static uint32_t residual_of(const solve_t *sv, uint32_t m, const ssda_poly_pair_
     uint64_t e2 = 0u;
     uint32_t a, t;
     for (a = 0u; a < 2u; a++) {
-        ssda__i128_t f = ssda__w_shl(W_ONE, 45u); /* Q54 -> Q8: + 2^45, floor / 2^46 */
+        ssda__i128_t f = ssda__u128_shl(W_ONE, 45u); /* Q54 -> Q8: + 2^45, floor / 2^46 */
         for (t = 0u; t < m; t++) { /* |phi| <= 2^30, |c| <= 2^48 */
             f = ssda__w_add(f, ssda__w_mul(sv->c[a][t], phi[t]));
         }

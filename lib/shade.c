@@ -246,7 +246,7 @@ int ssda_shade_finish(ssda_shade_t *sh, uint8_t mode)
         return SSDA_ERR_ARG;
     }
     /* K = acc s_p s_q / (n w h 2^22): acc in Q30 grey, K in Q8 */
-    den = ssda__w_shl(ssda__w_mul64((int64_t)sh->images,
+    den = ssda__u128_shl(ssda__w_mul64((int64_t)sh->images,
                                     (int64_t)sh->width * (int64_t)sh->height), 22u);
     for (p = 0u; p < 3u; p++) {
         for (q = 0u; q < 3u; q++) {

@@ -1,6 +1,7 @@
 /*
  * state.h - internal: the one validity test of the library's stateful
- * objects (ssda_source_t, ssda_push_t, ssda_pitch_t, ssda_warp_t, ssda_shade_t), lwrb style. Each
+ * objects (ssda_source_t, ssda_push_t, ssda_pitch_t, ssda_warp_t,
+ * ssda_shade_t, ssda_kl_acc_t, ssda_kl_t, ssda_region_t), lwrb style. Each
  * carries a private `magic` field that its init function writes last, with
  * a value of its own type; every later call compares it before touching
  * anything else. A zero-filled object (static storage, memset) is never
@@ -19,6 +20,9 @@
 #define SSDA__MAGIC_WARP 0x57415250u   /* "WARP" */
 #define SSDA__MAGIC_SHADE_OPEN 0x5348444Fu /* "SHDO": accumulating */
 #define SSDA__MAGIC_SHADE_DONE 0x53484444u /* "SHDD": finished */
+#define SSDA__MAGIC_KL_ACC 0x4B4C4143u /* "KLAC" */
+#define SSDA__MAGIC_KL 0x4B4C5458u     /* "KLTX" */
+#define SSDA__MAGIC_REGION 0x52454749u /* "REGI" */
 
 /* Whether an object whose magic field holds `magic` was initialised as a
    `kind` (one of the values above). */

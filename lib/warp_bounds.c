@@ -13,7 +13,7 @@ static uint64_t mag(int64_t v)
 static int64_t ceil_shift(ssda__i128_t a, uint32_t n)
 {
     const ssda__i128_t one = {0u, 1u}; /* hi, lo */
-    const ssda__i128_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__w_shl(one, n), one)), n);
+    const ssda__i128_t q = ssda__w_sar(ssda__w_add(a, ssda__w_sub(ssda__u128_shl(one, n), one)), n);
     return q.hi != 0u || q.lo > (uint64_t)BOUND_MAX ? BOUND_MAX : (int64_t)q.lo;
 }
 

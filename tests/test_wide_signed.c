@@ -55,7 +55,7 @@ static void test_against_int128(void)
         TEST_ASSERT_EQUAL(na < nb, ssda__w_lt(a, b));
         TEST_ASSERT_EQUAL(na < 0, ssda__w_neg_p(a));
         TEST_ASSERT_EQUAL(na == 0, ssda__w_zero_p(a));
-        check((n128)((unsigned __int128)na << s), ssda__w_shl(a, s));
+        check((n128)((unsigned __int128)na << s), ssda__u128_shl(a, s));
         check(na >> s, ssda__w_sar(a, s));
         check((n128)(int64_t)a.lo * (int64_t)b.lo, ssda__w_mul64((int64_t)a.lo, (int64_t)b.lo));
         if (bits_a + 64 < 126) {
@@ -85,7 +85,7 @@ static void test_closed_forms(void)
     const ssda__i128_t one = w_of(0, 1);
     uint32_t n;
     for (n = 0; n < 128; n++) {
-        const ssda__i128_t p = ssda__w_shl(one, n);
+        const ssda__i128_t p = ssda__u128_shl(one, n);
         TEST_ASSERT_EQUAL_HEX64(n >= 64 ? (uint64_t)1 << (n - 64) : 0, p.hi);
         TEST_ASSERT_EQUAL_HEX64(n < 64 ? (uint64_t)1 << n : 0, p.lo);
         /* -2^n >> n = -1; 2^n >> n = 1 (n < 127) */
@@ -119,8 +119,8 @@ static void test_closed_forms(void)
     TEST_ASSERT_EQUAL_INT64((int64_t)1 << 62, ssda__pow2(62));
     /* a product past 2^64 in the 128 x 64 multiply: (2^70 + 3) * -5 */
     {
-        const ssda__i128_t p = ssda__w_mul(ssda__w_add(ssda__w_shl(one, 70), ssda__w_i64(3)), -5);
-        const ssda__i128_t want = ssda__w_neg(ssda__w_add(ssda__w_shl(ssda__w_i64(5), 70), ssda__w_i64(15)));
+        const ssda__i128_t p = ssda__w_mul(ssda__w_add(ssda__u128_shl(one, 70), ssda__w_i64(3)), -5);
+        const ssda__i128_t want = ssda__w_neg(ssda__w_add(ssda__u128_shl(ssda__w_i64(5), 70), ssda__w_i64(15)));
         TEST_ASSERT_TRUE(p.hi == want.hi && p.lo == want.lo);
     }
 }
