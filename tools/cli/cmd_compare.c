@@ -23,8 +23,9 @@ static void help(void)
           "\n",
           stdout);
     fputs(track_opts_help, stdout);
-    fputs("  --threads N       NCC reference searches on N threads (default: every core,\n"
-          "                    0 too); the output is the same for any N\n"
+    fputs("  --threads N       read the two images and run the NCC reference searches\n"
+          "                    on N threads (default: every core, 0 too); the output\n"
+          "                    is the same for any N\n"
           "  -h, --help        this text\n"
           "\nExit codes: 0 ok, 1 bad input, 2 usage.\n",
           stdout);
@@ -216,6 +217,7 @@ int cmd_compare(int argc, char **argv)
     if (rc != 0) {
         return CLI_USAGE;
     }
+    cli_set_threads(threads);
     rc = track_parse_args("compare", argc, argv, help, &o, &first, &second);
     if (rc != CLI_OK) {
         return rc < 0 ? CLI_OK : rc; /* -1: --help */
