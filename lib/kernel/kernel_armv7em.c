@@ -214,11 +214,10 @@ const char *ssda__kernel_name(void)
     return "armv7em";
 }
 
-static const ssda__kernel_variant_t armv7em_variant = {
-    "armv7em", ssda__sad_row_u8, ssda__sad_row_u16, ssda__absdiff_row_i16
-};
-
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
+    static const ssda__kernel_variant_t armv7em_variant = {
+        "armv7em", ssda__sad_row_u8, ssda__sad_row_u16, ssda__absdiff_row_i16
+    };
     return (i == 0u) ? &armv7em_variant : NULL;
 }

@@ -35,8 +35,6 @@
 #include <emmintrin.h>
 #if defined(__GNUC__) || defined(__clang__)
 #include <immintrin.h>
-#define SSDA_X86_AVX2 1
-#define SSDA_TARGET_AVX2 __attribute__((target("avx2")))
 #endif
 #include <string.h>
 
@@ -156,22 +154,26 @@ static uint32_t sse2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_
     return hsum_u32x4(acc) + ssda__portable_absdiff_row_i16(a + i, b + i, n - i);
 }
 
-#ifdef SSDA_X86_AVX2
-static inline SSDA_TARGET_AVX2 __m256i load256(const void *p)
+#if defined(__GNUC__) || defined(__clang__)
+/* Compiled for AVX2 whatever the build's -march (the attribute on each). */
+static inline __attribute__((target("avx2")))
+__m256i load256(const void *p)
 {
     return _mm256_loadu_si256((const __m256i *)p);
 }
 
 /* The 16 |a - b| of unsigned 16-bit lanes added to eight 32-bit lanes: the
    low and high halves of each 32-bit pair separately. */
-static inline SSDA_TARGET_AVX2 __m256i add_absdiff_u16x16(__m256i acc, __m256i a, __m256i b)
+static inline __attribute__((target("avx2")))
+__m256i add_absdiff_u16x16(__m256i acc, __m256i a, __m256i b)
 {
     const __m256i d = _mm256_or_si256(_mm256_subs_epu16(a, b), _mm256_subs_epu16(b, a));
     acc = _mm256_add_epi32(acc, _mm256_and_si256(d, _mm256_set1_epi32(0xFFFF)));
     return _mm256_add_epi32(acc, _mm256_srli_epi32(d, 16));
 }
 
-static SSDA_TARGET_AVX2 uint32_t avx2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+static __attribute__((target("avx2")))
+uint32_t avx2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     __m256i acc = _mm256_setzero_si256(); /* four 64-bit lanes, total <= 255 * 65535 */
     uint32_t i = 0u;
@@ -188,8 +190,8 @@ static SSDA_TARGET_AVX2 uint32_t avx2_sad_row_u8(const uint8_t *a, const uint8_t
 }
 
 /* A 16-bit row through x ^ bias (see sad_16_tail), 16 lanes at a time. */
-static inline SSDA_TARGET_AVX2 uint32_t avx2_sad_row_16(const uint16_t *a, const uint16_t *b,
-                                                        uint32_t n, __m128i bias)
+static inline __attribute__((target("avx2")))
+uint32_t avx2_sad_row_16(const uint16_t *a, const uint16_t *b, uint32_t n, __m128i bias)
 {
     const __m256i bias2 = _mm256_broadcastsi128_si256(bias);
     __m256i acc = _mm256_setzero_si256(); /* lanes sum to <= 65535 * 65535 < 2^32 */
@@ -202,12 +204,14 @@ static inline SSDA_TARGET_AVX2 uint32_t avx2_sad_row_16(const uint16_t *a, const
                        a, b, i, n, bias);
 }
 
-static SSDA_TARGET_AVX2 uint32_t avx2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static __attribute__((target("avx2")))
+uint32_t avx2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     return avx2_sad_row_16(a, b, n, _mm_setzero_si128());
 }
 
-static SSDA_TARGET_AVX2 uint32_t avx2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+static __attribute__((target("avx2")))
+uint32_t avx2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     /* sad_16_tail's scalar tail reads plain uint16: give the biased part a
        multiple of 4 samples (that tail then empty) and finish the last
@@ -218,17 +222,10 @@ static SSDA_TARGET_AVX2 uint32_t avx2_absdiff_row_i16(const int16_t *a, const in
 }
 #endif
 
-static const ssda__kernel_variant_t x86_variants[] = {
-    { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16 },
-#ifdef SSDA_X86_AVX2
-    { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16 },
-#endif
-};
-
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
-#ifdef SSDA_X86_AVX2
+#if defined(__GNUC__) || defined(__clang__)
     return (uint32_t)(__builtin_cpu_supports("avx2") != 0);
 #else
     return 0u;
@@ -241,15 +238,10 @@ static inline uint32_t x86_avx2(void)
    setup costs more than it saves below 128 bytes or 32 16-bit samples.
    The choice is computed without a branch on the processor, so each row
    takes one well-predicted branch on its length. */
-#ifdef SSDA_X86_AVX2
-#define SSDA_AVX2_MIN_U8 128u /* bytes */
-#define SSDA_AVX2_MIN_16 32u  /* 16-bit samples */
-#endif
-
 uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
-#ifdef SSDA_X86_AVX2
-    if (((uint32_t)(n >= SSDA_AVX2_MIN_U8) & x86_avx2()) != 0u) {
+#if defined(__GNUC__) || defined(__clang__)
+    if (((uint32_t)(n >= 128u) & x86_avx2()) != 0u) {
         return avx2_sad_row_u8(a, b, n);
     }
 #endif
@@ -258,8 +250,8 @@ uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 
 uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
-#ifdef SSDA_X86_AVX2
-    if (((uint32_t)(n >= SSDA_AVX2_MIN_16) & x86_avx2()) != 0u) {
+#if defined(__GNUC__) || defined(__clang__)
+    if (((uint32_t)(n >= 32u) & x86_avx2()) != 0u) {
         return avx2_sad_row_u16(a, b, n);
     }
 #endif
@@ -268,8 +260,8 @@ uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 
 uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
-#ifdef SSDA_X86_AVX2
-    if (((uint32_t)(n >= SSDA_AVX2_MIN_16) & x86_avx2()) != 0u) {
+#if defined(__GNUC__) || defined(__clang__)
+    if (((uint32_t)(n >= 32u) & x86_avx2()) != 0u) {
         return avx2_absdiff_row_i16(a, b, n);
     }
 #endif
@@ -278,6 +270,12 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
+    static const ssda__kernel_variant_t x86_variants[] = {
+        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16 },
+#if defined(__GNUC__) || defined(__clang__)
+        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16 },
+#endif
+    };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;
 }
 
