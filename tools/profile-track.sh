@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Where the time of a whole `ssda track` run goes (issue 18, item 4), and
 # the whole process timed against other builds of the tool.
-#   tools/profile-track.sh [--reps N] [--vs OTHER_SSDA]... FIRST.png SECOND.png [track options]
+#   tools/profile-track.sh [--reps N] [--command track|compare] [--vs OTHER_SSDA]...
+#                          [--variant "EXTRA ARGS"]... FIRST.png SECOND.png [options]
 # Builds build/profile (RelWithDebInfo, the CLI only; SSDA_PROFILE_DIR
 # changes it), then
 #  1. samples N runs with `perf record` (when perf is installed and allowed)
@@ -9,11 +10,13 @@
 #     (libpng, zlib), gray conversion, the search (every function of
 #     libssda.a), the C library, the kernel (page faults of fresh buffers,
 #     file reads), JSON (cJSON), the rest of the tool;
-#  2. times N runs of this build and of each --vs binary, interleaved (run
-#     k of every binary before run k+1 of any), and prints the median wall
-#     time and processor time (user + system) of each, with the load
-#     average before and after: on a shared machine wall time includes
-#     waiting for a core, processor time does not.
+#  2. times N runs of this build (once per --variant: e.g. "--threads 1"
+#     and "--threads 2") and of each --vs binary, interleaved (run k of
+#     every one before run k+1 of any), and prints the median wall time and
+#     processor time (user + system) of each, with the load average before
+#     and after: on a shared machine wall time includes waiting for a core,
+#     processor time does not.
+# --command compare profiles `ssda compare` instead (its NCC reference).
 # Every run writes its JSON to a temporary file (as a user would), and
 # each --vs binary's JSON must equal this build's but for timings.
 # Example (the GOES-16 pair of ../shared/data):
@@ -23,15 +26,20 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 dir=${SSDA_PROFILE_DIR:-$root/build/profile}
 reps=7
+cmd=track
 others=()
+variants=()
 while [ $# -gt 0 ]; do
   case $1 in
     --reps) reps=$2; shift 2 ;;
+    --command) cmd=$2; shift 2 ;;
+    --variant) variants+=("$2"); shift 2 ;;
     --vs) others+=("$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"); shift 2 ;;
     *) break ;;
   esac
 done
-[ $# -ge 2 ] || { echo "usage: $0 [--reps N] [--vs OTHER_SSDA]... FIRST.png SECOND.png [track options]" >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: $0 [--reps N] [--command track|compare] [--vs OTHER_SSDA]... [--variant ARGS]... FIRST.png SECOND.png [options]" >&2; exit 2; }
+[ ${#variants[@]} -gt 0 ] || variants=("")
 first=$1 second=$2; shift 2
 opts=("$@")
 
@@ -44,9 +52,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 untimed() { sed -E 's/"[a-z_]*time_s":[-0-9.e+]*,?//g' "$1"; }
 
-echo "# \`ssda track\` end to end"
+echo "# \`ssda $cmd\` end to end"
 echo
-echo "Command: \`tools/profile-track.sh --reps $reps$(printf ' --vs %s' "${others[@]+"${others[@]}"}" | sed 's| --vs $||') $(basename "$first") $(basename "$second") ${opts[*]+${opts[*]}}\`"
+echo "Command: \`tools/profile-track.sh --reps $reps --command $cmd$(printf ' --vs %s' "${others[@]+"${others[@]}"}" | sed 's| --vs $||')$(printf ' --variant "%s"' "${variants[@]}" | sed 's| --variant ""||g') $(basename "$first") $(basename "$second") ${opts[*]+${opts[*]}}\`"
 echo "($(date -u '+%Y-%m-%d %H:%M UTC'), commit $(git -C "$root" rev-parse --short HEAD), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//'), $(nproc) cores)."
 echo "Load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)."
 echo
@@ -55,8 +63,8 @@ echo
 if command -v perf >/dev/null && perf record -q -o "$tmp/probe.data" true >/dev/null 2>&1; then
   nm --defined-only "$lib" 2>/dev/null | awk '$2 ~ /^[tT]$/ {print $3}' | sort -u >"$tmp/libsyms"
   perf record -q -F 4000 -o "$tmp/perf.data" -- bash -c '
-    for i in $(seq "$1"); do "$2" track "$3" "$4" "${@:6}" --quiet --json "$5" >/dev/null; done
-  ' _ "$reps" "$ssda" "$first" "$second" "$tmp/p.json" "${opts[@]+"${opts[@]}"}" 2>/dev/null
+    for i in $(seq "$1"); do "$2" "$7" "$3" "$4" "${@:8}" --quiet --json "$5" >/dev/null; done
+  ' _ "$reps" "$ssda" "$first" "$second" "$tmp/p.json" "" "$cmd" ${variants[0]} "${opts[@]+"${opts[@]}"}" 2>/dev/null
   perf report -i "$tmp/perf.data" --comm ssda --no-children --sort dso,sym -g none -F overhead,dso,sym \
       --field-separator=$'\t' 2>/dev/null | grep -v '^#' | grep -v '^$' >"$tmp/report.tsv" || true
   awk -F'\t' -v syms="$tmp/libsyms" '
@@ -66,6 +74,7 @@ if command -v perf >/dev/null && perf record -q -o "$tmp/probe.data" true >/dev/
       if (dso ~ /libpng|libz\./) c = "PNG decoding (libpng, zlib)"
       else if (sym ~ /^(row_to_gray|widen_to_16)$/) c = "gray conversion (tools/common/png_io.c, cli_args.c)"
       else if (dso == "ssda" && (sym in lib)) c = "the search (libssda.a)"
+      else if (sym ~ /^ncc_search/) c = "NCC reference (compare, ncc_ref.c)"
       else if (dso ~ /cjson/ || sym ~ /^json_/) c = "JSON (cJSON, json_out.c)"
       else if (dso ~ /kernel/) c = "kernel (page faults of new buffers, reads)"
       else if (dso ~ /^libc\.|ld-linux/) c = "C library (memcpy, malloc, printf) and loader"
@@ -85,12 +94,20 @@ fi
 echo
 
 # ---- 2. whole runs, interleaved ----------------------------------------------
-bins=("$ssda" "${others[@]+"${others[@]}"}")
+# runs: this build once per variant, then each other binary (first variant)
+bins=() vargs=() names=()
+for v in "${variants[@]}"; do
+  bins+=("$ssda"); vargs+=("$v"); names+=("this build${v:+ $v}")
+done
+for o in "${others[@]+"${others[@]}"}"; do
+  bins+=("$o"); vargs+=("${variants[0]}"); names+=("$o${variants[0]:+ ${variants[0]}}")
+done
 declare -A wall cpu
 TIMEFORMAT='%R %U %S'
 for ((k = 0; k < reps; k++)); do
   for ((b = 0; b < ${#bins[@]}; b++)); do
-    t=$( { time "${bins[$b]}" track "$first" "$second" "${opts[@]+"${opts[@]}"}" --quiet \
+    # shellcheck disable=SC2086  # a variant is several words on purpose
+    t=$( { time "${bins[$b]}" "$cmd" "$first" "$second" ${vargs[$b]} "${opts[@]+"${opts[@]}"}" --quiet \
              --json "$tmp/run$b.json" >/dev/null 2>"$tmp/err$b"; } 2>&1 ) ||
       { cat "$tmp/err$b" >&2; exit 1; }
     read -r r u s <<<"$t"
@@ -100,15 +117,14 @@ for ((k = 0; k < reps; k++)); do
 done
 for ((b = 1; b < ${#bins[@]}; b++)); do
   cmp -s <(untimed "$tmp/run0.json") <(untimed "$tmp/run$b.json") ||
-    { echo "profile-track: ${bins[$b]} writes other vectors than this build" >&2; exit 1; }
+    { echo "profile-track: '${names[$b]}' writes other JSON than '${names[0]}'" >&2; exit 1; }
 done
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 echo "| binary | median wall s | median processor s (user + system) |"
 echo "|---|---:|---:|"
 for ((b = 0; b < ${#bins[@]}; b++)); do
-  name=$([ "$b" -eq 0 ] && echo "this build" || echo "${bins[$b]}")
-  echo "| $name | $(median <<<"${wall[$b]}") | $(median <<<"${cpu[$b]}") |"
+  echo "| ${names[$b]} | $(median <<<"${wall[$b]}") | $(median <<<"${cpu[$b]}") |"
 done
 echo
-echo "($reps interleaved runs each; the JSON of every binary is the same but for timings.)"
+echo "($reps interleaved runs each; the JSON of every run is the same but for timings.)"
 echo "Load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)."
