@@ -105,7 +105,7 @@ static inline uint32_t sad_16_tail(__m128i acc, const uint16_t *a, const uint16_
     return hsum_u32x4(acc) + ssda__portable_sad_row_u16(a + i, b + i, n - i);
 }
 
-static uint32_t sse2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t sse2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* two 64-bit lanes, total <= 255 * 65535 */
     uint32_t i = 0u;
@@ -116,7 +116,7 @@ static uint32_t sse2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
     return sad_u8_tail(acc, a, b, i, n);
 }
 
-static uint32_t sse2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t sse2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
     uint32_t i = 0u;
@@ -134,7 +134,7 @@ static inline const uint16_t *as_u16(const int16_t *p)
     return (const uint16_t *)(const void *)p;
 }
 
-static uint32_t sse2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t sse2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     const __m128i bias = _mm_set1_epi16((short)-32768); /* flips the sign bit */
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
@@ -232,17 +232,21 @@ static inline uint32_t x86_avx2(void)
 #endif
 }
 
-/* The public loops: SSE2 inline, AVX2 (a tail call) only for rows long
-   enough to gain from it. ssda-bench-kernel on an AMD EPYC: rows up to 64
-   bytes cost the call (about 3.3 ns) whatever the width, and the 256-bit
-   setup costs more than it saves below 128 bytes or 32 16-bit samples.
-   The choice is computed without a branch on the processor, so each row
-   takes one well-predicted branch on its length. */
+/* The public loops: SSE2 inline, AVX2 only for rows long enough to gain
+   from it. ssda-bench-kernel on an AMD EPYC: rows up to 64 bytes cost the
+   call (about 3.3 ns) whatever the width, and the 256-bit setup costs more
+   than it saves below 128 bytes or 32 16-bit samples. Short rows (16 px:
+   the tracking windows) pay one compare on their length and nothing else;
+   long rows index a two-entry table by the processor's AVX2 bit, so no
+   branch depends on the processor. */
 uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    if (((uint32_t)(n >= 128u) & x86_avx2()) != 0u) {
-        return avx2_sad_row_u8(a, b, n);
+    static uint32_t (*const pick[2])(const uint8_t *, const uint8_t *, uint32_t) = {
+        sse2_sad_row_u8, avx2_sad_row_u8
+    };
+    if (n >= 128u) {
+        return pick[x86_avx2()](a, b, n);
     }
 #endif
     return sse2_sad_row_u8(a, b, n);
@@ -251,8 +255,11 @@ uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    if (((uint32_t)(n >= 32u) & x86_avx2()) != 0u) {
-        return avx2_sad_row_u16(a, b, n);
+    static uint32_t (*const pick[2])(const uint16_t *, const uint16_t *, uint32_t) = {
+        sse2_sad_row_u16, avx2_sad_row_u16
+    };
+    if (n >= 32u) {
+        return pick[x86_avx2()](a, b, n);
     }
 #endif
     return sse2_sad_row_u16(a, b, n);
@@ -261,8 +268,11 @@ uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
 #if defined(__GNUC__) || defined(__clang__)
-    if (((uint32_t)(n >= 32u) & x86_avx2()) != 0u) {
-        return avx2_absdiff_row_i16(a, b, n);
+    static uint32_t (*const pick[2])(const int16_t *, const int16_t *, uint32_t) = {
+        sse2_absdiff_row_i16, avx2_absdiff_row_i16
+    };
+    if (n >= 32u) {
+        return pick[x86_avx2()](a, b, n);
     }
 #endif
     return sse2_absdiff_row_i16(a, b, n);
