@@ -115,14 +115,15 @@ static void check_absdiff_row_i16(uint64_t want, const int16_t *a, const int16_t
     }
 }
 
-/* The variants: at least one, the first named like the set, no gaps; on an
-   x86 host whose processor has AVX2, the AVX2 variant is among them (so
-   the checks above run it). */
+/* The variants: none for a set without a run-time choice, else the first
+   named like the set; no gaps; on an x86 host whose processor has AVX2,
+   the AVX2 variant is among them (so the checks above run it). */
 static void test_kernel_variants_listed(void)
 {
     uint32_t v = 0u;
-    TEST_ASSERT_NOT_NULL(ssda__kernel_variant(0u));
-    TEST_ASSERT_EQUAL_STRING(ssda__kernel_name(), ssda__kernel_variant(0u)->name);
+    if (ssda__kernel_variant(0u) != NULL) {
+        TEST_ASSERT_EQUAL_STRING(ssda__kernel_name(), ssda__kernel_variant(0u)->name);
+    }
     while (ssda__kernel_variant(v) != NULL) {
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u8);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u16);
@@ -131,9 +132,11 @@ static void test_kernel_variants_listed(void)
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(SSDA_TEST_SMALL)
-    if (ssda__kernel_name()[0] == 's' && __builtin_cpu_supports("avx2")) {
-        TEST_ASSERT_EQUAL_UINT32(2u, v);
-        TEST_ASSERT_EQUAL_STRING("avx2", ssda__kernel_variant(1u)->name);
+    if (ssda__kernel_name()[0] == 's') {
+        TEST_ASSERT_EQUAL_UINT32(__builtin_cpu_supports("avx2") ? 2u : 1u, v);
+        if (v == 2u) {
+            TEST_ASSERT_EQUAL_STRING("avx2", ssda__kernel_variant(1u)->name);
+        }
     }
 #endif
 }

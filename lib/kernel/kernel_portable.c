@@ -48,8 +48,6 @@ const char *ssda__kernel_name(void)
 
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
-    static const ssda__kernel_variant_t portable_variant = {
-        "portable", ssda__sad_row_u8, ssda__sad_row_u16, ssda__absdiff_row_i16
-    };
-    return (i == 0u) ? &portable_variant : NULL;
+    (void)i; /* no run-time choice: the public loops are the only ones */
+    return NULL;
 }

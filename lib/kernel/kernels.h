@@ -49,8 +49,10 @@ typedef struct {
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in
-   order of preference from the plainest; NULL for i >= count. For tests
-   (each variant against the reference) and benchmarks. */
+   order of preference from the plainest; NULL for i >= count. A set
+   without a run-time choice (portable, armv7em) has none: count 0, its
+   public loops are its only ones. For tests (each variant against the
+   reference) and benchmarks. */
 SSDA_INTERNAL const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i);
 
 #endif /* SSDA_KERNEL_KERNELS_H */
