@@ -160,3 +160,38 @@ def test_bad_inputs_raise():
         ssda.region(np.zeros((4, 4), np.uint16))
     with pytest.raises(ValueError):
         ssda.region(np.zeros((4, 4), np.uint8), op="open")
+
+
+def test_segment_command_same_numbers(cli, tmp_path):
+    """ssda segment's features, K-L vectors, mixtures and region counts are
+    the binding's: kl with the tool's out_max (bins - 1) and gain cap (1.0
+    for 8-bit), mix_hist / mix_fit / mix_lut / mix_label, region clean."""
+    import json
+    from PIL import Image
+    from conftest import read_png
+    img = colour(40, 52, 9)
+    Image.fromarray(img, mode="RGB").save(tmp_path / "c.png")
+    cli("segment", "c.png", "--components", "2", "--features", "f.png", "--json", "s.json")
+    doc = json.loads((tmp_path / "s.json").read_text())
+    k = ssda.kl(img, out_max=1023, gain_max_q16=65536)
+    # cJSON prints 15 significant digits when they read back within an ulp or
+    # so: the integers come back by rounding
+    assert (np.round(np.array(doc["kl"]["vectors"]) * 2**30) == k.vec_q30).all()
+    assert (np.round(np.array(doc["kl"]["eigenvalues"]) * 65536) == k.lambda_q16).all()
+    assert doc["kl"]["clamped_values"] == k.clamped
+    for z, feat in enumerate(doc["features"]):
+        assert (read_png(tmp_path / f"f-z{z + 1}.png") == k.features[z]).all()
+        hist, _ = ssda.mix_hist(k.features[z], bins=feat["bins"])
+        m = ssda.mix_fit(hist, components=2)
+        labels = ssda.mix_label(k.features[z], ssda.mix_lut(m))
+        if doc["clean"]:
+            labels, counts = ssda.region(labels, counts=True)
+        else:
+            counts = np.bincount(labels.ravel(), minlength=256)
+        assert (feat["count"], feat["iterations"]) == (m.count, m.iterations)
+        band = ssda.mix_band_pixels(m, hist)
+        for j, c in enumerate(feat["components"]):
+            assert round(c["weight"] * 65536) == m.components["weight_q16"][j]
+            assert round(c["mean"] * 65536) == m.components["mean_q16"][j]
+            assert round(c["sigma"] * 65536) == m.components["sigma_q16"][j]
+            assert c["pixels"] == counts[j + 1] and c["band_pixels"] == band[j]
