@@ -24,5 +24,11 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_NCC
+    jobs_ncc();
+#endif
+#ifdef SSDA_BUDGET_HAVE_RELAX
+    jobs_relax();
+#endif
     return budget_failed();
 }

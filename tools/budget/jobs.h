@@ -19,6 +19,10 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* ssda_ncc_match, 16 x 16 in 32 x 32 and 20 x 20 in 40 x 40, by early exit. */
+void jobs_ncc(void);
+/* ssda_relax_labels and ssda_relax_median on a 12 x 12 grid. */
+void jobs_relax(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);
