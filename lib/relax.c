@@ -126,9 +126,8 @@ static void update_node(const ssda__relax_t *g, relax_mem_t *m, uint32_t i, uint
         w[c] *= p[c];
         t += w[c]; /* sum P (1 + q) <= 2^15 * 2 * 2^15 = 2^31 */
     }
-    if (t == 0u) {
-        return; /* every class refuted at once: keep P (no division by 0) */
-    }
+    /* t > 0: 1 + q >= 0.2 (r >= -0.8) and the likelihoods never all vanish
+       (the largest keeps at least 2^15 / 48 after each normalisation) */
     /* P(c) <- w(c) 2^15 / t through one division: t and the w scaled into
        [2^30, 2^31], inv = floor(2^61 / t) in [2^30, 2^31] */
     shift = 31u - ssda__bitlen64(t);

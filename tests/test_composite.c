@@ -156,6 +156,32 @@ static void test_uniform_motion_with_gain_and_offset(void)
     uint32_t k;
     make_pair(1u, 4, -3, 4, -3, W);
     check_against_reference(&cfg);
+    /* a region to the image's edges by default (0 = the rest) */
+    cfg = config(W - 56u, H - 48u, 0, 0);
+    cfg.roi_w = 0;
+    cfg.roi_h = 0;
+    {
+        ssda_composite_config_t full = cfg;
+        full.roi_w = 56;
+        full.roi_h = 48;
+        check_against_reference(&full);
+        memcpy(g_tp + 200, g_tp, 48u * sizeof g_tp[0]);
+        cfg.roi_w = 0;
+        cfg.roi_h = 0;
+    }
+    {
+        ssda_view_t ref, next;
+        ssda_composite_result_t res;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&ref, g_ref, W, H, W, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&next, g_next, W, H, W, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 200, &res));
+        TEST_ASSERT_EQUAL_UINT16(8, res.cols);
+        TEST_ASSERT_EQUAL_UINT16(6, res.rows);
+        TEST_ASSERT_EQUAL_MEMORY(g_tp + 200, g_tp, 48u * sizeof g_tp[0]);
+    }
+    make_pair(1u, 4, -3, 4, -3, W);
+    cfg = config(20, 16, 56, 48);
+    check_against_reference(&cfg);
     for (k = 0; k < 8u * 6u; k++) {
         TEST_ASSERT_EQUAL_INT32(4 * 256, g_tp[k].dx);
         TEST_ASSERT_EQUAL_INT32(-3 * 256, g_tp[k].dy);
@@ -171,11 +197,16 @@ static void test_sheared_field_and_radius_rule(void)
     cfg.radius_q8 = 16;  /* 1/16: too tight for the far half */
     cfg.min_radius = 1;
     check_against_reference(&cfg);
+    cfg.flags = SSDA_COMPOSITE_SUBPIXEL; /* neighbours outside the disk may beat the best */
+    check_against_reference(&cfg);
+    cfg.flags = 0;
+#ifndef SSDA_TEST_SMALL
     cfg.radius_q8 = 200;
     cfg.tp = 16;
     cfg.step = 7;
     cfg.metric = SSDA_NCC_ABS;
     check_against_reference(&cfg);
+#endif
 }
 
 /* Flat templates are FLAT (and a min_std makes more of them); templates
@@ -192,6 +223,16 @@ static void test_flat_and_edge_templates(void)
     }
     check_against_reference(&cfg);
     cfg.min_std_q8 = 25u * 256u;
+    check_against_reference(&cfg);
+    /* matches on the edge of NEXT (no neighbour there), inverted: |rho| */
+    cfg.min_std_q8 = 0;
+    cfg.flags = SSDA_COMPOSITE_SUBPIXEL;
+    cfg.metric = SSDA_NCC_ABS;
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            g_next[y][x] = (uint8_t)(255u - g_next[y][x]);
+        }
+    }
     check_against_reference(&cfg);
 }
 

@@ -90,14 +90,25 @@ static double ref_r(int c, int d)
     return r < -1.0 ? -1.0 : (r > 1.0 ? 1.0 : r);
 }
 
-static double g_p[MAXN][48], g_np[MAXN][48];
+static double g_p[MAXN][48], g_np[MAXN][48], g_s[MAXN][48], g_r[48][48];
 static int g_cls[MAXN];
+
+#ifdef SSDA_TEST_SMALL
+#define TRIALS 2u
+#else
+#define TRIALS 6u
+#endif
 
 /* Expected outputs (Q8 px, as double) and classes, for a grid of Q8 vectors. */
 static void ref_relax(const vec_t *v, int cols, int rows, double step, int iters, double *ox,
                       double *oy, int *best)
 {
     int k, c, d, it, i, j;
+    for (c = 0; c < 48; c++) {
+        for (d = 0; d < 48; d++) {
+            g_r[c][d] = ref_r(c, d);
+        }
+    }
     for (k = 0; k < cols * rows; k++) {
         g_cls[k] = -1;
         if (v[k].status != 0) {
@@ -109,6 +120,14 @@ static void ref_relax(const vec_t *v, int cols, int rows, double step, int iters
         }
     }
     for (it = 0; it < iters; it++) {
+        for (k = 0; k < cols * rows; k++) { /* each node's support sum_d r(c, d) P(d) */
+            for (c = 0; c < 48 && g_cls[k] >= 0; c++) {
+                g_s[k][c] = 0.0;
+                for (d = 0; d < 48; d++) {
+                    g_s[k][c] += g_r[c][d] * g_p[k][d];
+                }
+            }
+        }
         for (j = 0; j < rows; j++) {
             for (i = 0; i < cols; i++) {
                 double q[48], t = 0.0;
@@ -126,9 +145,7 @@ static void ref_relax(const vec_t *v, int cols, int rows, double step, int iters
                             continue;
                         }
                         for (c = 0; c < 48; c++) {
-                            for (d = 0; d < 48; d++) {
-                                q[c] += ref_r(c, d) * g_p[kk][d];
-                            }
+                            q[c] += g_s[kk][c];
                         }
                         n++;
                     }
@@ -213,10 +230,10 @@ static void test_against_double_reference(void)
     test_rng_t r;
     uint32_t t;
     test_rng_seed(&r, 31u);
-    for (t = 0; t < 6u; t++) {
+    for (t = 0; t < TRIALS; t++) {
         const uint16_t cols = (uint16_t)test_rng_range(&r, 1, MAXC);
         const uint16_t rows = (uint16_t)test_rng_range(&r, 1, MAXR);
-        const uint16_t iters = (uint16_t)test_rng_range(&r, 1, 12);
+        const uint16_t iters = (uint16_t)test_rng_range(&r, 1, 40);
         const uint16_t step = (uint16_t)test_rng_range(&r, 150, 600); /* Q8 */
         ssda_relax_config_t cfg = config(iters, 0);
         ssda_relax_grid_t g = grid_of(g_in, cols, rows, 8);
@@ -362,7 +379,7 @@ static void test_median_against_reference(void)
     test_rng_t r;
     uint32_t t;
     test_rng_seed(&r, 41u);
-    for (t = 0; t < 30u; t++) {
+    for (t = 0; t < 10u * TRIALS; t++) {
         const uint16_t cols = (uint16_t)test_rng_range(&r, 1, MAXC);
         const uint16_t rows = (uint16_t)test_rng_range(&r, 1, MAXR);
         ssda_relax_median_config_t mc = {0, 0};
@@ -486,6 +503,47 @@ static void test_errors_leave_output_untouched(void)
     TEST_ASSERT_EQUAL_UINT8(0, g_out[5].flags);
     TEST_ASSERT_EQUAL_INT32(256, g_out[0].dx_q8);
     TEST_ASSERT_EQUAL_INT32(512, g_out[0].dy_q8);
+    g.rows = 0;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_relax_labels(&g, &cfg, g_out, 12));
+    g.rows = 3;
+    g.dx = NULL;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_relax_median(&g, NULL, g_out, 12));
+    g.dx = &g_in[0].dx;
+    g_in[5].status = 0;
+    g_in[5].dx = 1;
+    g_in[5].dy = 40000;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_relax_median(&g, NULL, g_out, 12));
+    g_in[5].dy = -40000;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_relax_median(&g, NULL, g_out, 12));
+}
+
+/* No status array: every vector valid; a grid with no valid vector at all;
+   zero-filled median options are the defaults. */
+static void test_status_and_defaults(void)
+{
+    ssda_relax_config_t cfg = config(5, 0);
+    ssda_relax_grid_t g = grid_of(g_in, 3, 3, 4);
+    ssda_relax_median_config_t zero = {0, 0};
+    static ssda_relax_vector_t a[9], b[9];
+    uint32_t k;
+    for (k = 0; k < 9u; k++) {
+        g_in[k].dx = 16 * (int32_t)k; /* Q4: k px */
+        g_in[k].dy = -8;
+        g_in[k].status = 7; /* ignored without the status array */
+    }
+    g.status = NULL;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, g_out, 9));
+    for (k = 0; k < 9u; k++) {
+        TEST_ASSERT_TRUE((g_out[k].flags & SSDA_RELAX_VALID) != 0u);
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_median(&g, &zero, a, 9));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_median(&g, NULL, b, 9));
+    TEST_ASSERT_EQUAL_MEMORY(b, a, sizeof a);
+    g.status = &g_in[0].status; /* every vector invalid */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, g_out, 9));
+    for (k = 0; k < 9u; k++) {
+        TEST_ASSERT_EQUAL_UINT8(0, g_out[k].flags);
+    }
 }
 
 int main(void)
@@ -496,5 +554,6 @@ int main(void)
     RUN_TEST(test_outliers_repaired_in_track_grid);
     RUN_TEST(test_median_against_reference);
     RUN_TEST(test_errors_leave_output_untouched);
+    RUN_TEST(test_status_and_defaults);
     return UNITY_END();
 }
