@@ -142,10 +142,11 @@ static void search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py
         const int64_t x0 = px - r < 0 ? 0 : px - r, y0 = py - r < 0 ? 0 : py - r;
         const int64_t x1 = px + r >= (int64_t)j->nx ? (int64_t)j->nx - 1 : px + r;
         const int64_t y1 = py + r >= (int64_t)j->ny ? (int64_t)j->ny - 1 : py + r;
+        const int64_t w = x1 - x0 + (int64_t)j->tp; /* <= NEXT's width */
+        const int64_t h = y1 - y0 + (int64_t)j->tp;
         ax = (uint32_t)x0;
         ay = (uint32_t)y0;
-        (void)ssda_view_roi(&area, j->next, (uint16_t)ax, (uint16_t)ay,
-                            (uint16_t)(x1 - x0 + (int64_t)j->tp), (uint16_t)(y1 - y0 + (int64_t)j->tp));
+        (void)ssda_view_roi(&area, j->next, (uint16_t)ax, (uint16_t)ay, (uint16_t)w, (uint16_t)h);
         c.flags |= SSDA_NCC_DISK;
         c.radius = (uint16_t)(r > 65535 ? 65535 : r);
         c.predict_x = (int32_t)(px - x0);
@@ -195,7 +196,9 @@ static uint32_t measure(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops)
 /* ceil(radius_q8 |v| / 256), at least min_radius: |v| rounded up first. */
 static int64_t disk_radius(const job_t *j, int64_t vx, int64_t vy)
 {
-    const uint64_t v2 = (uint64_t)(vx * vx + vy * vy); /* < 2^33 */
+    const uint64_t ux = (uint64_t)(vx < 0 ? -vx : vx); /* < 2^16 */
+    const uint64_t uy = (uint64_t)(vy < 0 ? -vy : vy);
+    const uint64_t v2 = ux * ux + uy * uy; /* < 2^33 */
     uint64_t len = ssda_isqrt64(v2);
     uint64_t r;
     if (len * len < v2) {
@@ -211,8 +214,6 @@ int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
 {
     job_t j;
     ssda_composite_result_t res;
-    uint32_t k;
-    int64_t p0[2], place[2], sum = 0; /* sum of rho: |.| < 2^30 * 2^32 */
     int err;
     if (ref == NULL || next == NULL || cfg == NULL || out == NULL || result == NULL ||
         cfg->work == NULL) {
@@ -229,6 +230,8 @@ int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
     res.origin = measure(&j, out, &res.pixel_ops);
     if (res.origin != UINT32_MAX) {
         ssda_composite_tp_t *o = &out[res.origin];
+        int64_t p0[2], place[2], sum = 0; /* sum of rho: |.| < 2^30 * 2^32 */
+        uint32_t k;
         ssda_view_t tv;
         uint32_t x, y;
         template_view(&j, res.origin, &tv, &x, &y);

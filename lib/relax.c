@@ -35,18 +35,17 @@ typedef struct {
     uint8_t *cls;       /* [node]: class of the input vector (NC: invalid) */
 } relax_mem_t;
 
-/* Circular distance between sectors a and b (0..4) at [b - a + 7]. */
-static const uint8_t sector_dist[2u * NS - 1u] = {1u, 2u, 3u, 4u, 3u, 2u, 1u, 0u,
-                                                  1u, 2u, 3u, 4u, 3u, 2u, 1u};
-
-/* ceil(2^32 / n) for n = 1..8 neighbours. */
-static const uint64_t recip_table[8] = {4294967296u, 2147483648u, 1431655766u, 1073741824u,
-                                        858993460u,  715827883u,  613566757u,  536870912u};
-
 /* 1 + q(c) in Q15 (0.2 .. 2.0) for every class, from Pn, the sum of the n
    neighbours' likelihoods (see the file comment). */
 static void one_plus_q(const uint32_t *pn, uint32_t n, uint32_t *opq)
 {
+    /* circular distance between sectors a and b (0..4) at [b - a + 7] */
+    static const uint8_t sector_dist[2u * NS - 1u] = {1u, 2u, 3u, 4u, 3u, 2u, 1u, 0u,
+                                                      1u, 2u, 3u, 4u, 3u, 2u, 1u};
+    /* ceil(2^32 / n) for n = 1..8 neighbours */
+    static const uint64_t recip_table[8] = {4294967296u, 2147483648u, 1431655766u,
+                                            1073741824u, 858993460u,  715827883u,
+                                            613566757u,  536870912u};
     uint32_t sect[NS];   /* per sector, lengths >= 1: <= 8 2^15 */
     uint32_t len[NL];    /* per length class */
     uint32_t dl[NL];     /* sum_c' |l - l'| Pn(c'): <= 5 8 2^15 */
@@ -168,8 +167,11 @@ static uint32_t classify(int32_t x, int32_t y, uint32_t step_q8)
     const uint64_t ay = (uint64_t)(y < 0 ? -(int64_t)y : (int64_t)y);
     const uint64_t r2 = ax * ax + ay * ay; /* < 2^49 */
     uint32_t l = 0u, k, sector;
-    while (l + 1u < NL && r2 >= (uint64_t)(l + 1u) * step_q8 * (uint64_t)(l + 1u) * step_q8) {
-        l++;
+    for (k = 1u; k < NL; k++) { /* k s <= |v|: class k at least */
+        const uint64_t edge = (uint64_t)k * step_q8; /* < 2^3 2^26 */
+        if (r2 >= edge * edge) {
+            l = k;
+        }
     }
     /* angle from the x axis within the quadrant: 0, 45 or 90 degrees */
     if ((ay << 16) < ax * 27146u) {
@@ -201,7 +203,9 @@ static uint32_t length_step(const ssda__relax_t *g, uint16_t len_step_q8)
     for (k = 0u; k < g->n; k++) {
         int32_t x, y;
         if (ssda__relax_get(g, k, &x, &y)) {
-            sum += ssda_isqrt64((uint64_t)((int64_t)x * x + (int64_t)y * y));
+            const uint64_t ax = (uint64_t)(x < 0 ? -(int64_t)x : (int64_t)x); /* <= 2^23 */
+            const uint64_t ay = (uint64_t)(y < 0 ? -(int64_t)y : (int64_t)y);
+            sum += ssda_isqrt64(ax * ax + ay * ay);
             n++;
         }
     }
@@ -288,9 +292,8 @@ static void expectation(const ssda__relax_t *g, const relax_mem_t *m, uint32_t i
 }
 
 /* Lay out the work buffer (4-byte arrays first). */
-static void layout(relax_mem_t *m, void *work, const ssda__relax_t *g)
+static void layout(relax_mem_t *m, uint8_t *b, const ssda__relax_t *g)
 {
-    uint8_t *b = (uint8_t *)work;
     m->p = (uint16_t *)(void *)b;
     b += (size_t)g->n * NC * sizeof(uint16_t);
     m->prev = (uint16_t *)(void *)b;
@@ -342,7 +345,7 @@ int ssda_relax_labels(const ssda_relax_grid_t *grid, const ssda_relax_config_t *
     if (err != SSDA_OK) {
         return err;
     }
-    layout(&m, cfg->work, &g);
+    layout(&m, (uint8_t *)cfg->work, &g); /* 4-byte aligned (checked) */
     step = length_step(&g, cfg->len_step_q8);
     init_labels(&g, &m, step);
     iterations = cfg->iterations != 0u ? cfg->iterations : SSDA_RELAX_DEFAULT_ITERATIONS;

@@ -4,7 +4,7 @@
 #include "relax_internal.h"
 #include "fixmath.h"
 
-static int32_t read_i32(const uint8_t *p)
+static int32_t read_i32(const void *p)
 {
     int32_t v;
     (void)memcpy(&v, p, sizeof v); /* any alignment */

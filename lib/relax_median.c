@@ -75,12 +75,12 @@ int ssda_relax_median(const ssda_relax_grid_t *grid, const ssda_relax_median_con
     for (j = 0u; j < g.rows; j++) {
         for (i = 0u; i < g.cols; i++) {
             const size_t k = (size_t)j * g.cols + i;
-            int32_t xs[8], ys[8], mx, my;
-            uint32_t n = 0u;
-            int32_t di, dj;
             ssda_relax_vector_t v;
             (void)memset(&v, 0, sizeof v);
             if (ssda__relax_get(&g, k, &v.dx_q8, &v.dy_q8)) {
+                int32_t xs[8], ys[8], mx, my;
+                uint32_t n = 0u;
+                int32_t di, dj;
                 v.flags = SSDA_RELAX_VALID;
                 for (dj = -1; dj <= 1; dj++) {
                     for (di = -1; di <= 1; di++) {
