@@ -30,5 +30,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_RELAX
     jobs_relax();
 #endif
+#ifdef SSDA_BUDGET_HAVE_COMPOSITE
+    jobs_composite();
+#endif
     return budget_failed();
 }

@@ -23,6 +23,8 @@ void jobs_pitch(void);
 void jobs_ncc(void);
 /* ssda_relax_labels and ssda_relax_median on a 12 x 12 grid. */
 void jobs_relax(void);
+/* ssda_composite_match, 81 templates of 20 x 20 in a 96 x 96 pair. */
+void jobs_composite(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);

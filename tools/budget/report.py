@@ -511,6 +511,17 @@ def main():
                 w(f"| {label} | " + " | ".join(fmt(get(r, key)[0]) for _, _, r in runs) +
                   f" | {r0[3]} | {r0[2]} |\n")
 
+        if any("composite.seed" in r for _, _, r in runs):
+            w("\n| composite templates, 81 of 20x20 every 5 px, 96x96 pair | " +
+              " | ".join(f"{n}: instructions per template" for n in names) +
+              " | pixel ops per template | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            r0 = get(runs[0][2], "composite.seed")
+            w("| origin over the whole image, the others in their disks | " +
+              " | ".join(fmt(round(get(r, "composite.seed")[0] / max(1, get(r, "composite.seed")[1])))
+                         for _, _, r in runs) +
+              f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
         if any("pitch.full" in r for _, _, r in runs):
             plain = get(runs[0][2], "pitch.plain_amdf_diffs")[3]
             w("\n| pitch frame, 16 kHz, lags 16..320, K = 320, hop 80 (24 voiced frames) | " +
