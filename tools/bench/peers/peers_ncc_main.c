@@ -361,6 +361,20 @@ static int load(const char *path, gray_image_t *img, int depth)
     return 0;
 }
 
+/* The load average (1 minute), from /proc/loadavg; -1 when unknown. */
+static double load_average(void)
+{
+    FILE *f = fopen("/proc/loadavg", "r");
+    double v = -1.0;
+    if (f != NULL) {
+        if (fscanf(f, "%lf", &v) != 1) {
+            v = -1.0;
+        }
+        fclose(f);
+    }
+    return v;
+}
+
 static const char *base_name(const char *path)
 {
     const char *s = strrchr(path, '/');
@@ -394,7 +408,8 @@ int main(int argc, char **argv)
         reps = 1;
     }
     cv_peer_init(info, sizeof info);
-    printf("%s; ssda kernel set as built; %d repetitions, medians\n\n", info, reps);
+    printf("%s; %d repetitions, interleaved, medians; load average %.2f at the start\n\n", info,
+           reps, load_average());
     printf("| pair | geometry | windows | same best as OpenCV | OpenCV's best beats its second by "
            ">= %.2f: same best | ssda early exit, us/window | + prediction | ssda full | OpenCV "
            "| OpenCV / ssda (early, + prediction) | pixel ops / window (early, full) | where they "
@@ -450,6 +465,7 @@ int main(int argc, char **argv)
         brightness(base_name(images[i]), a.pixels, (int)a.width, (int)a.height);
         gray_image_free(&a);
     }
+    printf("\nload average %.2f at the end\n", load_average());
     free(syn1);
     free(syn2);
     return 0;
