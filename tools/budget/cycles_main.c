@@ -33,5 +33,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_COMPOSITE
     jobs_composite();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SYMREG
+    jobs_symreg();
+#endif
     return budget_failed();
 }

@@ -25,6 +25,9 @@ void jobs_ncc(void);
 void jobs_relax(void);
 /* ssda_composite_match, 81 templates of 20 x 20 in a 96 x 96 pair. */
 void jobs_composite(void);
+/* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,
+   registration. */
+void jobs_symreg(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);
