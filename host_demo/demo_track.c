@@ -93,6 +93,164 @@ static void error_vs_wind(const demo_wind_t *w, const ssda_track_grid_t *g,
     *eucl = hypot(v->dx - *u, v->dy - *vv);
 }
 
+/* The tracking options shared by every mode: step, the texture rule at
+   SECOND's mean (fill pixels left out), the fill value. */
+static void base_config(const gray_image_t *second, long mask, uint32_t step, int exclude,
+                        ssda_track_config_t *cfg)
+{
+    memset(cfg, 0, sizeof *cfg);
+    cfg->step_x = cfg->step_y = (uint16_t)step;
+    if (exclude) {
+        cfg->flags = SSDA_TRACK_EXCLUDE;
+        cfg->texture_threshold = (uint16_t)mean_level(second, mask);
+        if (cfg->texture_threshold >= gray_image_max(second)) {
+            cfg->texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
+        }
+    }
+    if (mask >= 0) {
+        cfg->flags |= SSDA_TRACK_MASK;
+        cfg->mask_value = (uint16_t)mask;
+    }
+}
+
+static void print_grid(const ssda_track_grid_t *grid, const char *label)
+{
+    printf("   input    %s\n", label);
+    printf("   grid     %u x %u windows of %u x %u px every %u px, each searched in the %u x %u\n"
+           "            area around it in the first image (the seed's cloud tracking)\n",
+           grid->cols, grid->rows, grid->win_w, grid->win_h, grid->step_x, grid->search_w,
+           grid->search_h);
+}
+
+static void print_windows(const ssda_track_grid_t *grid, const ssda_track_config_t *cfg,
+                          const mode_run_t *run0, int exclude)
+{
+    printf("   windows  %u: %u tracked", run0->stats.windows, run0->stats.ok);
+    if (exclude) {
+        printf(", %u excluded beforehand as all dark or all bright", run0->stats.excluded);
+    }
+    printf(", %u masked,\n            %u at the edge (search area leaves the image)\n",
+           run0->stats.masked, run0->stats.edge);
+    if (exclude) { /* many grey crosses look like failures; they are the paper's rule */
+        printf("   excluded = by design (the seed's texture rule), not a failure: fewer than %u "
+               "of a window's %u pixels on one side of brightness %u (the image mean)\n",
+               grid->win_w * grid->win_h / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV,
+               grid->win_w * grid->win_h, cfg->texture_threshold);
+    }
+    printf("\n");
+}
+
+/* Every mode's work, time, agreement with brute force and with the wind. */
+static void print_modes(const ssda_track_grid_t *grid, const mode_run_t *run,
+                        const demo_wind_t *wind)
+{
+    double brute_ops = (double)run[0].stats.pixel_ops;
+    size_t i, k;
+    /* header columns as wide as the rows' fields below */
+    printf("   %-40s %18s %10s%14s%s\n", "mode", "work (pixel ops)", "time",
+           "same as brute", wind ? "     within 1 px of" : "");
+    printf("   %-40s %18s %10s%14s%s\n", "", "", "", "force", wind ? "      the true wind" : "");
+    for (i = 0; i < NMODES; i++) {
+        size_t same = 0, near = 0, ok = 0;
+        for (k = 0; k < grid->count; k++) {
+            const ssda_track_vector_t *v = &run[i].vec[k], *r = &run[0].vec[k];
+            if (v->status != SSDA_TRACK_OK) {
+                continue;
+            }
+            ok++;
+            same += v->dx == r->dx && v->dy == r->dy;
+            if (wind != NULL) {
+                double ch, eu, u, vv;
+                error_vs_wind(wind, grid, v, &ch, &eu, &u, &vv);
+                near += ch <= 1.0;
+            }
+        }
+        printf("   %-40s %8.2f M %5.1f %% %7.2f ms %11.1f %%", modes[i].name,
+               run[i].stats.pixel_ops / 1e6,
+               brute_ops > 0 ? 100.0 * (double)run[i].stats.pixel_ops / brute_ops : 0.0,
+               1e3 * run[i].secs, ok ? 100.0 * (double)same / (double)ok : 0.0);
+        if (wind != NULL) {
+            printf("%17.1f %%", ok ? 100.0 * (double)near / (double)ok : 0.0);
+        }
+        printf("\n");
+    }
+}
+
+/* The shown mode's vectors for the overlay (with the wind as truth).
+   *ok: its tracked windows; w[0], w[1]: within 1 and 2 px of the wind;
+   *sum_e: the sum of its Euclidean errors. */
+static void shown_vectors(const ssda_track_grid_t *grid, const mode_run_t *s,
+                          const demo_wind_t *wind, draw_vector_t *dv, size_t *ok, size_t w[2],
+                          double *sum_e)
+{
+    size_t k;
+    for (k = 0; k < grid->count; k++) {
+        const ssda_track_vector_t *v = &s->vec[k];
+        dv[k].x = v->x + (grid->win_w - 1) / 2.0;
+        dv[k].y = v->y + (grid->win_h - 1) / 2.0;
+        dv[k].dx = v->dx;
+        dv[k].dy = v->dy;
+        dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
+                       : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
+                       : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
+                                                          : DRAW_EDGE;
+        if (v->status != SSDA_TRACK_OK) {
+            continue;
+        }
+        (*ok)++;
+        if (wind != NULL) {
+            double ch, eu, u, vv;
+            error_vs_wind(wind, grid, v, &ch, &eu, &u, &vv);
+            dv[k].has_truth = 1;
+            dv[k].tdx = u;
+            dv[k].tdy = vv;
+            w[0] += ch <= 1.0;
+            w[1] += ch <= 2.0;
+            *sum_e += eu;
+        }
+    }
+}
+
+/* The shown mode in detail: accuracy against the wind, work saved,
+   agreement with brute force; its title and subtitle for the overlay. */
+static void print_shown(const ssda_track_grid_t *grid, const mode_run_t *run,
+                        const demo_wind_t *wind, draw_vector_t *dv, char *title, size_t tlen,
+                        char *sub, size_t slen)
+{
+    const mode_run_t *s = &run[SHOWN];
+    double brute_ops = (double)run[0].stats.pixel_ops, sum_e = 0.0;
+    size_t ok = 0, w[2] = {0, 0}, same = 0, k;
+    shown_vectors(grid, s, wind, dv, &ok, w, &sum_e);
+    printf("\n");
+    if (wind != NULL && ok > 0) {
+        printf("   accuracy %.1f %% of the tracked windows within 1 px of the true wind, "
+               "%.1f %% within 2 px;\n"
+               "            mean error %.2f px (vectors are whole pixels; the wind is "
+               "not)\n",
+               100.0 * (double)w[0] / (double)ok, 100.0 * (double)w[1] / (double)ok,
+               sum_e / (double)ok);
+    }
+    for (k = 0; k < grid->count; k++) {
+        same += s->vec[k].status == SSDA_TRACK_OK && s->vec[k].dx == run[0].vec[k].dx &&
+                s->vec[k].dy == run[0].vec[k].dy;
+    }
+    printf("   saving   the automatic threshold with prediction summed %.1f %% of the "
+           "brute-force\n            pixel differences and ",
+           brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0);
+    if (same == ok) {
+        printf("found the same minimum in every window (exact)\n");
+    } else {
+        printf("agreed with brute force in %zu of %zu windows\n", same, ok);
+    }
+    snprintf(title, tlen, "ssda-demo: %s", wind ? "synthetic clouds moved by a "
+                                                  "known wind" : "your image pair");
+    snprintf(sub, slen,
+             "automatic threshold + prediction: %u windows tracked, work %.1f %% of brute "
+             "force%s",
+             s->stats.ok, brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0,
+             wind ? "; cyan = true wind" : "");
+}
+
 int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t *second,
                const demo_wind_t *wind, long mask, uint32_t step, int exclude,
                const char *overlay_name, const char *label)
@@ -102,26 +260,14 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
     ssda_view_t vf, vs;
     mode_run_t run[NMODES];
     void *work = NULL;
-    size_t work_size, k, i;
+    size_t work_size, i;
     draw_vector_t *dv = NULL;
+    draw_vectors_opts_t o;
     int rc = -1, e;
     char path[1024], title[256], sub[256], err[512];
-    double brute_ops;
 
     memset(run, 0, sizeof run);
-    memset(&cfg, 0, sizeof cfg);
-    cfg.step_x = cfg.step_y = (uint16_t)step;
-    if (exclude) {
-        cfg.flags = SSDA_TRACK_EXCLUDE;
-        cfg.texture_threshold = (uint16_t)mean_level(second, mask);
-        if (cfg.texture_threshold >= gray_image_max(second)) {
-            cfg.texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
-        }
-    }
-    if (mask >= 0) {
-        cfg.flags |= SSDA_TRACK_MASK;
-        cfg.mask_value = (uint16_t)mask;
-    }
+    base_config(second, mask, step, exclude, &cfg);
     if (gray_image_view(first, &vf) != SSDA_OK || gray_image_view(second, &vs) != SSDA_OK ||
         ssda_track_grid(&cfg, (uint16_t)second->width, (uint16_t)second->height, &grid) !=
             SSDA_OK) {
@@ -142,12 +288,7 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
         fprintf(stderr, "ssda-demo: out of memory\n");
         goto done;
     }
-
-    printf("   input    %s\n", label);
-    printf("   grid     %u x %u windows of %u x %u px every %u px, each searched in the %u x %u\n"
-           "            area around it in the first image (the seed's cloud tracking)\n",
-           grid.cols, grid.rows, grid.win_w, grid.win_h, grid.step_x, grid.search_w,
-           grid.search_h);
+    print_grid(&grid, label);
     for (i = 0; i < NMODES; i++) {
         e = run_mode(&vf, &vs, cfg, &modes[i], grid.count, work, work_size, &run[i]);
         if (e != SSDA_OK) {
@@ -155,129 +296,22 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
             goto done;
         }
     }
-    printf("   windows  %u: %u tracked", run[0].stats.windows, run[0].stats.ok);
-    if (exclude) {
-        printf(", %u excluded beforehand as all dark or all bright", run[0].stats.excluded);
+    print_windows(&grid, &cfg, &run[0], exclude);
+    print_modes(&grid, run, wind);
+    print_shown(&grid, run, wind, dv, title, sizeof title, sub, sizeof sub);
+    memset(&o, 0, sizeof o);
+    o.title = title;
+    o.subtitle = sub;
+    o.grid_step = step;
+    o.truth_label = "true wind";
+    o.have_mask = mask >= 0;
+    o.mask_value = mask >= 0 ? (uint32_t)mask : 0u;
+    demo_path(c, overlay_name, path, sizeof path);
+    if (draw_vectors_png(path, second, dv, grid.count, &o, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "ssda-demo: %s\n", err);
+        goto done;
     }
-    printf(", %u masked,\n            %u at the edge (search area leaves the image)\n",
-           run[0].stats.masked, run[0].stats.edge);
-    if (exclude) { /* many grey crosses look like failures; they are the paper's rule */
-        printf("   excluded = by design (the seed's texture rule), not a failure: fewer than %u "
-               "of a window's %u pixels on one side of brightness %u (the image mean)\n",
-               grid.win_w * grid.win_h / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV,
-               grid.win_w * grid.win_h, cfg.texture_threshold);
-    }
-    printf("\n");
-
-    brute_ops = (double)run[0].stats.pixel_ops;
-    /* header columns as wide as the rows' fields below */
-    printf("   %-40s %18s %10s%14s%s\n", "mode", "work (pixel ops)", "time",
-           "same as brute", wind ? "     within 1 px of" : "");
-    printf("   %-40s %18s %10s%14s%s\n", "", "", "", "force", wind ? "      the true wind" : "");
-    for (i = 0; i < NMODES; i++) {
-        size_t same = 0, near = 0, ok = 0;
-        for (k = 0; k < grid.count; k++) {
-            const ssda_track_vector_t *v = &run[i].vec[k], *r = &run[0].vec[k];
-            if (v->status != SSDA_TRACK_OK) {
-                continue;
-            }
-            ok++;
-            same += v->dx == r->dx && v->dy == r->dy;
-            if (wind != NULL) {
-                double ch, eu, u, vv;
-                error_vs_wind(wind, &grid, v, &ch, &eu, &u, &vv);
-                near += ch <= 1.0;
-            }
-        }
-        printf("   %-40s %8.2f M %5.1f %% %7.2f ms %11.1f %%", modes[i].name,
-               run[i].stats.pixel_ops / 1e6,
-               brute_ops > 0 ? 100.0 * (double)run[i].stats.pixel_ops / brute_ops : 0.0,
-               1e3 * run[i].secs, ok ? 100.0 * (double)same / (double)ok : 0.0);
-        if (wind != NULL) {
-            printf("%17.1f %%", ok ? 100.0 * (double)near / (double)ok : 0.0);
-        }
-        printf("\n");
-    }
-
-    /* the shown mode in detail */
-    {
-        const mode_run_t *s = &run[SHOWN];
-        size_t ok = 0, w1 = 0, w2 = 0;
-        double sum_e = 0.0;
-        for (k = 0; k < grid.count; k++) {
-            const ssda_track_vector_t *v = &s->vec[k];
-            dv[k].x = v->x + (grid.win_w - 1) / 2.0;
-            dv[k].y = v->y + (grid.win_h - 1) / 2.0;
-            dv[k].dx = v->dx;
-            dv[k].dy = v->dy;
-            dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
-                           : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
-                           : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
-                                                              : DRAW_EDGE;
-            if (v->status != SSDA_TRACK_OK) {
-                continue;
-            }
-            ok++;
-            if (wind != NULL) {
-                double ch, eu, u, vv;
-                error_vs_wind(wind, &grid, v, &ch, &eu, &u, &vv);
-                dv[k].has_truth = 1;
-                dv[k].tdx = u;
-                dv[k].tdy = vv;
-                w1 += ch <= 1.0;
-                w2 += ch <= 2.0;
-                sum_e += eu;
-            }
-        }
-        printf("\n");
-        if (wind != NULL && ok > 0) {
-            printf("   accuracy %.1f %% of the tracked windows within 1 px of the true wind, "
-                   "%.1f %% within 2 px;\n"
-                   "            mean error %.2f px (vectors are whole pixels; the wind is "
-                   "not)\n",
-                   100.0 * (double)w1 / (double)ok, 100.0 * (double)w2 / (double)ok,
-                   sum_e / (double)ok);
-        }
-        {
-            size_t same = 0;
-            for (k = 0; k < grid.count; k++) {
-                same += s->vec[k].status == SSDA_TRACK_OK && s->vec[k].dx == run[0].vec[k].dx &&
-                        s->vec[k].dy == run[0].vec[k].dy;
-            }
-            printf("   saving   the automatic threshold with prediction summed %.1f %% of the "
-                   "brute-force\n            pixel differences and ",
-                   brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0);
-            if (same == ok) {
-                printf("found the same minimum in every window (exact)\n");
-            } else {
-                printf("agreed with brute force in %zu of %zu windows\n", same, ok);
-            }
-        }
-        snprintf(title, sizeof title, "ssda-demo: %s", wind ? "synthetic clouds moved by a "
-                                                              "known wind" : "your image pair");
-        snprintf(sub, sizeof sub,
-                 "automatic threshold + prediction: %u windows tracked, work %.1f %% of brute "
-                 "force%s",
-                 s->stats.ok, brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0,
-                 wind ? "; cyan = true wind" : "");
-    }
-    {
-        draw_vectors_opts_t o;
-        memset(&o, 0, sizeof o);
-        o.title = title;
-        o.subtitle = sub;
-        o.grid_step = step;
-        o.truth_label = "true wind";
-        o.have_mask = mask >= 0;
-        o.mask_value = mask >= 0 ? (uint32_t)mask : 0u;
-        demo_path(c, overlay_name, path, sizeof path);
-        if (draw_vectors_png(path, second, dv, grid.count, &o, NULL, err, sizeof err) != 0) {
-            fprintf(stderr, "ssda-demo: %s\n", err);
-            goto done;
-        }
-        printf("   picture  %s  (yellow: SSDA vectors%s)\n", path,
-               wind ? ", cyan: true wind" : "");
-    }
+    printf("   picture  %s  (yellow: SSDA vectors%s)\n", path, wind ? ", cyan: true wind" : "");
     rc = 0;
 done:
     for (i = 0; i < NMODES; i++) {

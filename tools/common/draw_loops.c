@@ -1,10 +1,10 @@
 /* draw_loops.c - the symbolic registration overlay (draw_loops.h). */
 #include "draw_loops.h"
+#include "tool_err.h"
 #include "atomic_file.h"
 
 #include <cairo.h>
 #include <errno.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -12,17 +12,6 @@
 #define FONT "DejaVu Sans"
 #define GAP 16.0    /* px between the two panels (drawing units) */
 #define HEAD 44.0   /* title band */
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int len)
 {
@@ -176,7 +165,7 @@ int draw_loops_to(FILE *fp, const char *name, const draw_loops_side_t *ref,
     }
     cairo_surface_destroy(s);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot write '%s': %s", name, cairo_status_to_string(st));
+        tool_set_err(err, errlen, "cannot write '%s': %s", name, cairo_status_to_string(st));
         return -1;
     }
     return 0;
@@ -188,7 +177,7 @@ int draw_loops_png(const char *path, const draw_loops_side_t *ref, const draw_lo
 {
     atomic_file_t af;
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot create '%s': %s", path, strerror(errno));
         return -1;
     }
     if (draw_loops_to(af.fp, path, ref, mov, pairs, n_pairs, title, subtitle, err, errlen) != 0) {
@@ -196,7 +185,7 @@ int draw_loops_png(const char *path, const draw_loops_side_t *ref, const draw_lo
         return -1;
     }
     if (atomic_file_commit(&af) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
         return -1;
     }
     return 0;
