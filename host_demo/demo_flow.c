@@ -138,8 +138,8 @@ static int overlay(const demo_ctx_t *c, const char *name, const char *title, con
         v[k].y = 8.0 + (k / f->cols) * WIN + WIN / 2.0;
         v[k].dx = *(const int32_t *)(const void *)((const char *)dx + k * stride) / 256.0;
         v[k].dy = *(const int32_t *)(const void *)((const char *)dy + k * stride) / 256.0;
-        /* outliers: red arrows (the overlay's "at the limit" colour) */
-        v[k].status = mark != NULL && mark[k] ? DRAW_AT_LIMIT : DRAW_OK;
+        /* outliers: pink arrows */
+        v[k].status = mark != NULL && mark[k] ? DRAW_CHANGED : DRAW_OK;
         v[k].has_truth = 1;
         v[k].tdx = f->tx[k];
         v[k].tdy = f->ty[k];
@@ -244,10 +244,10 @@ int demo_flow(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t
            wrong, left_median);
     if (overlay(c, "flow_sad_vs_rho.png", "SAD under a brightness change (yellow; cyan: the wind)",
                 &second, &f, &f.sad[0].dx, &f.sad[0].dy, sizeof(vec_t), NULL) != 0 ||
-        overlay(c, "flow_raw.png", "correlation coefficient + 10 % outliers (red: injected)",
+        overlay(c, "flow_raw.png", "correlation coefficient + 10 % outliers (pink: injected)",
                 &second, &f, &f.dirty[0].dx, &f.dirty[0].dy, sizeof(vec_t), f.injected) != 0 ||
         overlay(c, "flow_relaxed.png",
-                "after relaxation labelling (red: relabelled vectors; cyan: the wind)", &second, &f,
+                "after relaxation labelling (pink: relabelled vectors; cyan: the wind)", &second, &f,
                 &f.relaxed[0].dx_q8, &f.relaxed[0].dy_q8, sizeof(ssda_relax_vector_t),
                 mark) != 0) {
         goto done;
