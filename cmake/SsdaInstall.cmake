@@ -37,5 +37,12 @@ set(SSDA_PC_CFLAGS "")
 foreach(_def IN LISTS SSDA_CONFIG)
   string(APPEND SSDA_PC_CFLAGS " -D${_def}")
 endforeach()
+# A settings file (SSDA_CONFIG_FILE, lib/CMakeLists.txt) is installed into
+# the include directory, where config.h finds it by its name.
+if(SSDA_CONFIG_FILE)
+  get_filename_component(_cfg_name "${SSDA_CONFIG_FILE}" NAME)
+  install(FILES "${SSDA_CONFIG_FILE}" DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  string(APPEND SSDA_PC_CFLAGS " -DSSDA_CONFIG_FILE=${_cfg_name}")
+endif()
 configure_file(${PROJECT_SOURCE_DIR}/cmake/ssda.pc.in ${PROJECT_BINARY_DIR}/ssda.pc @ONLY)
 install(FILES ${PROJECT_BINARY_DIR}/ssda.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)

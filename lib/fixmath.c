@@ -1,7 +1,7 @@
 /* fixmath.c - integer square root and a wide multiply-shift. */
 #include "fixmath.h"
 
-uint32_t ssda_isqrt64(uint64_t v)
+uint32_t ssda__isqrt64(uint64_t v)
 {
     uint64_t rem = v;
     uint64_t root = 0u;
@@ -21,7 +21,7 @@ uint32_t ssda_isqrt64(uint64_t v)
     return (uint32_t)root; /* sqrt(2^64 - 1) < 2^32 */
 }
 
-uint64_t ssda_mul_shr24(uint32_t a, uint64_t b)
+uint64_t ssda__mul_shr24(uint32_t a, uint64_t b)
 {
     uint64_t bh = b >> 24;
     uint64_t bl = b & 0xFFFFFFu;
@@ -33,7 +33,7 @@ uint64_t ssda_mul_shr24(uint32_t a, uint64_t b)
     return hi + (((uint64_t)a * bl) >> 24);     /* a*bl < 2^56; sum < 2^64 - 2^32 + 2^32 */
 }
 
-uint32_t ssda_div64_32(uint64_t n, uint32_t d)
+uint32_t ssda__div64_32(uint64_t n, uint32_t d)
 {
     uint32_t rem = (uint32_t)(n >> 32); /* the remainder, < d once started */
     uint32_t lo = (uint32_t)n;

@@ -1,20 +1,70 @@
-/* match.c - public search API: validation, and views as row sources. */
+/* match.c - public search API: validation, the plan of a search, and row
+   sources (views, memory, devices, sub-rectangles). */
 #include "match_rows.h"
 #include "kernel/kernels.h"
+#include "fixmath.h"
 
-void ssda_rows_from_view(ssda_rows_t *rows, const ssda_view_t *view)
+void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride, uint32_t w,
+                    uint32_t h, uint8_t format)
 {
+    rows->base = (const uint8_t *)base;
+    rows->stride = stride;
+    rows->fetch = NULL;
+    rows->ctx = NULL;
+    rows->x0 = 0u;
+    rows->y0 = 0u;
+    rows->width = (uint16_t)w;
+    rows->height = (uint16_t)h;
+    rows->format = format;
+}
+
+void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view)
+{
+    /* ssda__rows_mem of the view's fields, written out: a search on views
+       links this one constructor only */
     rows->base = (const uint8_t *)view->data;
     rows->stride = view->stride;
     rows->fetch = NULL;
     rows->ctx = NULL;
+    rows->x0 = 0u;
+    rows->y0 = 0u;
     rows->width = view->width;
     rows->height = view->height;
     rows->format = view->format;
 }
 
-int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
-                            uint32_t area_h, uint32_t win_w, uint32_t win_h)
+void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx, uint32_t w,
+                    uint32_t h, uint8_t format)
+{
+    rows->base = NULL;
+    rows->stride = 0u;
+    rows->fetch = fetch;
+    rows->ctx = ctx;
+    rows->x0 = 0u;
+    rows->y0 = 0u;
+    rows->width = (uint16_t)w;
+    rows->height = (uint16_t)h;
+    rows->format = format;
+}
+
+void ssda__rows_sub(ssda__rows_t *sub, const ssda__rows_t *parent, uint32_t x, uint32_t y,
+                    uint32_t w, uint32_t h)
+{
+    *sub = *parent;
+    if (parent->base != NULL) {
+        sub->base = parent->base + (size_t)y * parent->stride + (size_t)x * parent->format;
+    } else {
+        sub->x0 = (uint16_t)(parent->x0 + x); /* inside the device image: < 2^16 */
+        sub->y0 = (uint16_t)(parent->y0 + y);
+    }
+    sub->width = (uint16_t)w;
+    sub->height = (uint16_t)h;
+}
+
+/* The options against the geometry: SSDA_OK or the error ssda_match
+   documents for them. */
+static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t area_h,
+                        uint32_t win_w, uint32_t win_h)
 {
     if (cfg->threshold > (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
         cfg->scan > (uint8_t)SSDA_SCAN_COARSE || cfg->order > (uint8_t)SSDA_ORDER_SPREAD ||
@@ -81,6 +131,63 @@ int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
     return SSDA_OK;
 }
 
+const ssda_match_config_t ssda__match_defaults; /* all zero */
+
+#ifndef SSDA_CFG_NO_SPREAD
+static uint32_t gcd_u32(uint32_t a, uint32_t b)
+{
+    while (b != 0u) {
+        uint32_t t = SSDA_MOD32(a, b); /* setup only: no runtime division on the M0+ */
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* The spread order's step for M rows: the largest s <= 0.618 M coprime to
+   M (golden-ratio stride), at least 1. */
+static uint32_t spread_step(uint32_t m)
+{
+    uint32_t s = (m * 158u) / 256u; /* ~0.618 M; m <= 65535 */
+    if (s == 0u) {
+        s = 1u;
+    }
+    while (s > 1u && gcd_u32(s, m) != 1u) {
+        s--;
+    }
+    return s;
+}
+#endif
+
+int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t area_h,
+                     uint32_t win_w, uint32_t win_h, ssda_match_plan_t *plan)
+{
+    const uint8_t mode = cfg->threshold;
+    int err = check_config(cfg, area_w, area_h, win_w, win_h);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    plan->threshold = mode;
+    plan->scan = cfg->scan;
+    plan->work = cfg->work;
+    plan->lambda_q8 = cfg->lambda_q8;
+    plan->k_q8 = cfg->k_q8 != 0u ? cfg->k_q8 : (uint16_t)SSDA_DEFAULT_K_Q8;
+    plan->coarse_step = cfg->coarse_step != 0u ? cfg->coarse_step
+                                               : (uint16_t)SSDA_DEFAULT_COARSE_STEP;
+    plan->row_step = 1u;
+#ifndef SSDA_CFG_NO_SPREAD
+    if (cfg->order == (uint8_t)SSDA_ORDER_SPREAD) {
+        plan->row_step = spread_step(win_h);
+    }
+#endif
+    plan->flags = cfg->flags;
+    plan->fixed_cut = UINT64_MAX;
+    if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
+        plan->fixed_cut = cfg->fixed_threshold + 1u;
+    }
+    return SSDA_OK;
+}
+
 /* Validate the pair of views: each valid, same format, window fits. */
 static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
 {
@@ -108,8 +215,8 @@ static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
 int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
-    ssda_rows_t a, w;
+    ssda_match_plan_t plan;
+    ssda__rows_t a, w;
     int err;
     if (area == NULL || window == NULL || result == NULL) {
         return SSDA_ERR_NULL;
@@ -119,16 +226,16 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
         return err;
     }
     if (cfg == NULL) {
-        cfg = &defaults;
+        cfg = &ssda__match_defaults;
     }
-    err = ssda_match_check_config(cfg, area->width, area->height, window->width,
-                                  window->height);
+    err = ssda__match_plan(cfg, area->width, area->height, window->width, window->height,
+                           &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    ssda_rows_from_view(&a, area);
-    ssda_rows_from_view(&w, window);
-    return ssda_match_rows(&a, &w, cfg, result);
+    ssda__rows_view(&a, area);
+    ssda__rows_view(&w, window);
+    return ssda__match_rows(&a, &w, &plan, cfg->predict_x, cfg->predict_y, result);
 }
 
 int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
@@ -153,12 +260,12 @@ int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,
         const uint8_t *t = ssda_view_row(window, r);
 #ifndef SSDA_CFG_NO_U16
         if (area->format != (uint8_t)SSDA_PIX_U8) {
-            total += ssda_sad_row_u16((const uint16_t *)(const void *)s,
+            total += ssda__sad_row_u16((const uint16_t *)(const void *)s,
                                       (const uint16_t *)(const void *)t, window->width);
             continue;
         }
 #endif
-        total += ssda_sad_row_u8(s, t, window->width);
+        total += ssda__sad_row_u8(s, t, window->width);
     }
     *sad = total;
     return SSDA_OK;

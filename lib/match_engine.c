@@ -28,26 +28,26 @@ typedef struct {
 /* The search state, kept small: it lives on the caller's stack under the
    deepest call chain (hill_climb > consider > note_cut). */
 typedef struct {
-    const ssda_rows_t *area;
-    const ssda_rows_t *win;
-    const ssda_match_config_t *cfg;
+    const ssda__rows_t *area;
+    const ssda__rows_t *win;
+    const ssda_match_plan_t *plan; /* the resolved options (match_rows.h) */
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
-    uint32_t row_step;   /* row order: r -> r + row_step (mod M) */
-    uint64_t fixed_cut;  /* FIXED: T + 1 (cut when partial > T); else UINT64_MAX */
+    int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
+    uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
+    uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
+    bool u8;             /* 8-bit samples (else 16-bit) */
+    /* the plan's flags the per-position path tests, copied at the start
+       (one load from the engine, not two through the plan) */
     bool use_ref;        /* positions are cut once they cannot beat ref */
     bool bounds;         /* successive elimination active */
-    bool u8;             /* 8-bit samples (else 16-bit) */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
 #endif
     uint8_t n_best;      /* 0, 1 or 2 valid entries */
-#ifndef SSDA_CFG_NO_RAMP
-    uint16_t k_q8;       /* K of eqs. 3/4, Q8.8 */
-#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     uint32_t group;      /* bounds: rows per group (1..4) */
     uint32_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
@@ -79,25 +79,13 @@ static bool cand_less(const cand_t *a, const cand_t *b)
     return a->x < b->x;
 }
 
-#ifndef SSDA_CFG_NO_SPREAD
-static uint32_t gcd_u32(uint32_t a, uint32_t b)
-{
-    while (b != 0u) {
-        uint32_t t = SSDA_MOD32(a, b); /* setup only: no runtime division on the M0+ */
-        a = b;
-        b = t;
-    }
-    return a;
-}
-#endif
-
 #ifndef SSDA_CFG_NO_RAMP
 /* sqrt(r) * (r + K sqrt(r)) helper: f(r) = r + K*sqrt(r) in Q16, r < 2^32.
    r * 2^16 < 2^48, K_q8 * sqrt_q8 < 2^16 * 2^24: sum < 2^49. */
 static uint64_t ramp_f_q16(const engine_t *e, uint64_t r)
 {
-    uint64_t sqrt_q8 = ssda_isqrt64(r << 16);
-    return (r << 16) + (uint64_t)e->k_q8 * sqrt_q8;
+    uint64_t sqrt_q8 = ssda__isqrt64(r << 16);
+    return (r << 16) + (uint64_t)e->plan->k_q8 * sqrt_q8;
 }
 
 /* Threshold of the ramp modes after r pixels (only called when the partial
@@ -108,9 +96,9 @@ static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
     const uint64_t lm = (uint64_t)e->L * e->M; /* < 2^32 */
     uint64_t t;
     uint32_t frac;
-    if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
+    if (e->plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
         /* eq. 3: lambda * f(r); lambda Q24.8 times f Q16 -> shift 24 */
-        return ssda_mul_shr24(e->cfg->lambda_q8, f);
+        return ssda__mul_shr24(e->plan->lambda_q8, f);
     }
     /* eq. 4: min(T_i, T_i * f(r) / (L*M)) with frac = f / (L*M) in Q16: it
        reaches 1.0 (65536) exactly when f >= L*M * 2^16 (< 2^48); below, the
@@ -128,8 +116,8 @@ static uint64_t ramp_threshold(const engine_t *e, uint64_t r)
 /* Lower bound of the ramp after r pixels: its linear part. */
 static uint64_t ramp_linear(const engine_t *e, uint64_t r)
 {
-    if (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
-        return ((uint64_t)e->cfg->lambda_q8 * r) >> 8; /* < 2^32 * 2^32 */
+    if (e->plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP) {
+        return ((uint64_t)e->plan->lambda_q8 * r) >> 8; /* < 2^32 * 2^32 */
     }
     /* floor(t / LM) * r: a completed SAD t <= 65535 * LM, so the quotient
        <= 65535 (a 64-by-32 division, as above) and the product < 2^48 */
@@ -152,13 +140,13 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
 {
 #ifndef SSDA_CFG_NO_U16
     if (!e->u8) {
-        return ssda_sad_row_u16((const uint16_t *)(const void *)a,
+        return ssda__sad_row_u16((const uint16_t *)(const void *)a,
                                 (const uint16_t *)(const void *)w, n);
     }
 #else
     (void)e;
 #endif
-    return ssda_sad_row_u8(a, w, n);
+    return ssda__sad_row_u8(a, w, n);
 }
 
 #ifdef ENGINE_FALLBACK
@@ -215,25 +203,11 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 }
 #endif
 
-/*
- * Evaluate position (x, y). Returns 1 and sets *sad when the position is
- * summed over all pixels without being cut, 0 when cut, or a fetch error.
- */
-static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
+/* The level at which position (x, y) is cut (partial + rest >= it): the
+   plan's fixed cut, lowered to what can still beat the reference. */
+static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
 {
-#ifndef SSDA_CFG_NO_RAMP
-    const bool ramp = e->ramp_mode &&
-                      (e->cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
-#endif
-    uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
-    uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
-    uint64_t cut_at = e->fixed_cut; /* cut once partial + rest >= cut_at */
-    uint32_t k, r = 0u;
-#ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t next_group = 0u;     /* row order: index of the next group to start */
-#endif
-
-    e->positions++;
+    uint64_t cut_at = e->fixed_cut;
     if (e->use_ref && e->ref != NULL) {
         /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
         const cand_t *ref = e->ref;
@@ -243,6 +217,33 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
             cut_at = lim;
         }
     }
+    return cut_at;
+}
+
+/*
+ * Evaluate position (x, y). Returns 1 and sets *sad when the position is
+ * summed over all pixels without being cut, 0 when cut, or a fetch error.
+ * Longer than the library's ~80 lines on purpose: it is the innermost
+ * per-position loop, and the first-row chunk loop moved into a helper
+ * (even always inlined, with the partial sum through a pointer) cost 2.3 %
+ * more instructions per search on the Cortex-M4 (tools/budget.sh,
+ * match.none), for the same results.
+ */
+static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
+{
+#ifndef SSDA_CFG_NO_RAMP
+    const bool ramp = e->ramp_mode &&
+                      (e->plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
+#endif
+    uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
+    uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
+    const uint64_t cut_at = cut_level(e, x, y); /* cut once partial + rest >= cut_at */
+    uint32_t k, r = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t next_group = 0u;     /* row order: index of the next group to start */
+#endif
+
+    e->positions++;
     if (cut_at == 0u) { /* nothing can beat a perfect match before it */
         NOTE_CUT(e, x, y, 0u, 0u);
         return 0;
@@ -263,9 +264,9 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         const uint8_t *ap;
         const uint8_t *wp;
         uint64_t v;
-        int err = ssda_rows_get(e->area, x, y + r, e->L, &ap);
+        int err = ssda__rows_get(e->area, x, y + r, e->L, &ap);
         if (err == SSDA_OK) {
-            err = ssda_rows_get(e->win, 0u, r, e->L, &wp);
+            err = ssda__rows_get(e->win, 0u, r, e->L, &wp);
         }
         if (err != SSDA_OK) {
             return err;
@@ -409,8 +410,8 @@ static int scan_segment(engine_t *e, int32_t x0, int32_t y0, int32_t x1, int32_t
    and bottom rows of each ring, then its left and right columns. */
 static SSDA_NOINLINE int scan_predict(engine_t *e)
 {
-    int32_t px = (int32_t)clamp_pos(e->cfg->predict_x, e->nx);
-    int32_t py = (int32_t)clamp_pos(e->cfg->predict_y, e->ny);
+    int32_t px = (int32_t)clamp_pos(e->px, e->nx);
+    int32_t py = (int32_t)clamp_pos(e->py, e->ny);
     int32_t dmax = px;
     int32_t d;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py);
@@ -502,7 +503,7 @@ static int hill_climb(engine_t *e, const cand_t *start)
 
 static SSDA_NOINLINE int scan_coarse(engine_t *e)
 {
-    uint32_t step = e->cfg->coarse_step != 0u ? e->cfg->coarse_step : SSDA_DEFAULT_COARSE_STEP;
+    uint32_t step = e->plan->coarse_step;
     cand_t s2;
     int err = scan_coarse_grid(e, step);
     if (err != SSDA_OK || e->n_best == 0u) {
@@ -521,44 +522,22 @@ static SSDA_NOINLINE int scan_coarse(engine_t *e)
 #endif
 
 #ifndef SSDA_CFG_NO_BOUNDS
-/*
- * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
- * then in place the vertical sums of `group` consecutive H (rows yy ..
- * yy+group-1), and the window's sums over the same groups of rows.
- * Ranges: H <= L * 65535 <= 65535^2 < 2^32. A group sum <= group * L * maxval:
- * group = 4 unless 16-bit windows wider than 16384 px, where group = 1.
- */
-static SSDA_NOINLINE int build_bounds(engine_t *e)
+/* H(x, yy) of every area row yy: the sliding sums of L pixels, nx per row,
+   in gsum. H <= L * 65535 <= 65535^2 < 2^32. Adds the work to *ops.
+   Returns SSDA_OK or a fetch error. Inlined into build_bounds (its parts
+   are split for reading only: one frame, the same code). */
+static SSDA_ALWAYS_INLINE int area_row_sums(const engine_t *e, uint32_t *gsum, bool u8,
+                                            uint64_t *ops)
 {
-    /* The engine's fields in locals: the stores into the tables below could
-       alias them (uint32_t), which would reload them in every iteration. */
-    const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
     const uint32_t ah = e->area->height;
     const uint32_t L = e->L, nx = e->nx;
-    uint32_t *work = (uint32_t *)e->cfg->work;
-    uint32_t *gsum = work;
-    uint32_t *wgrp = work + (size_t)nx * ah;
-    uint32_t group = (!u8 && L > 16384u) ? 1u : 4u;
-    uint32_t ngroups;
-    uint64_t ops = 0u;
     uint32_t yy, i;
-    if (group > e->M) {
-        group = e->M;
-    }
-    /* M >= 1: the window height */
-    ngroups = SSDA_DIV32(e->M, group); /* NOLINT(clang-analyzer-core.DivideZero) */
-    e->group = group;
-    e->ngroups = ngroups;
-    e->gsum = gsum;
-    e->wgrp = wgrp;
-    e->term = wgrp + e->M;
     for (yy = 0u; yy < ah; yy++) {
         const uint8_t *p;
         uint32_t *h = gsum + (size_t)yy * nx;
         uint32_t s = 0u; /* <= L * 65535 <= 65535^2 < 2^32 */
-        int err = ssda_rows_get(e->area, 0u, yy, e->area->width, &p);
+        int err = ssda__rows_get(e->area, 0u, yy, e->area->width, &p);
         if (err != SSDA_OK) {
-            e->ops += ops;
             return err;
         }
         if (u8) {
@@ -581,36 +560,51 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
                 h[i] = s;
             }
         }
-        ops += L + 2u * ((uint64_t)nx - 1u);
+        *ops += L + 2u * ((uint64_t)nx - 1u);
     }
-    if (group > 1u) {
-        /* in place, top-down: row yy becomes H(yy) + ... + H(yy + group - 1);
-           rows past ah - group are never read afterwards */
-        for (i = 0u; i < nx; i++) {
-            uint32_t *c = gsum + i;
-            uint32_t s = 0u; /* a group sum, range above */
-            for (yy = 0u; yy < group; yy++) {
-                s += c[(size_t)yy * nx];
-            }
-            for (yy = 0u; yy + group <= ah; yy++) {
-                const uint32_t below = yy + group; /* <= ah */
-                uint32_t top = c[(size_t)yy * nx];
-                c[(size_t)yy * nx] = s;
-                if (below < ah) {
-                    s = s - top + c[(size_t)below * nx];
-                }
-            }
-            ops += group + 2u * ((uint64_t)ah - group);
+    return SSDA_OK;
+}
+
+/* In place, top-down: row yy of gsum (nx per row, ah rows) becomes
+   H(yy) + ... + H(yy + group - 1); rows past ah - group are never read
+   afterwards. A group sum <= group * L * 65535 (range in build_bounds).
+   Adds the work to *ops. */
+static SSDA_ALWAYS_INLINE void group_rows(uint32_t *gsum, uint32_t nx, uint32_t ah,
+                                          uint32_t group, uint64_t *ops)
+{
+    uint32_t i, yy;
+    for (i = 0u; i < nx; i++) {
+        uint32_t *c = gsum + i;
+        uint32_t s = 0u; /* a group sum */
+        for (yy = 0u; yy < group; yy++) {
+            s += c[(size_t)yy * nx];
         }
+        for (yy = 0u; yy + group <= ah; yy++) {
+            const uint32_t below = yy + group; /* <= ah */
+            uint32_t top = c[(size_t)yy * nx];
+            c[(size_t)yy * nx] = s;
+            if (below < ah) {
+                s = s - top + c[(size_t)below * nx];
+            }
+        }
+        *ops += group + 2u * ((uint64_t)ah - group);
     }
+}
+
+/* The window's sums over the same groups of rows, in wgrp. Adds the work
+   to *ops. Returns SSDA_OK or a fetch error. */
+static SSDA_ALWAYS_INLINE int window_groups(const engine_t *e, uint32_t *wgrp, uint32_t group,
+                                            uint32_t ngroups, bool u8, uint64_t *ops)
+{
+    const uint32_t L = e->L;
+    uint32_t i, yy;
     for (i = 0u; i < ngroups; i++) {
         uint32_t s = 0u;
         for (yy = i * group; yy < (i + 1u) * group; yy++) {
             const uint8_t *p;
             uint32_t c;
-            int err = ssda_rows_get(e->win, 0u, yy, L, &p);
+            int err = ssda__rows_get(e->win, 0u, yy, L, &p);
             if (err != SSDA_OK) {
-                e->ops += ops;
                 return err;
             }
             for (c = 0u; c < L; c++) {
@@ -618,19 +612,60 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
             }
         }
         wgrp[i] = s;
-        ops += (uint64_t)group * L;
+        *ops += (uint64_t)group * L;
+    }
+    return SSDA_OK;
+}
+
+/*
+ * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
+ * then in place the vertical sums of `group` consecutive H (rows yy ..
+ * yy+group-1), and the window's sums over the same groups of rows.
+ * Ranges: H <= L * 65535 <= 65535^2 < 2^32. A group sum <= group * L * maxval:
+ * group = 4 unless 16-bit windows wider than 16384 px, where group = 1.
+ */
+static SSDA_NOINLINE int build_bounds(engine_t *e)
+{
+    /* The engine's fields in locals: the stores into the tables below could
+       alias them (uint32_t), which would reload them in every iteration. */
+    const bool u8 = e->area->format == (uint8_t)SSDA_PIX_U8;
+    const uint32_t nx = e->nx;
+    uint32_t *work = (uint32_t *)e->plan->work;
+    uint32_t *gsum = work;
+    uint32_t *wgrp = work + (size_t)nx * e->area->height;
+    uint32_t group = (!u8 && e->L > 16384u) ? 1u : 4u;
+    uint32_t ngroups;
+    uint64_t ops = 0u;
+    int err;
+    if (group > e->M) {
+        group = e->M;
+    }
+    /* M >= 1: the window height */
+    ngroups = SSDA_DIV32(e->M, group); /* NOLINT(clang-analyzer-core.DivideZero) */
+    e->group = group;
+    e->ngroups = ngroups;
+    e->gsum = gsum;
+    e->wgrp = wgrp;
+    e->term = wgrp + e->M;
+    err = area_row_sums(e, gsum, u8, &ops);
+    if (err == SSDA_OK) {
+        if (group > 1u) {
+            group_rows(gsum, nx, e->area->height, group, &ops);
+        }
+        err = window_groups(e, wgrp, group, ngroups, u8, &ops);
     }
     e->ops += ops;
-    return SSDA_OK;
+    return err;
 }
 
 #endif
 
-int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
-                    const ssda_match_config_t *cfg, ssda_match_result_t *result)
+int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
+                     const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
+                     ssda_match_result_t *result)
 {
     engine_t e = {0};
-    uint8_t mode = cfg->threshold;
+    const uint8_t mode = plan->threshold;
     int err;
 #ifdef SSDA_CFG_NO_U16
     if (area->format != (uint8_t)SSDA_PIX_U8) {
@@ -640,41 +675,26 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
 
     e.area = area;
     e.win = window;
-    e.cfg = cfg;
+    e.plan = plan;
     e.L = window->width;
     e.M = window->height;
     e.nx = (uint32_t)area->width - e.L + 1u;
     e.ny = (uint32_t)area->height - e.M + 1u;
-#ifndef SSDA_CFG_NO_RAMP
-    e.k_q8 = cfg->k_q8 != 0u ? cfg->k_q8 : (uint16_t)SSDA_DEFAULT_K_Q8;
-#endif
-    e.row_step = 1u;
-#ifndef SSDA_CFG_NO_SPREAD
-    if (cfg->order == (uint8_t)SSDA_ORDER_SPREAD) {
-        uint32_t s = (e.M * 158u) / 256u; /* ~0.618 M, golden-ratio stride */
-        if (s == 0u) {
-            s = 1u;
-        }
-        while (s > 1u && gcd_u32(s, e.M) != 1u) {
-            s--;
-        }
-        e.row_step = s;
-    }
-#endif
-    e.bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e.px = predict_x;
+    e.py = predict_y;
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+    e.row_step = plan->row_step;
+    e.fixed_cut = plan->fixed_cut;
+    /* the mode's flags, derived from the plan */
+    e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
     e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
 #ifdef ENGINE_FALLBACK
     e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
 #endif
-    e.fixed_cut = UINT64_MAX;
-    if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
-        e.fixed_cut = cfg->fixed_threshold + 1u;
-    }
     e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
-                 (e.bounds || cfg->scan == (uint8_t)SSDA_SCAN_COARSE));
+                 (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
     if (e.bounds) {
         err = build_bounds(&e);
@@ -684,12 +704,12 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
     }
 #endif
 #ifndef SSDA_CFG_NO_PREDICT
-    if (cfg->scan == (uint8_t)SSDA_SCAN_PREDICT) {
+    if (plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {
         err = scan_predict(&e);
     } else
 #endif
 #ifndef SSDA_CFG_NO_COARSE
-    if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE) {
+    if (plan->scan == (uint8_t)SSDA_SCAN_COARSE) {
         err = scan_coarse(&e);
     } else
 #endif
@@ -713,7 +733,7 @@ int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
         result->sad = e.best.sad;
         result->x = (uint16_t)e.best.x;
         result->y = (uint16_t)e.best.y;
-        result->exact = cfg->scan != (uint8_t)SSDA_SCAN_COARSE &&
+        result->exact = plan->scan != (uint8_t)SSDA_SCAN_COARSE &&
                         (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
                          mode == (uint8_t)SSDA_THRESHOLD_NONE ||
                          mode == (uint8_t)SSDA_THRESHOLD_FIXED);

@@ -1,13 +1,14 @@
 /*
- * match_rows.h - internal: the search engine over abstract row sources, so
- * the same code serves images in RAM (ssda_match) and block-streamed images
- * (stream layer): kernels always run on contiguous row spans, never a
- * callback per pixel.
+ * match_rows.h - internal: row sources, and the search engine over them, so
+ * the same code serves images in RAM (ssda_match), plates and push rings
+ * (stream layer) and block-streamed images read through a callback:
+ * kernels always run on contiguous row spans, never a callback per pixel.
  */
 #ifndef SSDA_MATCH_ROWS_H
 #define SSDA_MATCH_ROWS_H
 
 #include "ssda/match.h"
+#include "compiler.h"
 
 /*
  * Fetch pixels x .. x+n-1 of row y (all inside the image) as a contiguous
@@ -15,45 +16,76 @@
  * stays valid until the next fetch on the same source. Any negative return
  * is an error and is passed back unchanged by the engine.
  */
-typedef int (*ssda_row_fetch_fn)(void *ctx, uint32_t x, uint32_t y, uint32_t n,
-                                 const uint8_t **px);
+typedef int (*ssda__row_fetch_fn)(void *ctx, uint32_t x, uint32_t y, uint32_t n,
+                                  const uint8_t **px);
 
+/* A row source: width x height pixels, in memory or behind a fetch. Built
+   only by the constructors below. */
 typedef struct {
-    const uint8_t *base;     /* in RAM: pixel (0, 0); NULL means use fetch */
-    uint32_t stride;         /* in RAM: bytes between rows */
-    ssda_row_fetch_fn fetch; /* when base == NULL */
-    void *ctx;               /* passed to fetch */
-    uint16_t width;          /* pixels */
-    uint16_t height;         /* rows */
-    uint8_t format;          /* ssda_pixfmt_t */
-} ssda_rows_t;
+    const uint8_t *base;      /* in memory: pixel (0, 0); NULL: rows come from fetch */
+    uint32_t stride;          /* in memory: bytes between rows */
+    ssda__row_fetch_fn fetch; /* when base == NULL */
+    void *ctx;                /* passed to fetch */
+    uint16_t x0, y0;          /* fetch: pixel (0, 0) is pixel (x0, y0) of ctx's image */
+    uint16_t width;           /* pixels */
+    uint16_t height;          /* rows */
+    uint8_t format;           /* ssda_pixfmt_t */
+} ssda__rows_t;
 
-/* A row source over a valid in-memory view. */
-void ssda_rows_from_view(ssda_rows_t *rows, const ssda_view_t *view);
+/* Rows in memory: w x h pixels of the format from base, rows stride bytes
+   apart (a view, a plate, a push ring). */
+SSDA_INTERNAL void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride,
+                                  uint32_t w, uint32_t h, uint8_t format);
 
-/* Pixels x .. x+n-1 of row y of src: direct for RAM, else through fetch. */
-static inline int ssda_rows_get(const ssda_rows_t *src, uint32_t x, uint32_t y,
-                                uint32_t n, const uint8_t **px)
+/* Rows of a valid view (ssda__rows_mem of its fields). */
+SSDA_INTERNAL void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view);
+
+/* Rows of a w x h image behind a fetch callback (a streamed source). */
+SSDA_INTERNAL void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx,
+                                  uint32_t w, uint32_t h, uint8_t format);
+
+/* The one sub-rectangle constructor: *sub = the w x h rectangle at (x, y)
+   of parent (inside it; sub may be parent). In memory a pointer offset, on
+   a device an origin offset: never a forwarding call per row. */
+SSDA_INTERNAL void ssda__rows_sub(ssda__rows_t *sub, const ssda__rows_t *parent, uint32_t x,
+                                  uint32_t y, uint32_t w, uint32_t h);
+
+/* Pixels x .. x+n-1 of row y of src: direct in memory, else through fetch. */
+static inline int ssda__rows_get(const ssda__rows_t *src, uint32_t x, uint32_t y,
+                                 uint32_t n, const uint8_t **px)
 {
     if (src->base != NULL) {
         *px = src->base + (size_t)y * src->stride + (size_t)x * src->format;
         return SSDA_OK;
     }
-    return src->fetch(src->ctx, x, y, n, px);
+    return src->fetch(src->ctx, src->x0 + x, src->y0 + y, n, px);
 }
 
-/* Check a configuration against area/window geometry: SSDA_OK or the error
-   ssda_match documents for it (no pointers other than cfg are touched). */
-int ssda_match_check_config(const ssda_match_config_t *cfg, uint32_t area_w,
-                            uint32_t area_h, uint32_t win_w, uint32_t win_h);
+/* The zero-filled options (AUTO, raster scan, row order): what a NULL
+   configuration means, one copy for the whole library. */
+SSDA_INTERNAL extern const ssda_match_config_t ssda__match_defaults;
 
 /*
- * ssda_match over row sources (geometry and formats already validated by the
- * caller; cfg already checked by ssda_match_check_config, never NULL).
- * Returns SSDA_OK, a fetch error unchanged, or SSDA_ERR_UNSUPPORTED for
- * 16-bit rows in a build with SSDA_CFG_NO_U16; *result written on success only.
+ * Check cfg against area/window geometry and resolve it into *plan (defaults
+ * and derived values: the row order's step for a window win_h rows tall, the
+ * cuts of the threshold mode). Returns SSDA_OK or the error ssda_match
+ * documents for the options (no pointer other than cfg and plan is touched);
+ * on error *plan is scratch.
  */
-int ssda_match_rows(const ssda_rows_t *area, const ssda_rows_t *window,
-                    const ssda_match_config_t *cfg, ssda_match_result_t *result);
+SSDA_INTERNAL int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w,
+                                   uint32_t area_h, uint32_t win_w, uint32_t win_h,
+                                   ssda_match_plan_t *plan);
+
+/*
+ * One search over row sources: executes a plan made by ssda__match_plan for
+ * this window size (geometry and formats validated by the caller), with the
+ * predicted position (predict_x, predict_y) of a SSDA_SCAN_PREDICT scan
+ * (ignored by the others). Returns SSDA_OK, a fetch error unchanged, or
+ * SSDA_ERR_UNSUPPORTED for 16-bit rows in a build with SSDA_CFG_NO_U16;
+ * *result written on success only.
+ */
+SSDA_INTERNAL int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
+                                   const ssda_match_plan_t *plan, int32_t predict_x,
+                                   int32_t predict_y, ssda_match_result_t *result);
 
 #endif /* SSDA_MATCH_ROWS_H */

@@ -8,6 +8,7 @@
 #define SSDA_NCC_INTERNAL_H
 
 #include "ssda/ncc.h"
+#include "compiler.h"
 
 /* A placement's correlation as an exact rational: rho = num / sqrt(var *
    var_w). var = 0 (flat placement) comes with num = 0 (rho = 0). */
@@ -26,33 +27,33 @@ typedef struct {
 
 /* Validate an area/window pair as ncc.h documents (formats, sizes,
    SSDA_NCC_MAX_PIXELS, SSDA_CFG_NO_U16). */
-int ssda__ncc_check_pair(const ssda_view_t *area, const ssda_view_t *window);
+SSDA_INTERNAL int ssda__ncc_check_pair(const ssda_view_t *area, const ssda_view_t *window);
 
 /* SSDA_NCC_WORK_SIZE in 64 bits (no wrap where size_t is 32 bits). */
-uint64_t ssda__ncc_work_need(uint32_t area_w, uint32_t win_w, uint32_t win_h);
+SSDA_INTERNAL uint64_t ssda__ncc_work_need(uint32_t area_w, uint32_t win_w, uint32_t win_h);
 
 /* Sums of a valid window; adds 2 * n to *ops. */
-void ssda__ncc_window(const ssda_view_t *window, ssda__ncc_win_t *w, uint64_t *ops);
+SSDA_INTERNAL void ssda__ncc_window(const ssda_view_t *window, ssda__ncc_win_t *w, uint64_t *ops);
 
 /* num from the products and the sums (exact, see the key's range). */
-int64_t ssda__ncc_num(uint32_t n, uint64_t saw, uint32_t sa, uint32_t sw);
+SSDA_INTERNAL int64_t ssda__ncc_num(uint32_t n, uint64_t saw, uint32_t sa, uint32_t sw);
 
 /* The key of the placement at (x, y) (inside the area), summed directly:
    products, sums and squares, 3 * n operations added to *ops. */
-void ssda__ncc_place(const ssda_view_t *area, const ssda_view_t *window,
+SSDA_INTERNAL void ssda__ncc_place(const ssda_view_t *area, const ssda_view_t *window,
                      const ssda__ncc_win_t *w, uint32_t x, uint32_t y,
                      ssda__ncc_key_t *key, uint64_t *ops);
 
 /* Compare two keys of the same window: -1, 0, 1 as rho(a) <, =, > rho(b)
    (|rho| when abs). Exact. */
-int ssda__ncc_cmp(const ssda__ncc_key_t *a, const ssda__ncc_key_t *b, bool abs);
+SSDA_INTERNAL int ssda__ncc_cmp(const ssda__ncc_key_t *a, const ssda__ncc_key_t *b, bool abs);
 
 /* rho in Q2.30 truncated toward zero; 0 when num is 0 (as it is when var
    or var_w is). */
-int32_t ssda__ncc_rho_q30(const ssda__ncc_key_t *k, uint64_t var_w);
+SSDA_INTERNAL int32_t ssda__ncc_rho_q30(const ssda__ncc_key_t *k, uint64_t var_w);
 
 /* The search of ssda_ncc_match (arguments validated by the caller). */
-void ssda__ncc_search(const ssda_view_t *area, const ssda_view_t *window,
+SSDA_INTERNAL void ssda__ncc_search(const ssda_view_t *area, const ssda_view_t *window,
                       const ssda_ncc_config_t *cfg, ssda_ncc_result_t *result);
 
 #endif /* SSDA_NCC_INTERNAL_H */

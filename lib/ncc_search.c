@@ -396,7 +396,7 @@ static void row_span(const engine_t *e, uint32_t y, uint32_t *xa, uint32_t *xb)
     *xa = e->x0;
     *xb = e->x1;
     if (e->disk) {
-        const uint32_t h = ssda_isqrt64((uint64_t)e->r2 - (uint64_t)dy * dy);
+        const uint32_t h = ssda__isqrt64((uint64_t)e->r2 - (uint64_t)dy * dy);
         if (e->px - e->x0 > h) {
             *xa = e->px - h;
         }

@@ -4,7 +4,8 @@
 
 #include <string.h>
 
-#define PITCH_MAGIC 0x50495443u /* "PITC" */
+#include "slide.h"
+#include "state.h"
 
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 {
@@ -13,7 +14,7 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     if (cfg == NULL || bytes == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = ssda_pitch_resolve(cfg, &info);
+    err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
@@ -29,7 +30,7 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     if (p == NULL || cfg == NULL || buffer == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = ssda_pitch_resolve(cfg, &info);
+    err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
@@ -39,7 +40,7 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     }
     p->info = info;
     p->buf = (int16_t *)buffer;
-    p->magic = PITCH_MAGIC;
+    p->magic = SSDA__MAGIC_PITCH;
     return ssda_pitch_reset(p);
 }
 
@@ -48,7 +49,7 @@ int ssda_pitch_reset(ssda_pitch_t *p)
     if (p == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     p->fill = 0u;
@@ -66,7 +67,7 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     if (p == NULL || info == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     *info = p->info;
@@ -81,11 +82,11 @@ static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, siz
 {
     size_t i;
     if (!p->lp_primed) {
-        ssda_pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
+        ssda__pitch_lowpass_prime(&p->lp1_q15, &p->lp2_q15, in[0]);
         p->lp_primed = true;
     }
     for (i = 0u; i < n; i++) {
-        int16_t y = ssda_pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
+        int16_t y = ssda__pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
         if (out != NULL) {
             out[i] = y;
         }
@@ -104,7 +105,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
     if (p == NULL || consumed == NULL || est == NULL || (samples == NULL && count > 0u)) {
         return SSDA_ERR_NULL;
     }
-    if (p->magic != PITCH_MAGIC) {
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
     while (used < count) {
@@ -129,7 +130,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         p->fill += (uint32_t)take;
         used += take;
         if (p->fill == span) {
-            ssda_pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
+            ssda__pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
             est->frame = p->frame;
             /* wraps modulo 2^32 by design (unsigned) */
             est->center = p->frame * p->info.hop +
@@ -137,16 +138,10 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             p->frame++;
             p->predict_lag = est->voiced ? est->lag : 0u;
             if (p->info.hop < span) {
-                /* Slide the kept samples down by hop in blocks of at most hop
-                   samples: source and destination of each memcpy never
-                   overlap (memmove is not in the library's freestanding set). */
-                uint32_t moved = 0u;
+                /* the kept samples slide down by hop */
                 p->fill = span - p->info.hop;
-                while (moved < p->fill) {
-                    uint32_t n = p->fill - moved < p->info.hop ? p->fill - moved : p->info.hop;
-                    (void)memcpy(p->buf + moved, p->buf + moved + p->info.hop, n * sizeof(int16_t));
-                    moved += n;
-                }
+                ssda__slide(p->buf, (size_t)p->info.hop * sizeof(int16_t),
+                            (size_t)span * sizeof(int16_t));
             } else {
                 p->fill = 0u;
                 p->skip = p->info.hop - span;

@@ -4,7 +4,7 @@
 
 #include "fixmath.h"
 
-int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
+int32_t ssda__pitch_mean(const int16_t *x, uint32_t n)
 {
     uint32_t sum = 0u; /* sum of x + 32768: <= 8192 * 65535 < 2^30 */
     uint32_t i;
@@ -15,7 +15,7 @@ int32_t ssda_pitch_mean(const int16_t *x, uint32_t n)
     return (int32_t)SSDA_DIV32(sum + n / 2u, n) - 32768; /* NOLINT(clang-analyzer-core.DivideZero) */
 }
 
-uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean)
+uint32_t ssda__pitch_level(const int16_t *x, uint32_t n, int32_t mean)
 {
     uint32_t sum = 0u; /* <= 8192 * 65535 < 2^30 */
     uint32_t i;

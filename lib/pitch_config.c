@@ -6,7 +6,27 @@
 #define KNOWN_FLAGS \
     (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC)
 
-int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
+/* Whether every flag asks for a feature this build has (include/ssda/config.h). */
+static bool flags_built(uint32_t flags)
+{
+    bool ok = true;
+#ifdef SSDA_CFG_NO_PITCH_FILTER
+    ok = ok && (flags & SSDA_PITCH_NO_FILTER) != 0u;
+#endif
+#ifdef SSDA_CFG_NO_PITCH_TRACK
+    ok = ok && (flags & SSDA_PITCH_TRACK) == 0u;
+#endif
+#ifdef SSDA_CFG_NO_PITCH_FULL
+    ok = ok && (flags & SSDA_PITCH_FULL) == 0u;
+#endif
+#ifdef SSDA_CFG_NO_PITCH_PARABOLIC
+    ok = ok && (flags & SSDA_PITCH_PARABOLIC) == 0u;
+#endif
+    (void)flags;
+    return ok;
+}
+
+int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 {
     ssda_pitch_info_t r;
     uint32_t rate, f0_min, f0_max;
@@ -29,27 +49,9 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
         cfg->lowpass_hz > rate / 4u || (cfg->flags & ~KNOWN_FLAGS) != 0u) {
         return SSDA_ERR_ARG;
     }
-    /* Features left out of this build (include/ssda/config.h). */
-#ifdef SSDA_CFG_NO_PITCH_FILTER
-    if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
+    if (!flags_built(cfg->flags)) {
         return SSDA_ERR_UNSUPPORTED;
     }
-#endif
-#ifdef SSDA_CFG_NO_PITCH_TRACK
-    if ((cfg->flags & SSDA_PITCH_TRACK) != 0u) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
-#ifdef SSDA_CFG_NO_PITCH_FULL
-    if ((cfg->flags & SSDA_PITCH_FULL) != 0u) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
-#ifdef SSDA_CFG_NO_PITCH_PARABOLIC
-    if ((cfg->flags & SSDA_PITCH_PARABOLIC) != 0u) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
 
     r.sample_rate_hz = rate;
     r.lag_min = SSDA_DIV32(rate, f0_max);
@@ -80,7 +82,7 @@ int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 #ifndef SSDA_CFG_NO_PITCH_FILTER
     if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
         r.lowpass_hz = (uint16_t)(cfg->lowpass_hz != 0u ? cfg->lowpass_hz : f0_max);
-        r.lowpass_q15 = ssda_pitch_lowpass_coef_q15(r.lowpass_hz, rate);
+        r.lowpass_q15 = ssda__pitch_lowpass_coef_q15(r.lowpass_hz, rate);
     }
 #endif
     r.flags = cfg->flags;

@@ -4,7 +4,7 @@
 
 #define TWO_PI_Q16 411775u /* 2 pi * 65536, rounded */
 
-uint16_t ssda_pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz)
+uint16_t ssda__pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz)
 {
     /* a = W / (R + W) with W = 2 pi fc, R = rate, both scaled by 65536:
        W <= 411775 * 12000 < 2^33, R * 65536 <= 48000 * 65536 < 2^32. */
@@ -35,7 +35,7 @@ static int32_t pole(int32_t y_q15, uint32_t a_q15, int32_t in_q15)
     return y_q15 + (int32_t)(((int64_t)a_q15 * e) / 32768); /* |a e| <= 2^46 */
 }
 
-int16_t ssda_pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int16_t in)
+int16_t ssda__pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int16_t in)
 {
     int32_t v;
     *y1_q15 = pole(*y1_q15, a_q15, (int32_t)in * 32768);
@@ -46,7 +46,7 @@ int16_t ssda_pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int
     return (int16_t)v;
 }
 
-void ssda_pitch_lowpass_prime(int32_t *y1_q15, int32_t *y2_q15, int16_t in)
+void ssda__pitch_lowpass_prime(int32_t *y1_q15, int32_t *y2_q15, int16_t in)
 {
     *y1_q15 = (int32_t)in * 32768; /* |in * 32768| <= 2^30 */
     *y2_q15 = *y1_q15;

@@ -7,6 +7,7 @@
 
 #include "ssda/pitch.h"
 #include "kernel/kernels.h"
+#include "compiler.h"
 
 /* Features compiled in (include/ssda/config.h): a flag left out of the
    build reads as clear, so the code behind it is dropped as dead. */
@@ -34,35 +35,35 @@
 
 /* Check cfg and fill *info with every default resolved. Writes *info on
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
-int ssda_pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
+SSDA_INTERNAL int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
 
 /* Re-arming level for a threshold (Q15): threshold * 3 / 2, at most 32767. */
-#define ssda_pitch_rearm_q15(thr) \
+#define ssda__pitch_rearm_q15(thr) \
     ((uint32_t)(thr) + (uint32_t)(thr) / 2u < 32767u ? (uint32_t)(thr) + (uint32_t)(thr) / 2u : 32767u)
 
 /* Low-pass coefficient a = round(32768 * w / (1 + w)), w = 2 pi fc / rate,
    with 2 pi taken as 411775 / 65536; fc <= rate / 4 gives 1..20020. */
-uint16_t ssda_pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz);
+SSDA_INTERNAL uint16_t ssda__pitch_lowpass_coef_q15(uint32_t fc_hz, uint32_t rate_hz);
 
 /* One sample through the two low-pass poles (states in Q15, see pitch.h). */
-int16_t ssda_pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int16_t in);
+SSDA_INTERNAL int16_t ssda__pitch_lowpass(int32_t *y1_q15, int32_t *y2_q15, uint32_t a_q15, int16_t in);
 
 /* Start both low-pass states at one sample value. */
-void ssda_pitch_lowpass_prime(int32_t *y1_q15, int32_t *y2_q15, int16_t in);
+SSDA_INTERNAL void ssda__pitch_lowpass_prime(int32_t *y1_q15, int32_t *y2_q15, int16_t in);
 
 /* Frame mean as defined in pitch.h:
    floor((sum_{i<n} (x[i] + 32768) + floor(n/2)) / n) - 32768, n = 1..8192.
    The offset sum is <= 8192 * 65535 < 2^30. */
-int32_t ssda_pitch_mean(const int16_t *x, uint32_t n);
+SSDA_INTERNAL int32_t ssda__pitch_mean(const int16_t *x, uint32_t n);
 
 /* sum_{i<n} |x[i] - mean|, n <= 8192, mean in -32768..32767:
    <= 8192 * 65535 < 2^30. */
-uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean);
+SSDA_INTERNAL uint32_t ssda__pitch_level(const int16_t *x, uint32_t n, int32_t mean);
 
 /*
  * AMDF term d(lag) = sum_{i<K} |x[i] - x[i + lag]| with SSDA early exit:
  * summed chunk samples at a time (through the kernel set's
- * ssda_absdiff_row_i16), stopping after the first chunk that takes the
+ * ssda__absdiff_row_i16), stopping after the first chunk that takes the
  * partial sum above bound.
  *   Returns the sum so far; *complete is true when all K terms were summed
  *   (the result is then exact, whether or not it exceeds bound), false when
@@ -72,7 +73,7 @@ uint32_t ssda_pitch_level(const int16_t *x, uint32_t n, int32_t mean);
  * sum is <= K * 65535 < 2^29 (K <= 8192).
  * Inline: a frame less under the lag scan (worst-case stack, docs/target.md).
  */
-static inline uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
+static inline uint32_t ssda__pitch_amdf_lag(const int16_t *x, uint32_t frame_len, uint32_t lag,
                                            uint32_t chunk, uint32_t bound, bool *complete,
                                            uint32_t *diffs)
 {
@@ -82,7 +83,7 @@ static inline uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len,
     uint32_t i = 0u;
     while (i < frame_len) {
         uint32_t n = frame_len - i < chunk ? frame_len - i : chunk;
-        sum += ssda_absdiff_row_i16(x + i, x + i + lag, n);
+        sum += ssda__absdiff_row_i16(x + i, x + i + lag, n);
         i += n;
         if (sum > bound) {
             break;
@@ -100,14 +101,14 @@ static inline uint32_t ssda_pitch_amdf_lag(const int16_t *x, uint32_t frame_len,
  * fit) or 2 (a - 2b + c) (parabolic); 0 if den <= 0; clamped to
  * [-32768, 32768]. Q16.16 samples.
  */
-int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic);
+SSDA_INTERNAL int32_t ssda__pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic);
 
 /* floor(2^20 * d / s), s > 0, d <= s: Q20 in 0..2^20. */
-uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s);
+SSDA_INTERNAL uint32_t ssda__pitch_norm_q20(uint32_t d, uint32_t s);
 
 /* f0 in Hz Q16.16 from rate (Hz) and period (samples, Q16.16, > 0):
    floor((rate << 32) / period_q16 + 1/2); saturates at UINT32_MAX. */
-uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
+SSDA_INTERNAL uint32_t ssda__pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
 
 /*
  * Analyse one frame x[0 .. info->span - 1] (the rule in pitch.h).
@@ -115,12 +116,12 @@ uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16);
  *                range = none). Changes work only.
  *   est:         written in full except est->frame and est->center.
  */
-void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
+SSDA_INTERNAL void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est);
 
-/* ssda_pitch_analyze with its working state in *w (the stream keeps it in
-   ssda_pitch_t; ssda_pitch_analyze puts it on the stack). */
-void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
+/* ssda__pitch_analyze with its working state in *w (the stream keeps it in
+   ssda_pitch_t; ssda__pitch_analyze puts it on the stack). */
+SSDA_INTERNAL void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
                            const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est);
 
 #endif /* SSDA_PITCH_INTERNAL_H */

@@ -3,13 +3,13 @@
 #include "pitch_internal.h"
 #include "fixmath.h"
 
-uint32_t ssda_pitch_norm_q20(uint32_t d, uint32_t s)
+uint32_t ssda__pitch_norm_q20(uint32_t d, uint32_t s)
 {
     /* d << 20 < 2^50; the quotient is <= 2^20 */
-    return ssda_div64_32((uint64_t)d << 20, s);
+    return ssda__div64_32((uint64_t)d << 20, s);
 }
 
-int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic)
+int32_t ssda__pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bool parabolic)
 {
     /* a, b, c <= 2^20: |den| <= 2^23 in int32_t, |a - c| <= 2^20, numerator
        65536 * |a - c| <= 2^36 in uint64_t. */
@@ -21,15 +21,15 @@ int32_t ssda_pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, bo
         return 0; /* flat or not a minimum: no offset */
     }
     /* round half away from zero; a quotient that saturates is clamped anyway */
-    q = ssda_div64_32(num + (uint64_t)(uint32_t)den / 2u, (uint32_t)den);
+    q = ssda__div64_32(num + (uint64_t)(uint32_t)den / 2u, (uint32_t)den);
     if (q > 32768u) {
         q = 32768u;
     }
     return a >= c ? (int32_t)q : -(int32_t)q;
 }
 
-uint32_t ssda_pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16)
+uint32_t ssda__pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16)
 {
     /* rate << 32 < 2^48; the quotient saturates at UINT32_MAX */
-    return ssda_div64_32(((uint64_t)rate_hz << 32) + (uint64_t)period_q16 / 2u, period_q16);
+    return ssda__div64_32(((uint64_t)rate_hz << 32) + (uint64_t)period_q16 / 2u, period_q16);
 }

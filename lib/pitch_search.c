@@ -84,7 +84,7 @@ static void evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound, lag_v
         v->d = lower; /* not exact */
         return;
     }
-    v->d = ssda_pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
+    v->d = ssda__pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
                                &complete, &f->diffs);
     if (complete) {
         v->d |= LAG_EXACT;
@@ -109,7 +109,7 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
 /* The value of any lag, with its scale computed directly. */
 static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
 {
-    uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+    uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
     evaluate(f, lag, s, bound, v);
 }
 
@@ -117,9 +117,9 @@ static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
 static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
                               const lag_value_t *mid, const lag_value_t *right)
 {
-    int32_t delta = ssda_pitch_interp_q16(ssda_pitch_norm_q20(d_of(left), left->s),
-                                          ssda_pitch_norm_q20(d_of(mid), mid->s),
-                                          ssda_pitch_norm_q20(d_of(right), right->s),
+    int32_t delta = ssda__pitch_interp_q16(ssda__pitch_norm_q20(d_of(left), left->s),
+                                          ssda__pitch_norm_q20(d_of(mid), mid->s),
+                                          ssda__pitch_norm_q20(d_of(right), right->s),
                                           SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
     /* lag <= 4800: 65536 * lag + delta < 2^29 */
     return (uint32_t)((int32_t)(lag << 16) + delta);
@@ -130,16 +130,16 @@ static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, cons
 static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
                               const lag_value_t *right)
 {
-    uint32_t a = ssda_pitch_norm_q20(d_of(left), left->s);
-    uint32_t b = ssda_pitch_norm_q20(d_of(mid), mid->s);
-    uint32_t c = ssda_pitch_norm_q20(d_of(right), right->s);
+    uint32_t a = ssda__pitch_norm_q20(d_of(left), left->s);
+    uint32_t b = ssda__pitch_norm_q20(d_of(mid), mid->s);
+    uint32_t c = ssda__pitch_norm_q20(d_of(right), right->s);
     uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
     uint32_t drop;
     if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
         int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
-        drop = den > 0 ? ssda_div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
+        drop = den > 0 ? ssda__div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
     } else {
         drop = diff / 2u;
     }
@@ -185,7 +185,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
             return false;
         }
         for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
-            uint32_t s = f->level + ssda_pitch_level(f->x + lag, f->info->frame_len, f->mean);
+            uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
             /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
             uint32_t bound = (uint32_t)(((uint64_t)limit * s - 1u) >> 20);
             evaluate(f, lag, s, full ? NO_BOUND : bound, v);
@@ -194,7 +194,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
                 *found_v = *v;
             }
         }
-        if (found_lag != 0u && ssda_pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
+        if (found_lag != 0u && ssda__pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
             *new_lag = found_lag;
             *new_v = *found_v;
             return true;
@@ -218,7 +218,7 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 /*
  * The chosen lag (w->t_*) refined: exact neighbours, the sub-sample period,
  * the octave check when it is a dip (found), and the estimate. Kept out of
- * ssda_pitch_analyze_in (noinline, called last): the scan's locals are off
+ * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
  */
 static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_estimate_t *est)
@@ -237,8 +237,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     }
     est->lag = w->t_lag;
     est->period_q16 = period;
-    est->f0_q16 = ssda_pitch_f0_q16(info->sample_rate_hz, est->period_q16);
-    n_q15 = ssda_div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
+    est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, est->period_q16);
+    n_q15 = ssda__div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
     est->voiced = found && n_at_most_q15(&w->t_mid, info->voicing_q15);
     est->dip = found;
@@ -247,91 +247,149 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
 }
 
 /*
+ * Before the scan: the predicted lag (SSDA_PITCH_TRACK: the seed's
+ * prediction, summed first, in full; its value becomes the best so far and
+ * tightens every later bound), then lag_min - 1 and the first arming test.
+ * Returns the predicted lag (0: none) and B(lag_min - 1) in *b_sum.
+ */
+static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t predict_lag,
+                                              uint32_t rearm, uint32_t *b_sum, bool *armed)
+{
+    const ssda_pitch_info_t *info = w->info;
+    const int16_t *x = w->x;
+    const uint32_t k = info->frame_len;
+    const bool full = SSDA_PITCH_HAS_FULL(info->flags);
+    const uint32_t thr = info->threshold_q15;
+    uint32_t pred = 0u;
+    if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
+        predict_lag >= info->lag_min && predict_lag <= info->lag_max) {
+        pred = predict_lag;
+        evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, w->mean), NO_BOUND, &w->pred);
+        w->best = w->pred;
+        w->best_lag = pred;
+    } else {
+        w->pred = w->best;
+    }
+    /* lag_min - 1 is only a neighbour and the first arming test: needed
+       exactly when n <= threshold. */
+    *b_sum = ssda__pitch_level(x + info->lag_min - 1u, k, w->mean);
+    evaluate(w, info->lag_min - 1u, w->level + *b_sum,
+             full ? NO_BOUND : threshold_bound(thr, w->level + *b_sum), &w->prev);
+    *armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
+    if (!*armed) {
+        /* lag_min - 1 lies in a dip already: a period just above lag_min
+           (f0 just below f0_max), or the lag-0 tail of a slow signal. The
+           first has its half-period peak near lag_min / 2, the second stays
+           low there. Exact up to rearm; a cut proves n > rearm. */
+        const uint32_t half = info->lag_min / 2u; /* >= 2 */
+        const uint32_t sh = w->level + ssda__pitch_level(x + half, k, w->mean);
+        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
+        *armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
+    }
+    return pred;
+}
+
+/* The bound lag is cut at (s: its scale): exact when n <= threshold; when
+   not armed, also exact up to the re-arming level, so a cut proves
+   n > rearm; for a candidate also whatever still beats the best lag (the
+   seed's automatic threshold, Fig. 9; the first candidate in full). */
+static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_t lag,
+                                             uint32_t s, bool candidate, bool armed,
+                                             uint32_t rearm)
+{
+    uint32_t bound = threshold_bound(armed || !candidate ? w->info->threshold_q15 : rearm, s);
+    if (candidate) {
+        uint32_t bb;
+        if (w->best_lag == 0u) {
+            bound = NO_BOUND;
+        } else if (best_bound(&w->best, lag > w->best_lag, s, &bb) && bb > bound) {
+            bound = bb;
+        } else {
+            /* the threshold's bound is the tighter one */
+        }
+    }
+    return bound;
+}
+
+/* An exact candidate w->cur at lag: the new best lag (the global-minimum
+   fallback) if it beats it by the tie rule (smaller n, then smaller lag).
+   Returns true when the best lag's right neighbour is the next lag. */
+static SSDA_ALWAYS_INLINE bool note_best(ssda_pitch_work_t *w, uint32_t lag)
+{
+    bool better;
+    if (w->best_lag == 0u) {
+        better = true;
+    } else if (lag > w->best_lag) {
+        better = n_less(&w->cur, &w->best);
+    } else {
+        better = !n_less(&w->best, &w->cur); /* before best: ties win */
+    }
+    if (better && lag != w->best_lag) {
+        w->best = w->cur;
+        w->best_lag = lag;
+        w->best_left = w->prev;
+        return true;
+    }
+    if (lag == w->best_lag) {
+        w->best_left = w->prev; /* the predicted lag, reached by the scan */
+        return true;
+    }
+    return false; /* not better: the best lag stays */
+}
+
+/* The run ended at lag - 1. It is a dip if it was entered from a peak,
+   and its minimum is neither a lag_max that still falls (a period beyond
+   lag_max) nor a lag_min below which it still falls (the tail of a dip
+   below lag_min, e.g. a strong 2nd harmonic's, which may now arm: its
+   multiple follows). Returns whether it is. */
+static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_armed)
+{
+    const ssda_pitch_info_t *info = w->info;
+    return run_armed &&
+           (w->run_lag != info->lag_max || !n_less(&w->run_right, &w->run)) &&
+           (w->run_lag != info->lag_min || !n_less(&w->run_left, &w->run));
+}
+
+/*
  * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
- * (w set up by ssda_pitch_analyze_in): the first valid dip run's minimum in
- * w->t_* (returns true), else the global minimum (false). Out of line, so
- * that its locals are gone when refine() runs.
+ * (w set up by ssda__pitch_analyze_in): the first valid dip run's minimum in
+ * w->t_* (returns true), else the global minimum (false). In *w: the best
+ * lag so far (the global-minimum fallback) and the open run under the
+ * threshold (its minimum), each with its neighbours; the predicted lag's
+ * value; the chosen lag (t_*). Out of line, so that its locals are gone
+ * when refine() runs.
  */
 static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 {
     const ssda_pitch_info_t *info = w->info;
     const int16_t *x = w->x;
     const uint32_t k = info->frame_len;
-    const uint32_t lag_min = info->lag_min, lag_max = info->lag_max;
+    const uint32_t lag_max = info->lag_max;
     const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
     const int32_t mean = w->mean;
-    uint32_t b_sum, lag, pred = 0u;
-    /* In *w: the best lag so far (the global-minimum fallback) and the open
-       run under the threshold (its minimum), each with its neighbours; the
-       predicted lag's value; the chosen lag (t_*). */
-    bool best_need_right = false;
-    bool in_run = false, run_need_right = false, run_armed = false;
+    const uint32_t rearm = ssda__pitch_rearm_q15(thr);
     /* Armed: a peak n > rearm was seen since the last run began (at the
-       start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so the
-       next run is a real dip. */
-    const uint32_t rearm = ssda_pitch_rearm_q15(thr);
+       start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so
+       the next run is a real dip. */
     bool armed;
-    bool found = false;
+    bool in_run = false, run_armed = false, found = false;
+    bool best_need_right = false, run_need_right = false;
+    uint32_t b_sum, lag;
+    const uint32_t pred = scan_start(w, predict_lag, rearm, &b_sum, &armed);
 
-    if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
-        predict_lag >= lag_min && predict_lag <= lag_max) {
-        /* The seed's prediction: sum the predicted lag first, in full; its
-           value becomes the best so far and tightens every later bound. */
-        pred = predict_lag;
-        evaluate(w, pred, w->level + ssda_pitch_level(x + pred, k, mean), NO_BOUND, &w->pred);
-        w->best = w->pred;
-        w->best_lag = pred;
-    } else {
-        w->pred = w->best;
-    }
-
-    /* lag_min - 1 is only a neighbour and the first arming test: needed
-       exactly when n <= threshold. */
-    b_sum = ssda_pitch_level(x + lag_min - 1u, k, mean);
-    evaluate(w, lag_min - 1u, w->level + b_sum,
-             full ? NO_BOUND : threshold_bound(thr, w->level + b_sum), &w->prev);
-    armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
-    if (!armed) {
-        /* lag_min - 1 lies in a dip already: a period just above lag_min
-           (f0 just below f0_max), or the lag-0 tail of a slow signal. The
-           first has its half-period peak near lag_min / 2, the second stays
-           low there. Exact up to rearm; a cut proves n > rearm. */
-        const uint32_t half = lag_min / 2u; /* >= 2 */
-        const uint32_t sh = w->level + ssda_pitch_level(x + half, k, mean);
-        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
-        armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
-    }
-
-    for (lag = lag_min; lag <= lag_max + 1u; lag++) {
+    for (lag = info->lag_min; lag <= lag_max + 1u; lag++) {
         const bool candidate = lag <= lag_max;
         uint32_t s;
         /* Slide B: drop x[lag - 1], add x[lag - 1 + K]. B stays <= K * 65535. */
         b_sum = b_sum - abs_dev(x[lag - 1u], mean) + abs_dev(x[lag - 1u + k], mean);
         s = w->level + b_sum;
-
         if (lag == pred) {
             w->cur = w->pred;
         } else {
-            uint32_t bound = NO_BOUND;
-            if (!full) {
-                /* Exact when n <= threshold; when not armed, also exact up
-                   to the re-arming level, so a cut proves n > rearm. */
-                bound = threshold_bound(armed || !candidate ? thr : rearm, s);
-                if (candidate) {
-                    uint32_t bb;
-                    if (w->best_lag == 0u) {
-                        bound = NO_BOUND; /* first candidate: summed in full (Fig. 9) */
-                    } else if (best_bound(&w->best, lag > w->best_lag, s, &bb) && bb > bound) {
-                        bound = bb;
-                    } else {
-                        /* the threshold's bound is the tighter one */
-                    }
-                }
-            }
-            evaluate(w, lag, s, bound, &w->cur);
+            evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, armed, rearm),
+                     &w->cur);
         }
-
         /* Neighbours wanted by the best lag and by the run minimum. */
         if (best_need_right) {
             w->best_right = w->cur;
@@ -341,29 +399,9 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
             w->run_right = w->cur;
             run_need_right = false;
         }
-
         if (candidate && is_exact(&w->cur)) {
-            bool better;
-            if (w->best_lag == 0u) {
-                better = true;
-            } else if (lag > w->best_lag) {
-                better = n_less(&w->cur, &w->best);
-            } else {
-                better = !n_less(&w->best, &w->cur); /* before best: ties win */
-            }
-            if (better && lag != w->best_lag) {
-                w->best = w->cur;
-                w->best_lag = lag;
-                w->best_left = w->prev;
-                best_need_right = true;
-            } else if (lag == w->best_lag) {
-                w->best_left = w->prev; /* the predicted lag, reached by the scan */
-                best_need_right = true;
-            } else {
-                /* not better: the best lag stays */
-            }
+            best_need_right = note_best(w, lag);
         }
-
         if (candidate && is_exact(&w->cur) && n_at_most_q15(&w->cur, thr)) {
             if (!in_run) {
                 run_armed = armed; /* the run uses up the arming */
@@ -377,16 +415,8 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
             }
             in_run = true;
         } else if (in_run) {
-            /* The run ended at lag - 1. It is a dip if it was entered from a
-               peak, and its minimum is neither a lag_max that still falls
-               (a period beyond lag_max) nor a lag_min below which it still
-               falls (the tail of a dip below lag_min, e.g. a strong 2nd
-               harmonic's, which may now arm: its multiple follows). */
-            bool valid = run_armed &&
-                         (w->run_lag != lag_max || !n_less(&w->run_right, &w->run)) &&
-                         (w->run_lag != lag_min || !n_less(&w->run_left, &w->run));
             in_run = false;
-            if (valid && !found) {
+            if (run_is_dip(w, run_armed) && !found) {
                 found = true;
                 w->t_lag = w->run_lag;
                 w->t_left = w->run_left;
@@ -414,7 +444,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     return found;
 }
 
-void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
+void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
                            const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     const uint32_t k = info->frame_len;
@@ -423,9 +453,9 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     w->info = info;
     w->x = x;
     w->diffs = 0u;
-    mean = ssda_pitch_mean(x, k);
+    mean = ssda__pitch_mean(x, k);
     w->mean = mean;
-    w->level = ssda_pitch_level(x, k, mean);
+    w->level = ssda__pitch_level(x, k, mean);
     /* silence_mad * K <= 65535 * 8192 < 2^30 */
     if (w->level < (uint32_t)info->silence_mad * k) {
         silent_estimate(est);
@@ -449,9 +479,9 @@ void ssda_pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     refine(w, scan_lags(w, predict_lag), est);
 }
 
-void ssda_pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
+void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     ssda_pitch_work_t w;
-    ssda_pitch_analyze_in(&w, info, x, predict_lag, est);
+    ssda__pitch_analyze_in(&w, info, x, predict_lag, est);
 }

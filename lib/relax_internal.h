@@ -5,6 +5,8 @@
 #ifndef SSDA_RELAX_INTERNAL_H
 #define SSDA_RELAX_INTERNAL_H
 
+#include "compiler.h"
+
 #include "ssda/relax.h"
 
 typedef struct {
@@ -16,14 +18,14 @@ typedef struct {
 
 /* Check grid and the output array (SSDA_ERR_NULL/_SIZE/_ARG/_BUFFER as
    ssda/relax.h documents, every valid component in range) and fill *g. */
-int ssda__relax_open(const ssda_relax_grid_t *grid, const ssda_relax_vector_t *out,
-                     size_t out_count, ssda__relax_t *g);
+SSDA_INTERNAL int ssda__relax_open(const ssda_relax_grid_t *grid, const ssda_relax_vector_t *out,
+                                   size_t out_count, ssda__relax_t *g);
 
 /* Vector k in Q8 px (|.| <= 2^23); false when it is not valid. */
-bool ssda__relax_get(const ssda__relax_t *g, size_t k, int32_t *x, int32_t *y);
+SSDA_INTERNAL bool ssda__relax_get(const ssda__relax_t *g, size_t k, int32_t *x, int32_t *y);
 
 /* floor-toward-zero n / d for d > 0 and |n| / d < 2^32, without a 64-bit
    division routine on cores that lack a divide instruction. */
-int64_t ssda__relax_div(int64_t n, uint32_t d);
+SSDA_INTERNAL int64_t ssda__relax_div(int64_t n, uint32_t d);
 
 #endif /* SSDA_RELAX_INTERNAL_H */

@@ -29,7 +29,7 @@ static bool inside_range(uint32_t start, uint32_t step, uint32_t count, uint32_t
 /* The strip of grid columns [c0, c1): the rectangle of its search areas in
    FIRST and of its windows in SECOND, over the windows whose areas lie
    inside FIRST. Returns false when there is none (nothing will be read). */
-bool stream_grid_rects(const ssda_track_grid_t *g, uint32_t first_w, uint32_t first_h,
+bool ssda__stream_grid_rects(const ssda_track_grid_t *g, uint32_t first_w, uint32_t first_h,
                        uint32_t c0, uint32_t c1, ssda_rect_t *area, ssda_rect_t *win,
                        uint32_t *row_lo, uint32_t *row_hi)
 {
@@ -65,42 +65,28 @@ bool stream_grid_rects(const ssda_track_grid_t *g, uint32_t first_w, uint32_t fi
     return true;
 }
 
-/* Does the plate of a streamed source, shaped for region r, hold all of
-   it across and `rows` rows of it? (In-RAM sources: always.) */
-bool stream_holds_band(const ssda_source_t *s, const ssda_rect_t *r, uint32_t rows)
-{
-    return s->view != NULL || (s->pw >= r->width && s->ph >= rows);
-}
-
 /* The row source and origin of one image for the band whose top-left is
-   (x, y): the plate moved there (kept inside the region), or the whole
+   (x, y): the plate moved there (kept inside its region), or the whole
    image in RAM. Returns SSDA_OK or a read error. */
-int stream_band_rows(ssda_source_t *s, const ssda_rect_t *r, uint32_t x, uint32_t y,
-                     ssda_rows_t *rows, uint32_t *ox, uint32_t *oy)
+int ssda__stream_band_rows(ssda_source_t *s, uint32_t x, uint32_t y, ssda__rows_t *rows,
+                           uint32_t *ox, uint32_t *oy)
 {
+    const ssda_source_plan_t *p = &s->plate;
     int err;
     if (s->view != NULL) {
-        ssda_rect_t all;
-        (void)stream_rect(s, NULL, &all);
-        stream_rows_make(rows, NULL, s, &all);
+        ssda__stream_rows(rows, s, NULL);
         *ox = 0u;
         *oy = 0u;
         return SSDA_OK;
     }
-    if (y > (uint32_t)r->y + r->height - s->ph) {
-        y = (uint32_t)r->y + r->height - s->ph;
+    if (y > (uint32_t)p->region.y + p->region.height - p->ph) {
+        y = (uint32_t)p->region.y + p->region.height - p->ph;
     }
-    err = stream_plate_place(s, x, y);
+    err = ssda__stream_plate_place(s, x, y);
     if (err != SSDA_OK) {
         return err;
     }
-    rows->base = (const uint8_t *)s->cfg.arena;
-    rows->stride = s->pitch;
-    rows->fetch = NULL;
-    rows->ctx = NULL;
-    rows->width = s->pw;
-    rows->height = s->ph;
-    rows->format = s->cfg.format;
+    ssda__rows_mem(rows, s->cfg.arena, p->pitch, p->pw, p->ph, s->cfg.format);
     *ox = x;
     *oy = y;
     return SSDA_OK;
@@ -109,7 +95,7 @@ int stream_band_rows(ssda_source_t *s, const ssda_rect_t *r, uint32_t x, uint32_
 /* Bounce bytes beyond the minimum that let a tiled source read the rows a
    band gains at each grid step (up to a tile's height) in one read per
    tile: (run - 1) rows of a tile. Raster strips read row by row. */
-size_t stream_run_extra(const ssda_source_t *s, uint32_t step_y)
+size_t ssda__stream_run_extra(const ssda_source_t *s, uint32_t step_y)
 {
     uint32_t run;
     if (s->view != NULL || STREAM_LAYOUT(&s->cfg) != (uint8_t)SSDA_LAYOUT_TILED) {
@@ -118,11 +104,3 @@ size_t stream_run_extra(const ssda_source_t *s, uint32_t step_y)
     run = step_y < s->cfg.tile_h ? step_y : s->cfg.tile_h;
     return (size_t)(run - 1u) * s->cfg.stride;
 }
-
-/* Does a streamed source hold a plate of w x h (and the bounce room for
-   runs of extra bytes)? In-RAM sources always do. */
-bool stream_holds(const ssda_source_t *s, uint32_t w, uint32_t h, size_t extra)
-{
-    return s->view != NULL || stream_plate_fit_h(s, w, extra) >= h;
-}
-

@@ -10,33 +10,49 @@ static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
     return (cfg->flags & SSDA_MATCH_BOUNDS) != 0u ? a->width : w->width;
 }
 
-static bool fits(const ssda_source_t *s, uint32_t span)
+/* Shape the plates of the streamed operands for the search: the raster
+   scan revisits a band of window-height rows moving down; the other scans
+   jump around the whole area. */
+static void shape_plates(ssda_source_t *area, const ssda_rect_t *ar, ssda_source_t *window,
+                         const ssda_rect_t *wr, const ssda_match_config_t *cfg)
 {
-    return s->view != NULL || stream_plate_fit_h(s, span, 0u) >= 1u;
+    if (area->view == NULL) {
+        const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
+        (void)ssda__stream_plate_shape(area, ar, area_span(cfg, ar, wr),
+                                       raster ? wr->height : ar->height, 1u, 0u);
+        /* A raster scan's band of window-height rows moves down one row at
+           a time: a plate with spare rows jumps by them (rows needed are
+           read once, each slide copies the band's rows in the arena). */
+        if (raster && area->plate.ph >= wr->height) {
+            area->plate.qy = (uint16_t)(area->plate.ph - wr->height + 1u);
+        }
+    }
+    if (window->view == NULL) {
+        (void)ssda__stream_plate_shape(window, wr, wr->width, wr->height, 0u, 0u);
+    }
 }
 
 int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
                       ssda_source_t *window, const ssda_rect_t *window_rect,
                       const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
+    ssda_match_plan_t plan;
     ssda_rect_t ar, wr;
-    ssda_rows_t a, w;
-    stream_rows_ctx_t actx, wctx;
+    ssda__rows_t a, w;
     int err;
 
     if (area == NULL || window == NULL || result == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(area) || !stream_ready(window)) {
+    if (!ssda__stream_ready(area) || !ssda__stream_ready(window)) {
         return SSDA_ERR_STATE;
     }
-    if (stream_plates_clash(area, window)) {
+    if (ssda__stream_plates_clash(area, window)) {
         return SSDA_ERR_ARG;
     }
-    err = stream_rect(area, area_rect, &ar);
+    err = ssda__stream_rect(area, area_rect, &ar);
     if (err == SSDA_OK) {
-        err = stream_rect(window, window_rect, &wr);
+        err = ssda__stream_rect(window, window_rect, &wr);
     }
     if (err != SSDA_OK) {
         return err;
@@ -48,32 +64,18 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
         return SSDA_ERR_SIZE;
     }
     if (cfg == NULL) {
-        cfg = &defaults;
+        cfg = &ssda__match_defaults;
     }
-    err = ssda_match_check_config(cfg, ar.width, ar.height, wr.width, wr.height);
+    err = ssda__match_plan(cfg, ar.width, ar.height, wr.width, wr.height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!fits(area, area_span(cfg, &ar, &wr)) || !fits(window, wr.width)) {
+    if (!ssda__stream_holds(area, area_span(cfg, &ar, &wr), 1u, 0u) ||
+        !ssda__stream_holds(window, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    if (area->view == NULL) {
-        /* The raster scan revisits a band of window-height rows moving
-           down; the other scans jump around the whole area. */
-        const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
-        (void)stream_plate_plan(area, &ar, area_span(cfg, &ar, &wr),
-                                raster ? wr.height : ar.height, 1u, 0u);
-        /* A raster scan's band of window-height rows moves down one row at
-           a time: a plate with spare rows jumps by them (rows needed are
-           read once, each slide copies the band's rows in the arena). */
-        if (raster && area->ph >= wr.height) {
-            area->qy = (uint16_t)(area->ph - wr.height + 1u);
-        }
-    }
-    if (window->view == NULL) {
-        (void)stream_plate_plan(window, &wr, wr.width, wr.height, 0u, 0u);
-    }
-    stream_rows_make(&a, &actx, area, &ar);
-    stream_rows_make(&w, &wctx, window, &wr);
-    return ssda_match_rows(&a, &w, cfg, result);
+    shape_plates(area, &ar, window, &wr, cfg);
+    ssda__stream_rows(&a, area, &ar);
+    ssda__stream_rows(&w, window, &wr);
+    return ssda__match_rows(&a, &w, &plan, cfg->predict_x, cfg->predict_y, result);
 }

@@ -13,6 +13,7 @@
 #include <string.h>
 #include "stream_internal.h"
 #include "fixmath.h"
+#include "slide.h"
 
 static bool tiled(const ssda_source_t *s)
 {
@@ -52,7 +53,7 @@ static size_t plate_bytes(const ssda_source_t *s, uint32_t w, uint32_t h)
     return (size_t)h * pitch_for(s, w) + bounce_min(s, w);
 }
 
-uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
+uint32_t ssda__stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
 {
     size_t room = room_of(s);
     size_t h;
@@ -66,7 +67,7 @@ uint32_t stream_plate_fit_h(const ssda_source_t *s, uint32_t w, size_t extra)
     return h > SSDA_MAX_DIM ? SSDA_MAX_DIM : (uint32_t)h;
 }
 
-uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
+uint32_t ssda__stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
 {
     const ssda_source_config_t *c = &s->cfg;
     const size_t rows = (size_t)h + (tiled(s) || STREAM_READ_SIZE(c) == 1u ? 0u : 1u);
@@ -94,19 +95,19 @@ uint32_t stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t extra)
     return (uint32_t)w;
 }
 
-int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                      uint32_t rows, uint32_t q, size_t extra)
+int ssda__stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+                            uint32_t rows, uint32_t q, size_t extra, ssda_source_plan_t *plan)
 {
     uint32_t w = r->width;
-    uint32_t h = stream_plate_fit_h(s, w, extra);
+    uint32_t h = ssda__stream_plate_fit_h(s, w, extra);
     size_t pitch;
     if (h < rows) {
-        w = stream_plate_fit_w(s, rows, extra);
+        w = ssda__stream_plate_fit_w(s, rows, extra);
         if (w >= span) {
             h = rows;
         } else {
             w = span;
-            h = stream_plate_fit_h(s, w, 0u);
+            h = ssda__stream_plate_fit_h(s, w, 0u);
             if (h == 0u) {
                 return SSDA_ERR_BUFFER;
             }
@@ -117,22 +118,20 @@ int stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
     }
     pitch = pitch_for(s, w); /* h * pitch <= room_of(s) <= 2^31 */
     /* pitch_for depends on w and the source's fixed config only: the same
-       w gives the same pitch */
-    if (w != s->pw || h != s->ph) {
-        s->pw = (uint16_t)w;
-        s->ph = (uint16_t)h;
-        s->pitch = (uint32_t)pitch;
+       w gives the same pitch, so a plate planned into the source keeps its
+       pixels when its shape holds (the plan reads only s->cfg before) */
+    if (plan == &s->plate && (w != s->plate.pw || h != s->plate.ph)) {
         s->rows = 0u;
-        s->bounce = (uint32_t)((size_t)h * pitch);
-        s->bounce_size = bounce_min(s, w) == 0u
-                             ? 0u
-                             : (uint32_t)((room_of(s) - s->bounce) & ~(size_t)3u);
     }
-    s->rx = r->x;
-    s->ry = r->y;
-    s->rw = r->width;
-    s->rh = r->height;
-    s->qy = (uint16_t)(q == 0u ? 1u : (q < h ? q : h));
+    plan->pw = (uint16_t)w;
+    plan->ph = (uint16_t)h;
+    plan->pitch = (uint32_t)pitch;
+    plan->bounce = (uint32_t)((size_t)h * pitch);
+    plan->bounce_size = bounce_min(s, w) == 0u
+                            ? 0u
+                            : (uint32_t)((room_of(s) - plan->bounce) & ~(size_t)3u);
+    plan->region = *r;
+    plan->qy = (uint16_t)(q == 0u ? 1u : (q < h ? q : h));
     return SSDA_OK;
 }
 
@@ -158,15 +157,15 @@ static int read_span(ssda_source_t *s, uint32_t off, uint32_t len, uint8_t *at)
 static int load_direct(ssda_source_t *s, uint32_t a, uint32_t b)
 {
     const ssda_source_config_t *c = &s->cfg;
-    const uint32_t len = (uint32_t)s->pw * c->format;
-    const uint32_t per_read = s->pitch == c->stride ? b - a : 1u;
+    const uint32_t len = (uint32_t)s->plate.pw * c->format;
+    const uint32_t per_read = s->plate.pitch == c->stride ? b - a : 1u;
     uint8_t *plate = (uint8_t *)c->arena;
     while (a < b) {
         uint32_t n = per_read < b - a ? per_read : b - a;
         /* inside the image, below 2^32 (checked at init) */
         uint32_t off = c->offset + ((uint32_t)s->py0 + a) * c->stride +
                        (uint32_t)s->px0 * c->format;
-        int err = read_span(s, off, (n - 1u) * c->stride + len, plate + (size_t)a * s->pitch);
+        int err = read_span(s, off, (n - 1u) * c->stride + len, plate + (size_t)a * s->plate.pitch);
         if (err != SSDA_OK) {
             return err;
         }
@@ -189,10 +188,10 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
     const uint32_t tw = t ? c->tile_w : c->width;
     const uint32_t th = t ? c->tile_h : c->height;
     const uint32_t across = t ? SSDA_DIV32((uint32_t)c->width + tw - 1u, tw) : 1u;
-    const uint32_t x_end = (uint32_t)s->px0 + s->pw;
+    const uint32_t x_end = (uint32_t)s->px0 + s->plate.pw;
     const uint32_t y_end = (uint32_t)s->py0 + b;
     uint8_t *plate = (uint8_t *)c->arena;
-    uint8_t *bounce = plate + s->bounce;
+    uint8_t *bounce = plate + s->plate.bounce;
     uint32_t y = (uint32_t)s->py0 + a;
     while (y < y_end) {
         uint32_t ty = SSDA_DIV32(y, th);
@@ -206,7 +205,7 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
             /* bounce_size >= cw + 2 (rs - 1): at least one row per read */
             uint32_t max_rows = !t && cw != c->stride
                                     ? 1u
-                                    : SSDA_DIV32(s->bounce_size - 2u * (STREAM_READ_SIZE(c) - 1u) - cw, c->stride) + 1u;
+                                    : SSDA_DIV32(s->plate.bounce_size - 2u * (STREAM_READ_SIZE(c) - 1u) - cw, c->stride) + 1u;
             uint32_t r = 0u;
             /* address < 2^32, checked at init */
             uint32_t base = c->offset + (ty * across + tx) * c->tile_stride + (cx0 - tx * tw) * bpp;
@@ -220,7 +219,7 @@ static int load_bounced(ssda_source_t *s, uint32_t a, uint32_t b)
                     return err;
                 }
                 for (i = 0u; i < n; i++) {
-                    (void)memcpy(plate + (size_t)(y - s->py0 + r + i) * s->pitch +
+                    (void)memcpy(plate + (size_t)(y - s->py0 + r + i) * s->plate.pitch +
                                      (size_t)(cx0 - s->px0) * bpp,
                                  bounce + lead + (size_t)i * c->stride, cw);
                 }
@@ -283,24 +282,22 @@ static uint32_t place_y(uint32_t v, uint32_t cur, bool have, uint32_t cap, uint3
    columns stay, read the others. */
 static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
 {
-    const uint32_t ph = s->ph;
+    const uint32_t ph = s->plate.ph;
     uint8_t *plate = (uint8_t *)s->cfg.arena;
     uint32_t a = 0u, b = ph;
     int err;
     if (s->rows != 0u && x0 == s->px0) {
         if (y0 > s->py0 && y0 - s->py0 < ph) {
             uint32_t d = y0 - s->py0;
-            uint32_t i;
-            for (i = 0u; i + d < ph; i++) { /* rows d.. move up to 0.. */
-                (void)memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i + d) * s->pitch, s->pitch);
-            }
+            /* rows d.. move up to 0.. */
+            ssda__slide(plate, (size_t)d * s->plate.pitch, (size_t)ph * s->plate.pitch);
             a = ph - d;
         } else if (y0 < s->py0 && s->py0 - y0 < ph) {
             uint32_t d = s->py0 - y0;
             uint32_t i = ph;
             while (i > d) { /* rows ..ph-1-d move down to ..ph-1 */
                 i--;
-                (void)memcpy(plate + (size_t)i * s->pitch, plate + (size_t)(i - d) * s->pitch, s->pitch);
+                (void)memcpy(plate + (size_t)i * s->plate.pitch, plate + (size_t)(i - d) * s->plate.pitch, s->plate.pitch);
             }
             b = d;
         } else {
@@ -313,7 +310,7 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
 #if defined(SSDA_CFG_NO_TILED) && defined(SSDA_CFG_NO_READ_SIZE)
     err = load_direct(s, a, b); /* no bounce buffer in this build */
 #else
-    err = s->bounce_size != 0u ? load_bounced(s, a, b) : load_direct(s, a, b);
+    err = s->plate.bounce_size != 0u ? load_bounced(s, a, b) : load_direct(s, a, b);
 #endif
     if (err == SSDA_OK) {
         s->rows = (uint16_t)ph;
@@ -321,7 +318,7 @@ static int move(ssda_source_t *s, uint32_t x0, uint32_t y0)
     return err;
 }
 
-int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
+int ssda__stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
 {
     if (s->rows != 0u && s->px0 == x0 && s->py0 == y0) {
         s->stats.hits++;
@@ -331,25 +328,25 @@ int stream_plate_place(ssda_source_t *s, uint32_t x0, uint32_t y0)
     return move(s, x0, y0);
 }
 
-int stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
+int ssda__stream_plate_fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n,
                        const uint8_t **px)
 {
     const bool have = s->rows != 0u;
     uint32_t x0 = s->px0, y0;
     int err;
-    if (n > s->pw) {
+    if (n > s->plate.pw) {
         return SSDA_ERR_BUFFER;
     }
     s->stats.misses++;
-    if (!have || x < x0 || x + n > x0 + s->pw) {
-        x0 = place_x(x, s->pw, s->rx, s->rw, s->cfg.width);
+    if (!have || x < x0 || x + n > x0 + s->plate.pw) {
+        x0 = place_x(x, s->plate.pw, s->plate.region.x, s->plate.region.width, s->cfg.width);
     }
-    y0 = place_y(y, s->py0, have, s->ph, s->ry, s->rh, s->qy, s->cfg.height);
+    y0 = place_y(y, s->py0, have, s->plate.ph, s->plate.region.y, s->plate.region.height, s->plate.qy, s->cfg.height);
     err = move(s, x0, y0);
     if (err != SSDA_OK) {
         return err;
     }
-    *px = (const uint8_t *)s->cfg.arena + (size_t)(y - y0) * s->pitch +
+    *px = (const uint8_t *)s->cfg.arena + (size_t)(y - y0) * s->plate.pitch +
           (size_t)(x - x0) * s->cfg.format;
     return SSDA_OK;
 }

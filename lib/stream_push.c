@@ -3,20 +3,39 @@
  * search, or a grid row of tracking, runs in the push that brings the last
  * row it needs, on the rows kept in the ring as on an image in RAM.
  *
- * The ring keeps only the columns the job uses, rows in image order from
- * first_row; when it is full, the rows still needed move to its start
- * (row by row, never overlapping), so a band is always contiguous.
+ * The init functions check everything and resolve the job into the push
+ * state (the plan of the search or of the tracking, the plate of a streamed
+ * other image, the rows the next search waits for); a push only executes
+ * it. The ring keeps only the columns the job uses, rows in image order
+ * from first_row; when it is full, the rows still needed slide to its
+ * start (slide.h), so a band is always contiguous.
  */
 #include <string.h>
 #include "stream_internal.h"
 #include "track_rows.h"
+#include "slide.h"
 #include "compiler.h"
 
-enum { KIND_STOPPED = 0, KIND_MATCH = 1, KIND_TRACK = 2, KIND_DONE = 3 };
+enum { STATE_STOPPED = 0, STATE_MATCH = 1, STATE_TRACK = 2, STATE_DONE = 3 };
 
-static bool format_ok(uint8_t format)
+static bool format_ok(uint32_t format)
 {
-    return format == (uint8_t)SSDA_PIX_U8 || format == (uint8_t)SSDA_PIX_U16;
+    return format == (uint32_t)SSDA_PIX_U8 || format == (uint32_t)SSDA_PIX_U16;
+}
+
+/* The checks both jobs share: pointers, the other source's state, formats
+   and the pushed image's size. */
+static int check_common(const ssda_push_t *push, const ssda_push_config_t *cfg,
+                        const void *output)
+{
+    if (push == NULL || cfg == NULL || cfg->other == NULL || output == NULL ||
+        cfg->ring == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!ssda__stream_ready(cfg->other)) {
+        return SSDA_ERR_STATE;
+    }
+    return SSDA_OK;
 }
 
 /* Whether ring (ring_size bytes) holds `band` rows of w px: SSDA_OK or
@@ -29,166 +48,221 @@ static int ring_fits(uint8_t format, uint32_t w, uint32_t band, const void *ring
     if ((((uintptr_t)ring) & 3u) != 0u || ring_size / pitch < band) {
         return SSDA_ERR_BUFFER;
     }
-    if (stream_plate_overlaps(other, ring, ring_size)) {
+    if (ssda__stream_plate_overlaps(other, ring, ring_size)) {
         return SSDA_ERR_ARG;
     }
     return SSDA_OK;
 }
 
-/* Ring of rows of columns x0 .. x0+w-1 (checked by ring_fits; p->format set). */
-static void ring_setup(ssda_push_t *p, uint32_t x0, uint32_t w, void *ring, size_t ring_size)
+/* The state both jobs share, once everything is checked: *p filled in
+   place (no copy of the push state on the stack), the ring of rows of
+   columns x0 .. x0+w-1. */
+static void setup(ssda_push_t *p, const ssda_push_config_t *cfg, uint32_t x0, uint32_t w,
+                  uint8_t state)
 {
-    size_t pitch = SSDA_STREAM_PITCH(w, p->format);
-    size_t cap = ring_size / pitch;
-    p->ring = (uint8_t *)ring;
+    size_t pitch = SSDA_STREAM_PITCH(w, (uint32_t)cfg->format);
+    size_t cap = cfg->ring_size / pitch;
+    (void)memset(p, 0, sizeof *p);
+    p->height = cfg->height;
+    p->format = (uint8_t)cfg->format;
+    p->other = cfg->other;
+    p->ring = (uint8_t *)cfg->ring;
     p->pitch = (uint32_t)pitch; /* <= 4 * 65535 */
     p->cap = (uint16_t)(cap > SSDA_MAX_DIM ? SSDA_MAX_DIM : cap);
     p->x0 = (uint16_t)x0;
     p->w = (uint16_t)w;
+    p->state = state;
+    p->magic = SSDA__MAGIC_PUSH;
 }
 
-/* The init functions check everything before they write *push (outputs
-   untouched on error) and then fill it in place: no copy of the push
-   state on the stack. */
-int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
-                         const ssda_rect_t *area_rect, ssda_source_t *window,
-                         const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
-                         ssda_match_result_t *result, void *ring, size_t ring_size)
+/* The search's rectangles: the area in the pushed image, the window in
+   the other source; SSDA_OK or SSDA_ERR_SIZE. */
+static int match_rects(const ssda_push_config_t *cfg, ssda_rect_t *area, ssda_rect_t *wr)
 {
-    static const ssda_match_config_t defaults;
-    ssda_rect_t area, wr;
     int err;
-    if (push == NULL || window == NULL || result == NULL || ring == NULL) {
-        return SSDA_ERR_NULL;
+    area->x = 0u;
+    area->y = 0u;
+    area->width = cfg->width;
+    area->height = cfg->height;
+    if (cfg->area_rect != NULL) {
+        *area = *cfg->area_rect;
     }
-    if (!stream_ready(window)) {
-        return SSDA_ERR_STATE;
+    if (cfg->width == 0u || cfg->height == 0u || area->width == 0u || area->height == 0u ||
+        (uint32_t)area->x + area->width > cfg->width ||
+        (uint32_t)area->y + area->height > cfg->height) {
+        return SSDA_ERR_SIZE;
     }
-    if (!format_ok(format) || window->cfg.format != format) {
+    err = ssda__stream_rect(cfg->other, cfg->window_rect, wr);
+    if (err == SSDA_OK && (wr->width > area->width || wr->height > area->height)) {
+        err = SSDA_ERR_SIZE;
+    }
+    return err;
+}
+
+int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
+                         const ssda_match_config_t *match, ssda_match_result_t *result)
+{
+    ssda_match_plan_t plan;
+    ssda_rect_t area, wr;
+    int err = check_common(push, cfg, result);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (!format_ok((uint32_t)cfg->format) || cfg->other->cfg.format != (uint8_t)cfg->format) {
         return SSDA_ERR_FORMAT;
     }
-    area.x = 0u;
-    area.y = 0u;
-    area.width = width;
-    area.height = height;
-    if (area_rect != NULL) {
-        area = *area_rect;
-    }
-    if (width == 0u || height == 0u || area.width == 0u || area.height == 0u ||
-        (uint32_t)area.x + area.width > width ||
-        (uint32_t)area.y + area.height > height) {
-        return SSDA_ERR_SIZE;
-    }
-    err = stream_rect(window, window_rect, &wr);
+    err = match_rects(cfg, &area, &wr);
     if (err != SSDA_OK) {
         return err;
     }
-    if (wr.width > area.width || wr.height > area.height) {
-        return SSDA_ERR_SIZE;
+    if (match == NULL) {
+        match = &ssda__match_defaults;
     }
-    if (cfg == NULL) {
-        cfg = &defaults;
-    }
-    err = ssda_match_check_config(cfg, area.width, area.height, wr.width, wr.height);
+    err = ssda__match_plan(match, area.width, area.height, wr.width, wr.height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!stream_holds(window, wr.width, 1u, 0u)) {
+    if (!ssda__stream_holds(cfg->other, wr.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    err = ring_fits(format, area.width, area.height, ring, ring_size, window);
+    err = ring_fits((uint8_t)cfg->format, area.width, area.height, cfg->ring, cfg->ring_size,
+                    cfg->other);
     if (err != SSDA_OK) {
         return err;
     }
-    (void)memset(push, 0, sizeof *push);
-    push->width = width;
-    push->height = height;
-    push->format = format;
+    setup(push, cfg, area.x, area.width, STATE_MATCH);
     push->area = area;
-    push->match = *cfg;
-    ring_setup(push, area.x, area.width, ring, ring_size);
-    push->other = window;
     push->other_rect = wr;
+    push->plan.match = plan;
+    push->predict_x = match->predict_x;
+    push->predict_y = match->predict_y;
     push->result = result;
-    push->kind = KIND_MATCH;
+    push->need_from = area.y;
+    push->ready_at = (uint16_t)(area.y + area.height); /* inside the image */
+    if (cfg->other->view == NULL) {
+        /* the window's whole rectangle, read once (checked: a row fits) */
+        (void)ssda__stream_plate_plan(push->other, &wr, wr.width, wr.height, 0u, 0u,
+                                      &push->other_plate);
+    }
     return SSDA_OK;
 }
 
-/* FIRST's and SECOND's sizes: one is pushed, the other is p->other. */
-static void image_sizes(const ssda_push_t *p, uint32_t *fw, uint32_t *fh, uint32_t *sw,
-                        uint32_t *sh)
+/* First image row grid row r's band needs (tracking). */
+static uint32_t band_top(const ssda_push_t *p, uint32_t r)
 {
-    const bool first = p->role == (uint8_t)SSDA_PUSH_FIRST;
-    *fw = first ? p->width : p->other->cfg.width;
-    *fh = first ? p->height : p->other->cfg.height;
-    *sw = first ? p->other->cfg.width : p->width;
-    *sh = first ? p->other->cfg.height : p->height;
+    const ssda_track_grid_t *g = &p->plan.grid;
+    const uint32_t wy = g->roi_y + r * g->step_y;
+    const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
+    if (p->role == (uint8_t)SSDA_PUSH_FIRST) {
+        return wy >= hy ? wy - hy : 0u;
+    }
+    return wy;
 }
 
-int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
-                         uint8_t role, ssda_source_t *other, const ssda_track_config_t *cfg,
-                         ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats,
-                         void *ring, size_t ring_size)
+/* Rows of the pushed image's band (search_h rows of FIRST, win_h of SECOND). */
+static uint32_t band_rows(const ssda_push_t *p)
 {
-    static const ssda_track_config_t defaults;
-    ssda_track_plan_t plan;
+    const ssda_track_grid_t *g = &p->plan.grid;
+    return p->role == (uint8_t)SSDA_PUSH_FIRST ? g->search_h : g->win_h;
+}
+
+/* After grid row next_grid_row - 1 is solved (or at init): the rows the
+   next one waits for, and the first row it keeps. */
+static void track_next(ssda_push_t *p)
+{
+    const uint32_t r = p->next_grid_row;
+    if (r >= p->row_lo && r <= p->row_hi) {
+        p->ready_at = (uint16_t)(band_top(p, r) + band_rows(p)); /* inside the image */
+    } else {
+        p->ready_at = 0u; /* an EDGE row reads nothing: solved in the next push */
+    }
+    p->need_from = (uint16_t)band_top(p, r);
+}
+
+/* The tracking job's images: FIRST's and SECOND's sizes, the pushed
+   image's rectangle of columns kept and band height, and the other
+   image's rectangle. SSDA_OK or an argument error. */
+static int track_layout(const ssda_push_config_t *cfg, const ssda_track_config_t *track,
+                        ssda_track_plan_t *plan, ssda_rect_t *kept, ssda_rect_t *oreg,
+                        uint32_t *lo, uint32_t *hi)
+{
+    const bool first = cfg->role == SSDA_PUSH_FIRST;
+    const ssda_source_t *other = cfg->other;
+    const uint32_t fw = first ? cfg->width : other->cfg.width;
+    const uint32_t fh = first ? cfg->height : other->cfg.height;
     ssda_rect_t ar, wr;
-    uint32_t fw, fh, sw, sh, lo, hi, x0 = 0u, w = 1u, band = 1u;
+    int err = ssda__track_plan(track, (uint8_t)cfg->format, fw, fh,
+                               first ? other->cfg.width : cfg->width,
+                               first ? other->cfg.height : cfg->height, plan);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    kept->x = 0u;
+    kept->width = 1u;
+    kept->height = 1u; /* every window EDGE: a one-pixel ring */
+    *lo = plan->grid.rows;
+    *hi = 0u;
+    if (ssda__stream_grid_rects(&plan->grid, fw, fh, 0u, plan->grid.cols, &ar, &wr, lo, hi)) {
+        *kept = first ? ar : wr;
+        kept->height = first ? plan->grid.search_h : plan->grid.win_h;
+        *oreg = first ? wr : ar;
+    }
+    return SSDA_OK;
+}
+
+int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
+                         const ssda_track_config_t *track, ssda_track_vector_t *out,
+                         size_t out_count, ssda_track_stats_t *stats)
+{
+    ssda_track_plan_t plan;
+    ssda_rect_t kept, oreg;
+    uint32_t lo, hi;
     bool first;
-    int err;
-    if (push == NULL || other == NULL || out == NULL || ring == NULL) {
-        return SSDA_ERR_NULL;
+    int err = check_common(push, cfg, out);
+    if (err != SSDA_OK) {
+        return err;
     }
-    if (!stream_ready(other)) {
-        return SSDA_ERR_STATE;
-    }
-    if (role > (uint8_t)SSDA_PUSH_SECOND) {
+    if ((uint32_t)cfg->role > (uint32_t)SSDA_PUSH_SECOND) {
         return SSDA_ERR_ARG;
     }
-    if (!format_ok(format) || other->cfg.format != format) {
+    if (!format_ok((uint32_t)cfg->format) || cfg->other->cfg.format != (uint8_t)cfg->format) {
         return SSDA_ERR_FORMAT;
     }
-    if (width == 0u || height == 0u) {
+    if (cfg->width == 0u || cfg->height == 0u) {
         return SSDA_ERR_SIZE;
     }
-    if (cfg == NULL) {
-        cfg = &defaults;
-    }
-    first = role == (uint8_t)SSDA_PUSH_FIRST;
-    fw = first ? width : other->cfg.width;
-    fh = first ? height : other->cfg.height;
-    sw = first ? other->cfg.width : width;
-    sh = first ? other->cfg.height : height;
-    err = ssda_track_plan(cfg, format, sw, sh, &plan);
+    first = cfg->role == SSDA_PUSH_FIRST;
+    err = track_layout(cfg, track != NULL ? track : &ssda__track_defaults, &plan, &kept, &oreg, &lo, &hi);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda_track_out_fits(plan.grid.count, out_count) ||
-        !stream_holds(other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
+    if (!ssda__track_out_fits(plan.grid.count, out_count) ||
+        !ssda__stream_holds(cfg->other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    if (stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
-        const ssda_rect_t *kept = first ? &ar : &wr;
-        x0 = kept->x;
-        w = kept->width;
-        band = first ? plan.grid.search_h : plan.grid.win_h;
-    } /* else every window is EDGE: a one-pixel ring */
-    err = ring_fits(format, w, band, ring, ring_size, other);
+    err = ring_fits((uint8_t)cfg->format, kept.width, kept.height, cfg->ring, cfg->ring_size,
+                    cfg->other);
     if (err != SSDA_OK) {
         return err;
     }
-    (void)memset(push, 0, sizeof *push);
-    push->width = width;
-    push->height = height;
-    push->format = format;
-    push->role = role;
-    push->other = other;
-    push->track = *cfg;
-    ring_setup(push, x0, w, ring, ring_size);
+    setup(push, cfg, kept.x, kept.width, STATE_TRACK);
+    push->role = (uint8_t)cfg->role;
+    push->plan = plan;
     push->out = out;
-    push->out_count = out_count;
     push->stats = stats;
-    push->kind = KIND_TRACK;
+    push->row_lo = (uint16_t)lo;
+    push->row_hi = (uint16_t)hi;
+    if (lo <= hi && cfg->other->view == NULL) {
+        /* the other image's bands, sliding down one grid step at a time */
+        const uint32_t oband = first ? plan.grid.win_h : plan.grid.search_h;
+        (void)ssda__stream_plate_plan(push->other, &oreg,
+                                      first ? plan.grid.win_w : plan.grid.search_w, oband,
+                                      plan.grid.step_y,
+                                      ssda__stream_run_extra(cfg->other, plan.grid.step_y),
+                                      &push->other_plate);
+        push->other_banded = ssda__stream_plan_holds_band(&push->other_plate, oband);
+    }
+    track_next(push);
     return SSDA_OK;
 }
 
@@ -205,10 +279,7 @@ static void ring_put(ssda_push_t *p, uint32_t y, const uint8_t *row, uint32_t fr
     if (p->count == p->cap) {
         /* the pending band's rows so far are fewer than cap: d >= 1 */
         uint32_t d = from - p->first_row;
-        uint32_t i;
-        for (i = 0u; i + d < p->count; i++) {
-            (void)memcpy(p->ring + (size_t)i * p->pitch, p->ring + (size_t)(i + d) * p->pitch, p->pitch);
-        }
+        ssda__slide(p->ring, (size_t)d * p->pitch, (size_t)p->count * p->pitch);
         p->count = (uint16_t)(p->count - d);
         p->first_row = (uint16_t)from;
     }
@@ -218,177 +289,127 @@ static void ring_put(ssda_push_t *p, uint32_t y, const uint8_t *row, uint32_t fr
 }
 
 /* The ring's rows from image row top, band rows tall, as a row source. */
-static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda_rows_t *rows)
+static void ring_rows(const ssda_push_t *p, uint32_t top, uint32_t band, ssda__rows_t *rows)
 {
-    rows->base = p->ring + (size_t)(top - p->first_row) * p->pitch;
-    rows->stride = p->pitch;
-    rows->fetch = NULL;
-    rows->ctx = NULL;
-    rows->width = p->w;
-    rows->height = (uint16_t)band;
-    rows->format = p->format;
+    ssda__rows_mem(rows, p->ring + (size_t)(top - p->first_row) * p->pitch, p->pitch, p->w,
+                   band, p->format);
 }
 
 /* The search, once the area's last row is in. Returns 1 or a read error.
-   run_match, run_track and needed_from stay out of ssda_push_row: each
-   has its own locals (a plan, row sources), which would otherwise add up
-   on the frame above the search. */
+   run_match and run_track stay out of ssda_push_row: each has its own
+   locals (row sources, an origin), which would otherwise add up on the
+   frame above the search. */
 static SSDA_NOINLINE int run_match(ssda_push_t *p)
 {
-    ssda_rows_t a, w;
-    stream_rows_ctx_t wctx;
+    ssda__rows_t a, w;
+    int err;
     if (p->other->view == NULL) {
-        (void)stream_plate_plan(p->other, &p->other_rect, p->other_rect.width,
-                                p->other_rect.height, 0u, 0u);
+        ssda__stream_plate_use(p->other, &p->other_plate);
     }
     ring_rows(p, p->area.y, p->area.height, &a);
-    stream_rows_make(&w, &wctx, p->other, &p->other_rect);
-    {
-        int err = ssda_match_rows(&a, &w, &p->match, p->result);
-        return err != SSDA_OK ? err : 1;
-    }
+    ssda__stream_rows(&w, p->other, &p->other_rect);
+    err = ssda__match_rows(&a, &w, &p->plan.match, p->predict_x, p->predict_y, p->result);
+    return err != SSDA_OK ? err : 1;
 }
 
-/* Solve the grid rows whose bands are complete, in order. Returns how many
-   were solved, or a read error. */
-static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
+/* Grid row r, whose band is complete: the pushed band from the ring, the
+   other image's band (or its whole rows), placed by their origin. */
+static int solve_row(ssda_push_t *p, uint32_t r)
 {
     const bool first = p->role == (uint8_t)SSDA_PUSH_FIRST;
-    ssda_track_plan_t plan;
-    ssda_rect_t ar, wr, all;
-    ssda_rows_t pushed, whole;
-    stream_rows_ctx_t wctx;
-    uint32_t fw, fh, sw, sh, lo = 1u, hi = 0u, hy, band;
-    int solved = 0;
-    image_sizes(p, &fw, &fh, &sw, &sh);
-    (void)ssda_track_plan(&p->track, p->format, sw, sh, &plan); /* checked at init */
-    hy = ((uint32_t)plan.grid.search_h - plan.grid.win_h) / 2u;
-    band = first ? plan.grid.search_h : plan.grid.win_h;
-    if (!stream_grid_rects(&plan.grid, fw, fh, 0u, plan.grid.cols, &ar, &wr, &lo, &hi)) {
-        lo = plan.grid.rows; /* no grid row reads anything */
-        hi = 0u;
+    const ssda_track_grid_t *g = &p->plan.grid;
+    const uint32_t wy = g->roi_y + r * g->step_y;
+    const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
+    const uint32_t top = first ? wy - hy : wy;
+    ssda__track_origin_t o;
+    ssda__rows_t pushed, other;
+    uint32_t ox = 0u, oy = 0u;
+    ring_rows(p, top, band_rows(p), &pushed);
+    ssda__stream_rows(&other, p->other, NULL);
+    if (p->other->view == NULL) {
+        ssda__stream_plate_use(p->other, &p->other_plate);
+        if (p->other_banded) {
+            int err = ssda__stream_band_rows(p->other, p->other_plate.region.x,
+                                             first ? wy : wy - hy, &other, &ox, &oy);
+            if (err != SSDA_OK) {
+                return err;
+            }
+        }
     }
-    (void)stream_rect(p->other, NULL, &all);
-    stream_rows_make(&whole, &wctx, p->other, &all);
-    while (p->next_grid_row < plan.grid.rows) {
+    o.first_x = first ? p->x0 : ox;
+    o.first_y = first ? top : oy;
+    o.second_x = first ? ox : p->x0;
+    o.second_y = first ? oy : top;
+    return ssda__track_part(first ? &pushed : &other, first ? &other : &pushed, &p->plan, 0u,
+                            g->cols, r, r + 1u, &o, p->out, &p->acc);
+}
+
+/* Solve the grid rows whose bands are complete, in order (called once the
+   next one is ready). Returns how many were solved, or a read error. */
+static SSDA_NOINLINE int run_track(ssda_push_t *p, uint32_t rows_in)
+{
+    const uint32_t rows = p->plan.grid.rows;
+    int solved = 0;
+    while (p->next_grid_row < rows && rows_in >= p->ready_at) {
         const uint32_t r = p->next_grid_row;
-        const uint32_t wy = plan.grid.roi_y + r * plan.grid.step_y;
-        ssda_track_origin_t o;
         int err;
-        o.first_w = fw;
-        o.first_h = fh;
-        o.first_x = 0u;
-        o.first_y = 0u;
-        o.second_x = 0u;
-        o.second_y = 0u;
-        if (r >= lo && r <= hi) {
-            const uint32_t top = first ? wy - hy : wy;
-            const ssda_rect_t *oreg = first ? &wr : &ar;
-            const uint32_t oband = first ? plan.grid.win_h : plan.grid.search_h;
-            ssda_rows_t other_rows;
-            uint32_t ox = 0u, oy = 0u;
-            if (rows_in < top + band) {
-                break; /* the band is not complete yet */
-            }
-            ring_rows(p, top, band, &pushed);
-            other_rows = whole;
-            if (p->other->view == NULL) {
-                (void)stream_plate_plan(p->other, oreg, first ? plan.grid.win_w : plan.grid.search_w,
-                                        oband, plan.grid.step_y,
-                                        stream_run_extra(p->other, plan.grid.step_y));
-            }
-            if (p->other->view == NULL && stream_holds_band(p->other, oreg, oband)) {
-                err = stream_band_rows(p->other, oreg, oreg->x, first ? wy : wy - hy, &other_rows,
-                                       &ox, &oy);
-                if (err != SSDA_OK) {
-                    return err;
-                }
-            }
-            if (first) {
-                o.first_x = p->x0;
-                o.first_y = top;
-                o.second_x = ox;
-                o.second_y = oy;
-            } else {
-                o.first_x = ox;
-                o.first_y = oy;
-                o.second_x = p->x0;
-                o.second_y = top;
-            }
-            err = ssda_track_part(first ? &pushed : &other_rows, first ? &other_rows : &pushed,
-                                  &plan, 0u, plan.grid.cols, r, r + 1u, &o, p->out, &p->acc);
+        if (r >= p->row_lo && r <= p->row_hi) {
+            err = solve_row(p, r);
         } else {
             /* EDGE row: no pixel is read, any row sources do */
-            ring_rows(p, p->first_row, 0u, &pushed);
-            err = ssda_track_part(&pushed, &pushed, &plan, 0u, plan.grid.cols, r, r + 1u, &o,
-                                  p->out, &p->acc);
+            ssda__rows_t none;
+            ring_rows(p, p->first_row, 0u, &none);
+            err = ssda__track_part(&none, &none, &p->plan, 0u, p->plan.grid.cols, r, r + 1u,
+                                   &ssda__track_origin_whole, p->out, &p->acc);
         }
         if (err != SSDA_OK) {
             return err;
         }
         p->next_grid_row++;
+        track_next(p);
         solved++;
     }
-    if (p->next_grid_row == plan.grid.rows) {
+    if (p->next_grid_row == rows) {
         if (p->stats != NULL) {
             *p->stats = p->acc;
         }
-        p->kind = KIND_DONE;
+        p->state = STATE_DONE;
     }
     return solved;
 }
 
-/* First image row any unsolved part of the job needs (tracking: the
-   pending grid row's band; search: the area's top). */
-static SSDA_NOINLINE uint32_t needed_from(const ssda_push_t *p)
-{
-    if (p->kind == KIND_TRACK) {
-        ssda_track_plan_t plan;
-        uint32_t fw, fh, sw, sh, top;
-        image_sizes(p, &fw, &fh, &sw, &sh);
-        (void)ssda_track_plan(&p->track, p->format, sw, sh, &plan);
-        top = plan.grid.roi_y + (uint32_t)p->next_grid_row * plan.grid.step_y;
-        if (p->role == (uint8_t)SSDA_PUSH_FIRST) {
-            uint32_t hy = ((uint32_t)plan.grid.search_h - plan.grid.win_h) / 2u;
-            top = top >= hy ? top - hy : 0u;
-        }
-        return top;
-    }
-    return p->area.y;
-}
-
 int ssda_push_row(ssda_push_t *push, const void *row)
 {
-    uint32_t y, from;
+    uint32_t y;
     int done;
     if (push == NULL || row == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (push->kind == KIND_STOPPED || push->next_row >= push->height) {
+    if (!ssda__valid(push->magic, SSDA__MAGIC_PUSH) || push->state == STATE_STOPPED ||
+        push->next_row >= push->height) {
         return SSDA_ERR_STATE;
     }
     y = push->next_row;
     push->next_row++;
-    if (push->kind == KIND_DONE) {
+    if (push->state == STATE_DONE) {
         return 0;
     }
-    from = needed_from(push);
     /* A search ends in the push of its area's last row (DONE or STOPPED
-       above), so here y is never below the area in KIND_MATCH. */
-    if (y >= from) {
-        ring_put(push, y, (const uint8_t *)row, from);
+       above), so here y is never below the area in a search. */
+    if (y >= push->need_from) {
+        ring_put(push, y, (const uint8_t *)row, push->need_from);
     }
-    if (push->kind == KIND_MATCH) {
-        if (y + 1u != (uint32_t)push->area.y + push->area.height) {
-            return 0;
-        }
+    if (y + 1u < push->ready_at) {
+        return 0; /* the next search waits for more rows */
+    }
+    if (push->state == STATE_MATCH) {
         done = run_match(push);
-        push->kind = done < 0 ? KIND_STOPPED : KIND_DONE;
+        push->state = (uint8_t)(done < 0 ? STATE_STOPPED : STATE_DONE);
         return done;
     }
     done = run_track(push, y + 1u);
     if (done < 0) {
-        push->kind = KIND_STOPPED;
+        push->state = STATE_STOPPED;
     }
     return done;
 }

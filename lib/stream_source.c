@@ -16,18 +16,17 @@ static bool mul_add(uint32_t a, uint32_t b, uint32_t c, uint32_t *out)
     return true;
 }
 
-/* Resolve defaults in *c and check it; SSDA_OK or the documented error.
-   32-bit arithmetic only (no 64-bit division on small cores). */
-static int check_config(ssda_source_config_t *c)
+/* Pointers, pixel format, layout and read size (its default resolved):
+   SSDA_OK or the documented error. */
+static int check_device(ssda_source_config_t *c)
 {
-    uint32_t bpp, row_bytes, extent, last;
+    const uint32_t bpp = c->format; /* 1 or 2 once checked: "% bpp" is a mask */
     if (c->read == NULL || c->arena == NULL) {
         return SSDA_ERR_NULL;
     }
     if (c->format != (uint8_t)SSDA_PIX_U8 && c->format != (uint8_t)SSDA_PIX_U16) {
         return SSDA_ERR_FORMAT;
     }
-    bpp = c->format; /* 1 or 2: "% bpp" below is a mask, no division routine */
     if (c->read_size == 0u) {
         c->read_size = 1u;
     }
@@ -51,6 +50,42 @@ static int check_config(ssda_source_config_t *c)
         return SSDA_ERR_UNSUPPORTED;
     }
 #endif
+    return SSDA_OK;
+}
+
+/* *extent = bytes from the image's first stored byte to its last, rows of
+   row_bytes (tile_stride's default resolved): SSDA_OK, SSDA_ERR_SIZE (not
+   below 2^32) or SSDA_ERR_STRIDE. */
+static int image_extent(ssda_source_config_t *c, uint32_t row_bytes, uint32_t *extent)
+{
+    if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
+        const uint32_t bpp = c->format;
+        /* tiles <= 65535^2 < 2^32 */
+        uint32_t tiles = SSDA_DIV32((uint32_t)c->width + c->tile_w - 1u, c->tile_w) *
+                         SSDA_DIV32((uint32_t)c->height + c->tile_h - 1u, c->tile_h);
+        uint32_t tile_bytes;
+        if (!mul_add(c->tile_h - 1u, c->stride, row_bytes, &tile_bytes) ||
+            (c->tile_stride == 0u && !mul_add(c->stride, c->tile_h, 0u, &c->tile_stride))) {
+            return SSDA_ERR_SIZE;
+        }
+        if ((c->tile_stride & (bpp - 1u)) != 0u || c->tile_stride < tile_bytes) {
+            return SSDA_ERR_STRIDE;
+        }
+        return mul_add(tiles - 1u, c->tile_stride, tile_bytes, extent) ? SSDA_OK : SSDA_ERR_SIZE;
+    }
+    return mul_add(c->height - 1u, c->stride, row_bytes, extent) ? SSDA_OK : SSDA_ERR_SIZE;
+}
+
+/* Resolve defaults in *c and check it; SSDA_OK or the documented error.
+   32-bit arithmetic only (no 64-bit division on small cores). */
+static int check_config(ssda_source_config_t *c)
+{
+    uint32_t bpp, row_bytes, extent, last;
+    int err = check_device(c);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    bpp = c->format; /* 1 or 2: "% bpp" below is a mask, no division routine */
     if (c->width == 0u || c->height == 0u) {
         return SSDA_ERR_SIZE;
     }
@@ -68,25 +103,9 @@ static int check_config(ssda_source_config_t *c)
     if ((c->offset & (bpp - 1u)) != 0u || (c->stride & (bpp - 1u)) != 0u || c->stride < row_bytes) {
         return SSDA_ERR_STRIDE;
     }
-    if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
-        /* tiles <= 65535^2 < 2^32 */
-        uint32_t tiles = SSDA_DIV32((uint32_t)c->width + c->tile_w - 1u, c->tile_w) *
-                         SSDA_DIV32((uint32_t)c->height + c->tile_h - 1u, c->tile_h);
-        uint32_t tile_bytes;
-        if (!mul_add(c->tile_h - 1u, c->stride, row_bytes, &tile_bytes) ||
-            (c->tile_stride == 0u && !mul_add(c->stride, c->tile_h, 0u, &c->tile_stride))) {
-            return SSDA_ERR_SIZE;
-        }
-        if ((c->tile_stride & (bpp - 1u)) != 0u || c->tile_stride < tile_bytes) {
-            return SSDA_ERR_STRIDE;
-        }
-        if (!mul_add(tiles - 1u, c->tile_stride, tile_bytes, &extent)) {
-            return SSDA_ERR_SIZE;
-        }
-    } else if (!mul_add(c->height - 1u, c->stride, row_bytes, &extent)) {
-        return SSDA_ERR_SIZE;
-    } else {
-        /* raster: extent set by mul_add */
+    err = image_extent(c, row_bytes, &extent);
+    if (err != SSDA_OK) {
+        return err;
     }
     /* Every read stays inside [offset, offset + extent) widened to
        read_size multiples, which must lie below 2^32: the last byte, and
@@ -129,7 +148,8 @@ int ssda_source_init(ssda_source_t *src, const ssda_source_config_t *cfg)
     all.height = c.height;
     /* Default plate: whole rows if one fits, as many rows as fit. A 1 x 1
        plate fits (checked above), so this cannot fail. */
-    (void)stream_plate_plan(src, &all, 1u, 1u, 0u, 0u);
+    (void)ssda__stream_plate_plan(src, &all, 1u, 1u, 0u, 0u, &src->plate);
+    src->magic = SSDA__MAGIC_SOURCE;
     return SSDA_OK;
 }
 
@@ -154,10 +174,11 @@ int ssda_source_init_view(ssda_source_t *src, const ssda_view_t *view)
     src->cfg.width = view->width;
     src->cfg.height = view->height;
     src->cfg.format = view->format;
+    src->magic = SSDA__MAGIC_SOURCE;
     return SSDA_OK;
 }
 
-int stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out)
+int ssda__stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t *out)
 {
     if (in == NULL) {
         out->x = 0u;
@@ -182,7 +203,7 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     if (src == NULL || px == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(src)) {
+    if (!ssda__stream_ready(src)) {
         return SSDA_ERR_STATE;
     }
     if (n == 0u || x >= src->cfg.width || n > src->cfg.width - x || y >= src->cfg.height) {
@@ -192,46 +213,35 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
         *px = src->view + (size_t)y * src->cfg.stride + (size_t)x * src->cfg.format;
         return SSDA_OK;
     }
-    (void)stream_rect(src, NULL, &all);
-    if (n > src->pw) {
-        /* Reshape for this width: whole rows if they fit, else n px. */
-        int err = stream_plate_plan(src, &all, n, 1u, 0u, 0u);
+    (void)ssda__stream_rect(src, NULL, &all);
+    if (n > src->plate.pw) {
+        /* reshape for this width: whole rows if they fit, else n px */
+        int err = ssda__stream_plate_shape(src, &all, n, 1u, 0u, 0u);
         if (err != SSDA_OK) {
             return err;
         }
     }
-    src->rx = all.x;
-    src->ry = all.y;
-    src->rw = all.width;
-    src->rh = all.height;
-    src->qy = src->ph; /* a miss jumps a whole plate: reading in order is read once */
-    return stream_fetch(src, x, y, n, px);
+    src->plate.region = all;
+    src->plate.qy = src->plate.ph; /* a miss jumps a whole plate: reading in order is read once */
+    return ssda__stream_fetch(src, x, y, n, px);
 }
 
+/* A streamed source as a row source's fetch (ctx: the source). */
 static int rows_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
 {
-    const stream_rows_ctx_t *c = ctx;
-    /* cppcheck-suppress misra-c2012-11.8 ; no cast: c->src is a pointer member */
-    return stream_fetch(c->src, c->x0 + x, c->y0 + y, n, px);
+    ssda_source_t *s = ctx;
+    return ssda__stream_fetch(s, x, y, n, px);
 }
 
-void stream_rows_make(ssda_rows_t *rows, stream_rows_ctx_t *ctx, ssda_source_t *s,
-                      const ssda_rect_t *r)
+void ssda__stream_rows(ssda__rows_t *rows, ssda_source_t *s, const ssda_rect_t *r)
 {
-    rows->width = r->width;
-    rows->height = r->height;
-    rows->format = s->cfg.format;
-    rows->stride = s->cfg.stride;
+    const ssda_source_config_t *c = &s->cfg;
     if (s->view != NULL) {
-        rows->base = s->view + (size_t)r->y * s->cfg.stride + (size_t)r->x * s->cfg.format;
-        rows->fetch = NULL;
-        rows->ctx = NULL;
+        ssda__rows_mem(rows, s->view, c->stride, c->width, c->height, c->format);
     } else {
-        ctx->src = s;
-        ctx->x0 = r->x;
-        ctx->y0 = r->y;
-        rows->base = NULL;
-        rows->fetch = rows_fetch;
-        rows->ctx = ctx;
+        ssda__rows_dev(rows, rows_fetch, s, c->width, c->height, c->format);
+    }
+    if (r != NULL) {
+        ssda__rows_sub(rows, rows, r->x, r->y, r->width, r->height);
     }
 }

@@ -4,19 +4,30 @@
  * strip's band of search areas (FIRST) and of windows (SECOND) slide down
  * through the plates and every byte is read about once.
  *
- * When the plates hold a whole band, each grid row of the strip is solved
- * on the plates as images in RAM (row sources with a base pointer, placed
- * by an origin): the engine runs at in-RAM speed, with no call per row.
- * Otherwise the tracker fetches rows through the plate cache.
+ * The job is planned once: the tracking plan, the strip width (from the
+ * widest band each arena holds), and per strip the plate plans; solving a
+ * strip only executes them. When the plates hold a whole band, each grid
+ * row of the strip is solved on the plates as images in RAM (row sources in
+ * memory, placed by an origin): the engine runs at in-RAM speed, with no
+ * call per row. Otherwise the tracker fetches rows through the plate cache.
  */
+#include <string.h>
 #include "stream_internal.h"
 #include "track_rows.h"
 
-/* Solve the strip [c0, c1) grid row by grid row on bands of the plates. */
+/* One strip of the job: its grid columns, rectangles and grid rows. */
+typedef struct {
+    uint32_t c0, c1;   /* grid columns [c0, c1) */
+    ssda_rect_t ar;    /* the strip's search areas in FIRST */
+    ssda_rect_t wr;    /* its windows in SECOND */
+    uint32_t lo, hi;   /* grid rows whose areas lie inside FIRST */
+    bool banded;       /* both plates hold a whole band: solved on bands */
+} strip_t;
+
+/* Solve the strip grid row by grid row on bands of the plates. */
 static int strip_on_bands(ssda_source_t *first, ssda_source_t *second,
-                          ssda_track_plan_t *plan, uint32_t c0, uint32_t c1,
-                          const ssda_rect_t *ar, const ssda_rect_t *wr, uint32_t lo,
-                          uint32_t hi, const ssda_rows_t *whole_f, const ssda_rows_t *whole_s,
+                          const ssda_track_plan_t *plan, const strip_t *st,
+                          const ssda__rows_t *whole_f, const ssda__rows_t *whole_s,
                           ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
     const ssda_track_grid_t *g = &plan->grid;
@@ -24,27 +35,36 @@ static int strip_on_bands(ssda_source_t *first, ssda_source_t *second,
     uint32_t r;
     int err = SSDA_OK;
     /* rows whose areas leave FIRST are EDGE: nothing is read for them */
-    if (lo > 0u) {
-        err = ssda_track_part(whole_f, whole_s, plan, c0, c1, 0u, lo, NULL, out, acc);
+    if (st->lo > 0u) {
+        err = ssda__track_part(whole_f, whole_s, plan, st->c0, st->c1, 0u, st->lo,
+                               &ssda__track_origin_whole, out, acc);
     }
-    for (r = lo; r <= hi && err == SSDA_OK; r++) {
+    for (r = st->lo; r <= st->hi && err == SSDA_OK; r++) {
         const uint32_t wy = g->roi_y + r * g->step_y;
-        ssda_track_origin_t o;
-        ssda_rows_t fr, sr;
-        err = stream_band_rows(first, ar, ar->x, wy - hy, &fr, &o.first_x, &o.first_y);
+        ssda__track_origin_t o;
+        ssda__rows_t fr, sr;
+        err = ssda__stream_band_rows(first, st->ar.x, wy - hy, &fr, &o.first_x, &o.first_y);
         if (err == SSDA_OK) {
-            err = stream_band_rows(second, wr, wr->x, wy, &sr, &o.second_x, &o.second_y);
+            err = ssda__stream_band_rows(second, st->wr.x, wy, &sr, &o.second_x, &o.second_y);
         }
         if (err == SSDA_OK) {
-            o.first_w = first->cfg.width;
-            o.first_h = first->cfg.height;
-            err = ssda_track_part(&fr, &sr, plan, c0, c1, r, r + 1u, &o, out, acc);
+            err = ssda__track_part(&fr, &sr, plan, st->c0, st->c1, r, r + 1u, &o, out, acc);
         }
     }
-    if (err == SSDA_OK && hi + 1u < g->rows) {
-        err = ssda_track_part(whole_f, whole_s, plan, c0, c1, hi + 1u, g->rows, NULL, out, acc);
+    if (err == SSDA_OK && st->hi + 1u < g->rows) {
+        err = ssda__track_part(whole_f, whole_s, plan, st->c0, st->c1, st->hi + 1u, g->rows,
+                               &ssda__track_origin_whole, out, acc);
     }
     return err;
+}
+
+/* Widest band of `rows` rows a streamed source's arena holds (as the
+   strips' plates are planned: with a tiled source's run room); any width
+   for an image in RAM. */
+static uint32_t band_width(const ssda_source_t *s, uint32_t rows, uint32_t step_y)
+{
+    return s->view != NULL ? UINT32_MAX
+                           : ssda__stream_plate_fit_w(s, rows, ssda__stream_run_extra(s, step_y));
 }
 
 /* Grid columns per strip: as many as keep the strip's areas (search_h rows)
@@ -54,6 +74,8 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
                            const ssda_source_t *second)
 {
     const ssda_track_grid_t *g = &p->grid;
+    const uint32_t fit_f = band_width(first, g->search_h, g->step_y);
+    const uint32_t fit_s = band_width(second, g->win_h, g->step_y);
     const uint8_t mode = p->match.threshold;
     const bool exact = (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
                         mode == (uint8_t)SSDA_THRESHOLD_NONE) &&
@@ -68,8 +90,7 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
         if (aw > first->cfg.width) {
             aw = first->cfg.width;
         }
-        if (!stream_holds(first, (uint32_t)aw, g->search_h, stream_run_extra(first, g->step_y)) ||
-            !stream_holds(second, (uint32_t)ww, g->win_h, stream_run_extra(second, g->step_y))) {
+        if (aw > fit_f || ww > fit_s) {
             break;
         }
         k++;
@@ -77,80 +98,79 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
     return k;
 }
 
+/* Plan the strip [c0, c1): its rectangles, and plates as wide as the strip
+   sliding down one grid step at a time (each holds at least one row,
+   checked by the caller). */
+static void plan_strip(ssda_source_t *first, ssda_source_t *second,
+                       const ssda_track_plan_t *plan, strip_t *st)
+{
+    const ssda_track_grid_t *g = &plan->grid;
+    st->banded = ssda__stream_grid_rects(g, plan->first_w, plan->first_h, st->c0, st->c1,
+                                         &st->ar, &st->wr, &st->lo, &st->hi);
+    if (!st->banded) {
+        return; /* no window reads anything */
+    }
+    if (first->view == NULL) {
+        (void)ssda__stream_plate_shape(first, &st->ar, g->search_w, g->search_h, g->step_y,
+                                       ssda__stream_run_extra(first, g->step_y));
+        st->banded = ssda__stream_plan_holds_band(&first->plate, g->search_h);
+    }
+    if (second->view == NULL) {
+        (void)ssda__stream_plate_shape(second, &st->wr, g->win_w, g->win_h, g->step_y,
+                                       ssda__stream_run_extra(second, g->step_y));
+        st->banded = st->banded && ssda__stream_plan_holds_band(&second->plate, g->win_h);
+    }
+}
+
 int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
                       const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                       size_t out_count, ssda_track_stats_t *stats)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_track_stats_t acc;
-    ssda_rows_t frows, srows;
-    stream_rows_ctx_t fctx, sctx;
-    ssda_rect_t all_f, all_s;
+    ssda__rows_t frows, srows;
+    strip_t st;
     uint32_t k, c0;
     int err;
 
     if (first == NULL || second == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!stream_ready(first) || !stream_ready(second)) {
+    if (!ssda__stream_ready(first) || !ssda__stream_ready(second)) {
         return SSDA_ERR_STATE;
     }
-    if (stream_plates_clash(first, second)) {
+    if (ssda__stream_plates_clash(first, second)) {
         return SSDA_ERR_ARG;
     }
     if (first->cfg.format != second->cfg.format) {
         return SSDA_ERR_FORMAT;
     }
-    err = ssda_track_plan(cfg != NULL ? cfg : &defaults, second->cfg.format,
-                          second->cfg.width, second->cfg.height, &plan);
+    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->cfg.format, first->cfg.width,
+                           first->cfg.height, second->cfg.width, second->cfg.height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda_track_out_fits(plan.grid.count, out_count)) {
+    if (!ssda__track_out_fits(plan.grid.count, out_count)) {
         return SSDA_ERR_BUFFER;
     }
     /* The tracker fetches whole area rows (mask test, bounds) and whole
        window rows: the narrowest plates that can serve it. */
-    if (!stream_holds(first, plan.grid.search_w, 1u, 0u) || !stream_holds(second, plan.grid.win_w, 1u, 0u)) {
+    if (!ssda__stream_holds(first, plan.grid.search_w, 1u, 0u) ||
+        !ssda__stream_holds(second, plan.grid.win_w, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
-    (void)stream_rect(first, NULL, &all_f);
-    (void)stream_rect(second, NULL, &all_s);
-    stream_rows_make(&frows, &fctx, first, &all_f);
-    stream_rows_make(&srows, &sctx, second, &all_s);
+    ssda__stream_rows(&frows, first, NULL);
+    ssda__stream_rows(&srows, second, NULL);
     k = strip_cols(&plan, first, second);
-    acc.pixel_ops = 0u;
-    acc.positions = 0u;
-    acc.completed = 0u;
-    acc.check_pixels = 0u;
-    acc.windows = 0u;
-    acc.ok = 0u;
-    acc.excluded = 0u;
-    acc.masked = 0u;
-    acc.edge = 0u;
+    (void)memset(&acc, 0, sizeof acc);
     for (c0 = 0u; c0 < plan.grid.cols; c0 += k) {
-        uint32_t c1 = plan.grid.cols - c0 > k ? c0 + k : plan.grid.cols;
-        ssda_rect_t ar, wr;
-        uint32_t lo, hi;
-        /* Plates as wide as the strip, sliding down one grid step at a
-           time (checked above: each holds at least one row). */
-        bool inside = stream_grid_rects(&plan.grid, first->cfg.width, first->cfg.height, c0, c1, &ar, &wr, &lo,
-                                        &hi);
-        if (first->view == NULL && inside) {
-            (void)stream_plate_plan(first, &ar, plan.grid.search_w, plan.grid.search_h,
-                                    plan.grid.step_y, stream_run_extra(first, plan.grid.step_y));
-        }
-        if (second->view == NULL && inside) {
-            (void)stream_plate_plan(second, &wr, plan.grid.win_w, plan.grid.win_h,
-                                    plan.grid.step_y, stream_run_extra(second, plan.grid.step_y));
-        }
-        if (inside && stream_holds_band(first, &ar, plan.grid.search_h) &&
-            stream_holds_band(second, &wr, plan.grid.win_h)) {
-            err = strip_on_bands(first, second, &plan, c0, c1, &ar, &wr, lo, hi, &frows,
-                                 &srows, out, &acc);
+        st.c0 = c0;
+        st.c1 = plan.grid.cols - c0 > k ? c0 + k : plan.grid.cols;
+        plan_strip(first, second, &plan, &st);
+        if (st.banded) {
+            err = strip_on_bands(first, second, &plan, &st, &frows, &srows, out, &acc);
         } else {
-            err = ssda_track_strip(&frows, &srows, &plan, c0, c1, out, &acc);
+            err = ssda__track_strip(&frows, &srows, &plan, st.c0, st.c1, out, &acc);
         }
         if (err != SSDA_OK) {
             return err;

@@ -5,7 +5,7 @@ int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
                const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                size_t out_count, ssda_track_stats_t *stats)
 {
-    ssda_rows_t a, b;
+    ssda__rows_t a, b;
     int err;
     if (first == NULL || second == NULL || out == NULL) {
         return SSDA_ERR_NULL;
@@ -17,9 +17,10 @@ int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
     if (err != SSDA_OK) {
         return err;
     }
-    ssda_rows_from_view(&a, first);
-    ssda_rows_from_view(&b, second);
-    /* RAM sources never fail a fetch: an error here is an argument error,
-       found before anything is written. */
-    return ssda_track_rows(&a, &b, cfg, out, out_count, stats);
+    ssda__rows_view(&a, first);
+    ssda__rows_view(&b, second);
+    /* checked views: no second check of the row sources. RAM sources never
+       fail a fetch: an error here is an argument error, found before
+       anything is written. */
+    return ssda__track_run(&a, &b, cfg, out, out_count, stats);
 }

@@ -1,6 +1,8 @@
 /* track_plan.c - grid layout and configuration checks of grid tracking. */
 #include "track_rows.h"
 
+const ssda_track_config_t ssda__track_defaults; /* all zero */
+
 /* One axis of the grid: window, search, step and region along it. */
 typedef struct {
     uint32_t win, search, step, start, len, count;
@@ -63,25 +65,26 @@ static int resolve_grid(const ssda_track_config_t *cfg, uint32_t width, uint32_t
 int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t height,
                     ssda_track_grid_t *grid)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_grid_t g;
     int err;
     if (grid == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = resolve_grid(cfg != NULL ? cfg : &defaults, width, height, &g);
+    err = resolve_grid(cfg != NULL ? cfg : &ssda__track_defaults, width, height, &g);
     if (err == SSDA_OK) {
         *grid = g;
     }
     return err;
 }
 
-int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda_track_plan_t *plan)
+int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t first_w,
+                     uint32_t first_h, uint32_t second_w, uint32_t second_h,
+                     ssda_track_plan_t *plan)
 {
     const uint32_t maxval = format == (uint8_t)SSDA_PIX_U8 ? 255u : 65535u;
     /* built in *plan directly (no copy of a plan on the stack): on error it
        is scratch, which every caller discards */
+    ssda_match_config_t match; /* the search of every window */
     uint32_t pixels; /* win_w * win_h <= 65535^2 < 2^32 */
     int err = resolve_grid(cfg, second_w, second_h, &plan->grid);
     if (err != SSDA_OK) {
@@ -94,6 +97,8 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
     plan->predict = cfg->predict;
     plan->flags = cfg->flags;
     plan->mask_value = cfg->mask_value;
+    plan->first_w = (uint16_t)first_w;
+    plan->first_h = (uint16_t)first_h;
     if ((plan->flags & SSDA_TRACK_MASK) != 0u && plan->mask_value > maxval) {
         return SSDA_ERR_ARG;
     }
@@ -111,15 +116,15 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
         (plan->texture_threshold >= maxval || plan->texture_min_count > pixels / 2u)) {
         return SSDA_ERR_ARG;
     }
-    plan->match = cfg->match;
+    match = cfg->match;
     if (plan->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
-        if (plan->match.scan == (uint8_t)SSDA_SCAN_COARSE) {
+        if (match.scan == (uint8_t)SSDA_SCAN_COARSE) {
             return SSDA_ERR_ARG;
         }
-        if (plan->match.scan == (uint8_t)SSDA_SCAN_RASTER) {
-            plan->match.scan = (uint8_t)SSDA_SCAN_PREDICT;
+        if (match.scan == (uint8_t)SSDA_SCAN_RASTER) {
+            match.scan = (uint8_t)SSDA_SCAN_PREDICT;
         }
     }
-    return ssda_match_check_config(&plan->match, plan->grid.search_w, plan->grid.search_h,
-                                   plan->grid.win_w, plan->grid.win_h);
+    return ssda__match_plan(&match, plan->grid.search_w, plan->grid.search_h,
+                            plan->grid.win_w, plan->grid.win_h, &plan->match);
 }

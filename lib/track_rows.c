@@ -1,46 +1,13 @@
 /*
  * track_rows.c - grid tracking over row sources: window statuses (edge,
- * mask, texture), prediction from solved neighbours, one ssda_match_rows per
+ * mask, texture), prediction from solved neighbours, one ssda__match_rows per
  * window on sub-sources of the two images.
  */
 #include "track_rows.h"
 
-/* A rectangle of a parent row source, seen as a row source of its own. */
-typedef struct {
-    const ssda_rows_t *parent;
-    uint32_t x0, y0;
-} sub_ctx_t;
+const ssda__track_origin_t ssda__track_origin_whole = {0u, 0u, 0u, 0u};
 
-static int sub_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
-{
-    const sub_ctx_t *s = (const sub_ctx_t *)ctx;
-    return ssda_rows_get(s->parent, s->x0 + x, s->y0 + y, n, px);
-}
-
-/* Make *sub the w x h rectangle at (x0, y0) of parent (inside it). In RAM
-   it is a plain pointer offset; otherwise fetches are forwarded. */
-static void make_sub(ssda_rows_t *sub, sub_ctx_t *ctx, const ssda_rows_t *parent,
-                     uint32_t x0, uint32_t y0, uint32_t w, uint32_t h)
-{
-    sub->width = (uint16_t)w;
-    sub->height = (uint16_t)h;
-    sub->format = parent->format;
-    sub->stride = parent->stride;
-    if (parent->base != NULL) {
-        sub->base = parent->base + (size_t)y0 * parent->stride + (size_t)x0 * parent->format;
-        sub->fetch = NULL;
-        sub->ctx = NULL;
-    } else {
-        ctx->parent = parent;
-        ctx->x0 = x0;
-        ctx->y0 = y0;
-        sub->base = NULL;
-        sub->fetch = sub_fetch;
-        sub->ctx = ctx;
-    }
-}
-
-static int check_rows(const ssda_rows_t *r)
+static int check_rows(const ssda__rows_t *r)
 {
     if (r->format != (uint8_t)SSDA_PIX_U8 && r->format != (uint8_t)SSDA_PIX_U16) {
         return SSDA_ERR_FORMAT;
@@ -106,7 +73,7 @@ static uint32_t count_above_u16(const uint16_t *p, uint32_t n, uint32_t thr)
    mask) and count pixels above the texture threshold (if texture). Stops
    at the first row holding the mask value (the status is then decided).
    Returns SSDA_OK or a fetch error. */
-static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool mask,
+static int scan_pixels(const ssda__rows_t *src, const ssda_track_plan_t *p, bool mask,
                        bool texture, scan_t *s, uint64_t *pixels_read)
 {
     const uint32_t n = src->width;
@@ -117,7 +84,7 @@ static int scan_pixels(const ssda_rows_t *src, const ssda_track_plan_t *p, bool 
     for (y = 0u; y < src->height && !s->masked; y++) {
         const uint8_t *px;
         const uint16_t *q;
-        int err = ssda_rows_get(src, 0u, y, n, &px);
+        int err = ssda__rows_get(src, 0u, y, n, &px);
         if (err != SSDA_OK) {
             return err;
         }
@@ -190,9 +157,9 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
 }
 
 /* Status and vector of window k; on OK also runs the search. */
-static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
-                        ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
-                        uint32_t row, uint32_t col1, const ssda_track_origin_t *o,
+static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
+                        const ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
+                        uint32_t row, uint32_t col1, const ssda__track_origin_t *o,
                         ssda_track_vector_t *v, ssda_track_stats_t *st)
 {
     const ssda_track_grid_t *g = &p->grid;
@@ -202,9 +169,9 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     const uint32_t wy = g->roi_y + row * g->step_y;
     const bool mask = (p->flags & SSDA_TRACK_MASK) != 0u;
     const bool texture = (p->flags & SSDA_TRACK_EXCLUDE) != 0u;
-    ssda_rows_t win, area;
-    sub_ctx_t win_ctx, area_ctx;
+    ssda__rows_t win, area;
     ssda_match_result_t res;
+    int32_t pdx = 0, pdy = 0; /* predicted motion: none */
     scan_t s;
     int err;
 
@@ -215,16 +182,13 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
     v->y = (uint16_t)wy;
     v->exact = false;
     v->status = (uint8_t)SSDA_TRACK_EDGE;
-    /* o NULL: the sources are the whole images */
-    if (wx < hx || wy < hy ||
-        wx - hx + g->search_w > (o != NULL ? o->first_w : first->width) ||
-        wy - hy + g->search_h > (o != NULL ? o->first_h : first->height)) {
+    if (wx < hx || wy < hy || wx - hx + g->search_w > p->first_w ||
+        wy - hy + g->search_h > p->first_h) {
         return SSDA_OK;
     }
-    make_sub(&win, &win_ctx, second, wx - (o != NULL ? o->second_x : 0u),
-             wy - (o != NULL ? o->second_y : 0u), g->win_w, g->win_h);
-    make_sub(&area, &area_ctx, first, wx - hx - (o != NULL ? o->first_x : 0u),
-             wy - hy - (o != NULL ? o->first_y : 0u), g->search_w, g->search_h);
+    ssda__rows_sub(&win, second, wx - o->second_x, wy - o->second_y, g->win_w, g->win_h);
+    ssda__rows_sub(&area, first, wx - hx - o->first_x, wy - hy - o->first_y, g->search_w,
+                   g->search_h);
     if (mask || texture) {
         err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
         if (err != SSDA_OK) {
@@ -253,16 +217,11 @@ static int solve_window(const ssda_rows_t *first, const ssda_rows_t *second,
         }
     }
     if (p->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
-        int32_t pdx, pdy;
         predict(p, out, col, row, col1, &pdx, &pdy);
-        /* |pd| <= 65535: no overflow; the engine clamps into range */
-        p->match.predict_x = (int32_t)hx - pdx;
-        p->match.predict_y = (int32_t)hy - pdy;
-    } else {
-        p->match.predict_x = (int32_t)hx; /* zero motion, for a PREDICT scan */
-        p->match.predict_y = (int32_t)hy;
     }
-    err = ssda_match_rows(&area, &win, &p->match, &res);
+    /* the predicted placement (zero motion without prediction, for a
+       PREDICT scan); |pd| <= 65535: no overflow; the engine clamps */
+    err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy, &res);
     if (err != SSDA_OK) {
         return err;
     }
@@ -290,10 +249,10 @@ static void stats_zero(ssda_track_stats_t *st)
     st->edge = 0u;
 }
 
-int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
-                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
-                    ssda_track_vector_t *out, ssda_track_stats_t *acc)
+int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
+                     const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                     uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
+                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
     uint32_t row, col;
     for (row = row0; row < row1; row++) {
@@ -316,15 +275,37 @@ int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
     return SSDA_OK;
 }
 
-int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
+int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_track_stats_t st;
     int err;
+    if (first->format != second->format) {
+        return SSDA_ERR_FORMAT;
+    }
+    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->format,
+                           first->width, first->height, second->width, second->height, &plan);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (!ssda__track_out_fits(plan.grid.count, out_count)) {
+        return SSDA_ERR_BUFFER;
+    }
+    stats_zero(&st);
+    err = ssda__track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);
+    if (err == SSDA_OK && stats != NULL) {
+        *stats = st;
+    }
+    return err;
+}
 
+int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
+                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                     size_t out_count, ssda_track_stats_t *stats)
+{
+    int err;
     if (first == NULL || second == NULL || out == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -335,21 +316,5 @@ int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
     if (err != SSDA_OK) {
         return err;
     }
-    if (first->format != second->format) {
-        return SSDA_ERR_FORMAT;
-    }
-    err = ssda_track_plan(cfg != NULL ? cfg : &defaults, second->format, second->width,
-                          second->height, &plan);
-    if (err != SSDA_OK) {
-        return err;
-    }
-    if (!ssda_track_out_fits(plan.grid.count, out_count)) {
-        return SSDA_ERR_BUFFER;
-    }
-    stats_zero(&st);
-    err = ssda_track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);
-    if (err == SSDA_OK && stats != NULL) {
-        *stats = st;
-    }
-    return err;
+    return ssda__track_run(first, second, cfg, out, out_count, stats);
 }

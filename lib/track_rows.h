@@ -2,7 +2,7 @@
  * track_rows.h - internal: grid tracking over row sources, so the same code
  * serves images in RAM (ssda_track) and block-streamed images (the stream
  * layer). Every pixel read, for the mask and texture tests as for the
- * search, is a row span through ssda_rows_get(): never a call per pixel.
+ * search, is a row span through ssda__rows_get(): never a call per pixel.
  */
 #ifndef SSDA_TRACK_ROWS_H
 #define SSDA_TRACK_ROWS_H
@@ -16,7 +16,7 @@
  * windows (about 179 million) would need an array beyond the address space,
  * so SSDA_TRACK_OUT_SIZE wraps there and no out can hold it: refused.
  */
-static inline bool ssda_track_out_fits(uint32_t count, size_t out_count)
+static inline bool ssda__track_out_fits(uint32_t count, size_t out_count)
 {
 #if SIZE_MAX <= UINT32_MAX
     if (count > SIZE_MAX / sizeof(ssda_track_vector_t)) {
@@ -26,25 +26,21 @@ static inline bool ssda_track_out_fits(uint32_t count, size_t out_count)
     return out_count >= count;
 }
 
-/* A checked configuration with every default resolved. */
-typedef struct {
-    ssda_track_grid_t grid;
-    ssda_match_config_t match; /* scan set for the prediction mode */
-    uint32_t texture_threshold; /* resolved; < the format's maximum */
-    uint32_t texture_min_count; /* resolved; 1 .. win_w * win_h / 2 */
-    uint32_t mask_value;        /* <= the format's maximum */
-    uint8_t predict;
-    uint8_t flags;
-} ssda_track_plan_t;
+/* The zero-filled options (the seed's grid, AUTO): what a NULL
+   configuration means, one copy for the whole library. */
+SSDA_INTERNAL extern const ssda_track_config_t ssda__track_defaults;
 
 /*
- * Resolve and check cfg (never NULL) for images of the given format whose
- * SECOND is second_w x second_h: every error ssda_track documents for the
- * configuration (SSDA_ERR_SIZE, _ARG, _NULL, _BUFFER of the match options).
- * On error *plan holds scratch (the callers discard it).
+ * Resolve and check cfg (never NULL) for images of the given format, FIRST
+ * first_w x first_h and SECOND second_w x second_h, into *plan
+ * (ssda_track_plan_t, track.h):
+ * every error ssda_track documents for the configuration (SSDA_ERR_SIZE,
+ * _ARG, _NULL, _BUFFER of the match options). On error *plan holds scratch
+ * (the callers discard it).
  */
-int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t second_w,
-                    uint32_t second_h, ssda_track_plan_t *plan);
+SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format,
+                                   uint32_t first_w, uint32_t first_h, uint32_t second_w,
+                                   uint32_t second_h, ssda_track_plan_t *plan);
 
 /*
  * ssda_track over row sources. first and second are checked here (non-NULL,
@@ -58,61 +54,66 @@ int ssda_track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t sec
  * the rest of out and *stats are untouched (a streamed call cannot undo
  * what it wrote; argument errors still write nothing).
  */
-int ssda_track_rows(const ssda_rows_t *first, const ssda_rows_t *second,
-                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
-                    size_t out_count, ssda_track_stats_t *stats);
+SSDA_INTERNAL int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
+                                   const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                                   size_t out_count, ssda_track_stats_t *stats);
+
+/* ssda__track_rows after its checks of the row sources, for callers whose
+   sources are valid already (ssda_track's views): formats, the plan, the
+   whole grid. Same returns. */
+SSDA_INTERNAL int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,
+                                  const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                                  size_t out_count, ssda_track_stats_t *stats);
 
 /*
- * Where the row sources given to ssda_track_part lie in the images, for a
+ * Where the row sources given to ssda__track_part lie in the images, for a
  * caller that keeps only a band of each image in RAM (the stream layer's
- * plates): pixel (0, 0) of first is FIRST's pixel (first_x, first_y) and
- * pixel (0, 0) of second is SECOND's (second_x, second_y); FIRST is
- * first_w x first_h pixels (the EDGE test uses these, not first's size).
+ * plates and push rings): pixel (0, 0) of first is FIRST's pixel (first_x,
+ * first_y) and pixel (0, 0) of second is SECOND's (second_x, second_y).
  * The search area and window of every non-EDGE window of the part must lie
- * inside first and second.
+ * inside first and second (the EDGE test uses FIRST's size from the plan,
+ * not first's). Whole images have the identity origin.
  */
 typedef struct {
-    uint32_t first_x, first_y, first_w, first_h;
+    uint32_t first_x, first_y;
     uint32_t second_x, second_y;
-} ssda_track_origin_t;
+} ssda__track_origin_t;
+
+/* The identity origin (all zero): the row sources are the whole images. */
+SSDA_INTERNAL extern const ssda__track_origin_t ssda__track_origin_whole;
 
 /*
- * ssda_track_strip over grid rows row0 .. row1-1 only (row0 < row1 <=
- * plan->grid.rows), with row sources placed by origin (NULL: the whole
- * images). Prediction takes every row above row0 as solved, besides what
- * ssda_track_strip takes, so calling it row by row, strip by strip, gives
- * what one ssda_track_strip call per strip gives. Same returns and effects.
+ * Solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of grid
+ * rows row0 .. row1-1 (row0 < row1 <= plan->grid.rows), row by row, left to
+ * right, with row sources placed by origin. plan comes from
+ * ssda__track_plan and is only read; first and second must already satisfy
+ * ssda__track_rows' checks and out must hold the whole grid (entry row *
+ * cols + col). For callers that cut the grid into vertical strips and
+ * bands of rows (the stream layer): prediction takes as solved every window
+ * left of col0 and above row0 (so solve strips left to right, rows top to
+ * bottom) and the part's windows solved before; up-right neighbours in
+ * column col1 are not solved yet, so with prediction on, the work (not the
+ * vectors, in exact modes) can differ from one whole-grid call. Counts are
+ * added to *acc (zero it before the first part; windows counts the part's
+ * windows). Returns SSDA_OK or a fetch error unchanged, in which case *acc
+ * holds partial counts (the callers discard it; it is not copied onto the
+ * caller's stack, to keep the deepest call chain short) and out holds the
+ * part's windows solved before the failing one.
  */
-int ssda_track_part(const ssda_rows_t *first, const ssda_rows_t *second,
-                    ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                    uint32_t row0, uint32_t row1, const ssda_track_origin_t *origin,
-                    ssda_track_vector_t *out, ssda_track_stats_t *acc);
+SSDA_INTERNAL int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
+                                   const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                                   uint32_t row0, uint32_t row1,
+                                   const ssda__track_origin_t *origin, ssda_track_vector_t *out,
+                                   ssda_track_stats_t *acc);
 
-/*
- * For callers that cut the grid into vertical strips (the stream layer):
- * solve grid columns col0 .. col1-1 (col0 < col1 <= plan->grid.cols) of
- * every grid row, row by row, left to right within the strip. plan comes
- * from ssda_track_plan (its match.predict_x/y are scratch); first and second
- * must already satisfy ssda_track_rows' checks and out must hold the whole
- * grid (entry row * cols + col). Prediction takes as solved every window
- * left of col0 (so solve strips left to right) and the strip's windows
- * solved before; up-right neighbours in column col1 are not solved yet, so
- * with prediction on, the work (not the vectors, in exact modes) can differ
- * from one whole-grid call. Counts are added to *acc (zero it before the
- * first strip; windows counts the strip's windows). Returns SSDA_OK or a
- * fetch error unchanged, in which case *acc holds partial counts (the
- * callers discard it; it is not copied onto the caller's stack, to keep
- * the deepest call chain short) and out holds the strip's windows solved
- * before the failing one.
- * Inline, as ssda_track_part over every grid row of whole images: a frame
- * less on the deepest call chain.
- */
-static inline int ssda_track_strip(const ssda_rows_t *first, const ssda_rows_t *second,
-                                   ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
-                                   ssda_track_vector_t *out, ssda_track_stats_t *acc)
+/* ssda__track_part over every grid row of whole images (the identity
+   origin): one vertical strip. */
+static inline int ssda__track_strip(const ssda__rows_t *first, const ssda__rows_t *second,
+                                    const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
+                                    ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    return ssda_track_part(first, second, plan, col0, col1, 0u, plan->grid.rows, NULL, out,
-                           acc);
+    return ssda__track_part(first, second, plan, col0, col1, 0u, plan->grid.rows,
+                            &ssda__track_origin_whole, out, acc);
 }
 
 #endif /* SSDA_TRACK_ROWS_H */

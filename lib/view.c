@@ -30,7 +30,7 @@ int ssda_view_check(const ssda_view_t *view)
        say) would wrap them to memory before data. The view's bytes,
        (height - 1) * stride + width * bpp < 2^48, end at or below the top. */
     row = (uint32_t)view->width * bpp; /* <= 131070 */
-    extent = ssda_mul_u32_u16(view->stride, (uint16_t)(view->height - 1u)) + row;
+    extent = ssda__mul_u32_u16(view->stride, (uint16_t)(view->height - 1u)) + row;
     if (extent - 1u > (uint64_t)(UINTPTR_MAX - (uintptr_t)view->data)) {
         return SSDA_ERR_STRIDE;
     }

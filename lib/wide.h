@@ -9,6 +9,8 @@
 
 #include <stdint.h>
 
+#include "compiler.h"
+
 typedef struct {
     uint64_t hi, lo; /* value = hi * 2^64 + lo */
 } ssda__u128_t;
@@ -20,7 +22,7 @@ typedef struct {
 /* a * b exactly: on compilers with a native 128-bit type (64-bit GCC and
    clang) through it, elsewhere from four 32-bit partial products
    (ssda__mul_64x64_parts); the same value either way. */
-ssda__u128_t ssda__mul_64x64_parts(uint64_t a, uint64_t b);
+SSDA_INTERNAL ssda__u128_t ssda__mul_64x64_parts(uint64_t a, uint64_t b);
 #if defined(__SIZEOF_INT128__) && (defined(__GNUC__) || defined(__clang__))
 __extension__ typedef unsigned __int128 ssda__native_u128_t;
 static inline ssda__u128_t ssda__mul_64x64(uint64_t a, uint64_t b)
@@ -36,7 +38,7 @@ static inline ssda__u128_t ssda__mul_64x64(uint64_t a, uint64_t b)
 #endif
 
 /* a * b exactly (< 2^192). */
-ssda__u192_t ssda__mul_128x64(ssda__u128_t a, uint64_t b);
+SSDA_INTERNAL ssda__u192_t ssda__mul_128x64(ssda__u128_t a, uint64_t b);
 
 /* -1, 0 or 1 as a <, = or > b. */
 static inline int ssda__cmp_128(ssda__u128_t a, ssda__u128_t b)
@@ -49,7 +51,7 @@ static inline int ssda__cmp_128(ssda__u128_t a, ssda__u128_t b)
     }
     return 0;
 }
-int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b);
+SSDA_INTERNAL int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b);
 
 /* Number of significant bits of v (0 for 0, 64 for v >= 2^63). */
 #if defined(__GNUC__) || defined(__clang__)
@@ -58,7 +60,7 @@ static inline uint32_t ssda__bitlen64(uint64_t v)
     return v == 0u ? 0u : 64u - (uint32_t)__builtin_clzll(v);
 }
 #else
-uint32_t ssda__bitlen64(uint64_t v);
+SSDA_INTERNAL uint32_t ssda__bitlen64(uint64_t v);
 #endif
 
 #endif /* SSDA_WIDE_H */

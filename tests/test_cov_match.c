@@ -101,11 +101,11 @@ static void test_mul_shr24_is_exact_below_2_56_and_saturates_above(void)
         }
         ref_mul_shr24(a, b, &hi, &lo);
         TEST_ASSERT_EQUAL_UINT64(0u, hi); /* a < 2^32, b < 2^56: the result fits */
-        TEST_ASSERT_EQUAL_UINT64(lo, ssda_mul_shr24(a, b));
+        TEST_ASSERT_EQUAL_UINT64(lo, ssda__mul_shr24(a, b));
     }
     /* b >= 2^56: a * b / 2^24 may not fit; documented to saturate */
-    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, ssda_mul_shr24(1u, (uint64_t)1 << 56));
-    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, ssda_mul_shr24(UINT32_MAX, UINT64_MAX));
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, ssda__mul_shr24(1u, (uint64_t)1 << 56));
+    TEST_ASSERT_EQUAL_UINT64(UINT64_MAX, ssda__mul_shr24(UINT32_MAX, UINT64_MAX));
 }
 
 #define AW 20u

@@ -47,7 +47,7 @@ static void test_defaults_when_lag_max_is_below_the_smallest_frame(void)
     /* and with the default f0_min (50 Hz): lag_max 160 = K */
     c.f0_min_hz = 0u;
     c.f0_max_hz = 0u;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(&c, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&c, &info));
     TEST_ASSERT_EQUAL_UINT32(160u, info.lag_max);
     TEST_ASSERT_EQUAL_UINT32(160u, info.frame_len);
     TEST_ASSERT_EQUAL_UINT32(8u, info.lag_min);   /* floor(8000 / 1000) */
@@ -63,8 +63,8 @@ static void test_resolve_refuses_null_with_info_untouched(void)
     c.sample_rate_hz = 16000u;
     memset(&poison, 0x3A, sizeof poison);
     info = poison;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_resolve(NULL, &info));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_resolve(&c, NULL));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__pitch_resolve(NULL, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__pitch_resolve(&c, NULL));
     TEST_ASSERT_EQUAL_MEMORY(&poison, &info, sizeof info);
 }
 
@@ -73,16 +73,16 @@ static void test_resolve_refuses_null_with_info_untouched(void)
 static void test_f0_conversion_closed_form_and_saturation(void)
 {
     /* 8000 Hz / 20 samples = 400 Hz exactly */
-    TEST_ASSERT_EQUAL_UINT32(400u << 16, ssda_pitch_f0_q16(8000u, 20u << 16));
+    TEST_ASSERT_EQUAL_UINT32(400u << 16, ssda__pitch_f0_q16(8000u, 20u << 16));
     /* 48000 / 3.5 = 13714.2857...: Q16 = floor(13714.2857 * 65536 + 1/2) */
-    TEST_ASSERT_EQUAL_UINT32(898779429u, ssda_pitch_f0_q16(48000u, 229376u)); /* 898779428.57 + 1/2 */
+    TEST_ASSERT_EQUAL_UINT32(898779429u, ssda__pitch_f0_q16(48000u, 229376u)); /* 898779428.57 + 1/2 */
     /* the last period that fits: (rate << 32) / p <= 2^32 - 1 needs
        p > rate (plus rounding); below it the value saturates */
-    TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, ssda_pitch_f0_q16(48000u, 1u));
-    TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, ssda_pitch_f0_q16(48000u, 48000u));
+    TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, ssda__pitch_f0_q16(48000u, 1u));
+    TEST_ASSERT_EQUAL_UINT32(UINT32_MAX, ssda__pitch_f0_q16(48000u, 48000u));
     TEST_ASSERT_EQUAL_UINT32((uint32_t)(((uint64_t)48000u << 32) / 48001u +
                                         ((((uint64_t)48000u << 32) % 48001u) >= 24001u ? 1u : 0u)),
-                             ssda_pitch_f0_q16(48000u, 48001u));
+                             ssda__pitch_f0_q16(48000u, 48001u));
 }
 
 static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info)

@@ -10,6 +10,7 @@
 #include "unity.h"
 #include "ssda/stream.h"
 #include "test_image.h"
+#include "test_push.h"
 #include "test_source.h"
 
 void setUp(void) {}
@@ -70,41 +71,41 @@ static void test_match_init_refusals_leave_the_job_untouched(void)
     memset(&p, 0x66, sizeof p);
     before = p;
     /* zero height; empty area rectangles; an area leaving the image */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, 0, 1, NULL, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, 0, 1, NULL, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     ar.x = 0;
     ar.y = 0;
     ar.width = 0;
     ar.height = 20;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     ar.width = 20;
     ar.height = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     ar.height = 20;
     ar.x = (uint16_t)(IW - 19u); /* one column beyond the right edge */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     /* the window rectangle leaves its source */
     ar.x = 5;
     {
         ssda_rect_t out = wr;
         out.y = (uint16_t)(IH - 8u);
-        TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &out, NULL, &res, g_ring, sizeof g_ring));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &out, NULL, &res, g_ring, sizeof g_ring));
     }
     /* window wider than the area, as tall */
     ar.width = 11;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     ar.width = 20;
     /* window as wide as allowed but taller than the area */
     ar.height = 8;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     /* a streamed window whose arena is one byte short of a window row */
     ar.height = 20;
     make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 1u, 4u, 0u) - 1u);
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
     TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads);
     /* with that byte it runs, and finds the window where it was cut */
     make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 1u, 4u, 0u));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
     {
         uint32_t y, bx, by;
         uint64_t bs;
@@ -133,16 +134,16 @@ static void test_track_init_refusals_leave_the_job_untouched(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&other, &sv));
     memset(&p, 0x5D, sizeof p);
     before = p;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_track(NULL, IW, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_track(&p, IW, IH, 1, 0, NULL, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_track(&p, IW, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, NULL, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_push_init_track(&p, IW, IH, 3, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_push_init_track(&p, IW, IH, 2, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_track(&p, 0, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_track(&p, IW, 0, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_track(NULL, IW, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_track(&p, IW, IH, 1, 0, NULL, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_track(&p, IW, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, NULL, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, test_push_init_track(&p, IW, IH, 3, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, test_push_init_track(&p, IW, IH, 2, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_track(&p, 0, IH, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_track(&p, IW, 0, 1, 0, &other, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
     /* pushing FIRST, the streamed SECOND must hold a 16-px window row */
     make_streamed(&narrow, &sv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 1u, 4u, 0u) - 1u);
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &narrow, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &narrow, NULL, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
     TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads);
 }
@@ -159,7 +160,7 @@ static void test_null_row_changes_nothing(void)
     int n = 0;
     make_images(3u);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&win, &wv));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, 1, NULL, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, 1, NULL, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
     for (y = 0; y < IH; y++) {
         if (y == 7u || y == IH - 1u) {
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_row(&p, NULL));
@@ -215,7 +216,7 @@ static void test_track_defaults_without_stats(void)
         const bool first = role == SSDA_PUSH_FIRST;
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&other, first ? &sv : &fv));
         memset(g_got, 0x21, sizeof g_got);
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, (uint8_t)role, &other, NULL,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 1, (uint8_t)role, &other, NULL,
                                                             g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
         TEST_ASSERT_EQUAL_INT((int)g.rows, push_all(&p, first ? &g_first[0][0] : &g_second[0][0], IH, IW));
         for (k = 0; k < g.count; k++) {
@@ -243,7 +244,7 @@ static void test_track_all_edge_either_role(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(NULL, IW, IH, &g));
     /* FIRST (small) pushed, SECOND streamed */
     make_streamed(&other, &sv, sizeof g_arena);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, 12, 12, 1, SSDA_PUSH_FIRST, &other, NULL,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, 12, 12, 1, SSDA_PUSH_FIRST, &other, NULL,
                                                         g_got, MAX_WIN, &st, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_INT((int)g.rows, push_all(&p, &g_small[0][0], 12, 12));
     TEST_ASSERT_EQUAL_UINT32(g.count, st.edge);
@@ -251,7 +252,7 @@ static void test_track_all_edge_either_role(void)
     /* SECOND pushed, FIRST (small) in RAM */
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&other, &small));
     memset(g_got, 0x21, sizeof g_got);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_SECOND, &other, NULL,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 1, SSDA_PUSH_SECOND, &other, NULL,
                                                         g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_INT((int)g.rows, push_all(&p, &g_second[0][0], IH, IW));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&small, &sv, NULL, g_want, MAX_WIN, &st));
@@ -280,7 +281,7 @@ static void test_fetch_mode_failure_anywhere_stops_tracking(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(NULL, IW, IH, &g));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, NULL, g_want, MAX_WIN, NULL));
     make_streamed(&other, &sv, arena);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
                                                         g_got, MAX_WIN, &st, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_INT((int)g.rows, push_all(&p, &g_first[0][0], IH, IW));
     for (i = 0; i < g.count; i++) {
@@ -297,7 +298,7 @@ static void test_fetch_mode_failure_anywhere_stops_tracking(void)
         g_t.fail_code = -6000 - (int)k;
         st = poison;
         memset(g_got, 0x33, sizeof g_got);
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 1, SSDA_PUSH_FIRST, &other, NULL,
                                                             g_got, MAX_WIN, &st, g_ring, sizeof g_ring));
         for (y = 0; y < IH; y++) {
             int n = ssda_push_row(&p, g_first[y]);

@@ -247,7 +247,7 @@ static void test_row_span_wider_than_a_jobs_plate(void)
     TEST_ASSERT_EQUAL_UINT32(bx, res.x);
     TEST_ASSERT_EQUAL_UINT32(by, res.y);
     TEST_ASSERT_EQUAL_UINT64(0u, res.sad);
-    TEST_ASSERT_TRUE(a.pw < IW);
+    TEST_ASSERT_TRUE(a.plate.pw < IW);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_row(&a, 1u, 33u, IW - 1u, &px));
     TEST_ASSERT_EQUAL_MEMORY(&g_img[33][1], px, IW - 1u);
 }

@@ -18,6 +18,7 @@
 #include "ssda/stream.h"
 #include "test_rng.h"
 #include "test_source.h"
+#include "test_push.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -346,10 +347,10 @@ static void test_push_rings_at_their_minimum(void)
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&w2, &bv, wr.x, wr.y, wr.width, wr.height));
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&a2, &w2, NULL, &want));
         p = poison;
-        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_match(&p, IW, IH, format, &ar, &ws, &wr,
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_match(&p, IW, IH, format, &ar, &ws, &wr,
                                                                     NULL, &got, g_ring, ring - 1u));
         TEST_ASSERT_EQUAL_MEMORY(&poison, &p, sizeof p);
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, format, &ar, &ws, &wr, NULL,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, format, &ar, &ws, &wr, NULL,
                                                             &got, g_ring, ring));
         for (y = 0; y < IH; y++) {
             TEST_ASSERT_TRUE(ssda_push_row(&p, ssda_view_row(&av, y)) >= 0);
@@ -371,11 +372,11 @@ static void test_push_rings_at_their_minimum(void)
                                                                              ? &bv : &av));
             p = poison;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
-                                  ssda_push_init_track(&p, IW, IH, format, (uint8_t)role, &other, &tc,
+                                  test_push_init_track(&p, IW, IH, format, (uint8_t)role, &other, &tc,
                                                        g_got, MAX_WIN, &st, g_ring, ring - 1u));
             TEST_ASSERT_EQUAL_MEMORY(&poison, &p, sizeof p);
             TEST_ASSERT_EQUAL_INT(SSDA_OK,
-                                  ssda_push_init_track(&p, IW, IH, format, (uint8_t)role, &other, &tc,
+                                  test_push_init_track(&p, IW, IH, format, (uint8_t)role, &other, &tc,
                                                        g_got, MAX_WIN, &st, g_ring, ring));
             for (y = 0; y < IH; y++) {
                 TEST_ASSERT_TRUE(ssda_push_row(&p, ssda_view_row(pushed, y)) >= 0);

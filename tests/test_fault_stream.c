@@ -16,6 +16,7 @@
 #include "ssda/stream.h"
 #include "test_rng.h"
 #include "test_source.h"
+#include "test_push.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -245,7 +246,7 @@ static void test_push_search_fails_at_every_window_read(void)
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&wr, &sv, win.x, win.y, win.width, win.height));
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&ar, &wr, &c, &want));
         make_source(&ws, false, g, format, arena);
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, format, &area, &ws, &win, &c,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, format, &area, &ws, &win, &c,
                                                             &got, g_ring, ring));
         for (y = 0; y < IH; y++) {
             TEST_ASSERT_EQUAL_INT(y + 1u == (uint32_t)area.y + area.height ? 1 : 0,
@@ -259,7 +260,7 @@ static void test_push_search_fails_at_every_window_read(void)
             g_ts.fail_at_read = (int64_t)k;
             g_ts.fail_code = fail_code(k);
             got = poison;
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, format, &area, &ws, &win,
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, format, &area, &ws, &win,
                                                                 &c, &got, g_ring, ring));
             for (y = 0; y + 1u < (uint32_t)area.y + area.height; y++) {
                 TEST_ASSERT_EQUAL_INT(0, ssda_push_row(&p, ssda_view_row(&fv, y)));
@@ -269,7 +270,7 @@ static void test_push_search_fails_at_every_window_read(void)
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_push_row(&p, ssda_view_row(&fv, y + 1u)));
             /* a new job, the same source and ring */
             g_ts.fail_at_read = -1;
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, format, &area, &ws, &win,
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, format, &area, &ws, &win,
                                                                 &c, &got, g_ring, ring));
             for (y = 0; y < (uint32_t)area.y + area.height; y++) {
                 (void)ssda_push_row(&p, ssda_view_row(&fv, y));
@@ -308,7 +309,7 @@ static void test_push_tracking_first_pushed_fails_at_every_read(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &grid));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, &c, g_want, MAX_WIN, &ram));
     make_source(&s, false, g, SSDA_PIX_U16, arena);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST, &s,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST, &s,
                                                         &c, g_got, MAX_WIN, &st, g_ring, ring));
     for (y = 0; y < IH; y++) {
         TEST_ASSERT_TRUE(ssda_push_row(&p, ssda_view_row(&fv, y)) >= 0);
@@ -323,7 +324,7 @@ static void test_push_tracking_first_pushed_fails_at_every_read(void)
         g_ts.fail_at_read = (int64_t)k;
         g_ts.fail_code = fail_code(k);
         st = poison;
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST,
                                                             &s, &c, g_got, MAX_WIN, &st, g_ring, ring));
         for (y = 0; y < IH; y++) {
             r = ssda_push_row(&p, ssda_view_row(&fv, y));
@@ -338,7 +339,7 @@ static void test_push_tracking_first_pushed_fails_at_every_read(void)
         TEST_ASSERT_EQUAL_MEMORY(&poison, &st, sizeof st);
         g_ts.fail_at_read = -1;
         memset(g_got, 0, sizeof g_got);
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_FIRST,
                                                             &s, &c, g_got, MAX_WIN, &st, g_ring, ring));
         for (y = 0; y < IH; y++) {
             TEST_ASSERT_TRUE(ssda_push_row(&p, ssda_view_row(&fv, y)) >= 0);

@@ -1,10 +1,10 @@
 /*
- * test_fixmath_div.c - ssda_div64_32 (lib/fixmath.c), the 64-by-32 division
+ * test_fixmath_div.c - ssda__div64_32 (lib/fixmath.c), the 64-by-32 division
  * that cores without a divide instruction use instead of the runtime
  * library's: against the compiler's 64-bit division, at the extremes of
  * dividend and divisor and on random operands of every magnitude, with the
  * saturation at UINT32_MAX when the quotient needs more than 32 bits; and
- * ssda_mul_u32_u16, the 32 x 16 product without a 64-bit multiply routine,
+ * ssda__mul_u32_u16, the 32 x 16 product without a 64-bit multiply routine,
  * against the compiler's product.
  */
 #include "unity.h"
@@ -23,7 +23,7 @@ static uint32_t ref_div(uint64_t n, uint32_t d)
 
 static void check(uint64_t n, uint32_t d)
 {
-    TEST_ASSERT_EQUAL_HEX32(ref_div(n, d), ssda_div64_32(n, d));
+    TEST_ASSERT_EQUAL_HEX32(ref_div(n, d), ssda__div64_32(n, d));
 }
 
 static void test_div_extremes(void)
@@ -66,7 +66,7 @@ static void test_div_random(void)
     }
 }
 
-/* ssda_mul_u32_u16 (two 32-bit partial products) against the compiler's
+/* ssda__mul_u32_u16 (two 32-bit partial products) against the compiler's
    64-bit product: extremes and random operands of every size. */
 static void test_mul_u32_u16(void)
 {
@@ -76,14 +76,14 @@ static void test_mul_u32_u16(void)
     uint32_t i, j;
     for (i = 0; i < 6u; i++) {
         for (j = 0; j < 6u; j++) {
-            TEST_ASSERT_EQUAL_UINT64((uint64_t)as[i] * bs[j], ssda_mul_u32_u16(as[i], bs[j]));
+            TEST_ASSERT_EQUAL_UINT64((uint64_t)as[i] * bs[j], ssda__mul_u32_u16(as[i], bs[j]));
         }
     }
     test_rng_seed(&r, 777u);
     for (i = 0; i < 100000u; i++) {
         uint32_t a = test_rng_next(&r) >> (test_rng_next(&r) % 32u);
         uint16_t b = (uint16_t)(test_rng_next(&r) >> (16u + test_rng_next(&r) % 16u));
-        TEST_ASSERT_EQUAL_UINT64((uint64_t)a * b, ssda_mul_u32_u16(a, b));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)a * b, ssda__mul_u32_u16(a, b));
     }
 }
 

@@ -1,6 +1,6 @@
 /*
  * test_kernel.c - the compiled kernel set (portable, sse2 or armv7em: see
- * ssda_kernel_name()) against the reference loops of kernel/portable.h and an
+ * ssda__kernel_name()) against the reference loops of kernel/portable.h and an
  * independent 64-bit reference written here: random rows of every length
  * 0..MAX_LEN at every pointer misalignment, lane patterns that exercise both
  * signs of a - b within one machine word, and the accumulator worst cases
@@ -83,7 +83,7 @@ static uint32_t sample(test_rng_t *r, uint32_t maxval)
 
 static void test_kernel_name_is_known(void)
 {
-    const char *name = ssda_kernel_name();
+    const char *name = ssda__kernel_name();
     TEST_ASSERT_NOT_NULL(name);
 #ifdef SSDA_EXPECT_KERNEL
     /* Cross builds: the configure-time choice is the set that got linked. */
@@ -107,8 +107,8 @@ static void test_sad_u8_random_every_length_and_alignment(void)
             for (n = 0; n <= MAX_LEN; n++) {
                 const uint8_t *a = g_a8 + oa, *b = g_b8 + ob;
                 uint64_t want = ref_u8(a, b, n);
-                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_sad_row_u8(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_sad_row_u8(a, b, n), ssda_kernel_name());
+                TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_sad_row_u8(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u8(a, b, n), ssda__kernel_name());
             }
         }
     }
@@ -128,8 +128,8 @@ static void test_sad_u16_random_every_length_and_alignment(void)
             for (n = 0; n <= MAX_LEN; n++) {
                 const uint16_t *a = g_a16 + oa, *b = g_b16 + ob;
                 uint64_t want = ref_u16(a, b, n);
-                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_sad_row_u16(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_sad_row_u16(a, b, n), ssda_kernel_name());
+                TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_sad_row_u16(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u16(a, b, n), ssda__kernel_name());
             }
         }
     }
@@ -149,8 +149,8 @@ static void test_absdiff_i16_random_every_length_and_alignment(void)
             for (n = 0; n <= MAX_LEN; n++) {
                 const int16_t *a = g_ai16 + oa, *b = g_bi16 + ob;
                 uint64_t want = ref_i16(a, b, n);
-                TEST_ASSERT_EQUAL_UINT64(want, ssda_portable_absdiff_row_i16(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda_absdiff_row_i16(a, b, n), ssda_kernel_name());
+                TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_absdiff_row_i16(a, b, n));
+                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__absdiff_row_i16(a, b, n), ssda__kernel_name());
             }
         }
     }
@@ -171,14 +171,14 @@ static void test_lanes_of_opposite_sign(void)
         g_bi16[i] = hi ? INT16_MIN : INT16_MAX;
     }
     for (n = 0; n <= MAX_LEN; n++) {
-        TEST_ASSERT_EQUAL_UINT32(255u * n, ssda_sad_row_u8(g_a8, g_b8, n));
-        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda_sad_row_u16(g_a16, g_b16, n));
-        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda_absdiff_row_i16(g_ai16, g_bi16, n));
+        TEST_ASSERT_EQUAL_UINT32(255u * n, ssda__sad_row_u8(g_a8, g_b8, n));
+        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda__sad_row_u16(g_a16, g_b16, n));
+        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda__absdiff_row_i16(g_ai16, g_bi16, n));
         /* One lane equal, the other maximal. */
         TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_u16(g_a16, g_a16 + 1, n),
-                                 ssda_sad_row_u16(g_a16, g_a16 + 1, n));
+                                 ssda__sad_row_u16(g_a16, g_a16 + 1, n));
         TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_i16(g_ai16, g_ai16 + 1, n),
-                                 ssda_absdiff_row_i16(g_ai16, g_ai16 + 1, n));
+                                 ssda__absdiff_row_i16(g_ai16, g_ai16 + 1, n));
     }
 }
 
@@ -202,9 +202,9 @@ static void test_sad_u8_worst_case(void)
     fill_big(0xFFFFu, 0x0000u); /* bytes: 2 * 65536 of 255, then of 0 */
     for (off = 0; off < 4u; off++) {
         const uint8_t *hi = bytes + off, *lo = bytes + 2u * (N_MAX + 1u) + off;
-        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_sad_row_u8(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u8(hi, lo, N_MAX), ssda_kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u8(lo, hi, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_sad_row_u8(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u8(hi, lo, N_MAX), ssda__kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u8(lo, hi, N_MAX), ssda__kernel_name());
     }
 }
 
@@ -218,9 +218,9 @@ static void test_sad_u16_worst_case(void)
     for (off = 0; off < 2u; off++) {
         const uint16_t *hi = g_big + off, *lo = g_big + N_MAX + 1u + off;
         TEST_ASSERT_EQUAL_UINT64((uint64_t)65535u * 65535u, want);
-        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_sad_row_u16(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u16(hi, lo, N_MAX), ssda_kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_sad_row_u16(lo, hi, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_sad_row_u16(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u16(hi, lo, N_MAX), ssda__kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u16(lo, hi, N_MAX), ssda__kernel_name());
     }
 }
 
@@ -236,9 +236,9 @@ static void test_absdiff_i16_worst_case(void)
     TEST_ASSERT_EQUAL_INT16(INT16_MIN, rows[N_MAX + 1u]);
     for (off = 0; off < 2u; off++) {
         const int16_t *hi = rows + off, *lo = rows + N_MAX + 1u + off;
-        TEST_ASSERT_EQUAL_UINT32(want, ssda_portable_absdiff_row_i16(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_absdiff_row_i16(hi, lo, N_MAX), ssda_kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda_absdiff_row_i16(lo, hi, N_MAX), ssda_kernel_name());
+        TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_absdiff_row_i16(hi, lo, N_MAX));
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__absdiff_row_i16(hi, lo, N_MAX), ssda__kernel_name());
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__absdiff_row_i16(lo, hi, N_MAX), ssda__kernel_name());
     }
 }
 
@@ -254,11 +254,11 @@ static void test_long_random_rows(void)
         g_big[i] = (uint16_t)sample(&r, 65535u);
     }
     TEST_ASSERT_EQUAL_UINT64(ref_u8(bytes + 1, bytes + 70001u, N_MAX),
-                             ssda_sad_row_u8(bytes + 1, bytes + 70001u, N_MAX));
+                             ssda__sad_row_u8(bytes + 1, bytes + 70001u, N_MAX));
     TEST_ASSERT_EQUAL_UINT64(ref_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX),
-                             ssda_sad_row_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX));
+                             ssda__sad_row_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX));
     TEST_ASSERT_EQUAL_UINT64(ref_i16(rows, rows + N_MAX + 2u, N_MAX),
-                             ssda_absdiff_row_i16(rows, rows + N_MAX + 2u, N_MAX));
+                             ssda__absdiff_row_i16(rows, rows + N_MAX + 2u, N_MAX));
 }
 
 /* Products (correlation kernels): sum over rows of sum a[i] b[i], 64-bit. */
@@ -297,10 +297,10 @@ static void test_dot_random_every_length_alignment_and_rows(void)
                     const uint16_t *a16 = g_big + 3000u + oa, *b16 = g_big + 9000u + ob;
                     TEST_ASSERT_EQUAL_UINT64_MESSAGE(ref_dot(a8, 233, b8, 301, n, rows, 0),
                                                      ssda__dot_u8(a8, 233, b8, 301, n, rows),
-                                                     ssda_kernel_name());
+                                                     ssda__kernel_name());
                     TEST_ASSERT_EQUAL_UINT64_MESSAGE(ref_dot(a16, 466, b16, 602, n, rows, 1),
                                                      ssda__dot_u16(a16, 466, b16, 602, n, rows),
-                                                     ssda_kernel_name());
+                                                     ssda__kernel_name());
                 }
             }
         }

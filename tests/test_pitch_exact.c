@@ -77,7 +77,7 @@ static uint32_t reference_frames(const ssda_pitch_config_t *cfg, const int16_t *
     ssda_pitch_info_t info;
     test_pitch_ref_cfg_t rc;
     uint32_t count, f;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
     rc = ref_cfg_of(&info);
     count = (n - info.span) / info.hop + 1u;
     TEST_ASSERT_TRUE(count <= EST_MAX);
@@ -97,7 +97,7 @@ static uint32_t compare_stream(const ssda_pitch_config_t *cfg, const int16_t *x,
 {
     ssda_pitch_info_t info;
     uint32_t count, f, voiced = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
     count = run_stream(cfg, x, n, g_est);
     TEST_ASSERT_EQUAL_UINT32(nref, count);
     for (f = 0; f < count; f++) {
@@ -333,11 +333,11 @@ static void check_every_prediction(const ssda_pitch_config_t *cfg, const int16_t
     test_pitch_ref_t r;
     ssda_pitch_estimate_t e;
     uint32_t pred;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
     rc = ref_cfg_of(&info);
     test_pitch_reference(x, &rc, &r);
     for (pred = 0u; pred <= info.lag_max + 2u; pred++) {
-        ssda_pitch_analyze(&info, x, pred, &e);
+        ssda__pitch_analyze(&info, x, pred, &e);
         assert_same(&r, &e);
     }
 }
@@ -400,7 +400,7 @@ static void test_ties_go_to_the_smaller_lag(void)
     cfg.voicing_q15 = 1u;
     test_signal_square(g_sig, 400u, 25u, 0u, 5000, -5000);
     g_sig[200] = (int16_t)(g_sig[200] + 700);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(&cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
     rc = ref_cfg_of(&info);
     test_pitch_reference(g_sig, &rc, &r);
     TEST_ASSERT_EQUAL_UINT32(25u, r.lag); /* the reference itself */
@@ -411,11 +411,11 @@ static void test_ties_go_to_the_smaller_lag(void)
         info.chunk = chunk;
         for (pred = 0u; pred <= info.lag_max; pred += 5u) {
             info.flags = SSDA_PITCH_TRACK;
-            ssda_pitch_analyze(&info, g_sig, pred, &e);
+            ssda__pitch_analyze(&info, g_sig, pred, &e);
             assert_same(&r, &e);
         }
         info.flags = 0u;
-        ssda_pitch_analyze(&info, g_sig, 0u, &e);
+        ssda__pitch_analyze(&info, g_sig, 0u, &e);
         assert_same(&r, &e);
     }
 }
@@ -483,12 +483,12 @@ static void test_dip_beyond_lag_max_is_not_a_dip(void)
     cfg.f0_max_hz = 400u;
     test_voice_sine(&v, 8000.0 / 81.5, 10000.0);
     test_signal_voice(g_sig, 400u, 0u, 8000u, &v);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(&cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
     rc = ref_cfg_of(&info);
     test_pitch_reference(g_sig, &rc, &r);
     TEST_ASSERT_FALSE(r.dip);
     TEST_ASSERT_EQUAL_UINT32(80u, r.lag);
-    ssda_pitch_analyze(&info, g_sig, 0u, &e);
+    ssda__pitch_analyze(&info, g_sig, 0u, &e);
     assert_same(&r, &e);
 }
 

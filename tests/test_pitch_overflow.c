@@ -28,18 +28,18 @@ static void test_amdf_term_at_its_worst_case(void)
     uint32_t diffs = 0, d, bound;
     bool complete;
     test_signal_square(g_x, KMAX + 2u, 2u, 0u, 32767, -32768);
-    d = ssda_pitch_amdf_lag(g_x, KMAX, 1u, 32u, UINT32_MAX, &complete, &diffs);
+    d = ssda__pitch_amdf_lag(g_x, KMAX, 1u, 32u, UINT32_MAX, &complete, &diffs);
     TEST_ASSERT_TRUE(complete);
     TEST_ASSERT_EQUAL_UINT32(KMAX * 65535u, d);
     TEST_ASSERT_EQUAL_UINT32(KMAX, diffs);
     /* bound exactly at the sum: not cut; one below: cut, and the partial sum
        exceeds the bound by at most one chunk (the seed's overflow argument) */
     diffs = 0;
-    d = ssda_pitch_amdf_lag(g_x, KMAX, 1u, KMAX, KMAX * 65535u, &complete, &diffs);
+    d = ssda__pitch_amdf_lag(g_x, KMAX, 1u, KMAX, KMAX * 65535u, &complete, &diffs);
     TEST_ASSERT_TRUE(complete);
     for (bound = 0u; bound < KMAX * 65535u; bound += 65535u * 1000u + 7u) {
         diffs = 0;
-        d = ssda_pitch_amdf_lag(g_x, KMAX, 1u, 100u, bound, &complete, &diffs);
+        d = ssda__pitch_amdf_lag(g_x, KMAX, 1u, 100u, bound, &complete, &diffs);
         TEST_ASSERT_FALSE(complete);
         TEST_ASSERT_TRUE(d > bound);
         TEST_ASSERT_TRUE(d <= bound + 100u * 65535u);
@@ -47,7 +47,7 @@ static void test_amdf_term_at_its_worst_case(void)
     }
     /* lag 2 of the same wave: all differences zero */
     diffs = 0;
-    TEST_ASSERT_EQUAL_UINT32(0u, ssda_pitch_amdf_lag(g_x, KMAX, 2u, 32u, 0u, &complete, &diffs));
+    TEST_ASSERT_EQUAL_UINT32(0u, ssda__pitch_amdf_lag(g_x, KMAX, 2u, 32u, 0u, &complete, &diffs));
     TEST_ASSERT_TRUE(complete);
 }
 
@@ -58,26 +58,26 @@ static void test_mean_and_level_at_full_scale(void)
     for (i = 0; i < KMAX; i++) {
         g_x[i] = -32768;
     }
-    TEST_ASSERT_EQUAL_INT32(-32768, ssda_pitch_mean(g_x, KMAX));
-    TEST_ASSERT_EQUAL_UINT32(0u, ssda_pitch_level(g_x, KMAX, -32768));
+    TEST_ASSERT_EQUAL_INT32(-32768, ssda__pitch_mean(g_x, KMAX));
+    TEST_ASSERT_EQUAL_UINT32(0u, ssda__pitch_level(g_x, KMAX, -32768));
     /* the largest level: every sample 65535 away from the given mean */
-    TEST_ASSERT_EQUAL_UINT32(KMAX * 65535u, ssda_pitch_level(g_x, KMAX, 32767));
+    TEST_ASSERT_EQUAL_UINT32(KMAX * 65535u, ssda__pitch_level(g_x, KMAX, 32767));
     for (i = 0; i < KMAX; i++) {
         g_x[i] = 32767;
     }
-    TEST_ASSERT_EQUAL_INT32(32767, ssda_pitch_mean(g_x, KMAX));
+    TEST_ASSERT_EQUAL_INT32(32767, ssda__pitch_mean(g_x, KMAX));
     /* half and half: the mean floor((sum + K/2) / K) of -32768, 32767 is 0 */
     test_signal_square(g_x, KMAX, 2u, 0u, 32767, -32768);
-    TEST_ASSERT_EQUAL_INT32(0, ssda_pitch_mean(g_x, KMAX));
+    TEST_ASSERT_EQUAL_INT32(0, ssda__pitch_mean(g_x, KMAX));
     TEST_ASSERT_EQUAL_UINT32(KMAX / 2u * 32767u + KMAX / 2u * 32768u,
-                             ssda_pitch_level(g_x, KMAX, 0));
+                             ssda__pitch_level(g_x, KMAX, 0));
     /* one odd sample: mean -32768 + round(65535 / K) */
     for (i = 0; i < KMAX; i++) {
         g_x[i] = -32768;
     }
     g_x[17] = 32767;
     TEST_ASSERT_EQUAL_INT32(-32768 + (65535 + (int32_t)KMAX / 2) / (int32_t)KMAX,
-                            ssda_pitch_mean(g_x, KMAX));
+                            ssda__pitch_mean(g_x, KMAX));
 }
 
 /* Analyse one full-scale frame and compare with the int64 reference. */
@@ -88,7 +88,7 @@ static void check_frame(const ssda_pitch_config_t *cfg, const int16_t *x, uint32
     test_pitch_ref_t r;
     ssda_pitch_estimate_t e;
     uint32_t pred;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
     rc.rate = info.sample_rate_hz;
     rc.lag_min = info.lag_min;
     rc.lag_max = info.lag_max;
@@ -100,7 +100,7 @@ static void check_frame(const ssda_pitch_config_t *cfg, const int16_t *x, uint32
     test_pitch_reference(x, &rc, &r);
     TEST_ASSERT_EQUAL_UINT32(expect_lag, r.lag);
     for (pred = 0u; pred <= info.lag_max; pred += info.lag_max / 3u) {
-        ssda_pitch_analyze(&info, x, pred, &e);
+        ssda__pitch_analyze(&info, x, pred, &e);
         TEST_ASSERT_EQUAL_UINT32(r.lag, e.lag);
         TEST_ASSERT_EQUAL_UINT32(r.period_q16, e.period_q16);
         TEST_ASSERT_EQUAL_UINT32(r.f0_q16, e.f0_q16);
@@ -152,7 +152,7 @@ static void test_largest_geometry_counts_work_exactly(void)
     cfg.f0_max_hz = 12000u;
     cfg.frame_len = (uint16_t)KMAX;
     cfg.flags = SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(&cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
     TEST_ASSERT_EQUAL_UINT32(SPAN_MAX, info.span);
     /* white-ish full-scale noise: no dip, so no octave check either */
     {
@@ -162,14 +162,14 @@ static void test_largest_geometry_counts_work_exactly(void)
             g_x[i] = (int16_t)((s >> 16) & 1u ? 32767 : -32768);
         }
     }
-    ssda_pitch_analyze(&info, g_x, 0u, &e);
+    ssda__pitch_analyze(&info, g_x, 0u, &e);
     TEST_ASSERT_FALSE(e.dip);
     TEST_ASSERT_EQUAL_UINT32((4800u - 4u + 3u) * KMAX, e.diffs);
     /* the same frame with early exit: identical result, less work */
     {
         ssda_pitch_estimate_t e2;
         info.flags = SSDA_PITCH_NO_FILTER;
-        ssda_pitch_analyze(&info, g_x, 0u, &e2);
+        ssda__pitch_analyze(&info, g_x, 0u, &e2);
         TEST_ASSERT_EQUAL_UINT32(e.lag, e2.lag);
         TEST_ASSERT_EQUAL_UINT32(e.period_q16, e2.period_q16);
         TEST_ASSERT_TRUE(e2.diffs < e.diffs);
@@ -183,44 +183,44 @@ static void test_input_filter_between_the_rails(void)
        +-2^30 (a convex combination), the output inside int16, and it
        settles at the rails. */
     int32_t y1, y2;
-    uint32_t a = ssda_pitch_lowpass_coef_q15(12000u, 48000u), i;
+    uint32_t a = ssda__pitch_lowpass_coef_q15(12000u, 48000u), i;
     int16_t out = 0;
     TEST_ASSERT_TRUE(a > 0u && a < 32768u);
-    ssda_pitch_lowpass_prime(&y1, &y2, -32768);
+    ssda__pitch_lowpass_prime(&y1, &y2, -32768);
     for (i = 0; i < 20000u; i++) {
         int16_t in = (int16_t)((i / 5000u) % 2u ? 32767 : ((i & 1u) ? 32767 : -32768));
-        out = ssda_pitch_lowpass(&y1, &y2, a, in);
+        out = ssda__pitch_lowpass(&y1, &y2, a, in);
         TEST_ASSERT_TRUE(y1 >= -1073741824 && y1 <= 32767 * 32768);
         TEST_ASSERT_TRUE(y2 >= -1073741824 && y2 <= 32767 * 32768);
     }
     TEST_ASSERT_EQUAL_INT16(32767, out); /* last 5000 samples at +32767 */
     for (i = 0; i < 5000u; i++) {
-        out = ssda_pitch_lowpass(&y1, &y2, a, -32768);
+        out = ssda__pitch_lowpass(&y1, &y2, a, -32768);
     }
     TEST_ASSERT_EQUAL_INT16(-32768, out);
     /* a constant passes unchanged from the first sample (primed states) */
-    ssda_pitch_lowpass_prime(&y1, &y2, 12345);
-    TEST_ASSERT_EQUAL_INT16(12345, ssda_pitch_lowpass(&y1, &y2, a, 12345));
+    ssda__pitch_lowpass_prime(&y1, &y2, 12345);
+    TEST_ASSERT_EQUAL_INT16(12345, ssda__pitch_lowpass(&y1, &y2, a, 12345));
 }
 
 static void test_interpolation_and_f0_at_their_extremes(void)
 {
     /* n values at the ends of Q20: numerator 65536 * 2^20 = 2^36 */
-    TEST_ASSERT_EQUAL_INT32(32768, ssda_pitch_interp_q16(1u << 20, 0u, 0u, false));
-    TEST_ASSERT_EQUAL_INT32(-32768, ssda_pitch_interp_q16(0u, 0u, 1u << 20, false));
-    TEST_ASSERT_EQUAL_INT32(32768, ssda_pitch_interp_q16(1u << 20, 0u, 0u, true));
-    TEST_ASSERT_EQUAL_INT32(0, ssda_pitch_interp_q16(1u << 20, 1u << 20, 1u << 20, false));
+    TEST_ASSERT_EQUAL_INT32(32768, ssda__pitch_interp_q16(1u << 20, 0u, 0u, false));
+    TEST_ASSERT_EQUAL_INT32(-32768, ssda__pitch_interp_q16(0u, 0u, 1u << 20, false));
+    TEST_ASSERT_EQUAL_INT32(32768, ssda__pitch_interp_q16(1u << 20, 0u, 0u, true));
+    TEST_ASSERT_EQUAL_INT32(0, ssda__pitch_interp_q16(1u << 20, 1u << 20, 1u << 20, false));
     /* halfway rounding away from zero: 65536 * 1 / 4 -> 16384, and
        65536 * 1 / 3 = 21845.33 -> 21845 */
-    TEST_ASSERT_EQUAL_INT32(16384, ssda_pitch_interp_q16(3u, 1u, 2u, false)); /* (3-2)/(2*2) */
-    TEST_ASSERT_EQUAL_INT32(-16384, ssda_pitch_interp_q16(2u, 1u, 3u, false));
+    TEST_ASSERT_EQUAL_INT32(16384, ssda__pitch_interp_q16(3u, 1u, 2u, false)); /* (3-2)/(2*2) */
+    TEST_ASSERT_EQUAL_INT32(-16384, ssda__pitch_interp_q16(2u, 1u, 3u, false));
     /* f0 from the shortest period (lag 4 - 1/2 at 48 kHz) and the longest
        (lag 4800 + 1/2 at 48 kHz): rate << 32 < 2^48 */
     TEST_ASSERT_EQUAL_UINT32((uint32_t)((48000ull * 65536u * 2u + 3u) / 7u),
-                             ssda_pitch_f0_q16(48000u, 7u * 32768u));
+                             ssda__pitch_f0_q16(48000u, 7u * 32768u));
     TEST_ASSERT_EQUAL_UINT32((uint32_t)(((48000ull << 32) + 9601u * 32768u / 2u) / (9601u * 32768u)),
-                             ssda_pitch_f0_q16(48000u, 9601u * 32768u));
-    TEST_ASSERT_EQUAL_UINT32(1u << 20, ssda_pitch_norm_q20(8192u * 65535u, 8192u * 65535u));
+                             ssda__pitch_f0_q16(48000u, 9601u * 32768u));
+    TEST_ASSERT_EQUAL_UINT32(1u << 20, ssda__pitch_norm_q20(8192u * 65535u, 8192u * 65535u));
 }
 
 static void test_full_scale_stream_end_to_end(void)

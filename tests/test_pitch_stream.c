@@ -117,12 +117,12 @@ static void check_positions(uint32_t hop, uint32_t len)
     cfg.f0_min_hz = 100u;
     cfg.hop = (uint16_t)hop;
     cfg.flags = SSDA_PITCH_NO_FILTER;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_resolve(&cfg, &info));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
     n = push_pattern(&cfg, g_sig, len, pieces, 1u, g_got);
     TEST_ASSERT_EQUAL_UINT32((len - info.span) / hop + 1u, n);
     for (f = 0; f < n; f++) {
         ssda_pitch_estimate_t e;
-        ssda_pitch_analyze(&info, g_sig + f * hop, 0u, &e);
+        ssda__pitch_analyze(&info, g_sig + f * hop, 0u, &e);
         TEST_ASSERT_EQUAL_UINT32(f, g_got[f].frame);
         TEST_ASSERT_EQUAL_UINT32(e.period_q16, g_got[f].period_q16);
         TEST_ASSERT_EQUAL(e.voiced, g_got[f].voiced);

@@ -273,7 +273,7 @@ static void test_reads_each_byte_once_when_the_arena_allows(void)
     make_source(&ws, false, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 10u, 2u, 1u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &k_win, &c, &res));
     TEST_ASSERT_EQUAL_UINT64(area_bytes, as.stats.bytes_read);
-    TEST_ASSERT_EQUAL_UINT(12, as.ph);
+    TEST_ASSERT_EQUAL_UINT(12, as.plate.ph);
     /* a repeated search over the same rectangles reads nothing new */
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &k_win, &c, &res));
     TEST_ASSERT_EQUAL_UINT64(win_bytes, ws.stats.bytes_read);

@@ -10,6 +10,7 @@
 #include "unity.h"
 #include "ssda/stream.h"
 #include "test_image.h"
+#include "test_push.h"
 #include "test_source.h"
 
 void setUp(void) {}
@@ -122,7 +123,7 @@ static void test_search_runs_at_the_areas_last_row(void)
                 memset(&poison, 0x33, sizeof poison);
                 got = poison;
                 TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&ar, &wr, &c, &want));
-                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(
                                                    &p, IW, IH, SSDA_PIX_U16, &k_area, &ws, &k_win, &c, &got,
                                                    g_ring, SSDA_PUSH_SIZE(40u, ring_rows, 2u)));
                 for (y = 0; y < IH; y++) {
@@ -162,7 +163,7 @@ static void test_search_8_bit_whole_image(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&w, win8, 10, 12, 10, SSDA_PIX_U8));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&ws, &w));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&a, &w, NULL, &want));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, SSDA_PIX_U8, NULL, &ws, NULL,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, SSDA_PIX_U8, NULL, &ws, NULL,
                                                         NULL, &got, g_ring, SSDA_PUSH_SIZE(IW, IH, 1u)));
     for (y = 0; y + 1u < IH; y++) {
         TEST_ASSERT_EQUAL_INT(0, ssda_push_row(&p, g_first8[y]));
@@ -223,7 +224,7 @@ static void push_track(uint8_t role, const ssda_track_config_t *c, ssda_source_t
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&f, &s, c, g_want, MAX_WIN, &want));
     memset(g_got, 0, sizeof g_got);
     memset(&got, 0x44, sizeof got);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, SSDA_PIX_U16, role, other, c,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, SSDA_PIX_U16, role, other, c,
                                                         g_got, MAX_WIN, &got, g_ring, ring_size));
     for (y = 0; y < IH; y++) {
         /* grid rows whose band ends on this row; rows whose areas leave
@@ -331,7 +332,7 @@ static void test_failure_at_every_read_stops_the_job(void)
         make_other(&other, &f, true, arena);
         g_tdev.fail_at_read = (int64_t)k;
         g_tdev.fail_code = -5000 - (int)k;
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_SECOND,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, SSDA_PIX_U16, SSDA_PUSH_SECOND,
                                                             &other, &c, g_got, MAX_WIN, &st, g_ring,
                                                             SSDA_PUSH_SIZE(IW, 16u, 2u)));
         for (y = 0; y < IH; y++) {
@@ -356,7 +357,7 @@ static void test_failure_at_every_read_stops_the_job(void)
         make_other(&other, &s, true, arena);
         g_tdev.fail_at_read = 0;
         g_tdev.fail_code = -4242;
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, SSDA_PIX_U16, &k_area, &other,
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, SSDA_PIX_U16, &k_area, &other,
                                                             &k_win, NULL, &got, g_ring,
                                                             SSDA_PUSH_SIZE(40u, 30u, 2u)));
         for (y = 0; y + 1u < (uint32_t)k_area.y + k_area.height; y++) {
@@ -382,39 +383,42 @@ static void test_bad_arguments(void)
     before = p;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&other, &s));
     /* search */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_match(NULL, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_match(&p, IW, IH, 2, &k_area, NULL, &k_win, NULL, &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, NULL, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_push_init_match(&p, IW, IH, 2, &k_area, &zero, &k_win, NULL, &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_push_init_match(&p, IW, IH, 1, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_push_init_match(&p, IW, IH, 3, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, 0, IH, 2, NULL, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_match(NULL, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_match(&p, IW, IH, 2, &k_area, NULL, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, NULL, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, test_push_init_match(&p, IW, IH, 2, &k_area, &zero, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, test_push_init_match(&p, IW, IH, 1, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, test_push_init_match(&p, IW, IH, 3, &k_area, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, 0, IH, 2, NULL, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
     r = k_area;
     r.y = (uint16_t)(IH - 29u);
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 2, &r, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 2, &r, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
     r = k_area;
     r.height = 8; /* shorter than the window */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_match(&p, IW, IH, 2, &r, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 2, &r, &other, &k_win, NULL, &res, g_ring, sizeof g_ring));
     {
         ssda_match_config_t bad;
         memset(&bad, 0, sizeof bad);
         bad.scan = 7;
-        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, &bad, &res, g_ring, sizeof g_ring));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, &bad, &res, g_ring, sizeof g_ring));
     }
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, g_ring,
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res, g_ring,
                                                                 SSDA_PUSH_SIZE(40u, 30u, 2u) - 1u));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
                                                                 (uint8_t *)g_ring + 2, sizeof g_ring - 4u));
     /* tracking */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_track(&p, IW, IH, 2, 0, &other, &c, NULL, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_track(&p, IW, IH, 2, 2, &other, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_push_init_track(&p, IW, IH, 2, 0, &zero, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, 5, NULL, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, MAX_WIN, NULL, g_ring,
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, test_push_init_track(&p, IW, IH, 2, 0, &other, &c, NULL, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, test_push_init_track(&p, IW, IH, 2, 2, &other, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, test_push_init_track(&p, IW, IH, 2, 0, &zero, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, 5, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, MAX_WIN, NULL, g_ring,
                                                                 SSDA_PUSH_SIZE(80u, 31u, 2u)));
     c.search_w = 8; /* smaller than the window */
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_track(&p, IW, IH, 2, 0, &other, &c, g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
+    /* no ssda_push_config_t */
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_match(&p, NULL, NULL, &res));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_init_track(&p, NULL, NULL, g_got, MAX_WIN, NULL));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_push_row(NULL, g_first[0]));
     memset(&p, 0, sizeof p);
@@ -441,14 +445,14 @@ static void test_ring_overlapping_the_other_arena(void)
     memset(&tc, 0, sizeof tc);
     memset(&p, 0x66, sizeof p);
     before = p;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL,
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL,
                                                              &res, g_ring, sizeof g_ring));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc,
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, test_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc,
                                                              g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
                                                         g_ring, sizeof g_ring - 2048u));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc, g_got,
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc, g_got,
                                                         MAX_WIN, NULL, g_ring, sizeof g_ring - 2048u));
 }
 

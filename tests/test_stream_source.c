@@ -251,30 +251,32 @@ static void test_plate_slides_keep_rows(void)
     ssda_source_config_t c;
     ssda_source_t s;
     ssda_rect_t all = {0, 0, IW, IH};
+    ssda_source_plan_t plan;
     const uint8_t *px;
     uint32_t y;
     make_images(6u);
     c = setup(&g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 8u, 2u, 1u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_plan(&s, &all, IW, 8u, 3u, 0u));
-    TEST_ASSERT_EQUAL_UINT(8, s.ph);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_plate_fetch(&s, 0, 0, IW, &px)); /* rows 0..7 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_plate_plan(&s, &all, IW, 8u, 3u, 0u, &plan));
+    ssda__stream_plate_use(&s, &plan);
+    TEST_ASSERT_EQUAL_UINT(8, s.plate.ph);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_plate_fetch(&s, 0, 0, IW, &px)); /* rows 0..7 */
     TEST_ASSERT_EQUAL_UINT64(8u * row_bytes, s.stats.bytes_read);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, 8, IW, &px)); /* rows 3..10 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_fetch(&s, 0, 8, IW, &px)); /* rows 3..10 */
     assert_span(SSDA_PIX_U16, px, 0, 8, IW);
     TEST_ASSERT_EQUAL_UINT(3, s.py0);
     TEST_ASSERT_EQUAL_UINT64(11u * row_bytes, s.stats.bytes_read);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 3, 2, 20, &px)); /* up: rows 0..7 */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_fetch(&s, 3, 2, 20, &px)); /* up: rows 0..7 */
     assert_span(SSDA_PIX_U16, px, 3, 2, 20);
     TEST_ASSERT_EQUAL_UINT(0, s.py0);
     TEST_ASSERT_EQUAL_UINT64(14u * row_bytes, s.stats.bytes_read);
     for (y = 0; y < 8; y++) { /* every kept row is intact */
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, y, IW, &px));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_fetch(&s, 0, y, IW, &px));
         assert_span(SSDA_PIX_U16, px, 0, y, IW);
     }
     TEST_ASSERT_EQUAL_UINT64(3, s.stats.misses);
     /* the bottom of the region clamps the start: row 44 -> rows 37..44 */
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, stream_fetch(&s, 0, 44, IW, &px));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__stream_fetch(&s, 0, 44, IW, &px));
     TEST_ASSERT_EQUAL_UINT(IH - 8u, s.py0);
     assert_span(SSDA_PIX_U16, px, 0, 44, IW);
     check_counts(&s);
@@ -532,8 +534,8 @@ static void test_size_macros_are_sufficient(void)
                     continue;
                 }
                 TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&s, &c));
-                TEST_ASSERT_TRUE(stream_plate_fit_h(&s, w, 0u) >= h);
-                TEST_ASSERT_TRUE(stream_plate_fit_w(&s, h, 0u) >= w);
+                TEST_ASSERT_TRUE(ssda__stream_plate_fit_h(&s, w, 0u) >= h);
+                TEST_ASSERT_TRUE(ssda__stream_plate_fit_w(&s, h, 0u) >= w);
             }
         }
     }

@@ -8,6 +8,7 @@
 #include "unity.h"
 #include "ssda/stream.h"
 #include "test_image.h"
+#include "test_push.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -664,7 +665,7 @@ static void test_grid_beyond_the_address_space_is_refused(void)
         TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
                               ssda_stream_track(&src, &src, &c, out, g.count, &st));
         TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
-                              ssda_push_init_track(&p, 16384u, 32768u, SSDA_PIX_U8,
+                              test_push_init_track(&p, 16384u, 32768u, SSDA_PIX_U8,
                                                    SSDA_PUSH_FIRST, &src, &c, out, g.count,
                                                    &st, ring, sizeof ring));
         TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);

@@ -64,7 +64,7 @@ static int fake_fetch(void *ctx, uint32_t x, uint32_t y, uint32_t n, const uint8
     return SSDA_OK;
 }
 
-static void fake_init(fake_src_t *s, ssda_rows_t *rows, const uint16_t *pixels, uint8_t format)
+static void fake_init(fake_src_t *s, ssda__rows_t *rows, const uint16_t *pixels, uint8_t format)
 {
     memset(s, 0, sizeof *s);
     s->pixels = pixels;
@@ -169,7 +169,7 @@ static void test_streamed_equals_ram(void)
             ssda_track_stats_t st_ram, st;
             ssda_track_grid_t g;
             ssda_view_t a, b;
-            ssda_rows_t ra, rb;
+            ssda__rows_t ra, rb;
             fake_src_t fa, fb;
             config_case(&cfg, c);
             if (fmt) {
@@ -188,7 +188,7 @@ static void test_streamed_equals_ram(void)
             fake_init(&fa, &ra, g_first, format);
             fake_init(&fb, &rb, g_second, format);
             memset(g_out, 0, sizeof g_out);
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_rows(&ra, &rb, &cfg, g_out, NMAX, &st));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_rows(&ra, &rb, &cfg, g_out, NMAX, &st));
             assert_same(g_ram, g_out, g.count);
             assert_same_stats(&st_ram, &st);
             TEST_ASSERT_EQUAL_UINT32(0, fa.outside + fb.outside);
@@ -205,14 +205,14 @@ static void test_fetch_errors_pass_through(void)
 {
     ssda_track_config_t cfg;
     ssda_track_stats_t st, st0;
-    ssda_rows_t ra, rb;
+    ssda__rows_t ra, rb;
     fake_src_t fa, fb;
     uint32_t side, n, total[2];
     make_pair();
     config_case(&cfg, 3);
     fake_init(&fa, &ra, g_first, SSDA_PIX_U16);
     fake_init(&fb, &rb, g_second, SSDA_PIX_U16);
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_rows(&ra, &rb, &cfg, g_ram, NMAX, NULL));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_rows(&ra, &rb, &cfg, g_ram, NMAX, NULL));
     total[0] = fa.fetches;
     total[1] = fb.fetches;
     for (side = 0; side < 2u; side++) {
@@ -227,7 +227,7 @@ static void test_fetch_errors_pass_through(void)
             memset(g_out, 0xA5, sizeof g_out);
             memset(&st, 0x5A, sizeof st);
             memcpy(&st0, &st, sizeof st);
-            TEST_ASSERT_EQUAL_INT(-1234, ssda_track_rows(&ra, &rb, &cfg, g_out, NMAX, &st));
+            TEST_ASSERT_EQUAL_INT(-1234, ssda__track_rows(&ra, &rb, &cfg, g_out, NMAX, &st));
             TEST_ASSERT_EQUAL_MEMORY(&st0, &st, sizeof st);
             for (k = 0; k < NMAX; k++) {
                 uint8_t probe[sizeof(ssda_track_vector_t)];
@@ -256,7 +256,7 @@ static void test_strips_equal_whole_grid(void)
             ssda_track_stats_t st_ram, acc;
             ssda_track_plan_t plan;
             ssda_view_t a, b;
-            ssda_rows_t ra, rb;
+            ssda__rows_t ra, rb;
             fake_src_t fa, fb;
             uint32_t col0;
             config_case(&cfg, c);
@@ -265,12 +265,12 @@ static void test_strips_equal_whole_grid(void)
             TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_ram, NMAX, &st_ram));
             fake_init(&fa, &ra, g_first, SSDA_PIX_U16);
             fake_init(&fb, &rb, g_second, SSDA_PIX_U16);
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_plan(&cfg, SSDA_PIX_U16, IMG, IMG, &plan));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_plan(&cfg, SSDA_PIX_U16, IMG, IMG, IMG, IMG, &plan));
             memset(&acc, 0, sizeof acc);
             memset(g_out, 0xA5, sizeof g_out);
             for (col0 = 0; col0 < plan.grid.cols; col0 += width) {
                 uint32_t col1 = col0 + width < plan.grid.cols ? col0 + width : plan.grid.cols;
-                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_strip(&ra, &rb, &plan, col0, col1, g_out, &acc));
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_strip(&ra, &rb, &plan, col0, col1, g_out, &acc));
             }
             assert_same(g_ram, g_out, plan.grid.count);
             TEST_ASSERT_EQUAL_UINT32(st_ram.windows, acc.windows);
@@ -292,7 +292,7 @@ static void test_row_source_argument_errors(void)
 {
     ssda_track_config_t cfg;
     ssda_track_stats_t st, st0;
-    ssda_rows_t ra, rb, bad;
+    ssda__rows_t ra, rb, bad;
     fake_src_t fa, fb;
     memset(&cfg, 0, sizeof cfg);
     fake_init(&fa, &ra, g_first, SSDA_PIX_U16);
@@ -301,34 +301,34 @@ static void test_row_source_argument_errors(void)
     memcpy(g_ram, g_out, sizeof g_out);
     memset(&st, 0x5A, sizeof st);
     memcpy(&st0, &st, sizeof st);
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_track_rows(NULL, &rb, &cfg, g_out, NMAX, &st));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_track_rows(&ra, NULL, &cfg, g_out, NMAX, &st));
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_track_rows(&ra, &rb, &cfg, NULL, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__track_rows(NULL, &rb, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__track_rows(&ra, NULL, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__track_rows(&ra, &rb, &cfg, NULL, NMAX, &st));
     bad = ra; bad.fetch = NULL;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda__track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad = rb; bad.format = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda__track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = rb; bad.format = SSDA_PIX_U8;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda__track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = rb; bad.height = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda__track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = rb; bad.width = 0;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda__track_rows(&ra, &bad, &cfg, g_out, NMAX, &st));
     bad = ra; bad.base = (const uint8_t *)g_first; bad.stride = IMG * 2u - 2u;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda__track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad.stride = IMG * 2u + 1u;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda__track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad.stride = IMG * 2u;
     bad.base = (const uint8_t *)g_first + 1;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda_track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STRIDE, ssda__track_rows(&bad, &rb, &cfg, g_out, NMAX, &st));
     bad.base = (const uint8_t *)g_first;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_track_rows(&ra, &rb, &cfg, g_out, 35, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda__track_rows(&ra, &rb, &cfg, g_out, 35, &st));
     TEST_ASSERT_EQUAL_MEMORY(g_ram, g_out, sizeof g_out);
     TEST_ASSERT_EQUAL_MEMORY(&st0, &st, sizeof st);
     TEST_ASSERT_EQUAL_UINT32(0, fa.fetches + fb.fetches);
     /* a RAM source next to a streamed one is fine */
     bad.stride = IMG * 2u;
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_rows(&bad, &rb, NULL, g_out, 36, &st));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_rows(&bad, &rb, NULL, g_out, 36, &st));
     TEST_ASSERT_EQUAL_UINT32(36, st.windows);
 }
 

@@ -2,10 +2,20 @@
  * config.h - compile-time feature switches (littlefs's LFS_NO_*, nanopb's
  * PB_* style). By default every feature is in and nothing here changes
  * the library. A firmware that needs less defines some of the switches
- * below when it compiles the library (with CMake:
- * -DSSDA_CONFIG="SSDA_CFG_NO_RAMP;SSDA_CFG_NO_COARSE", which also passes
- * them to everything that links ssda), and the code of the features left
- * out is not compiled at all.
+ * below when it compiles the library, and the code of the features left
+ * out is not compiled at all. Three ways, from the simplest:
+ *
+ *   1. CMake: -DSSDA_CONFIG="SSDA_CFG_NO_RAMP;SSDA_CFG_NO_COARSE" (also
+ *      passed to everything that links ssda);
+ *   2. your own settings file, kept out of the library's tree (nanopb's and
+ *      littlefs's way): compile the library with
+ *      -DSSDA_CONFIG_FILE=my_ssda_config.h (the name without quotes, found
+ *      on the include path; with CMake, -DSSDA_CONFIG_FILE=/path/to/
+ *      my_ssda_config.h adds its directory too), where my_ssda_config.h
+ *      holds e.g. `#define SSDA_CFG_NO_RAMP`. It is included first, here;
+ *   3. -DSSDA_CFG_NO_RAMP ... on the compiler's command line.
+ * Everything that includes the library's headers must see the same
+ * switches (CMake passes them on with ssda::ssda).
  *
  * Asking a reduced build at run time for a feature it left out returns
  * SSDA_ERR_UNSUPPORTED (no output written), never a different answer: what
@@ -20,39 +30,70 @@
  *   stream: SSDA_CFG_NO_TILED, SSDA_CFG_NO_READ_SIZE and SSDA_CFG_NO_U16
  *           (raster 8-bit sources read at byte granularity, the plate cache,
  *           the streamed search)
+ *
+ * Every switch is listed below, commented out, with its meaning: copy the
+ * ones you want into your settings file.
  */
 #ifndef SSDA_CONFIG_H
 #define SSDA_CONFIG_H
 
+/* The user's settings file, if any: SSDA_CONFIG_FILE names it (a bare file
+   name or relative path, no quotes; it is made a string here, so it must
+   not contain a predefined macro name such as `unix` or `linux`). */
+#ifdef SSDA_CONFIG_FILE
+#define SSDA_CONFIG_STR2_(x) #x
+#define SSDA_CONFIG_STR_(x) SSDA_CONFIG_STR2_(x)
+#include SSDA_CONFIG_STR_(SSDA_CONFIG_FILE)
+#endif
+
 /* ---- search (match.h, and everything built on it: track.h, stream.h) ---- */
 
-/* SSDA_CFG_NO_RAMP: no increasing thresholds, SSDA_THRESHOLD_RAMP and
-   SSDA_THRESHOLD_AUTO_RAMP (drops the integer square root and the wide
-   multiply). */
-/* SSDA_CFG_NO_FIXED: no constant threshold SSDA_THRESHOLD_FIXED. With
-   SSDA_CFG_NO_RAMP also the all-cut fallback goes. */
-/* SSDA_CFG_NO_BOUNDS: no successive-elimination bounds (SSDA_MATCH_BOUNDS). */
-/* SSDA_CFG_NO_COARSE: no coarse-to-fine scan (SSDA_SCAN_COARSE). */
-/* SSDA_CFG_NO_PREDICT: no predicted scan (SSDA_SCAN_PREDICT); tracking then
-   needs SSDA_TRACK_PREDICT_NONE. */
-/* SSDA_CFG_NO_SPREAD: no spread row order (SSDA_ORDER_SPREAD). */
-/* SSDA_CFG_NO_U16: no 16-bit images in the search and the stream sources
-   (views of SSDA_PIX_U16 are still valid views). */
+/* No increasing thresholds, SSDA_THRESHOLD_RAMP and SSDA_THRESHOLD_AUTO_RAMP
+   (drops the integer square root and the wide multiply). */
+/* #define SSDA_CFG_NO_RAMP */
+
+/* No constant threshold SSDA_THRESHOLD_FIXED. With SSDA_CFG_NO_RAMP also the
+   all-cut fallback goes. */
+/* #define SSDA_CFG_NO_FIXED */
+
+/* No successive-elimination bounds (SSDA_MATCH_BOUNDS). */
+/* #define SSDA_CFG_NO_BOUNDS */
+
+/* No coarse-to-fine scan (SSDA_SCAN_COARSE). */
+/* #define SSDA_CFG_NO_COARSE */
+
+/* No predicted scan (SSDA_SCAN_PREDICT); tracking then needs
+   SSDA_TRACK_PREDICT_NONE. */
+/* #define SSDA_CFG_NO_PREDICT */
+
+/* No spread row order (SSDA_ORDER_SPREAD). */
+/* #define SSDA_CFG_NO_SPREAD */
+
+/* No 16-bit images in the search and the stream sources (views of
+   SSDA_PIX_U16 are still valid views). */
+/* #define SSDA_CFG_NO_U16 */
 
 /* ---- pitch (pitch.h) ---- */
 
-/* SSDA_CFG_NO_PITCH_FILTER: no input low-pass: configurations must set
-   SSDA_PITCH_NO_FILTER. */
-/* SSDA_CFG_NO_PITCH_TRACK: no lag prediction (SSDA_PITCH_TRACK). */
-/* SSDA_CFG_NO_PITCH_FULL: no full reference search (SSDA_PITCH_FULL). */
-/* SSDA_CFG_NO_PITCH_PARABOLIC: V-shaped interpolation only
-   (SSDA_PITCH_PARABOLIC refused). */
+/* No input low-pass: configurations must set SSDA_PITCH_NO_FILTER. */
+/* #define SSDA_CFG_NO_PITCH_FILTER */
+
+/* No lag prediction (SSDA_PITCH_TRACK). */
+/* #define SSDA_CFG_NO_PITCH_TRACK */
+
+/* No full reference search (SSDA_PITCH_FULL). */
+/* #define SSDA_CFG_NO_PITCH_FULL */
+
+/* V-shaped interpolation only (SSDA_PITCH_PARABOLIC refused). */
+/* #define SSDA_CFG_NO_PITCH_PARABOLIC */
 
 /* ---- streaming (stream.h) ---- */
 
-/* SSDA_CFG_NO_TILED: raster sources only (SSDA_LAYOUT_TILED refused). */
-/* SSDA_CFG_NO_READ_SIZE: byte-granular reads only (read_size must be 0 or
-   1): no bounce buffer. With SSDA_CFG_NO_TILED the plate is read straight
-   from the device. */
+/* Raster sources only (SSDA_LAYOUT_TILED refused). */
+/* #define SSDA_CFG_NO_TILED */
+
+/* Byte-granular reads only (read_size must be 0 or 1): no bounce buffer.
+   With SSDA_CFG_NO_TILED the plate is read straight from the device. */
+/* #define SSDA_CFG_NO_READ_SIZE */
 
 #endif /* SSDA_CONFIG_H */

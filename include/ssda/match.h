@@ -135,6 +135,24 @@ typedef struct {
     size_t work_size;         /*   >= SSDA_MATCH_WORK_SIZE(...) bytes; else unused */
 } ssda_match_config_t;
 
+/*
+ * Private (read no field): a search resolved once, as CMSIS-DSP's instance
+ * structs are: the options checked, defaults and derived values filled in
+ * for one window size, so that jobs running many searches (tracking, push
+ * mode) check nothing per window. It lives in their state (ssda_push_t).
+ */
+typedef struct {
+    uint64_t fixed_cut;   /* FIXED: T + 1 (cut when partial > T); else UINT64_MAX */
+    void *work;           /* SSDA_MATCH_BOUNDS: the caller's work buffer */
+    uint32_t lambda_q8;   /* RAMP: lambda of eq. 3 */
+    uint32_t row_step;    /* row order: row r is followed by r + row_step (mod M) */
+    uint16_t k_q8;        /* K of eqs. 3/4 (default resolved) */
+    uint16_t coarse_step; /* SSDA_SCAN_COARSE grid step (default resolved) */
+    uint8_t threshold;    /* ssda_threshold_t */
+    uint8_t scan;         /* ssda_scan_t */
+    uint8_t flags;        /* SSDA_MATCH_BOUNDS or 0 */
+} ssda_match_plan_t;
+
 /* Outcome of one search. */
 typedef struct {
     uint64_t sad;        /* SAD at (x, y); for an all-cut fallback the partial

@@ -1,6 +1,8 @@
 /*
- * ssda.h - common definitions of the ssda library: version, error codes,
- * and the umbrella include.
+ * ssda.h - common definitions of the ssda library: version, error codes and
+ * the feature switches (config.h). Every feature header includes it;
+ * include the headers of the features you use (view.h, match.h, track.h,
+ * grad.h, stream.h, pitch.h).
  *
  * The library is freestanding C99: integer and fixed-point only, no heap,
  * no I/O. Every buffer is owned by the caller; SSDA_*_SIZE() macros give

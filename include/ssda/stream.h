@@ -42,10 +42,12 @@
  * thread-safe; two sources may share one read callback and context, but
  * not arena memory (jobs refuse overlapping arenas with SSDA_ERR_ARG).
  *
- * Initialise before use: a zero-filled source or push job (static storage,
- * or memset) is refused with SSDA_ERR_STATE, but one holding leftover stack
- * bytes cannot be told from a valid one; call ssda_source_init /
- * ssda_source_init_view / ssda_push_init_* first.
+ * Initialise before use (ssda_source_init / ssda_source_init_view /
+ * ssda_push_init_*): a source or push job its init function did not fill
+ * (zero-filled static storage, memset, or leftover stack bytes) is refused
+ * with SSDA_ERR_STATE by every function, unless its bytes happen to spell
+ * the value the init function writes (a 32-bit magic number); a copy of an
+ * initialised one is accepted, and must still have its buffers.
  */
 #ifndef SSDA_STREAM_H
 #define SSDA_STREAM_H
@@ -122,6 +124,26 @@ typedef struct {
     uint64_t misses;     /* row spans that moved the plate (and read) */
 } ssda_source_stats_t;
 
+/* A rectangle of a source, px: top-left (x, y), width x height. */
+typedef struct {
+    uint16_t x, y;
+    uint16_t width, height;
+} ssda_rect_t;
+
+/*
+ * Private (read no field): the plate a job wants of a source, resolved once
+ * by the job (its capacity for the job's region and the row lattice of its
+ * moves, see PLATE POLICY); the job's later calls only apply it.
+ */
+typedef struct {
+    uint32_t pitch;       /* bytes between plate rows */
+    uint32_t bounce;      /* arena offset of the bounce buffer */
+    uint32_t bounce_size; /* its bytes; 0: reads go straight to the plate */
+    uint16_t pw, ph;      /* plate capacity: pixels per row, rows */
+    uint16_t qy;          /* row lattice of plate starts (1..ph) */
+    ssda_rect_t region;   /* the job's region of the image */
+} ssda_source_plan_t;
+
 /*
  * A source. Allocate it (static, stack, or in a struct); fill it only with
  * ssda_source_init or ssda_source_init_view. All fields are private except
@@ -131,21 +153,11 @@ typedef struct {
     ssda_source_config_t cfg; /* resolved copy (defaults filled in) */
     ssda_source_stats_t stats;
     const uint8_t *view;      /* in-RAM source: pixel (0, 0); else NULL */
-    uint32_t pitch;           /* bytes between plate rows */
-    uint32_t bounce;          /* arena offset of the bounce buffer */
-    uint32_t bounce_size;     /* its bytes; 0: reads go straight to the plate */
-    uint16_t pw, ph;          /* plate capacity: pixels per row, rows */
+    ssda_source_plan_t plate; /* the plate's shape for the current job */
     uint16_t px0, py0;        /* image position of the plate's first pixel */
     uint16_t rows;            /* plate rows holding valid pixels: 0 or ph */
-    uint16_t qy;              /* row lattice of plate starts (1..ph) */
-    uint16_t rx, ry, rw, rh;  /* region of the current job */
+    uint32_t magic;           /* set by the init functions */
 } ssda_source_t;
-
-/* A rectangle of a source, px: top-left (x, y), width x height. */
-typedef struct {
-    uint16_t x, y;
-    uint16_t width, height;
-} ssda_rect_t;
 
 /* Largest read granularity a source accepts, bytes (64 KiB: NAND pages,
    SD sectors and flash pages are smaller). */
@@ -312,14 +324,34 @@ typedef enum {
 } ssda_push_role_t;
 
 /*
+ * What a push job pushes, and where it keeps rows (both init functions).
+ * Every field is read at init only; the pointers must outlive the job.
+ */
+typedef struct {
+    uint16_t width, height;         /* the pushed image (a frame), px, 1..65535 */
+    ssda_pixfmt_t format;           /* its pixel format; other's must be the same */
+    ssda_push_role_t role;          /* tracking: which image is pushed (search: unused) */
+    ssda_source_t *other;           /* the other image, in RAM or streamed: the
+                                       window (search) or the other frame (tracking) */
+    const ssda_rect_t *area_rect;   /* search: the area in the pushed image
+                                       (NULL = whole; tracking: unused) */
+    const ssda_rect_t *window_rect; /* search: the window in other (NULL = whole) */
+    void *ring;                     /* kept rows: 4-byte aligned caller buffer */
+    size_t ring_size;               /* its bytes (see the init functions) */
+} ssda_push_config_t;
+
+/*
  * A push job: the rows of one image (a frame) are pushed top to bottom,
  * and each search runs inside the push that brings the last row it needs.
  * The rows a job still needs are kept in a caller buffer (the ring): only
  * the columns the job uses, rows in order, so that searches run on them as
  * on an image in RAM (when the ring is full, the rows still needed move to
  * its start; a ring taller than the minimum moves them less often).
- * All fields are private. One job per frame: initialise it again for the
- * next frame (no read is made at init).
+ * All fields are private: the init functions check everything and resolve
+ * the job into this state (the search or tracking plan, the plate of a
+ * streamed other image, the rows each search waits for), so that a push
+ * only executes it (littlefs's lfs_t, CMSIS-DSP's instances). One job per
+ * frame: initialise it again for the next frame (no read is made at init).
  */
 typedef struct {
     uint8_t *ring;               /* kept rows, pitch bytes apart */
@@ -328,22 +360,27 @@ typedef struct {
     uint16_t count;              /* rows held, from image row first_row */
     uint16_t first_row;
     uint16_t next_row;           /* image row the next push brings */
-    uint16_t width, height;      /* the pushed image */
+    uint16_t height;             /* rows of the pushed image */
     uint16_t x0, w;              /* columns kept */
+    uint16_t need_from;          /* first image row the unsolved part needs */
+    uint16_t ready_at;           /* rows pushed when the next search can run */
     uint16_t next_grid_row;      /* tracking: first grid row not solved */
+    uint16_t row_lo, row_hi;     /* tracking: grid rows that read pixels */
     uint8_t format;
-    uint8_t kind;                /* 1: search, 2: tracking, 0: stopped */
+    uint8_t state;               /* search, tracking, done, or stopped */
     uint8_t role;                /* ssda_push_role_t (tracking) */
+    bool other_banded;           /* a streamed other's plate holds a band */
     ssda_source_t *other;        /* the window (search) or the other image */
+    ssda_source_plan_t other_plate; /* a streamed other's plate for the job */
     ssda_rect_t area;            /* search: the area in the pushed image */
     ssda_rect_t other_rect;      /* search: the window in its source */
-    ssda_match_config_t match;   /* search: options */
+    int32_t predict_x, predict_y; /* search: a SSDA_SCAN_PREDICT's position */
+    ssda_track_plan_t plan;      /* tracking; a search uses plan.match */
     ssda_match_result_t *result; /* search: written when it runs */
-    ssda_track_config_t track;   /* tracking: options */
     ssda_track_vector_t *out;    /* tracking: the grid's vectors */
-    size_t out_count;
     ssda_track_stats_t acc;      /* tracking: totals so far */
     ssda_track_stats_t *stats;   /* tracking: written when the grid is done */
+    uint32_t magic;              /* set by the init functions */
 } ssda_push_t;
 
 /* Ring bytes for rows of w pixels: a job needs rows >= the band it
@@ -352,54 +389,52 @@ typedef struct {
     ((size_t)(rows) * SSDA_STREAM_PITCH(w, format))
 
 /*
- * A search whose area is the rectangle area_rect (NULL = whole) of the
- * pushed image, width x height pixels of the given format; the window is
- * window_rect (NULL = whole) of the source `window` (in RAM or streamed,
- * arena as ssda_stream_match says). The search runs in the push that
- * brings the area's last row and writes *result (as ssda_match would);
- * that push returns 1.
- *   ring, ring_size: 4-byte aligned buffer of at least
+ * A search whose area is cfg->area_rect (NULL = whole) of the pushed image,
+ * cfg->width x cfg->height pixels of cfg->format; the window is
+ * cfg->window_rect (NULL = whole) of the source cfg->other (in RAM or
+ * streamed, arena as ssda_stream_match says). The search runs in the push
+ * that brings the area's last row and writes *result (as ssda_match would;
+ * match NULL = defaults); that push returns 1.
+ *   cfg->ring, cfg->ring_size: 4-byte aligned buffer of at least
  *                    SSDA_PUSH_SIZE(area width, area height, format) bytes.
- * Returns SSDA_OK or, with *push untouched: SSDA_ERR_NULL (push, window,
- * result or ring NULL, or bounds without work buffer), SSDA_ERR_STATE
- * (window not initialised), SSDA_ERR_FORMAT, SSDA_ERR_SIZE (zero size,
- * rectangles outside their images, window larger than the area),
- * SSDA_ERR_ARG (options; a ring overlapping the window's arena),
- * SSDA_ERR_BUFFER (ring or window arena short, or
- * the ring misaligned). The window, result and the ring, and cfg->work
- * when SSDA_MATCH_BOUNDS is set (the job keeps a copy of cfg, pointer
- * included), must outlive the job.
+ * Returns SSDA_OK or, with *push untouched: SSDA_ERR_NULL (push, cfg,
+ * cfg->other, result or cfg->ring NULL, or bounds without work buffer),
+ * SSDA_ERR_STATE (other not initialised), SSDA_ERR_FORMAT, SSDA_ERR_SIZE
+ * (zero size, rectangles outside their images, window larger than the
+ * area), SSDA_ERR_ARG (options; a ring overlapping the window's arena),
+ * SSDA_ERR_BUFFER (ring or window arena short, or the ring misaligned).
+ * The window, result and the ring, and match->work when SSDA_MATCH_BOUNDS
+ * is set (the job keeps the pointer), must outlive the job.
  */
-int ssda_push_init_match(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
-                         const ssda_rect_t *area_rect, ssda_source_t *window,
-                         const ssda_rect_t *window_rect, const ssda_match_config_t *cfg,
-                         ssda_match_result_t *result, void *ring, size_t ring_size);
+int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
+                         const ssda_match_config_t *match, ssda_match_result_t *result);
 
 /*
- * Grid tracking with one image pushed (role: FIRST or SECOND) and the other
- * a source (in RAM or streamed). The pushed image is width x height.
- * Grid rows are solved in order, each in the push that brings the last row
- * of its band (FIRST: its search areas, search_h rows; SECOND: its
- * windows, win_h rows); that push returns how many grid rows it solved.
- * Results equal ssda_track's in every mode (the order is ssda_track's).
- * *stats (may be NULL) is written when the last grid row is solved.
- *   ring, ring_size: at least SSDA_PUSH_SIZE(span, band, format) bytes,
- *     span = SSDA_STREAM_STRIP_W(grid cols, step_x, search_w) (FIRST) or
- *     SSDA_STREAM_STRIP_W(grid cols, step_x, win_w) (SECOND), capped at the
- *     image width; band = search_h (FIRST) or win_h (SECOND).
+ * Grid tracking with one image pushed (cfg->role: FIRST or SECOND) and the
+ * other a source (cfg->other, in RAM or streamed). The pushed image is
+ * cfg->width x cfg->height. Grid rows are solved in order, each in the push
+ * that brings the last row of its band (FIRST: its search areas, search_h
+ * rows; SECOND: its windows, win_h rows); that push returns how many grid
+ * rows it solved. Results equal ssda_track's in every mode (the order is
+ * ssda_track's). *stats (may be NULL) is written when the last grid row is
+ * solved. track NULL = defaults.
+ *   cfg->ring, cfg->ring_size: at least SSDA_PUSH_SIZE(span, band, format)
+ *     bytes, span = SSDA_STREAM_STRIP_W(grid cols, step_x, search_w)
+ *     (FIRST) or SSDA_STREAM_STRIP_W(grid cols, step_x, win_w) (SECOND),
+ *     capped at the image width; band = search_h (FIRST) or win_h (SECOND).
  * A streamed other image needs its arena as ssda_stream_track says; with a
  * whole-width band of it, it is read once.
- * The other source, out, stats, the ring and cfg->match.work (with
- * SSDA_MATCH_BOUNDS; the job keeps a copy of cfg, pointer included) must
- * outlive the job.
+ * The other source, out, stats, the ring and track->match.work (with
+ * SSDA_MATCH_BOUNDS; the job keeps the pointer) must outlive the job.
  * Returns SSDA_OK or what ssda_stream_track returns for its arguments
- * (SSDA_ERR_BUFFER also for a short ring, SSDA_ERR_ARG for a ring that
- * overlaps a streamed other image's arena), with *push untouched.
+ * (SSDA_ERR_NULL also for cfg, cfg->other or cfg->ring NULL, SSDA_ERR_ARG
+ * for an unknown role, SSDA_ERR_BUFFER also for a short ring, SSDA_ERR_ARG
+ * for a ring that overlaps a streamed other image's arena), with *push
+ * untouched.
  */
-int ssda_push_init_track(ssda_push_t *push, uint16_t width, uint16_t height, uint8_t format,
-                         uint8_t role, ssda_source_t *other, const ssda_track_config_t *cfg,
-                         ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats,
-                         void *ring, size_t ring_size);
+int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
+                         const ssda_track_config_t *track, ssda_track_vector_t *out,
+                         size_t out_count, ssda_track_stats_t *stats);
 
 /*
  * Push the next row of the image: row holds its width pixels (uint16_t

@@ -141,6 +141,23 @@ typedef struct {
     uint16_t roi_x, roi_y, roi_w, roi_h;
 } ssda_track_grid_t;
 
+/*
+ * Private (read no field): a tracking configuration resolved once, every
+ * default filled in and every option checked, for one pixel format and
+ * pair of image sizes; the per-window work only executes it. It lives in the state
+ * of push jobs (ssda_push_t).
+ */
+typedef struct {
+    ssda_match_plan_t match;    /* every window's search (scan set for the prediction) */
+    ssda_track_grid_t grid;
+    uint32_t texture_threshold; /* < the format's maximum */
+    uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 */
+    uint16_t mask_value;        /* <= the format's maximum */
+    uint16_t first_w, first_h;  /* FIRST's size (the EDGE test) */
+    uint8_t predict;            /* ssda_track_predict_t */
+    uint8_t flags;              /* SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK */
+} ssda_track_plan_t;
+
 /* Result for one window. */
 typedef struct {
     uint64_t sad;    /* OK: SAD at the match (< 2^48); else 0 */

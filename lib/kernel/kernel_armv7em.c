@@ -74,7 +74,7 @@ static inline uint32_t lanes_sum(uint32_t d)
     return (d & 0xFFFFu) + (d >> 16);
 }
 
-uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 255 * 65535 = 16 711 425 */
     const uint8_t *end16;
@@ -105,12 +105,12 @@ uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
             a += 4;
             b += 4;
         }
-        sum += ssda_portable_sad_row_u8(a, b, n & 3u);
+        sum += ssda__portable_sad_row_u8(a, b, n & 3u);
     }
     return sum;
 }
 
-uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
     const uint16_t *end8 = a + (n & ~7u);
@@ -134,12 +134,12 @@ uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
             a += 2;
             b += 2;
         }
-        sum += ssda_portable_sad_row_u16(a, b, n & 1u);
+        sum += ssda__portable_sad_row_u16(a, b, n & 1u);
     }
     return sum;
 }
 
-uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
     const int16_t *end8 = a + (n & ~7u);
@@ -163,7 +163,7 @@ uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
             a += 2;
             b += 2;
         }
-        sum += ssda_portable_absdiff_row_i16(a, b, n & 1u);
+        sum += ssda__portable_absdiff_row_i16(a, b, n & 1u);
     }
     return sum;
 }
@@ -209,7 +209,7 @@ uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
     return sum;
 }
 
-const char *ssda_kernel_name(void)
+const char *ssda__kernel_name(void)
 {
     return "armv7em";
 }

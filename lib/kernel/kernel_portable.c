@@ -2,19 +2,19 @@
 #include "kernel/kernels.h"
 #include "kernel/portable.h"
 
-uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
-    return ssda_portable_sad_row_u8(a, b, n);
+    return ssda__portable_sad_row_u8(a, b, n);
 }
 
-uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
-    return ssda_portable_sad_row_u16(a, b, n);
+    return ssda__portable_sad_row_u16(a, b, n);
 }
 
-uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
-    return ssda_portable_absdiff_row_i16(a, b, n);
+    return ssda__portable_absdiff_row_i16(a, b, n);
 }
 
 uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
@@ -41,7 +41,7 @@ uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
     return sum;
 }
 
-const char *ssda_kernel_name(void)
+const char *ssda__kernel_name(void)
 {
     return "portable";
 }

@@ -53,7 +53,7 @@ static inline __m128i add_absdiff_u16x8(__m128i acc, __m128i a, __m128i b)
     return _mm_add_epi32(acc, _mm_unpackhi_epi16(d, zero));
 }
 
-uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* two 64-bit lanes, total <= 255 * 65535 */
     uint32_t i = 0u;
@@ -65,20 +65,20 @@ uint32_t ssda_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
         acc = _mm_add_epi64(acc, _mm_sad_epu8(load128(a + i), load128(b + i)));
     }
     acc = _mm_add_epi64(acc, _mm_unpackhi_epi64(acc, acc));
-    return (uint32_t)_mm_cvtsi128_si32(acc) + ssda_portable_sad_row_u8(a + i, b + i, n - i);
+    return (uint32_t)_mm_cvtsi128_si32(acc) + ssda__portable_sad_row_u8(a + i, b + i, n - i);
 }
 
-uint32_t ssda_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
     uint32_t i = 0u;
     for (; i + 8u <= n; i += 8u) {
         acc = add_absdiff_u16x8(acc, load128(a + i), load128(b + i));
     }
-    return hsum_u32x4(acc) + ssda_portable_sad_row_u16(a + i, b + i, n - i);
+    return hsum_u32x4(acc) + ssda__portable_sad_row_u16(a + i, b + i, n - i);
 }
 
-uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     const __m128i bias = _mm_set1_epi16((short)-32768); /* flips the sign bit */
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
@@ -87,7 +87,7 @@ uint32_t ssda_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
         acc = add_absdiff_u16x8(acc, _mm_xor_si128(load128(a + i), bias),
                                 _mm_xor_si128(load128(b + i), bias));
     }
-    return hsum_u32x4(acc) + ssda_portable_absdiff_row_i16(a + i, b + i, n - i);
+    return hsum_u32x4(acc) + ssda__portable_absdiff_row_i16(a + i, b + i, n - i);
 }
 
 /* Products of 8 byte pairs (widened to 16-bit lanes) added to acc. */
@@ -180,7 +180,7 @@ uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
     return ((uint64_t)hsum_u32x4(hi) << 16) + hsum_u32x4(lo) + tail;
 }
 
-const char *ssda_kernel_name(void)
+const char *ssda__kernel_name(void)
 {
     return "sse2";
 }

@@ -8,7 +8,7 @@
 
 #include <stdint.h>
 
-static inline uint32_t ssda_portable_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+static inline uint32_t ssda__portable_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 255 * 65535 */
     uint32_t i;
@@ -18,7 +18,7 @@ static inline uint32_t ssda_portable_sad_row_u8(const uint8_t *a, const uint8_t 
     return sum;
 }
 
-static inline uint32_t ssda_portable_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static inline uint32_t ssda__portable_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 < 2^32 */
     uint32_t i;
@@ -28,7 +28,7 @@ static inline uint32_t ssda_portable_sad_row_u16(const uint16_t *a, const uint16
     return sum;
 }
 
-static inline uint32_t ssda_portable_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+static inline uint32_t ssda__portable_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 < 2^32 */
     uint32_t i;

@@ -12,7 +12,7 @@
 int main(void)
 {
     budget_timer_init();
-    printf("KERNEL %s\n", ssda_kernel_name());
+    printf("KERNEL %s\n", ssda__kernel_name());
     jobs_calibrate();
     jobs_kernel();
 #ifdef SSDA_BUDGET_HAVE_MATCH
@@ -23,6 +23,9 @@ int main(void)
 #endif
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
+#endif
+#ifdef SSDA_BUDGET_HAVE_STREAM
+    jobs_stream();
 #endif
 #ifdef SSDA_BUDGET_HAVE_NCC
     jobs_ncc();

@@ -11,7 +11,7 @@
 
 /* A known loop (2 instructions per iteration) to check the method. */
 void jobs_calibrate(void);
-/* ssda_sad_row_u8/u16, ssda_absdiff_row_i16: instructions per pixel. */
+/* ssda__sad_row_u8/u16, ssda__absdiff_row_i16: instructions per pixel. */
 void jobs_kernel(void);
 /* ssda_match, 16 x 16 windows in 32 x 32 areas, by mode. */
 void jobs_match(void);
@@ -19,6 +19,8 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* ssda_push_row of push-mode tracking: one row, and a whole frame. */
+void jobs_stream(void);
 /* ssda_ncc_match, 16 x 16 in 32 x 32 and 20 x 20 in 40 x 40, by early exit. */
 void jobs_ncc(void);
 /* ssda_relax_labels and ssda_relax_median on a 12 x 12 grid. */

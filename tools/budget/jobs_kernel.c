@@ -33,16 +33,16 @@ static void kernel_job(void *ctx)
         uint32_t off = (r * j->n) % (LONG_ROW - j->n + 1u);
         switch (j->kind) {
         case 0:
-            s += ssda_sad_row_u8(g_a8 + off, g_b8 + off, j->n);
+            s += ssda__sad_row_u8(g_a8 + off, g_b8 + off, j->n);
             break;
         case 1:
-            s += ssda_sad_row_u16(g_a16 + off, g_b16 + off, j->n);
+            s += ssda__sad_row_u16(g_a16 + off, g_b16 + off, j->n);
             break;
         case 3:
             s += empty_row(g_a8 + off, g_b8 + off, j->n);
             break;
         default:
-            s += ssda_absdiff_row_i16((const int16_t *)g_a16 + off,
+            s += ssda__absdiff_row_i16((const int16_t *)g_a16 + off,
                                       (const int16_t *)g_b16 + off, j->n);
             break;
         }

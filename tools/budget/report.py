@@ -491,6 +491,17 @@ def main():
                                               for _, _, r in runs) +
                   f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
 
+        if any("push.track_frame" in r for _, _, r in runs):
+            w("\n| push-mode tracking, 7x7 grid, 128x128 SECOND pushed row by row, FIRST in RAM | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | pixel ops | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            for key, label in (("push.track_row_idle", "one `ssda_push_row` that solves no grid row"),
+                               ("push.track_frame", "whole frame, per pushed row")):
+                r0 = get(runs[0][2], key)
+                w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                                              for _, _, r in runs) +
+                  f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
         for geo, label_geo in (("ncc16", "16x16 window in a 32x32 area"),
                                ("ncc20", "20x20 window in a 40x40 area")):
             if any(f"{geo}.full" in r for _, _, r in runs):

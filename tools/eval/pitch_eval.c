@@ -341,7 +341,7 @@ int main(int argc, char **argv)
            "%s fit, kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
            o.threshold > 0 ? o.threshold : SSDA_PITCH_DEFAULT_THRESHOLD_Q15 / 32768.0,
            o.no_filter ? "off" : o.lowpass ? "as given" : "at f0 max",
-           o.parabolic ? "parabolic" : "V", ssda_kernel_name(),
+           o.parabolic ? "parabolic" : "V", ssda__kernel_name(),
            have_aubio() ? "" : " (aubio not found: YIN rows missing)");
     print_header();
     if (o.synth && (r = run_synthetic(&o, &synth_all)) != 0) {

@@ -417,6 +417,7 @@ static void job_push(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t f
 {
     ssda_source_t ws;
     ssda_push_t p, pp;
+    ssda_push_config_t pc;
     ssda_rect_t ar, wr;
     ssda_view_t aroi, wroi;
     ssda_match_config_t c;
@@ -448,8 +449,16 @@ static void job_push(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t f
     memset(&pp, 0x2C, sizeof pp);
     p = pp;
     got = poison;
-    rc = ssda_push_init_match(&p, v[0].width, v[0].height, v[0].format, &ar, &ws, &wr, &c, &got,
-                              g_ring, ring);
+    pc.width = v[0].width;
+    pc.height = v[0].height;
+    pc.format = (ssda_pixfmt_t)v[0].format;
+    pc.role = SSDA_PUSH_FIRST;
+    pc.other = &ws;
+    pc.area_rect = &ar;
+    pc.window_rect = &wr;
+    pc.ring = g_ring;
+    pc.ring_size = ring;
+    rc = ssda_push_init_match(&p, &pc, &c, &got);
     if (rc == SSDA_ERR_BUFFER) { /* only below the documented sizes */
         FUZZ_CHECK(ring < ring_need || (st[1].streamed && arena_w < need_w));
         FUZZ_CHECK(memcmp(&p, &pp, sizeof p) == 0);
