@@ -199,7 +199,7 @@ static int64_t disk_radius(const job_t *j, int64_t vx, int64_t vy)
     const uint64_t ux = (uint64_t)(vx < 0 ? -vx : vx); /* < 2^16 */
     const uint64_t uy = (uint64_t)(vy < 0 ? -vy : vy);
     const uint64_t v2 = ux * ux + uy * uy; /* < 2^33 */
-    uint64_t len = ssda_isqrt64(v2);
+    uint64_t len = ssda__isqrt64(v2);
     uint64_t r;
     if (len * len < v2) {
         len++;

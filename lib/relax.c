@@ -205,7 +205,7 @@ static uint32_t length_step(const ssda__relax_t *g, uint16_t len_step_q8)
         if (ssda__relax_get(g, k, &x, &y)) {
             const uint64_t ax = (uint64_t)(x < 0 ? -(int64_t)x : (int64_t)x); /* <= 2^23 */
             const uint64_t ay = (uint64_t)(y < 0 ? -(int64_t)y : (int64_t)y);
-            sum += ssda_isqrt64(ax * ax + ay * ay);
+            sum += ssda__isqrt64(ax * ax + ay * ay);
             n++;
         }
     }
