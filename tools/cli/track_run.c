@@ -1,5 +1,6 @@
 /* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
 #include "track_run.h"
+#include "track_metric.h"
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
@@ -42,6 +43,11 @@ const char track_opts_help[] =
     "                    section 4), N iterations: JSON windows gain relax_dx,\n"
     "                    relax_dy (px) and changed\n"
     "  --relax-median    clean by the normalised median test instead (same fields)\n"
+    "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
+    "                    coefficient at their placement; with ncc (largest rho) or\n"
+    "                    absncc (largest |rho|) the vectors come from the exact\n"
+    "                    correlation search over each OK window's area, which a\n"
+    "                    gain or offset between the images does not change\n"
     "  --quiet           no progress bar\n";
 
 void track_opts_init(track_opts_t *o)
@@ -284,6 +290,11 @@ static int take_output(cli_args_t *a, track_opts_t *o)
         }
     } else if (cli_flag(a, "--relax-median")) {
         o->relax_median = 1;
+    } else if (cli_opt(a, "--metric", &v)) {
+        if (v != NULL && (o->metric = track_metric_parse(v)) < 0) {
+            o->metric = 0;
+            bad_value(a, "bad --metric '%s' (sad, ncc, absncc)", v);
+        }
     } else {
         return 0;
     }
@@ -571,6 +582,7 @@ void track_result_free(track_result_t *r)
 {
     free(r->clean);
     r->clean = NULL;
+    free(r->rho_q30);
     gray_image_free(&r->first);
     gray_image_free(&r->second);
     gray_image_free(&r->second_orig);
@@ -932,6 +944,9 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
         rc = prepare_and_track(cmd, o, r);
     }
     if (rc == CLI_OK) {
+        rc = track_metric_apply(cmd, o, r);
+    }
+    if (rc == CLI_OK) {
         rc = clean_field(cmd, o, r);
     }
     if (rc != CLI_OK) {
@@ -990,6 +1005,7 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     if (o->relax != 0u) {
         cJSON_AddNumberToObject(opt, "relax_iterations", o->relax);
     }
+    track_metric_json_options(opt, o);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
         cJSON *ex = cJSON_AddObjectToObject(opt, "exclude");
         cJSON_AddNumberToObject(ex, "level", r->texture_level);
@@ -1020,6 +1036,7 @@ static cJSON *json_stats(const track_result_t *r, const track_opts_t *o)
     cJSON_AddNumberToObject(st, "masked", r->stats.masked);
     cJSON_AddNumberToObject(st, "edge", r->stats.edge);
     json_out_add_fixed(st, "time_s", r->secs, 6);
+    track_metric_json_stats(st, o, r);
     if (o->have_mem) {
         json_out_add_u64(st, "mem_bytes", o->mem);
         json_out_add_u64(st, "plate_bytes_first", r->arena_first);
@@ -1056,6 +1073,7 @@ static cJSON *json_window(void *ctx, size_t k)
         json_out_add_fixed(item, "relax_dy", w->r->clean[k].dy_q8 / 256.0, 4);
         cJSON_AddBoolToObject(item, "changed", (w->r->clean[k].flags & SSDA_RELAX_CHANGED) != 0u);
     }
+    track_metric_json_window(item, w->r, k);
     return item;
 }
 

@@ -31,6 +31,7 @@ typedef struct {
     int quiet;
     uint32_t relax;           /* --relax N: relaxation labelling iterations, 0 = none */
     int relax_median;         /* --relax-median: the normalised median test */
+    int metric;               /* --metric: TRACK_METRIC_* (track_metric.h), 0 = not given */
 } track_opts_t;
 
 /* Defaults: 16 px windows, 32 px areas, step 16, auto threshold, prediction
@@ -73,6 +74,9 @@ typedef struct {
     double secs;                  /* tracking time only */
     ssda_relax_vector_t *clean;   /* --relax / --relax-median: grid.count entries */
     uint32_t changed;             /* vectors the cleaning changed */
+    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN where not OK */
+    uint64_t metric_ops;          /* --metric: pixel ops of the correlation part */
+    double metric_secs;           /* --metric: its time */
 } track_result_t;
 
 /*

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The correlation parts of the tool (issue 16): `ssda match --metric` and
-# `ssda flow`. Two CTest groups:
-#   cli_flow.sh match|flow SSDA GEN CHECK WORKDIR FLOWTOOL
+# `ssda flow`, `ssda track --metric`. Three CTest groups:
+#   cli_flow.sh match|flow|track SSDA GEN CHECK WORKDIR FLOWTOOL
 . "$(dirname "$0")/cli_lib.sh" "$@"
 flowtool=$6
 
@@ -69,6 +69,42 @@ flow)
     grep -q '"cleaning":"median"' t.json && grep -q '"relax_dx"' t.json || fail "track --relax-median"
   run 2 track r.png n2.png --relax 3 --relax-median && stderr_has "not both"
   run 2 track r.png n2.png --relax x && stderr_has "bad --relax 'x'"
+  ;;
+
+track)
+  # a known motion (2, -3) and a gain and offset change (x 0.6 + 60)
+  "$gen" texture r.png --size 120x100 --seed 7
+  "$gen" texture n.png --size 120x100 --seed 7 --shift 2,-3
+  "$flowtool" gain n.png nb.png 0.6 60
+  for m in sad ncc absncc; do
+    # rho and sad of every ok window against a double-precision recomputation;
+    # with ncc/absncc the placement is the brute-force argmax of rho (|rho|)
+    run 0 track r.png nb.png --metric $m --json t.json --quiet &&
+      "$flowtool" track-rho r.png nb.png t.json $m 24 &&
+      grep -q "\"metric\":\"$m\"" t.json && grep -q '"metric_time_s"' t.json ||
+      fail "track --metric $m: $(head -c 400 t.json)"
+  done
+  # the correlation vectors are the known motion in every ok window
+  run 0 track r.png nb.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 || fail "ncc vectors under gain"
+  grep -q "^metric:  ncc" out.txt || fail "summary line: $(cat out.txt)"
+  # inverted contrast: absncc tracks it (rho = -1 at the motion), ncc does not
+  "$flowtool" gain n.png ni.png -1 255
+  run 0 track r.png ni.png --metric absncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"rho":-1.000000' t.json ||
+    fail "absncc on the inverse"
+  run 0 track r.png ni.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 0.5 && fail "ncc tracked the inverse"
+  # with cleaning and an overlay; without --metric no rho
+  run 0 track r.png nb.png --metric ncc --relax 10 --json t.json --overlay t.png --quiet &&
+    grep -q '"relax_dx":2.0000,"relax_dy":-3.0000' t.json && [ -s t.png ] || fail "ncc + relax"
+  run 0 track r.png nb.png --json t.json --quiet && grep -q '"rho"' t.json && fail "rho without --metric"
+  grep -q '"metric":"sad"' t.json || fail "default metric not named"
+  run 2 track r.png nb.png --metric l1 && stderr_has "bad --metric 'l1'"
+  "$gen" texture big.png --size 260x260 --seed 3
+  run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
+    stderr_has "at most 65536 pixels"
+  run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
   ;;
 esac
 finish
