@@ -182,26 +182,12 @@ static long jint(json_t *o, const char *k)
     return (long)json_integer_value(json_object_get(o, k));
 }
 
-static int track_rho(int argc, char **argv)
+/* Every ok window of doc against the double recomputation (track-rho). */
+static int rho_windows(const pair_t *p, json_t *doc, const char *mode, long min_ok)
 {
-    pair_t p = {0};
-    json_error_t je;
-    json_t *doc, *grid, *list;
-    char err[256];
+    json_t *list = json_object_get(doc, "windows");
     size_t i, ok = 0;
-    int search, absval;
-    if (argc != 5 || png_read_gray(argv[0], PNG_GRAY_8, &p.f, NULL, err, sizeof err) != 0 ||
-        png_read_gray(argv[1], PNG_GRAY_8, &p.s, NULL, err, sizeof err) != 0 ||
-        (doc = json_load_file(argv[2], 0, &je)) == NULL) {
-        fprintf(stderr, "flow_tool track-rho: usage or unreadable input\n");
-        return 2;
-    }
-    search = strcmp(argv[3], "sad") != 0;
-    absval = !strcmp(argv[3], "absncc");
-    grid = json_object_get(doc, "grid");
-    p.ww = jint(grid, "window_w"), p.wh = jint(grid, "window_h");
-    p.sw = jint(grid, "search_w"), p.sh = jint(grid, "search_h");
-    list = json_object_get(doc, "windows");
+    int search = strcmp(mode, "sad") != 0, absval = !strcmp(mode, "absncc");
     for (i = 0; i < json_array_size(list); i++) {
         json_t *t = json_array_get(list, i);
         long x = jint(t, "x"), y = jint(t, "y"), dx = jint(t, "dx"), dy = jint(t, "dy");
@@ -210,22 +196,44 @@ static int track_rho(int argc, char **argv)
             continue;
         }
         ok++;
-        r = rho_at(&p, x, y, x - dx, y - dy, &sad);
+        r = rho_at(p, x, y, x - dx, y - dy, &sad);
         if (json_object_get(t, "rho") == NULL || fabs(r - got) > 1e-6 ||
             (double)jint(t, "sad") != sad ||
-            (search && (absval ? fabs(r) : r) < best_rho(&p, x, y, absval) - 1e-9)) {
+            (search && (absval ? fabs(r) : r) < best_rho(p, x, y, absval) - 1e-9)) {
             fprintf(stderr, "flow_tool track-rho: window (%ld, %ld) dx %ld dy %ld: rho %.9f "
                     "(JSON %.6f), sad %.0f (JSON %ld), best %.9f\n", x, y, dx, dy, r, got, sad,
-                    jint(t, "sad"), best_rho(&p, x, y, absval));
+                    jint(t, "sad"), best_rho(p, x, y, absval));
             return 1;
         }
     }
-    if ((long)ok < atol(argv[4])) {
-        fprintf(stderr, "flow_tool track-rho: %zu ok windows (want %s)\n", ok, argv[4]);
+    if ((long)ok < min_ok) {
+        fprintf(stderr, "flow_tool track-rho: %zu ok windows (want %ld)\n", ok, min_ok);
         return 1;
     }
-    json_decref(doc);
     return 0;
+}
+
+static int track_rho(int argc, char **argv)
+{
+    pair_t p = {0};
+    json_error_t je;
+    json_t *doc = NULL;
+    char err[256];
+    int rc = 2;
+    if (argc == 5 && png_read_gray(argv[0], PNG_GRAY_8, &p.f, NULL, err, sizeof err) == 0 &&
+        png_read_gray(argv[1], PNG_GRAY_8, &p.s, NULL, err, sizeof err) == 0 &&
+        (doc = json_load_file(argv[2], 0, &je)) != NULL) {
+        json_t *grid = json_object_get(doc, "grid");
+        p.ww = jint(grid, "window_w"), p.wh = jint(grid, "window_h");
+        p.sw = jint(grid, "search_w"), p.sh = jint(grid, "search_h");
+        rc = rho_windows(&p, doc, argv[3], atol(argv[4]));
+    } else {
+        fprintf(stderr, "flow_tool track-rho: usage or unreadable input\n");
+    }
+    json_decref(doc);
+    gray_image_free(&p.f);
+    gray_image_free(&p.s);
+    return rc;
 }
 
 static int track_check(int argc, char **argv)
