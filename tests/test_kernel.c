@@ -6,8 +6,10 @@
  * signs of a - b within one machine word, and the accumulator worst cases
  * (65535 differences of 255 for 8-bit, of 65535 for 16-bit and int16).
  *
- * The host build tests its SIMD set (sse2 on x86); the QEMU builds test the
- * armv7em set (mps2-an386, mps2-an500) and the portable set (mps2-an385).
+ * The host build tests its SIMD set (sse2 on x86), every variant of it the
+ * processor runs (ssda__kernel_variant: SSE2, and AVX2 where the processor
+ * has it) as well as the run-time choice; the QEMU builds test the armv7em
+ * set (mps2-an386, mps2-an500) and the portable set (mps2-an385).
  */
 #include <stdint.h>
 
@@ -81,6 +83,64 @@ static uint32_t sample(test_rng_t *r, uint32_t maxval)
     }
 }
 
+/* want against the public loop (the variant this processor runs) and
+   against every variant of the set it can run (x86: SSE2 and AVX2). */
+static void check_sad_row_u8(uint64_t want, const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t v;
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u8(a, b, n), ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, k->sad_row_u8(a, b, n), k->name);
+    }
+}
+
+static void check_sad_row_u16(uint64_t want, const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t v;
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u16(a, b, n), ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, k->sad_row_u16(a, b, n), k->name);
+    }
+}
+
+static void check_absdiff_row_i16(uint64_t want, const int16_t *a, const int16_t *b, uint32_t n)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t v;
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__absdiff_row_i16(a, b, n), ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, k->absdiff_row_i16(a, b, n), k->name);
+    }
+}
+
+/* The variants: none for a set without a run-time choice, else the first
+   named like the set; no gaps; on an x86 host whose processor has AVX2,
+   the AVX2 variant is among them (so the checks above run it). */
+static void test_kernel_variants_listed(void)
+{
+    uint32_t v = 0u;
+    if (ssda__kernel_variant(0u) != NULL) {
+        TEST_ASSERT_EQUAL_STRING(ssda__kernel_name(), ssda__kernel_variant(0u)->name);
+    }
+    while (ssda__kernel_variant(v) != NULL) {
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u8);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->absdiff_row_i16);
+        v++;
+    }
+    TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(SSDA_TEST_SMALL)
+    if (ssda__kernel_name()[0] == 's') {
+        TEST_ASSERT_EQUAL_UINT32(__builtin_cpu_supports("avx2") ? 2u : 1u, v);
+        if (v == 2u) {
+            TEST_ASSERT_EQUAL_STRING("avx2", ssda__kernel_variant(1u)->name);
+        }
+    }
+#endif
+}
+
 static void test_kernel_name_is_known(void)
 {
     const char *name = ssda__kernel_name();
@@ -108,7 +168,7 @@ static void test_sad_u8_random_every_length_and_alignment(void)
                 const uint8_t *a = g_a8 + oa, *b = g_b8 + ob;
                 uint64_t want = ref_u8(a, b, n);
                 TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_sad_row_u8(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u8(a, b, n), ssda__kernel_name());
+                check_sad_row_u8(want, a, b, n);
             }
         }
     }
@@ -129,7 +189,7 @@ static void test_sad_u16_random_every_length_and_alignment(void)
                 const uint16_t *a = g_a16 + oa, *b = g_b16 + ob;
                 uint64_t want = ref_u16(a, b, n);
                 TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_sad_row_u16(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__sad_row_u16(a, b, n), ssda__kernel_name());
+                check_sad_row_u16(want, a, b, n);
             }
         }
     }
@@ -150,7 +210,7 @@ static void test_absdiff_i16_random_every_length_and_alignment(void)
                 const int16_t *a = g_ai16 + oa, *b = g_bi16 + ob;
                 uint64_t want = ref_i16(a, b, n);
                 TEST_ASSERT_EQUAL_UINT64(want, ssda__portable_absdiff_row_i16(a, b, n));
-                TEST_ASSERT_EQUAL_UINT64_MESSAGE(want, ssda__absdiff_row_i16(a, b, n), ssda__kernel_name());
+                check_absdiff_row_i16(want, a, b, n);
             }
         }
     }
@@ -171,14 +231,12 @@ static void test_lanes_of_opposite_sign(void)
         g_bi16[i] = hi ? INT16_MIN : INT16_MAX;
     }
     for (n = 0; n <= MAX_LEN; n++) {
-        TEST_ASSERT_EQUAL_UINT32(255u * n, ssda__sad_row_u8(g_a8, g_b8, n));
-        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda__sad_row_u16(g_a16, g_b16, n));
-        TEST_ASSERT_EQUAL_UINT32(65535u * n, ssda__absdiff_row_i16(g_ai16, g_bi16, n));
+        check_sad_row_u8(255u * n, g_a8, g_b8, n);
+        check_sad_row_u16(65535u * n, g_a16, g_b16, n);
+        check_absdiff_row_i16(65535u * n, g_ai16, g_bi16, n);
         /* One lane equal, the other maximal. */
-        TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_u16(g_a16, g_a16 + 1, n),
-                                 ssda__sad_row_u16(g_a16, g_a16 + 1, n));
-        TEST_ASSERT_EQUAL_UINT32((uint32_t)ref_i16(g_ai16, g_ai16 + 1, n),
-                                 ssda__absdiff_row_i16(g_ai16, g_ai16 + 1, n));
+        check_sad_row_u16((uint32_t)ref_u16(g_a16, g_a16 + 1, n), g_a16, g_a16 + 1, n);
+        check_absdiff_row_i16((uint32_t)ref_i16(g_ai16, g_ai16 + 1, n), g_ai16, g_ai16 + 1, n);
     }
 }
 
@@ -203,8 +261,8 @@ static void test_sad_u8_worst_case(void)
     for (off = 0; off < 4u; off++) {
         const uint8_t *hi = bytes + off, *lo = bytes + 2u * (N_MAX + 1u) + off;
         TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_sad_row_u8(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u8(hi, lo, N_MAX), ssda__kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u8(lo, hi, N_MAX), ssda__kernel_name());
+        check_sad_row_u8(want, hi, lo, N_MAX);
+        check_sad_row_u8(want, lo, hi, N_MAX);
     }
 }
 
@@ -219,8 +277,8 @@ static void test_sad_u16_worst_case(void)
         const uint16_t *hi = g_big + off, *lo = g_big + N_MAX + 1u + off;
         TEST_ASSERT_EQUAL_UINT64((uint64_t)65535u * 65535u, want);
         TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_sad_row_u16(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u16(hi, lo, N_MAX), ssda__kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__sad_row_u16(lo, hi, N_MAX), ssda__kernel_name());
+        check_sad_row_u16(want, hi, lo, N_MAX);
+        check_sad_row_u16(want, lo, hi, N_MAX);
     }
 }
 
@@ -237,8 +295,8 @@ static void test_absdiff_i16_worst_case(void)
     for (off = 0; off < 2u; off++) {
         const int16_t *hi = rows + off, *lo = rows + N_MAX + 1u + off;
         TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_absdiff_row_i16(hi, lo, N_MAX));
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__absdiff_row_i16(hi, lo, N_MAX), ssda__kernel_name());
-        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, ssda__absdiff_row_i16(lo, hi, N_MAX), ssda__kernel_name());
+        check_absdiff_row_i16(want, hi, lo, N_MAX);
+        check_absdiff_row_i16(want, lo, hi, N_MAX);
     }
 }
 
@@ -253,12 +311,9 @@ static void test_long_random_rows(void)
     for (i = 0; i < 2u * (N_MAX + 1u); i++) {
         g_big[i] = (uint16_t)sample(&r, 65535u);
     }
-    TEST_ASSERT_EQUAL_UINT64(ref_u8(bytes + 1, bytes + 70001u, N_MAX),
-                             ssda__sad_row_u8(bytes + 1, bytes + 70001u, N_MAX));
-    TEST_ASSERT_EQUAL_UINT64(ref_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX),
-                             ssda__sad_row_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX));
-    TEST_ASSERT_EQUAL_UINT64(ref_i16(rows, rows + N_MAX + 2u, N_MAX),
-                             ssda__absdiff_row_i16(rows, rows + N_MAX + 2u, N_MAX));
+    check_sad_row_u8(ref_u8(bytes + 1, bytes + 70001u, N_MAX), bytes + 1, bytes + 70001u, N_MAX);
+    check_sad_row_u16(ref_u16(g_big + 1, g_big + N_MAX + 1u, N_MAX), g_big + 1, g_big + N_MAX + 1u, N_MAX);
+    check_absdiff_row_i16(ref_i16(rows, rows + N_MAX + 2u, N_MAX), rows, rows + N_MAX + 2u, N_MAX);
 }
 
 /* Products (correlation kernels): sum over rows of sum a[i] b[i], 64-bit. */
@@ -325,6 +380,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_kernel_name_is_known);
+    RUN_TEST(test_kernel_variants_listed);
     RUN_TEST(test_sad_u8_random_every_length_and_alignment);
     RUN_TEST(test_sad_u16_random_every_length_and_alignment);
     RUN_TEST(test_absdiff_i16_random_every_length_and_alignment);

@@ -45,3 +45,9 @@ const char *ssda__kernel_name(void)
 {
     return "portable";
 }
+
+const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
+{
+    (void)i; /* no run-time choice: the public loops are the only ones */
+    return NULL;
+}

@@ -1,18 +1,29 @@
 /*
- * kernel_sse2.c - inner loops for x86 and x86-64 with SSE2 (every x86-64).
- * Exact: every function returns the same value as its reference in
- * kernel/portable.h, for every input (tests/test_kernel.c). Unaligned loads
- * throughout, so rows may start anywhere.
+ * kernel_sse2.c - inner loops for x86 and x86-64 with SSE2 (every x86-64),
+ * and AVX2 variants of the SAD rows chosen at run time. Exact: every
+ * function returns the same value as its reference in kernel/portable.h,
+ * for every input (tests/test_kernel.c tests each variant this processor
+ * runs). Unaligned loads throughout, so rows may start anywhere.
  *
  * 8-bit:  PSADBW (_mm_sad_epu8) sums 16 absolute byte differences into two
- *         64-bit lanes per instruction.
+ *         64-bit lanes per instruction (VPSADBW: 32); an 8-byte block is a
+ *         64-bit load whose zero upper half adds nothing.
  * 16-bit: no 16-bit SAD instruction; |a - b| = (a -sat b) | (b -sat a) with
- *         unsigned saturating subtracts (one of the two is 0), then the eight
+ *         unsigned saturating subtracts (one of the two is 0), then the
  *         16-bit lanes are widened to 32 bits and added. int16 samples are
  *         first mapped to uint16 by flipping the sign bit (x + 32768, order
  *         and differences preserved), then take the same path.
  * Each 32-bit lane holds a part of the total, and the total is <= 65535 *
  * 65535 < 2^32 (kernels.h), so no lane can overflow.
+ *
+ * Run-time choice: GCC and Clang compile the AVX2 functions with
+ * __attribute__((target("avx2"))) (the rest of the library stays plain
+ * x86-64), and __builtin_cpu_supports("avx2") reads the processor model
+ * that the compiler's runtime fills before main (it checks that the
+ * operating system saves the YMM registers too). The read is one load of a
+ * word that never changes after start-up, so the public loops test it on
+ * every call: no state of ours, nothing to initialise, safe from any
+ * thread. Other compilers get the SSE2 variant only.
  *
  * Products (correlation), 8-bit: bytes widened to 16-bit lanes, PMADDWD
  * adds pairs of products (<= 2 * 255^2, exact in its signed 32-bit lanes)
@@ -22,6 +33,9 @@
  * < 2^16 for n * rows <= 65536 pixels, < 2^30) and joined in 64 bits.
  */
 #include <emmintrin.h>
+#if defined(__GNUC__) || defined(__clang__)
+#include <immintrin.h>
+#endif
 #include <string.h>
 
 #include "kernel/kernels.h"
@@ -53,7 +67,45 @@ static inline __m128i add_absdiff_u16x8(__m128i acc, __m128i a, __m128i b)
     return _mm_add_epi32(acc, _mm_unpackhi_epi16(d, zero));
 }
 
-uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+/* The 16- and 8-byte blocks and the scalar tail of an 8-bit row from
+   element i on (n - i < 32), added to acc's two 64-bit lanes. */
+static inline uint32_t sad_u8_tail(__m128i acc, const uint8_t *a, const uint8_t *b,
+                                   uint32_t i, uint32_t n)
+{
+    if (n - i >= 16u) {
+        acc = _mm_add_epi64(acc, _mm_sad_epu8(load128(a + i), load128(b + i)));
+        i += 16u;
+    }
+    if (n - i >= 8u) { /* upper halves zero: |0 - 0| adds nothing */
+        acc = _mm_add_epi64(acc, _mm_sad_epu8(_mm_loadl_epi64((const __m128i *)(const void *)(a + i)),
+                                              _mm_loadl_epi64((const __m128i *)(const void *)(b + i))));
+        i += 8u;
+    }
+    acc = _mm_add_epi64(acc, _mm_unpackhi_epi64(acc, acc));
+    return (uint32_t)_mm_cvtsi128_si32(acc) + ssda__portable_sad_row_u8(a + i, b + i, n - i);
+}
+
+/* The 8- and 4-lane blocks and the scalar tail of a 16-bit row from element
+   i on (n - i < 16), lanes mapped through x ^ bias (0: uint16; 0x8000:
+   int16 to uint16), added to acc's 32-bit lanes. */
+static inline uint32_t sad_16_tail(__m128i acc, const uint16_t *a, const uint16_t *b,
+                                   uint32_t i, uint32_t n, __m128i bias)
+{
+    if (n - i >= 8u) {
+        acc = add_absdiff_u16x8(acc, _mm_xor_si128(load128(a + i), bias),
+                                _mm_xor_si128(load128(b + i), bias));
+        i += 8u;
+    }
+    if (n - i >= 4u) { /* upper lanes equal (bias ^ bias): |d| = 0 */
+        acc = add_absdiff_u16x8(
+            acc, _mm_xor_si128(_mm_loadl_epi64((const __m128i *)(const void *)(a + i)), bias),
+            _mm_xor_si128(_mm_loadl_epi64((const __m128i *)(const void *)(b + i)), bias));
+        i += 4u;
+    }
+    return hsum_u32x4(acc) + ssda__portable_sad_row_u16(a + i, b + i, n - i);
+}
+
+static SSDA_ALWAYS_INLINE uint32_t sse2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* two 64-bit lanes, total <= 255 * 65535 */
     uint32_t i = 0u;
@@ -61,24 +113,28 @@ uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
         acc = _mm_add_epi64(acc, _mm_sad_epu8(load128(a + i), load128(b + i)));
         acc = _mm_add_epi64(acc, _mm_sad_epu8(load128(a + i + 16u), load128(b + i + 16u)));
     }
-    for (; i + 16u <= n; i += 16u) {
-        acc = _mm_add_epi64(acc, _mm_sad_epu8(load128(a + i), load128(b + i)));
-    }
-    acc = _mm_add_epi64(acc, _mm_unpackhi_epi64(acc, acc));
-    return (uint32_t)_mm_cvtsi128_si32(acc) + ssda__portable_sad_row_u8(a + i, b + i, n - i);
+    return sad_u8_tail(acc, a, b, i, n);
 }
 
-uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t sse2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
     uint32_t i = 0u;
-    for (; i + 8u <= n; i += 8u) {
+    for (; i + 16u <= n; i += 16u) {
         acc = add_absdiff_u16x8(acc, load128(a + i), load128(b + i));
+        acc = add_absdiff_u16x8(acc, load128(a + i + 8u), load128(b + i + 8u));
     }
-    return hsum_u32x4(acc) + ssda__portable_sad_row_u16(a + i, b + i, n - i);
+    return sad_16_tail(acc, a, b, i, n, _mm_setzero_si128());
 }
 
-uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+/* int16 rows as uint16 rows: the sign bit flipped (x + 32768) on both
+   sides keeps every difference. */
+static inline const uint16_t *as_u16(const int16_t *p)
+{
+    return (const uint16_t *)(const void *)p;
+}
+
+static SSDA_ALWAYS_INLINE uint32_t sse2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     const __m128i bias = _mm_set1_epi16((short)-32768); /* flips the sign bit */
     __m128i acc = _mm_setzero_si128(); /* lanes sum to <= 65535 * 65535 < 2^32 */
@@ -87,7 +143,150 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
         acc = add_absdiff_u16x8(acc, _mm_xor_si128(load128(a + i), bias),
                                 _mm_xor_si128(load128(b + i), bias));
     }
+    /* fewer than 8 left: the 4-lane block (biased), then the exact scalar
+       reference on the remaining 0..3 samples */
+    if (n - i >= 4u) {
+        acc = add_absdiff_u16x8(
+            acc, _mm_xor_si128(_mm_loadl_epi64((const __m128i *)(const void *)(as_u16(a) + i)), bias),
+            _mm_xor_si128(_mm_loadl_epi64((const __m128i *)(const void *)(as_u16(b) + i)), bias));
+        i += 4u;
+    }
     return hsum_u32x4(acc) + ssda__portable_absdiff_row_i16(a + i, b + i, n - i);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* Compiled for AVX2 whatever the build's -march (the attribute on each). */
+static inline __attribute__((target("avx2")))
+__m256i load256(const void *p)
+{
+    return _mm256_loadu_si256((const __m256i *)p);
+}
+
+/* The 16 |a - b| of unsigned 16-bit lanes added to eight 32-bit lanes: the
+   low and high halves of each 32-bit pair separately. */
+static inline __attribute__((target("avx2")))
+__m256i add_absdiff_u16x16(__m256i acc, __m256i a, __m256i b)
+{
+    const __m256i d = _mm256_or_si256(_mm256_subs_epu16(a, b), _mm256_subs_epu16(b, a));
+    acc = _mm256_add_epi32(acc, _mm256_and_si256(d, _mm256_set1_epi32(0xFFFF)));
+    return _mm256_add_epi32(acc, _mm256_srli_epi32(d, 16));
+}
+
+static __attribute__((target("avx2")))
+uint32_t avx2_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+    __m256i acc = _mm256_setzero_si256(); /* four 64-bit lanes, total <= 255 * 65535 */
+    uint32_t i = 0u;
+    for (; i + 64u <= n; i += 64u) {
+        acc = _mm256_add_epi64(acc, _mm256_sad_epu8(load256(a + i), load256(b + i)));
+        acc = _mm256_add_epi64(acc, _mm256_sad_epu8(load256(a + i + 32u), load256(b + i + 32u)));
+    }
+    if (n - i >= 32u) {
+        acc = _mm256_add_epi64(acc, _mm256_sad_epu8(load256(a + i), load256(b + i)));
+        i += 32u;
+    }
+    return sad_u8_tail(_mm_add_epi64(_mm256_castsi256_si128(acc), _mm256_extracti128_si256(acc, 1)),
+                       a, b, i, n);
+}
+
+/* A 16-bit row through x ^ bias (see sad_16_tail), 16 lanes at a time. */
+static inline __attribute__((target("avx2")))
+uint32_t avx2_sad_row_16(const uint16_t *a, const uint16_t *b, uint32_t n, __m128i bias)
+{
+    const __m256i bias2 = _mm256_broadcastsi128_si256(bias);
+    __m256i acc = _mm256_setzero_si256(); /* lanes sum to <= 65535 * 65535 < 2^32 */
+    uint32_t i = 0u;
+    for (; i + 16u <= n; i += 16u) {
+        acc = add_absdiff_u16x16(acc, _mm256_xor_si256(load256(a + i), bias2),
+                                 _mm256_xor_si256(load256(b + i), bias2));
+    }
+    return sad_16_tail(_mm_add_epi32(_mm256_castsi256_si128(acc), _mm256_extracti128_si256(acc, 1)),
+                       a, b, i, n, bias);
+}
+
+static __attribute__((target("avx2")))
+uint32_t avx2_sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+    return avx2_sad_row_16(a, b, n, _mm_setzero_si128());
+}
+
+static __attribute__((target("avx2")))
+uint32_t avx2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+{
+    /* sad_16_tail's scalar tail reads plain uint16: give the biased part a
+       multiple of 4 samples (that tail then empty) and finish the last
+       0..3 with the int16 reference */
+    const uint32_t n4 = n & ~3u;
+    return avx2_sad_row_16(as_u16(a), as_u16(b), n4, _mm_set1_epi16((short)-32768)) +
+           ssda__portable_absdiff_row_i16(a + n4, b + n4, n - n4);
+}
+#endif
+
+/* 1 where the processor (and the operating system) runs AVX2, else 0. */
+static inline uint32_t x86_avx2(void)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (uint32_t)(__builtin_cpu_supports("avx2") != 0);
+#else
+    return 0u;
+#endif
+}
+
+/* The public loops: SSE2 inline, AVX2 only for rows long enough to gain
+   from it. ssda-bench-kernel on an AMD EPYC: rows up to 64 bytes cost the
+   call (about 3.3 ns) whatever the width, and the 256-bit setup costs more
+   than it saves below 128 bytes or 32 16-bit samples. Short rows (16 px:
+   the tracking windows) pay one compare on their length and nothing else;
+   long rows index a two-entry table by the processor's AVX2 bit, so no
+   branch depends on the processor. */
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    static uint32_t (*const pick[2])(const uint8_t *, const uint8_t *, uint32_t) = {
+        sse2_sad_row_u8, avx2_sad_row_u8
+    };
+    if (n >= 128u) {
+        return pick[x86_avx2()](a, b, n);
+    }
+#endif
+    return sse2_sad_row_u8(a, b, n);
+}
+
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    static uint32_t (*const pick[2])(const uint16_t *, const uint16_t *, uint32_t) = {
+        sse2_sad_row_u16, avx2_sad_row_u16
+    };
+    if (n >= 32u) {
+        return pick[x86_avx2()](a, b, n);
+    }
+#endif
+    return sse2_sad_row_u16(a, b, n);
+}
+
+uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    static uint32_t (*const pick[2])(const int16_t *, const int16_t *, uint32_t) = {
+        sse2_absdiff_row_i16, avx2_absdiff_row_i16
+    };
+    if (n >= 32u) {
+        return pick[x86_avx2()](a, b, n);
+    }
+#endif
+    return sse2_absdiff_row_i16(a, b, n);
+}
+
+const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
+{
+    static const ssda__kernel_variant_t x86_variants[] = {
+        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16 },
+#if defined(__GNUC__) || defined(__clang__)
+        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16 },
+#endif
+    };
+    return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;
 }
 
 /* Products of 8 byte pairs (widened to 16-bit lanes) added to acc. */

@@ -37,4 +37,22 @@ SSDA_INTERNAL uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const ui
 /* Name of the compiled kernel set ("portable", "sse2", "armv7em"). */
 SSDA_INTERNAL const char *ssda__kernel_name(void);
 
+/* The SAD row loops of one variant of the compiled set. A set may hold
+   several (the x86 set: SSE2, and AVX2 chosen at run time where the
+   processor has it); the functions above call the one this processor
+   runs best. Every variant returns the portable reference's value. */
+typedef struct {
+    const char *name;
+    uint32_t (*sad_row_u8)(const uint8_t *a, const uint8_t *b, uint32_t n);
+    uint32_t (*sad_row_u16)(const uint16_t *a, const uint16_t *b, uint32_t n);
+    uint32_t (*absdiff_row_i16)(const int16_t *a, const int16_t *b, uint32_t n);
+} ssda__kernel_variant_t;
+
+/* Variant i (0 .. count-1) of the variants this processor can run, in
+   order of preference from the plainest; NULL for i >= count. A set
+   without a run-time choice (portable, armv7em) has none: count 0, its
+   public loops are its only ones. For tests (each variant against the
+   reference) and benchmarks. */
+SSDA_INTERNAL const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i);
+
 #endif /* SSDA_KERNEL_KERNELS_H */

@@ -96,11 +96,19 @@ void cli_warn_png_name(const char *cmd, const char *what, const char *path);
 /* The file name of a path, without its folders (for picture titles). */
 const char *cli_basename(const char *path);
 
+/* ---- threads ---- */
+/* The thread count a command's --threads set (0: every core, the default);
+   cli_threads() is that count, at least 1. */
+void cli_set_threads(unsigned threads);
+unsigned cli_threads(void);
+
 /* ---- inputs ---- */
 /* Read a PNG as gray (depth as png_io). Prints the error; returns 0 or -1. */
 int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray_image_t *img);
 /* Read two PNGs of a common depth (an 8-bit one is widened to 16 if the
-   other is 16-bit, v * 257). Prints errors; returns 0 or -1. */
+   other is 16-bit, v * 257), on two threads when cli_threads() > 1 (the
+   same images either way). Prints errors (FIRST's if both fail); returns
+   0 or -1. */
 int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_image_t *a,
                       gray_image_t *b);
 

@@ -1,11 +1,13 @@
 /* cli_args.c - option scanning, value parsing and messages for `ssda`. */
 #define _POSIX_C_SOURCE 200809L /* fcntl, O_ACCMODE */
 #include "cli.h"
+#include "parallel.h"
 
 #include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -476,22 +478,91 @@ int cli_load_png(const char *cmd, const char *path, png_gray_depth_t depth, gray
     return 0;
 }
 
+/* The threads a command may use (--threads; 0 until set: every core). */
+static unsigned g_threads;
+
+void cli_set_threads(unsigned threads)
+{
+    g_threads = threads;
+}
+
+unsigned cli_threads(void)
+{
+    return g_threads != 0u ? g_threads : parallel_cores();
+}
+
+/* One PNG read at its native depth, on its own thread. */
+typedef struct {
+    const char *path;
+    gray_image_t img;
+    int rc;
+    char err[512];
+} png_job_t;
+
+static void *png_job(void *arg)
+{
+    png_job_t *j = arg;
+    j->rc = png_read_gray(j->path, PNG_GRAY_NATIVE, &j->img, NULL, j->err, sizeof j->err);
+    return NULL;
+}
+
+/* *img (8-bit) replaced by its 16-bit copy, v * 257: what png_read_gray
+   gives for PNG_GRAY_16 from any source it decodes to 8 bits. */
+static int widen_to_16(gray_image_t *img)
+{
+    gray_image_t w;
+    uint32_t x, y;
+    if (gray_image_alloc(&w, img->width, img->height, 16) != 0) {
+        return -1;
+    }
+    for (y = 0; y < img->height; y++) {
+        const uint8_t *in = (const uint8_t *)img->pixels + (size_t)y * img->stride;
+        uint16_t *out = (uint16_t *)(void *)((uint8_t *)w.pixels + (size_t)y * w.stride);
+        for (x = 0; x < img->width; x++) {
+            out[x] = (uint16_t)(in[x] * 257u);
+        }
+    }
+    gray_image_free(img);
+    *img = w;
+    return 0;
+}
+
 int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_image_t *a,
                       gray_image_t *b)
 {
-    if (cli_load_png(cmd, p1, PNG_GRAY_NATIVE, a) != 0) {
-        return -1;
+    png_job_t j[2];
+    pthread_t tid;
+    int threaded;
+    memset(j, 0, sizeof j);
+    j[0].path = p1;
+    j[1].path = p2;
+    /* decoding is most of a tracking run's time outside the search: the
+       two files at once when a second core may be used */
+    threaded = cli_threads() > 1u && pthread_create(&tid, NULL, png_job, &j[1]) == 0;
+    (void)png_job(&j[0]);
+    if (threaded) {
+        pthread_join(tid, NULL);
+    } else {
+        (void)png_job(&j[1]);
     }
-    if (cli_load_png(cmd, p2, a->bits == 16 ? PNG_GRAY_16 : PNG_GRAY_NATIVE, b) != 0) {
-        gray_image_free(a);
-        return -1;
-    }
-    if (b->bits == 16 && a->bits == 8) { /* widen the first to match */
-        gray_image_free(a);
-        if (cli_load_png(cmd, p1, PNG_GRAY_16, a) != 0) {
-            gray_image_free(b);
-            return -1;
+    if (j[0].rc != 0 || j[1].rc != 0) { /* FIRST's error first, as read in order */
+        cli_input_error(cmd, "%s", j[0].rc != 0 ? j[0].err : j[1].err);
+        if (j[0].rc == 0) {
+            gray_image_free(&j[0].img);
         }
+        if (j[1].rc == 0) {
+            gray_image_free(&j[1].img);
+        }
+        return -1;
     }
+    if ((j[0].img.bits != j[1].img.bits) &&
+        widen_to_16(j[0].img.bits == 8 ? &j[0].img : &j[1].img) != 0) {
+        gray_image_free(&j[0].img);
+        gray_image_free(&j[1].img);
+        cli_input_error(cmd, "out of memory");
+        return -1;
+    }
+    *a = j[0].img;
+    *b = j[1].img;
     return 0;
 }

@@ -1,6 +1,7 @@
 /* cmd_compare.c - `ssda compare FIRST.png SECOND.png`: the seed's Table 1 on the
    user's images: SSDA vectors against exhaustive normalised cross-correlation. */
 #include "ncc_ref.h"
+#include "parallel.h"
 #include "progress.h"
 #include "track_run.h"
 
@@ -22,7 +23,10 @@ static void help(void)
           "\n",
           stdout);
     fputs(track_opts_help, stdout);
-    fputs("  -h, --help        this text\n"
+    fputs("  --threads N       read the two images and run the NCC reference searches\n"
+          "                    on N threads (default: every core, 0 too); the output\n"
+          "                    is the same for any N\n"
+          "  -h, --help        this text\n"
           "\nExit codes: 0 ok, 1 bad input, 2 usage.\n",
           stdout);
 }
@@ -57,35 +61,76 @@ typedef struct {
     double secs;
 } ncc_cmp_t;
 
-/* Search every ok window again by exhaustive NCC over the same area. */
-static int ncc_reference(const track_result_t *r, int quiet, ncc_cmp_t *c)
-{
-    uint32_t k, hx = (r->grid.search_w - r->grid.win_w) / 2u;
-    uint32_t hy = (r->grid.search_h - r->grid.win_h) / 2u;
+/* One NCC search per ok window, on parallel_for's threads: each writes
+   only its own slots of ref/truth (and a failure flag). */
+typedef struct {
+    const track_result_t *r;
+    ncc_cmp_t *c;
+    uint32_t hx, hy;
+    int failed;        /* set (never cleared) by any job out of memory */
     progress_t prog;
+} ncc_jobs_t;
+
+static void ncc_job(void *ctx, uint32_t k, unsigned worker)
+{
+    ncc_jobs_t *j = ctx;
+    const track_result_t *r = j->r;
+    const ssda_track_vector_t *v = &r->vec[k];
+    uint32_t bx, by;
+    double score;
+    (void)worker;
+    if (v->status != SSDA_TRACK_OK) {
+        return;
+    }
+    if (ncc_search(&r->first, v->x - j->hx, v->y - j->hy, r->grid.search_w, r->grid.search_h,
+                   &r->second, v->x, v->y, r->grid.win_w, r->grid.win_h, &bx, &by,
+                   &score) != 0) {
+        __atomic_store_n(&j->failed, 1, __ATOMIC_RELAXED);
+        return;
+    }
+    j->c->ref[k][0] = (int32_t)j->hx - (int32_t)bx;
+    j->c->ref[k][1] = (int32_t)j->hy - (int32_t)by;
+}
+
+static void ncc_done(void *ctx, uint32_t done)
+{
+    ncc_jobs_t *j = ctx;
+    progress_update(&j->prog, done);
+}
+
+/* Search every ok window again by exhaustive NCC over the same area, on
+   `threads` threads; then count agreement in window order. */
+static int ncc_reference(const track_result_t *r, int quiet, unsigned threads, ncc_cmp_t *c)
+{
+    ncc_jobs_t j;
+    uint32_t k;
     double t0;
+    memset(&j, 0, sizeof j);
+    j.r = r;
+    j.c = c;
+    j.hx = (r->grid.search_w - r->grid.win_w) / 2u;
+    j.hy = (r->grid.search_h - r->grid.win_h) / 2u;
     c->ref = calloc(r->grid.count + 1u, sizeof *c->ref);
     c->truth = calloc(r->grid.count + 1u, sizeof *c->truth);
     if (c->ref == NULL || c->truth == NULL) {
         return cli_input_error("compare", "out of memory");
     }
-    progress_begin(&prog, "NCC reference", r->grid.count, quiet);
+    progress_begin(&j.prog, "NCC reference", r->grid.count, quiet);
     t0 = progress_now();
+    if (parallel_for(r->grid.count, threads, ncc_job, ncc_done, &j) != 0) {
+        fprintf(stderr, "ssda compare: note: could not start every thread; ran on fewer\n");
+    }
+    c->secs = progress_now() - t0;
+    progress_end(&j.prog);
+    if (j.failed) {
+        return cli_input_error("compare", "out of memory");
+    }
     for (k = 0; k < r->grid.count; k++) {
         const ssda_track_vector_t *v = &r->vec[k];
-        uint32_t bx, by, d;
-        double score;
+        uint32_t d;
         if (v->status != SSDA_TRACK_OK) {
             continue;
         }
-        if (ncc_search(&r->first, v->x - hx, v->y - hy, r->grid.search_w, r->grid.search_h,
-                       &r->second, v->x, v->y, r->grid.win_w, r->grid.win_h, &bx, &by,
-                       &score) != 0) {
-            progress_end(&prog);
-            return cli_input_error("compare", "out of memory");
-        }
-        c->ref[k][0] = (int32_t)hx - (int32_t)bx;
-        c->ref[k][1] = (int32_t)hy - (int32_t)by;
         c->truth[k][0] = c->ref[k][0];
         c->truth[k][1] = c->ref[k][1];
         d = (uint32_t)abs(v->dx - c->ref[k][0]);
@@ -94,10 +139,7 @@ static int ncc_reference(const track_result_t *r, int quiet, ncc_cmp_t *c)
         c->within[2] += d <= 2u;
         c->within[1] += d <= 1u;
         c->within[0] += d == 0u;
-        progress_update(&prog, k + 1u);
     }
-    c->secs = progress_now() - t0;
-    progress_end(&prog);
     return CLI_OK;
 }
 
@@ -135,7 +177,8 @@ static int write_outputs(const track_opts_t *o, const char *first, const char *s
     return rc;
 }
 
-static void print_summary(const track_opts_t *o, const track_result_t *r, const ncc_cmp_t *c)
+static void print_summary(const track_opts_t *o, const track_result_t *r, const ncc_cmp_t *c,
+                          unsigned threads)
 {
     uint64_t brute = track_brute_ops(r);
     uint32_t ok = c->ok;
@@ -148,6 +191,9 @@ static void print_summary(const track_opts_t *o, const track_result_t *r, const 
     printf("time: SSDA %.2f ms (%.2f %% of brute-force pixel ops), NCC %.2f ms",
            1e3 * r->secs, brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0,
            1e3 * c->secs);
+    if (threads > 1u) {
+        printf(" on %u threads", threads);
+    }
     if (r->secs > 0.0 && ok > 0) {
         printf(" (%.0fx the SSDA time)", c->secs / r->secs);
     }
@@ -166,7 +212,13 @@ int cmd_compare(int argc, char **argv)
     track_result_t r;
     ncc_cmp_t c;
     const char *first, *second;
-    int rc = track_parse_args("compare", argc, argv, help, &o, &first, &second);
+    unsigned threads;
+    int rc = parallel_take_threads("compare", &argc, argv, &threads);
+    if (rc != 0) {
+        return CLI_USAGE;
+    }
+    cli_set_threads(threads);
+    rc = track_parse_args("compare", argc, argv, help, &o, &first, &second);
     if (rc != CLI_OK) {
         return rc < 0 ? CLI_OK : rc; /* -1: --help */
     }
@@ -174,12 +226,12 @@ int cmd_compare(int argc, char **argv)
         return rc;
     }
     memset(&c, 0, sizeof c);
-    rc = ncc_reference(&r, o.quiet, &c);
+    rc = ncc_reference(&r, o.quiet, threads, &c);
     if (rc == CLI_OK) {
         rc = write_outputs(&o, first, second, &r, &c);
     }
     if (rc == CLI_OK && !cli_is_stdout(o.json_path) && !cli_is_stdout(o.overlay_path)) {
-        print_summary(&o, &r, &c);
+        print_summary(&o, &r, &c, threads);
     }
     free(c.ref);
     free(c.truth);

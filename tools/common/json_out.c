@@ -185,6 +185,49 @@ static int is_container(const cJSON *v)
     return cJSON_IsObject(v) || cJSON_IsArray(v);
 }
 
+/* A whole number's digits, as "%1.15g" prints it for |v| < 1e15. */
+static char *whole_text(double v)
+{
+    char buf[24], *p = buf + sizeof buf, *out;
+    unsigned long long u = (unsigned long long)(v < 0.0 ? -v : v);
+    size_t n;
+    *--p = '\0';
+    do {
+        *--p = (char)('0' + (int)(u % 10u));
+        u /= 10u;
+    } while (u != 0u);
+    if (v < 0.0) {
+        *--p = '-';
+    }
+    n = (size_t)(buf + sizeof buf - p);
+    if ((out = malloc(n)) != NULL) { /* cJSON_Delete frees it (free hook) */
+        memcpy(out, p, n);
+    }
+    return out;
+}
+
+/* cJSON 1.7.15 prints every number through "%1.15g" and a sscanf round
+   trip, most of the JSON time of a tracking run's window records; whole
+   numbers below 1e15 (not -0) are turned into raw text of the same digits
+   first, so the bytes written are the same. */
+static void whole_numbers_raw(cJSON *v)
+{
+    cJSON *c;
+    for (c = v->child; c != NULL; c = c->next) {
+        if (cJSON_IsNumber(c)) {
+            double d = c->valuedouble;
+            char *text;
+            if (d == floor(d) && fabs(d) < 1e15 && !(d == 0.0 && signbit(d)) &&
+                (text = whole_text(d)) != NULL) {
+                c->type = cJSON_Raw;
+                c->valuestring = text;
+            }
+        } else if (is_container(c)) {
+            whole_numbers_raw(c);
+        }
+    }
+}
+
 /* An array whose first element is an object: one element per line. */
 static int put_rows(FILE *f, const cJSON *arr)
 {
@@ -206,6 +249,9 @@ static int put_lazy(FILE *f, const json_out_lazy_t *lazy)
     fputc('[', f);
     for (i = 0; i < lazy->count && rc == 0 && !ferror(f); i++) { /* stop at a closed pipe */
         cJSON *e = lazy->item(lazy->ctx, i);
+        if (e != NULL) {
+            whole_numbers_raw(e);
+        }
         fputs(i > 0 ? ",\n  " : "\n  ", f);
         rc = e != NULL ? put_compact(f, e) : -1;
         cJSON_Delete(e);

@@ -120,12 +120,29 @@ static void row_to_gray(const png_byte *in, uint32_t width, int channels, int in
     }
 }
 
+/* 1 on a little-endian host (16-bit samples then need libpng's swap). */
+static int host_little_endian(void)
+{
+    const uint16_t one = 1u;
+    uint8_t first;
+    memcpy(&first, &one, 1);
+    return first == 1u;
+}
+
 /* Decoded rows to gray into r->out: every row at once for an interlaced
-   image (passes), else one row at a time. Inside read_protected's setjmp. */
+   image (passes), else one row at a time; `direct`: the decoded row is
+   already the gray row (one channel, the output's depth, host order), so
+   libpng writes it into the image, no copy. Inside read_protected's setjmp. */
 static int decode_rows(png_reader_t *r, png_uint_32 w, png_uint_32 h, int passes, int channels,
-                       int dec_bits, int out_bits, size_t rowbytes)
+                       int dec_bits, int out_bits, size_t rowbytes, int direct)
 {
     size_t y;
+    if (direct) {
+        for (y = 0; y < h; y++) {
+            png_read_row(r->png, (png_bytep)r->out.pixels + y * r->out.stride, NULL);
+        }
+        return 0;
+    }
     if (passes > 1) {
         r->rows = calloc(h, sizeof *r->rows);
         if (r->rows == NULL) {
@@ -193,7 +210,7 @@ static int check_size(png_reader_t *r, png_uint_32 w, png_uint_32 h, int passes,
 static int read_protected(png_reader_t *r, png_gray_depth_t depth)
 {
     png_uint_32 w, h;
-    int bit_depth, color_type, interlace, passes, channels, dec_bits, out_bits;
+    int bit_depth, color_type, interlace, passes, channels, dec_bits, out_bits, direct;
     size_t rowbytes;
 
     if (setjmp(png_jmpbuf(r->png))) {
@@ -218,12 +235,26 @@ static int read_protected(png_reader_t *r, png_gray_depth_t depth)
     if (color_type == PNG_COLOR_TYPE_GRAY && bit_depth < 8) {
         png_set_expand_gray_1_2_4_to_8(r->png); /* scaled to 0..255, tRNS not expanded */
     }
+    out_bits = depth == PNG_GRAY_NATIVE ? (bit_depth == 16 ? 16 : 8) : (int)depth;
+    /* A plain gray file read at its own depth (the usual input, e.g. the
+       16-bit GOES frames): libpng decodes straight into the image, 16-bit
+       samples swapped to host order by libpng (the same values as
+       row_to_gray's big-endian reading, without a second pass). */
+    direct = interlace == PNG_INTERLACE_NONE && color_type == PNG_COLOR_TYPE_GRAY &&
+             (bit_depth == 16 ? out_bits == 16 : out_bits == 8);
+    if (direct && bit_depth == 16 && host_little_endian()) {
+        png_set_swap(r->png);
+    }
     passes = png_set_interlace_handling(r->png);
     png_read_update_info(r->png, r->info);
     channels = png_get_channels(r->png, r->info);
     dec_bits = png_get_bit_depth(r->png, r->info);
     rowbytes = png_get_rowbytes(r->png, r->info);
-    out_bits = depth == PNG_GRAY_NATIVE ? (bit_depth == 16 ? 16 : 8) : (int)depth;
+    if (direct && (channels != 1 || dec_bits != out_bits || rowbytes != (size_t)w * (size_t)(out_bits / 8))) {
+        snprintf(r->why, sizeof r->why, "unexpected decoded layout (%d channels, %d bits)",
+                 channels, dec_bits); /* cannot happen for gray at its depth */
+        return -1;
+    }
     if (check_size(r, w, h, passes, rowbytes, out_bits == 16 ? 2u : 1u) != 0) {
         return -1;
     }
@@ -232,7 +263,7 @@ static int read_protected(png_reader_t *r, png_gray_depth_t depth)
                  (unsigned long)w, (unsigned long)h);
         return -1;
     }
-    if (decode_rows(r, w, h, passes, channels, dec_bits, out_bits, rowbytes) != 0) {
+    if (decode_rows(r, w, h, passes, channels, dec_bits, out_bits, rowbytes, direct) != 0) {
         return -1;
     }
     png_read_end(r->png, NULL); /* checks the trailing chunks and IEND */

@@ -156,6 +156,62 @@ static void test_layout(void)
     cJSON_Delete(doc);
 }
 
+/* Numbers of every kind in one record: whole (both signs, 0, -0, the
+   largest below 1e15, 1e15 and beyond), fractional, nested. */
+static cJSON *make_numbers(void *ctx, size_t i)
+{
+    static const double v[] = {0.0, -0.0, 7.0, -5.0, 123456789.0, -2147483648.0, 4294967296.0,
+                               999999999999999.0, 1e15, -1e15, 1e300, 1.5, -0.25, 1.0 / 3.0};
+    cJSON *o = cJSON_CreateObject(), *a = cJSON_CreateArray(), *n = cJSON_CreateObject();
+    size_t k;
+    (void)ctx;
+    for (k = 0; k < sizeof v / sizeof v[0]; k++) {
+        char key[8];
+        snprintf(key, sizeof key, "n%u", (unsigned)k);
+        cJSON_AddNumberToObject(o, key, v[k] + (double)i);
+        cJSON_AddItemToArray(a, cJSON_CreateNumber(-v[k]));
+    }
+    cJSON_AddNumberToObject(n, "x", 42.0);
+    cJSON_AddItemToObject(n, "a", a);
+    cJSON_AddItemToObject(o, "nested", n);
+    cJSON_AddStringToObject(o, "s", "12");
+    return o;
+}
+
+/* Lazy records print exactly as cJSON prints them (json_out.c writes whole
+   numbers through its own digits; the reference is cJSON's own printing). */
+static void test_lazy_numbers_as_cjson(void)
+{
+    cJSON *doc = json_out_object();
+    json_out_lazy_t lazy = {"w", 2, make_numbers, NULL};
+    char *text, *want = NULL, *r0, *r1;
+    size_t len = 0;
+    FILE *f;
+    cJSON_AddArrayToObject(doc, "w");
+    text = print(doc, &lazy);
+    {
+        cJSON *e0 = make_numbers(NULL, 0), *e1 = make_numbers(NULL, 1);
+        r0 = cJSON_PrintUnformatted(e0);
+        r1 = cJSON_PrintUnformatted(e1);
+        cJSON_Delete(e0);
+        cJSON_Delete(e1);
+    }
+    f = open_memstream(&want, &len);
+    if (f != NULL && r0 != NULL && r1 != NULL) {
+        fprintf(f, "{\"w\":[\n  %s,\n  %s]}\n", r0, r1);
+        fclose(f);
+        CHECK(text != NULL && strcmp(text, want) == 0, "lazy numbers:\n%s\nwant:\n%s",
+              text != NULL ? text : "(none)", want);
+    } else {
+        CHECK(0, "out of memory");
+    }
+    free(want);
+    free(r0);
+    free(r1);
+    free(text);
+    cJSON_Delete(doc);
+}
+
 static void test_write(const char *dir)
 {
     char path[4096], err[512];
@@ -184,6 +240,7 @@ int main(int argc, char **argv)
     test_strings();
     test_numbers();
     test_layout();
+    test_lazy_numbers_as_cjson();
     test_write(argv[1]);
     if (failures != 0) {
         fprintf(stderr, "%d failure(s)\n", failures);

@@ -13,9 +13,19 @@
    cref ncc_at AREA W H WIN W H BPP X Y      one line: rho_q30
    cref pitch  SAMPLES N RATE [opts]         one line per estimate: frame center lag
                                              period_q16 f0_q16 diffs confidence_q15 voiced dip silent
+   cref kl     IMG W H BPP CH [opts]         (opts: kl config fields, nodata=N) lines: matrix_q30 (9),
+                                             vec_q30 (9), lambda_q16, zvar_q16, mean_q8 (3 each),
+                                             count masked sweeps clamped; then Z1, Z2, Z3 (h w each)
+   cref mix    HIST BINS RULE BAND [opts]    line: count loglik bic bins total iterations fit;
+                                             one line per component: weight mean sigma (Q16);
+                                             then the lut (bins) and the band pixels (count)
+   cref region LABELS W H OP                 the output labels (h w), then 256 counts
    Files are raw native-order samples, rows packed. Exit 0, or 1 with the
    library's error code printed ("error N"). */
 #include "ssda/grad.h"
+#include "ssda/kl.h"
+#include "ssda/mixture.h"
+#include "ssda/region.h"
 #include "ssda/match.h"
 #include "ssda/ncc.h"
 #include "ssda/pitch.h"
@@ -64,6 +74,17 @@ static const field_t pitch_fields[] = {
     F(ssda_pitch_config_t, silence_mad, 2), F(ssda_pitch_config_t, chunk, 2),
     F(ssda_pitch_config_t, lowpass_hz, 2), F(ssda_pitch_config_t, flags, 1),
     {NULL, 0, 0}};
+
+static const field_t kl_fields[] = {
+    F(ssda_kl_config_t, matrix, 1), F(ssda_kl_config_t, range, 1),
+    F(ssda_kl_config_t, nsigma, 1), F(ssda_kl_config_t, out_max, 2),
+    F(ssda_kl_config_t, gain_max_q16, 4), {NULL, 0, 0}};
+
+static const field_t mix_fields[] = {
+    F(ssda_mix_config_t, components, 1), F(ssda_mix_config_t, max_components, 1),
+    F(ssda_mix_config_t, fit, 1), F(ssda_mix_config_t, init, 1),
+    F(ssda_mix_config_t, flags, 1), F(ssda_mix_config_t, max_iter, 2),
+    F(ssda_mix_config_t, sigma_min_q16, 4), F(ssda_mix_config_t, tol_q24, 4), {NULL, 0, 0}};
 
 /* name=value into the struct at base; prefix "m." addresses the match
    options inside a track config. Returns 0, or -1 for an unknown name. */
@@ -316,8 +337,155 @@ static int run_pitch(int argc, char **argv)
     return 0;
 }
 
+static int run_kl(int argc, char **argv)
+{
+    const size_t w = strtoul(argv[3], NULL, 0), h = strtoul(argv[4], NULL, 0);
+    const int bpp = atoi(argv[5]), ch = atoi(argv[6]);
+    const uint8_t *img = load(argv[2], w * h * (size_t)bpp * (size_t)ch);
+    uint16_t *z = malloc(3u * (w * h > 0 ? w * h : 1u) * sizeof *z);
+    ssda_kl_acc_config_t ac;
+    ssda_kl_config_t kc;
+    ssda_kl_acc_t acc;
+    ssda_kl_t kl;
+    uint32_t clamped = 0;
+    size_t y, k;
+    int i, e;
+    memset(&ac, 0, sizeof ac);
+    memset(&kc, 0, sizeof kc);
+    ac.format = bpp == 1 ? SSDA_PIX_U8 : SSDA_PIX_U16;
+    for (i = 7; i < argc; i++) {
+        if (strncmp(argv[i], "nodata=", 7) == 0) {
+            ac.flags = SSDA_KL_MASK_NODATA;
+            ac.nodata = (uint16_t)strtoul(argv[i] + 7, NULL, 0);
+        } else if (set_field(&kc, kl_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if ((e = ssda_kl_acc_init(&acc, &ac)) != SSDA_OK) {
+        return fail(e);
+    }
+    for (y = 0; y < h; y++) { /* planar rows through band pointers, step ch */
+        const uint8_t *p = img + y * w * (size_t)ch * (size_t)bpp;
+        const ssda_kl_row_t row = {{p, p + bpp, p + 2 * bpp}, (uint32_t)ch};
+        if ((e = ssda_kl_acc_add_row(&acc, &row, (uint32_t)w)) != SSDA_OK) {
+            return fail(e);
+        }
+    }
+    if ((e = ssda_kl_solve(&acc, &kc, &kl)) != SSDA_OK) {
+        return fail(e);
+    }
+    for (y = 0; y < h; y++) {
+        const uint8_t *p = img + y * w * (size_t)ch * (size_t)bpp;
+        const ssda_kl_row_t row = {{p, p + bpp, p + 2 * bpp}, (uint32_t)ch};
+        uint16_t *const out[3] = {z + y * w, z + (h + y) * w, z + (2u * h + y) * w};
+        if ((e = ssda_kl_transform_row(&kl, &row, (uint32_t)w, out, &clamped)) != SSDA_OK) {
+            return fail(e);
+        }
+    }
+    for (i = 0; i < 9; i++) {
+        printf("%d%c", (int)kl.matrix_q30[i / 3][i % 3], i == 8 ? '\n' : ' ');
+    }
+    for (i = 0; i < 9; i++) {
+        printf("%d%c", (int)kl.vec_q30[i / 3][i % 3], i == 8 ? '\n' : ' ');
+    }
+    printf("%llu %llu %llu\n", (unsigned long long)kl.lambda_q16[0],
+           (unsigned long long)kl.lambda_q16[1], (unsigned long long)kl.lambda_q16[2]);
+    printf("%llu %llu %llu\n", (unsigned long long)kl.zvar_q16[0],
+           (unsigned long long)kl.zvar_q16[1], (unsigned long long)kl.zvar_q16[2]);
+    printf("%u %u %u\n", kl.mean_q8[0], kl.mean_q8[1], kl.mean_q8[2]);
+    printf("%u %u %u %u\n", kl.count, acc.masked, kl.sweeps, clamped);
+    for (k = 0; k < 3u * h; k++) {
+        for (y = 0; y < w; y++) {
+            printf("%u%c", z[k * w + y], y + 1 == w ? '\n' : ' ');
+        }
+    }
+    return 0;
+}
+
+static int run_mix(int argc, char **argv)
+{
+    const uint32_t bins = (uint32_t)strtoul(argv[3], NULL, 0);
+    const uint32_t *hist = load(argv[2], (size_t)bins * 4u);
+    const uint8_t rule = (uint8_t)atoi(argv[4]);
+    const uint32_t band = (uint32_t)strtoul(argv[5], NULL, 0);
+    ssda_mix_config_t cfg;
+    ssda_mix_model_t m;
+    uint8_t *lut = malloc(bins > 0 ? bins : 1u);
+    uint32_t px[SSDA_MIX_MAX_COMPONENTS], j;
+    void *work = malloc(SSDA_MIX_WORK_SIZE(bins));
+    int i, e;
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 6; i < argc; i++) {
+        if (set_field(&cfg, mix_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if ((e = ssda_mix_fit(hist, bins, &cfg, work, SSDA_MIX_WORK_SIZE(bins), &m)) != SSDA_OK ||
+        (e = ssda_mix_lut(&m, rule, band, lut)) != SSDA_OK ||
+        (e = ssda_mix_band_pixels(&m, hist, band, px)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %lld %lld %u %u %u %u\n", m.count, (long long)m.loglik_q16, (long long)m.bic_q16,
+           m.bins, m.total, m.iterations, m.fit);
+    for (j = 0; j < m.count; j++) {
+        printf("%u %u %u\n", m.comp[j].weight_q16, m.comp[j].mean_q16, m.comp[j].sigma_q16);
+    }
+    for (j = 0; j < bins; j++) {
+        printf("%u%c", lut[j], j + 1 == bins ? '\n' : ' ');
+    }
+    for (j = 0; j < m.count; j++) {
+        printf("%u%c", px[j], j + 1 == m.count ? '\n' : ' ');
+    }
+    return 0;
+}
+
+static int run_region(char **argv)
+{
+    const uint32_t w = (uint32_t)strtoul(argv[3], NULL, 0), h = (uint32_t)strtoul(argv[4], NULL, 0);
+    const uint8_t *in = load(argv[2], (size_t)w * h);
+    uint8_t *out = malloc((size_t)w * h + 1u), *ring = malloc(SSDA_REGION_RING_SIZE(w) + 1u);
+    uint32_t counts[256] = {0}, y, done = 0;
+    ssda_region_config_t rc;
+    ssda_region_t job;
+    int e;
+    rc.width = (uint16_t)w;
+    rc.height = (uint16_t)h;
+    rc.op = (uint8_t)atoi(argv[5]);
+    rc.counts = counts;
+    if ((e = ssda_region_init(&job, &rc, ring, SSDA_REGION_RING_SIZE(w))) != SSDA_OK) {
+        return fail(e);
+    }
+    for (y = 0; y < h; y++) {
+        if ((e = ssda_region_push(&job, in + (size_t)y * w, out + (size_t)done * w)) < 0) {
+            return fail(e);
+        }
+        done += (uint32_t)e;
+    }
+    if ((e = ssda_region_flush(&job, out + (size_t)done * w)) < 0) {
+        return fail(e);
+    }
+    for (y = 0; y < w * h; y++) {
+        printf("%u%c", out[y], (y + 1) % w == 0 ? '\n' : ' ');
+    }
+    for (y = 0; y < 256; y++) {
+        printf("%u%c", counts[y], y == 255 ? '\n' : ' ');
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 7 && strcmp(argv[1], "kl") == 0) {
+        return run_kl(argc, argv);
+    }
+    if (argc >= 6 && strcmp(argv[1], "mix") == 0) {
+        return run_mix(argc, argv);
+    }
+    if (argc == 6 && strcmp(argv[1], "region") == 0) {
+        return run_region(argv);
+    }
     if (argc >= 9 && (strcmp(argv[1], "match") == 0 ||
                       (strcmp(argv[1], "sad_at") == 0 && argc == 11))) {
         return run_match(argc, argv);
