@@ -74,6 +74,13 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
                const demo_wind_t *wind, long mask, uint32_t step, int exclude,
                const char *overlay_name, const char *label);
 
+/* Seed 003: SECOND made brighter (gain and offset), tracked by SAD and by the
+   correlation coefficient, 10 % outliers injected, cleaned by relaxation
+   labelling and by the median test, all scored against wind; overlays
+   flow_*.png. Returns 0 or -1. */
+int demo_flow(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t *second,
+              const demo_wind_t *wind);
+
 /* Pitch of a signal; truth from demo_voice_f0 when synthetic, or a reference
    CSV (may be NULL). Prints the results, writes plot_name. Returns 0 or -1. */
 int demo_pitch(const demo_ctx_t *c, const demo_signal_t *sig, int synthetic,

@@ -123,7 +123,11 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
     if (demo_track(c, &a, &b, &wind, -1, 16, 1, "clouds_overlay.png", label) != 0) {
         goto done;
     }
-    demo_heading(c, "2. Pitch with the AMDF and SSDA early exit (the seed's appendix)");
+    demo_heading(c, "2. Brightness change and outliers: correlation and relaxation (seed 003)");
+    if (demo_flow(c, &a, &b, &wind) != 0) {
+        goto done;
+    }
+    demo_heading(c, "3. Pitch with the AMDF and SSDA early exit (the seed's appendix)");
     snprintf(label, sizeof label,
              "%s: a 3 s synthetic voice at 16 kHz, glides 110 -> 180 Hz and\n"
              "            240 -> 160 Hz with vibrato, an unvoiced hiss and silences between",

@@ -2,6 +2,7 @@
 #include "ncc_internal.h"
 #include "kernel/kernels.h"
 #include "wide.h"
+#include "fixmath.h"
 
 int ssda__ncc_check_pair(const ssda_view_t *area, const ssda_view_t *window)
 {
@@ -162,13 +163,18 @@ int32_t ssda__ncc_rho_q30(const ssda__ncc_key_t *k, uint64_t var_w)
     return k->num < 0 ? -(int32_t)q : (int32_t)q;
 }
 
+uint64_t ssda__ncc_work_need(uint32_t area_w, uint32_t win_w, uint32_t win_h)
+{
+    const uint32_t g = SSDA_DIV32(63u + win_w, win_w); /* setup only */
+    const uint32_t ng = SSDA_DIV32(win_h + g - 1u, g);
+    /* (M + 2) * nx * 12 + ng * 16 < 2^17 * 2^16 * 2^4: no overflow */
+    return ((uint64_t)win_h + 2u) * ((uint64_t)area_w - win_w + 1u) * 12u + (uint64_t)ng * 16u;
+}
+
 /* Check the options against the geometry (the work size in 64 bits). */
 static int check_config(const ssda_ncc_config_t *cfg, const ssda_view_t *area,
                         const ssda_view_t *window)
 {
-    const uint64_t g = (63u + (uint64_t)window->width) / window->width;
-    const uint64_t ng = ((uint64_t)window->height + g - 1u) / g;
-    const uint64_t nx = (uint64_t)area->width - window->width + 1u;
     if (cfg->metric > (uint8_t)SSDA_NCC_ABS ||
         (cfg->flags & (uint8_t)~(SSDA_NCC_FULL | SSDA_NCC_PREDICT | SSDA_NCC_DISK |
                                  SSDA_NCC_AROUND)) != 0u) {
@@ -177,8 +183,7 @@ static int check_config(const ssda_ncc_config_t *cfg, const ssda_view_t *area,
     if (cfg->work == NULL) {
         return SSDA_ERR_NULL;
     }
-    /* (M + 2) * nx * 12 + ng * 16 < 2^17 * 2^16 * 2^4: no overflow */
-    if ((uint64_t)cfg->work_size < ((uint64_t)window->height + 2u) * nx * 12u + ng * 16u ||
+    if ((uint64_t)cfg->work_size < ssda__ncc_work_need(area->width, window->width, window->height) ||
         (((uintptr_t)cfg->work) & 7u) != 0u) {
         return SSDA_ERR_BUFFER;
     }

@@ -29,6 +29,9 @@ typedef struct {
    SSDA_NCC_MAX_PIXELS, SSDA_CFG_NO_U16). */
 SSDA_INTERNAL int ssda__ncc_check_pair(const ssda_view_t *area, const ssda_view_t *window);
 
+/* SSDA_NCC_WORK_SIZE in 64 bits (no wrap where size_t is 32 bits). */
+SSDA_INTERNAL uint64_t ssda__ncc_work_need(uint32_t area_w, uint32_t win_w, uint32_t win_h);
+
 /* Sums of a valid window; adds 2 * n to *ops. */
 SSDA_INTERNAL void ssda__ncc_window(const ssda_view_t *window, ssda__ncc_win_t *w, uint64_t *ops);
 

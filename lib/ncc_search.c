@@ -75,8 +75,9 @@ static void window_rest(engine_t *e)
     uint64_t ss = 0u; /* sum of squares of the rows below, < 2^48 */
     uint32_t s = 0u;  /* their sum, < 2^32 */
     uint32_t n_rest = 0u;
-    e->d = e->w.sw / e->w.n; /* setup only */
-    e->inv_n = ((uint64_t)1u << 32) / e->w.n;
+    e->d = SSDA_DIV32(e->w.sw, e->w.n); /* setup only */
+    /* floor(2^32 / n), 2^32 - 1 for n = 1 (any value keeps c a valid centre) */
+    e->inv_n = SSDA_DIV64_32((uint64_t)1u << 32, e->w.n);
     while (g > 0u) {
         uint32_t r;
         g--;
@@ -151,7 +152,7 @@ static void window_sums_u16(const uint16_t *p, uint32_t L, uint32_t n, uint32_t 
 /* Area row yy's sums into its ring slot. */
 static void ring_row(engine_t *e, uint32_t yy)
 {
-    const size_t off = (size_t)(yy % (e->M + 1u)) * e->tw;
+    const size_t off = (size_t)SSDA_MOD32(yy, e->M + 1u) * e->tw;
     const uint8_t *p = ssda_view_row(e->area, yy) + (size_t)e->x0 * ssda_view_bpp(e->area);
 #ifndef SSDA_CFG_NO_U16
     if (!e->u8) {
@@ -172,14 +173,14 @@ static void tables_init(engine_t *e)
     (void)memset(e->wsa, 0, (size_t)e->tw * sizeof *e->wsa);
     (void)memset(e->wsaa, 0, (size_t)e->tw * sizeof *e->wsaa);
     for (r = 0u; r < e->M; r++) {
-        const size_t off = (size_t)((e->y0 + r) % (e->M + 1u)) * e->tw;
+        const size_t off = (size_t)SSDA_MOD32(e->y0 + r, e->M + 1u) * e->tw;
         ring_row(e, e->y0 + r);
         for (i = 0u; i < e->tw; i++) {
             e->wsa[i] += e->ring1[off + i];
             e->wsaa[i] += e->ring2[off + i];
         }
     }
-    e->slot0 = e->y0 % (e->M + 1u);
+    e->slot0 = SSDA_MOD32(e->y0, e->M + 1u);
     e->ops += 2u * (uint64_t)e->M * e->tw;
 }
 
@@ -200,6 +201,29 @@ static void tables_slide(engine_t *e, uint32_t y)
     e->ops += 4u * (uint64_t)e->tw;
 }
 
+/* A lower bound of num^2 / var (<= rho^2 var_w < 2^62) for a key with
+   num != 0: num^2 and var shifted right by the same s bits so that var fits
+   31 bits (then rounded up: d), and floor((num^2 >> s) / d) by long
+   division in 64-by-32 steps (no 64-bit division routine on cores without a
+   divide instruction). The bound only has to be below the true value (a
+   position is cut when it cannot even reach it); its relative error is
+   about 2^-30. The dividend X = num^2 >> s < 2^62 d < 2^93: its top limb
+   (bits 64..) is below d / 4, so the quotient is q1 2^32 + q0. */
+static uint64_t beta_of(const ssda__ncc_key_t *k)
+{
+    const uint64_t m = k->num < 0 ? (uint64_t)(-k->num) : (uint64_t)k->num;
+    const ssda__u128_t n2 = ssda__mul_64x64(m, m);     /* < 2^124 */
+    const uint32_t lv = ssda__bitlen64(k->var);        /* 1..62 */
+    const uint32_t s = lv > 31u ? lv - 31u : 0u;       /* var >> s < 2^31 */
+    const uint32_t d = (uint32_t)(k->var >> s) + 1u;   /* <= 2^31 */
+    const uint64_t x_hi = n2.hi >> s;                  /* bits 64.. of X, < d / 4 */
+    const uint64_t x_lo = s == 0u ? n2.lo : (n2.lo >> s) | (n2.hi << (64u - s));
+    const uint64_t t1 = (x_hi << 32) | (x_lo >> 32);   /* < d 2^32 */
+    const uint32_t q1 = SSDA_DIV64_32(t1, d);
+    const uint64_t t0 = ((t1 - (uint64_t)q1 * d) << 32) | (x_lo & 0xFFFFFFFFu);
+    return ((uint64_t)q1 << 32) | SSDA_DIV64_32(t0, d);
+}
+
 /* Keep (x, y) if it beats the best by rho, then by the tie rule. */
 static void offer(engine_t *e, const ssda__ncc_key_t *k, uint32_t x, uint32_t y)
 {
@@ -215,9 +239,7 @@ static void offer(engine_t *e, const ssda__ncc_key_t *k, uint32_t x, uint32_t y)
     e->have = true;
     e->beta = 0u;
     if (!e->full && (k->num > 0 || (e->abs && k->num < 0))) {
-        /* num^2 / var = rho^2 var_w <= var_w < 2^62: the quotient fits */
-        const uint64_t m = k->num < 0 ? (uint64_t)(-k->num) : (uint64_t)k->num;
-        e->beta = ssda__div_128_64(ssda__mul_64x64(m, m), k->var);
+        e->beta = beta_of(k);
     }
 }
 
@@ -423,11 +445,11 @@ static void setup(engine_t *e, const ssda_view_t *area, const ssda_view_t *windo
     e->win = window;
     e->L = window->width;
     e->M = window->height;
-    e->G = (63u + e->L) / e->L; /* setup only */
+    e->G = SSDA_DIV32(63u + e->L, e->L); /* setup only */
     if (e->G > e->M) {
         e->G = e->M;
     }
-    e->ng = (e->M + e->G - 1u) / e->G;
+    e->ng = SSDA_DIV32(e->M + e->G - 1u, e->G);
     e->u8 = area->format == (uint8_t)SSDA_PIX_U8;
     e->abs = cfg->metric == (uint8_t)SSDA_NCC_ABS;
     e->full = (cfg->flags & SSDA_NCC_FULL) != 0u;

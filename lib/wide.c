@@ -43,26 +43,6 @@ int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b)
     return 0;
 }
 
-uint64_t ssda__div_128_64(ssda__u128_t n, uint64_t d)
-{
-    uint64_t rem = n.hi; /* < d throughout */
-    uint64_t lo = n.lo;
-    uint64_t q = 0u;
-    uint32_t i;
-    for (i = 0u; i < 64u; i++) {
-        /* rem * 2 + next bit: 65 bits, the top one in carry */
-        const uint64_t carry = rem >> 63;
-        rem = (rem << 1) | (lo >> 63);
-        lo <<= 1;
-        q <<= 1;
-        if (carry != 0u || rem >= d) {
-            rem -= d; /* modulo 2^64: the true difference is < d */
-            q |= 1u;
-        }
-    }
-    return q;
-}
-
 /* Signed 128-bit words (ssda__i128_t). */
 
 ssda__i128_t ssda__w_sar(ssda__i128_t a, uint32_t n)

@@ -57,10 +57,6 @@ static inline int ssda__cmp_128(ssda__u128_t a, ssda__u128_t b)
 }
 SSDA_INTERNAL int ssda__cmp_192(const ssda__u192_t *a, const ssda__u192_t *b);
 
-/* floor(n / d) for d > 0 and n.hi < d (the quotient fits 64 bits), by
-   restoring shift-and-subtract (64 steps). */
-SSDA_INTERNAL uint64_t ssda__div_128_64(ssda__u128_t n, uint64_t d);
-
 /* Number of significant bits of v (0 for 0, 64 for v >= 2^63). */
 #if defined(__GNUC__) || defined(__clang__)
 static inline uint32_t ssda__bitlen64(uint64_t v)

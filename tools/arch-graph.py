@@ -27,6 +27,8 @@ LAYERS = [
      [r"^include/ssda/"]),
     ("streaming: sources, plates, push mode (stream.h)", "#e6f4ea", 1, [r"^lib/stream_"]),
     ("jobs: grid tracking (track.h)", "#fff4e0", 2, [r"^lib/track"]),
+    ("seed 003: composite templates over the correlation search (composite.h)", "#e0f2f1", 1,
+     [r"^lib/composite"]),
     ("correlation search (ncc.h)", "#e0f7fa", 2, [r"^lib/ncc"]),
     ("seed 001: edges, closed loops, Fourier descriptors, registration "
      "(edge.h, loops.h, fourier.h, symreg.h)", "#e8f5e9", 2,
@@ -38,6 +40,8 @@ LAYERS = [
      [r"^lib/match", r"^lib/view\."]),
     ("pitch: AMDF stream (pitch.h)", "#fce8f3", 3, [r"^lib/pitch"]),
     ("image operator: Fig. 8 gradient (grad.h)", "#f1f3f4", 3, [r"^lib/grad\."]),
+    ("seed 003: vector-field cleaning, relaxation and median test (relax.h)", "#fbe9e7", 3,
+     [r"^lib/relax"]),
     ("seed 004: colour segmentation: K-L transform, mixtures, regions "
      "(kl.h, mixture.h, region.h)", "#fff8e1", 3, [r"^lib/(kl_|mix_|region)"]),
     ("kernels: SAD / AMDF inner loops, one set linked", "#f3e8fd", 4, [r"^lib/kernel/"]),

@@ -54,9 +54,10 @@
  * row by row (per group of rows and position) in the work buffer. A
  * position is abandoned as soon as the bound shows that even the largest
  * num still possible gives a smaller rho (|rho|) than the best so far,
- * compared in integers as above against floor(num_b^2 / var_a_b), a lower
- * bound of the best's rho^2 * var_w; a position that could tie is never
- * abandoned. Positions whose placement is flat are decided without reading
+ * compared in integers against beta, a lower bound of the best's
+ * rho^2 * var_w = num_b^2 / var_a_b (one 64-bit division: both shifted right
+ * until num_b^2 fits 64 bits, var rounded up); a position that could tie is
+ * never abandoned. Positions whose placement is flat are decided without reading
  * a pixel (rho = 0).
  *
  * SIZES. Windows of at most SSDA_NCC_MAX_PIXELS pixels (any shape, each

@@ -30,6 +30,15 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_STREAM
     jobs_stream();
 #endif
+#ifdef SSDA_BUDGET_HAVE_NCC
+    jobs_ncc();
+#endif
+#ifdef SSDA_BUDGET_HAVE_RELAX
+    jobs_relax();
+#endif
+#ifdef SSDA_BUDGET_HAVE_COMPOSITE
+    jobs_composite();
+#endif
 #ifdef SSDA_BUDGET_HAVE_SYMREG
     jobs_symreg();
 #endif

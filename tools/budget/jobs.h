@@ -23,6 +23,12 @@ void jobs_pitch(void);
 void jobs_segment(void);
 /* ssda_push_row of push-mode tracking: one row, and a whole frame. */
 void jobs_stream(void);
+/* ssda_ncc_match, 16 x 16 in 32 x 32 and 20 x 20 in 40 x 40, by early exit. */
+void jobs_ncc(void);
+/* ssda_relax_labels and ssda_relax_median on a 12 x 12 grid. */
+void jobs_relax(void);
+/* ssda_composite_match, 81 templates of 20 x 20 in a 96 x 96 pair. */
+void jobs_composite(void);
 /* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,
    registration. */
 void jobs_symreg(void);

@@ -27,6 +27,9 @@ FEATURE_NAMES = {
     "pitch": "AMDF pitch (`pitch.h`)",
     "stream": "block-streamed images (`stream.h`)",
     "track": "grid tracking (`track.h`)",
+    "ncc": "correlation search (`ncc.h`)",
+    "relax": "relaxation labelling, median test (`relax.h`)",
+    "composite": "composite templates (`composite.h`)",
     "grad": "Fig. 8 operator (`grad.h`)",
     "edge": "seed 001 edges (`edge.h`)",
     "loops": "seed 001 closed loops (`loops.h`)",
@@ -505,6 +508,42 @@ def main():
                 w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
                                               for _, _, r in runs) +
                   f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        for geo, label_geo in (("ncc16", "16x16 window in a 32x32 area"),
+                               ("ncc20", "20x20 window in a 40x40 area")):
+            if any(f"{geo}.full" in r for _, _, r in runs):
+                w(f"\n| correlation search, {label_geo} (16 windows, mean) | " +
+                  " | ".join(f"{n}: instructions" for n in names) + " | pixel ops | stack peak (B) |\n")
+                w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+                for key, label in ((f"{geo}.full", "every position in full (`SSDA_NCC_FULL`)"),
+                                   (f"{geo}.early", "early exit (raster)"),
+                                   (f"{geo}.early_predict", "early exit + prediction")):
+                    r0 = get(runs[0][2], key)
+                    w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                                                  for _, _, r in runs) +
+                      f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        if any("relax.median" in r for _, _, r in runs):
+            w("\n| cleaning a 12x12 vector grid (144 vectors, 10 % outliers) | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | vectors changed | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            for key, label in (("relax.labels10", "relaxation labelling, 10 iterations"),
+                               ("relax.labels50", "relaxation labelling, 50 iterations (the default)"),
+                               ("relax.median", "normalised median test")):
+                r0 = get(runs[0][2], key)
+                w(f"| {label} | " + " | ".join(fmt(get(r, key)[0]) for _, _, r in runs) +
+                  f" | {r0[3]} | {r0[2]} |\n")
+
+        if any("composite.seed" in r for _, _, r in runs):
+            w("\n| composite templates, 81 of 20x20 every 5 px, 96x96 pair | " +
+              " | ".join(f"{n}: instructions per template" for n in names) +
+              " | pixel ops per template | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
+            r0 = get(runs[0][2], "composite.seed")
+            w("| origin over the whole image, the others in their disks | " +
+              " | ".join(fmt(round(get(r, "composite.seed")[0] / max(1, get(r, "composite.seed")[1])))
+                         for _, _, r in runs) +
+              f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
 
         if any("pitch.full" in r for _, _, r in runs):
             plain = get(runs[0][2], "pitch.plain_amdf_diffs")[3]

@@ -155,6 +155,7 @@ int cli_finish_stdout(const char *cmd, int rc);
 
 /* ---- subcommands: (argc, argv) after the subcommand name; return an exit code ---- */
 int cmd_match(int argc, char **argv);
+int cmd_flow(int argc, char **argv);
 int cmd_track(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_grad(int argc, char **argv);

@@ -2,6 +2,7 @@
 #include "cli.h"
 #include "json_out.h"
 #include "progress.h"
+#include "ssda/ncc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,10 @@ static const char help[] =
     "(x, y) of that placement in SEARCH, 0-based, x right, y down.\n"
     "\n"
     "options:\n"
+    "  --metric M        sad (default), ncc (the largest correlation coefficient rho:\n"
+    "                    brightness and contrast changes do not matter) or absncc (the\n"
+    "                    largest |rho|: inverted contrast matches too); exact either way.\n"
+    "                    With ncc/absncc only --predict applies of the options below\n"
     "  --threshold MODE  how partial sums are cut (default auto):\n"
     "                      auto           automatic constant threshold: exact, fast\n"
     "                      none           every position summed in full (reference)\n"
@@ -31,7 +36,8 @@ static const char help[] =
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
     "  --json            print one JSON object instead of text (stdout; no FILE:\n"
     "                    redirect it):\n"
-    "                    {\"x\",\"y\",\"sad\",\"exact\",\"positions\",\"completed\",\"pixel_ops\",...}\n"
+    "                    {\"x\",\"y\",\"sad\",\"rho\",\"metric\",\"exact\",\"positions\",\"completed\",\n"
+    "                    \"pixel_ops\",...}: sad and rho at the best placement whatever the metric\n"
     "  -h, --help        this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
@@ -40,14 +46,16 @@ static const char help[] =
 typedef struct {
     ssda_match_config_t cfg;
     const char *search_path, *window_path;
-    int json, have_predict, scan_given;
+    int json, have_predict, scan_given, sad_option;
+    int metric; /* 0 sad, 1 ncc, 2 absncc */
     int32_t px, py;
 } match_opts_t;
 
 /* A search as run: the images, the result, its cost. */
 typedef struct {
     gray_image_t s_img, w_img;
-    ssda_match_result_t res;
+    ssda_match_result_t res; /* with --metric ncc/absncc: the place, its SAD, the work */
+    int32_t rho_q30;         /* rho at the best place, Q2.30 */
     double secs;
 } match_job_t;
 
@@ -57,15 +65,25 @@ static int take_option(cli_args_t *a, match_opts_t *o)
 {
     const char *v;
     uint32_t u;
-    if (cli_flag(a, "--json")) {
+    if (cli_opt(a, "--metric", &v)) {
+        if (v != NULL) {
+            o->metric = !strcmp(v, "sad") ? 0 : !strcmp(v, "ncc") ? 1 : !strcmp(v, "absncc") ? 2 : -1;
+            if (o->metric < 0) {
+                a->bad = cli_usage_error(a->cmd, "bad --metric '%s' (sad, ncc, absncc)", v);
+            }
+        }
+    } else if (cli_flag(a, "--json")) {
         o->json = 1;
     } else if (cli_flag(a, "--bounds")) {
         o->cfg.flags |= SSDA_MATCH_BOUNDS;
+        o->sad_option = 1;
     } else if (cli_flag(a, "--no-bounds")) {
         o->cfg.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
+        o->sad_option = 1;
     } else if (cli_flag(a, "--quiet")) {
         /* one search: nothing to silence */
     } else if (cli_opt(a, "--threshold", &v)) {
+        o->sad_option = 1;
         if (v != NULL && cli_parse_threshold(v, &o->cfg) != 0) {
             a->bad = cli_usage_error(a->cmd, "bad --threshold '%s' (auto, none, fixed:T, "
                                      "ramp:LAMBDA[:K], auto-ramp[:K])", v);
@@ -76,6 +94,7 @@ static int take_option(cli_args_t *a, match_opts_t *o)
         }
         o->scan_given = 1;
     } else if (cli_opt(a, "--order", &v)) {
+        o->sad_option = 1;
         if (v != NULL && cli_parse_order(v, &o->cfg) != 0) {
             a->bad = cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
         }
@@ -85,6 +104,7 @@ static int take_option(cli_args_t *a, match_opts_t *o)
         }
         o->have_predict = 1;
     } else if (cli_opt(a, "--coarse-step", &v)) {
+        o->sad_option = 1;
         if (v != NULL && cli_parse_u32(v, 1, 65535, &u) != 0) {
             a->bad = cli_usage_error(a->cmd, "bad --coarse-step '%s' (1..65535)", v);
         }
@@ -108,6 +128,10 @@ static int check_args(const cli_args_t *a, match_opts_t *o)
     }
     o->search_path = a->pos[0];
     o->window_path = a->pos[1];
+    if (o->metric != 0 && (o->sad_option || (o->scan_given && o->cfg.scan == SSDA_SCAN_COARSE))) {
+        return cli_usage_error(a->cmd, "--threshold, --order, --no-bounds, --coarse-step and "
+                               "--scan coarse are SAD options (drop them, or --metric sad)");
+    }
     if (o->have_predict) {
         if (o->scan_given && o->cfg.scan != SSDA_SCAN_PREDICT) {
             return cli_usage_error(a->cmd, "--predict needs --scan predict");
@@ -143,6 +167,47 @@ static int parse_args(int argc, char **argv, match_opts_t *o)
     return a.bad ? CLI_USAGE : check_args(&a, o);
 }
 
+/* The correlation search (--metric ncc/absncc); the place, its SAD and the
+   work into j->res, rho into j->rho_q30. */
+static int run_ncc(const match_opts_t *o, const ssda_view_t *area, const ssda_view_t *win,
+                   match_job_t *j)
+{
+    ssda_ncc_config_t c;
+    ssda_ncc_result_t r;
+    double t0;
+    int e;
+    if ((uint32_t)win->width * win->height > SSDA_NCC_MAX_PIXELS) {
+        return cli_input_error("match", "window %u x %u: the correlation search takes at most "
+                               "%u pixels", win->width, win->height, SSDA_NCC_MAX_PIXELS);
+    }
+    memset(&c, 0, sizeof c);
+    c.metric = (uint8_t)(o->metric == 2 ? SSDA_NCC_ABS : SSDA_NCC_RHO);
+    if (o->have_predict) {
+        c.flags = SSDA_NCC_PREDICT;
+        c.predict_x = o->px;
+        c.predict_y = o->py;
+    }
+    c.work_size = SSDA_NCC_WORK_SIZE(area->width, win->width, win->height);
+    if ((c.work = malloc(c.work_size)) == NULL) {
+        return cli_input_error("match", "out of memory (%zu bytes)", c.work_size);
+    }
+    t0 = progress_now();
+    e = ssda_ncc_match(area, win, &c, &r);
+    j->secs = progress_now() - t0;
+    free(c.work);
+    if (e == SSDA_OK) {
+        j->res.x = r.x;
+        j->res.y = r.y;
+        j->res.positions = r.positions;
+        j->res.completed = r.completed;
+        j->res.pixel_ops = r.pixel_ops;
+        j->res.exact = true;
+        j->rho_q30 = r.rho_q30;
+        e = ssda_sad_at(area, win, r.x, r.y, &j->res.sad);
+    }
+    return e == SSDA_OK ? CLI_OK : cli_input_error("match", "search failed: %s", ssda_strerror(e));
+}
+
 /* Load both images and search. */
 static int run_match(match_opts_t *o, match_job_t *j)
 {
@@ -162,6 +227,9 @@ static int run_match(match_opts_t *o, match_job_t *j)
         gray_image_view(&j->w_img, &win) != SSDA_OK) {
         return cli_input_error("match", "internal error: bad image view");
     }
+    if (o->metric != 0) {
+        return run_ncc(o, &area, &win, j);
+    }
     if (o->cfg.flags & SSDA_MATCH_BOUNDS) {
         o->cfg.work_size = SSDA_MATCH_WORK_SIZE(j->s_img.width, j->s_img.height, j->w_img.width,
                                                 j->w_img.height);
@@ -176,6 +244,9 @@ static int run_match(match_opts_t *o, match_job_t *j)
     j->secs = progress_now() - t0;
     free(work);
     o->cfg.work = NULL;
+    if (e == SSDA_OK && (uint32_t)win.width * win.height <= SSDA_NCC_MAX_PIXELS) {
+        e = ssda_ncc_at(&area, &win, j->res.x, j->res.y, &j->rho_q30); /* rho there too */
+    }
     if (e != SSDA_OK) {
         return cli_input_error("match", "search failed: %s", ssda_strerror(e));
     }
@@ -191,6 +262,10 @@ static int print_json(const match_opts_t *o, const match_job_t *j, uint64_t brut
     cJSON_AddNumberToObject(doc, "x", j->res.x);
     cJSON_AddNumberToObject(doc, "y", j->res.y);
     json_out_add_u64(doc, "sad", j->res.sad);
+    if ((uint32_t)j->w_img.width * j->w_img.height <= SSDA_NCC_MAX_PIXELS) {
+        json_out_add_fixed(doc, "rho", j->rho_q30 / 1073741824.0, 6);
+    }
+    cJSON_AddStringToObject(doc, "metric", o->metric == 0 ? "sad" : o->metric == 1 ? "ncc" : "absncc");
     cJSON_AddBoolToObject(doc, "exact", j->res.exact);
     json_out_add_u64(doc, "positions", j->res.positions);
     json_out_add_u64(doc, "completed", j->res.completed);
@@ -215,16 +290,31 @@ static void print_text(const match_opts_t *o, const match_job_t *j, uint64_t npo
     const ssda_match_result_t *res = &j->res;
     printf("best match: x=%u y=%u  (top-left of %s in %s)\n", res->x, res->y, o->window_path,
            o->search_path);
-    printf("SAD:        %llu  (%s)\n", (unsigned long long)res->sad,
-           res->exact ? "exact: the true minimum"
-                      : "not guaranteed to be the true minimum with this mode");
+    if (o->metric != 0) {
+        printf("rho:        %.6f  (exact: the %s correlation coefficient)\n",
+               j->rho_q30 / 1073741824.0, o->metric == 2 ? "largest |rho| among the" : "largest");
+        printf("SAD there:  %llu\n", (unsigned long long)res->sad);
+    } else {
+        printf("SAD:        %llu  (%s)\n", (unsigned long long)res->sad,
+               res->exact ? "exact: the true minimum"
+                          : "not guaranteed to be the true minimum with this mode");
+        if ((uint32_t)j->w_img.width * j->w_img.height <= SSDA_NCC_MAX_PIXELS) {
+            printf("rho there:  %.6f\n", j->rho_q30 / 1073741824.0);
+        }
+    }
     printf("work:       %llu pixel ops = %.2f %% of brute force (%llu); %u of %llu "
            "positions visited, %u summed in full\n",
            (unsigned long long)res->pixel_ops,
            brute > 0 ? 100.0 * (double)res->pixel_ops / (double)brute : 0.0,
            (unsigned long long)brute, res->positions, (unsigned long long)npos, res->completed);
-    printf("mode:       threshold %s, scan %s, %u-bit, %.3f ms\n", tname, cli_scan_name(&o->cfg),
-           j->s_img.bits, j->secs * 1e3);
+    if (o->metric != 0) {
+        printf("mode:       %s, correlation search with early exit%s, %u-bit, %.3f ms\n",
+               o->metric == 1 ? "ncc" : "absncc", o->have_predict ? " from --predict" : "",
+               j->s_img.bits, j->secs * 1e3);
+    } else {
+        printf("mode:       threshold %s, scan %s, %u-bit, %.3f ms\n", tname,
+               cli_scan_name(&o->cfg), j->s_img.bits, j->secs * 1e3);
+    }
 }
 
 int cmd_match(int argc, char **argv)

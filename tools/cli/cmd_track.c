@@ -1,4 +1,5 @@
 /* cmd_track.c - `ssda track FIRST.png SECOND.png`: the seed's cloud tracking. */
+#include "track_metric.h"
 #include "track_run.h"
 
 #include <stdlib.h>
@@ -138,6 +139,7 @@ int cmd_track(int argc, char **argv)
     rc = write_outputs(&o, first, second, &r);
     if (rc == CLI_OK && !cli_is_stdout(o.json_path) && !cli_is_stdout(o.overlay_path)) {
         print_summary(&o, &r);
+        track_metric_print(&o, &r);
     }
     track_result_free(&r);
     return rc;

@@ -12,6 +12,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"match", cmd_match, "find where WINDOW.png fits best in SEARCH.png"},
+    {"flow", cmd_flow, "motion by composite templates (correlation), cleaned by relaxation"},
     {"track", cmd_track, "motion vectors on a grid between two images (cloud tracking)"},
     {"compare", cmd_compare, "SSDA vectors vs exhaustive normalised cross-correlation"},
     {"grad", cmd_grad, "the seed's Fig. 8 differential operator on an image"},

@@ -1,5 +1,6 @@
 /* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
 #include "track_run.h"
+#include "track_metric.h"
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
@@ -38,6 +39,15 @@ const char track_opts_help[] =
     "  --overlay OUT.png draw the vectors over SECOND (a grid too dense to read is\n"
     "                    drawn every k-th row and column; stderr says so)\n"
     "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
+    "  --relax N         clean the field by relaxation labelling (the seed 003's\n"
+    "                    section 4), N iterations: JSON windows gain relax_dx,\n"
+    "                    relax_dy (px) and changed\n"
+    "  --relax-median    clean by the normalised median test instead (same fields)\n"
+    "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
+    "                    coefficient at their placement; with ncc (largest rho) or\n"
+    "                    absncc (largest |rho|) the vectors come from the exact\n"
+    "                    correlation search over each OK window's area, which a\n"
+    "                    gain or offset between the images does not change\n"
     "  --quiet           no progress bar\n";
 
 void track_opts_init(track_opts_t *o)
@@ -274,8 +284,22 @@ static int take_output(cli_args_t *a, track_opts_t *o)
         }
     } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
         o->quiet = 1;
+    } else if (cli_opt(a, "--relax", &v)) {
+        if (v != NULL && cli_parse_u32(v, 0, 1000, &o->relax) != 0) {
+            bad_value(a, "bad --relax '%s' (0..1000 iterations)", v);
+        }
+    } else if (cli_flag(a, "--relax-median")) {
+        o->relax_median = 1;
+    } else if (cli_opt(a, "--metric", &v)) {
+        if (v != NULL && (o->metric = track_metric_parse(v)) < 0) {
+            o->metric = 0;
+            bad_value(a, "bad --metric '%s' (sad, ncc, absncc)", v);
+        }
     } else {
         return 0;
+    }
+    if (o->relax != 0u && o->relax_median) {
+        a->bad = cli_usage_error(a->cmd, "give --relax N or --relax-median, not both");
     }
     return 1;
 }
@@ -556,6 +580,9 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
 
 void track_result_free(track_result_t *r)
 {
+    free(r->clean);
+    r->clean = NULL;
+    free(r->rho_q30);
     gray_image_free(&r->first);
     gray_image_free(&r->second);
     gray_image_free(&r->second_orig);
@@ -860,6 +887,46 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     return rc;
 }
 
+/* --relax N or --relax-median on the tracked grid (integer px vectors). */
+static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    ssda_relax_grid_t g;
+    uint32_t k;
+    int e;
+    if (o->relax == 0u && !o->relax_median) {
+        return CLI_OK;
+    }
+    r->clean = calloc(r->grid.count + 1u, sizeof *r->clean);
+    if (r->clean == NULL) {
+        return cli_input_error(cmd, "out of memory");
+    }
+    memset(&g, 0, sizeof g);
+    g.dx = &r->vec[0].dx;
+    g.dy = &r->vec[0].dy;
+    g.status = &r->vec[0].status; /* SSDA_TRACK_OK = 0: valid */
+    g.stride = sizeof r->vec[0];
+    g.cols = r->grid.cols;
+    g.rows = r->grid.rows;
+    if (o->relax_median) {
+        e = ssda_relax_median(&g, NULL, r->clean, r->grid.count);
+    } else {
+        ssda_relax_config_t c;
+        memset(&c, 0, sizeof c);
+        c.iterations = (uint16_t)o->relax;
+        c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
+        c.work = malloc(c.work_size);
+        e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->grid.count);
+        free(c.work);
+    }
+    if (e != SSDA_OK) {
+        return cli_input_error(cmd, "cleaning the field failed: %s", ssda_strerror(e));
+    }
+    for (k = 0; k < r->grid.count; k++) {
+        r->changed += (r->clean[k].flags & SSDA_RELAX_CHANGED) != 0u;
+    }
+    return CLI_OK;
+}
+
 int track_run(const char *cmd, const char *first_path, const char *second_path,
               const track_opts_t *o, track_result_t *r)
 {
@@ -875,6 +942,12 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     rc = load_inputs(cmd, first_path, second_path, o, r);
     if (rc == CLI_OK) {
         rc = prepare_and_track(cmd, o, r);
+    }
+    if (rc == CLI_OK) {
+        rc = track_metric_apply(cmd, o, r);
+    }
+    if (rc == CLI_OK) {
+        rc = clean_field(cmd, o, r);
     }
     if (rc != CLI_OK) {
         track_result_free(r);
@@ -928,6 +1001,11 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     cJSON_AddStringToObject(opt, "predict", predict_name(r->cfg.predict));
     cJSON_AddBoolToObject(opt, "bounds", (r->cfg.match.flags & SSDA_MATCH_BOUNDS) != 0);
     cJSON_AddBoolToObject(opt, "grad", o->grad);
+    cJSON_AddStringToObject(opt, "cleaning", o->relax_median ? "median" : o->relax ? "relax" : "none");
+    if (o->relax != 0u) {
+        cJSON_AddNumberToObject(opt, "relax_iterations", o->relax);
+    }
+    track_metric_json_options(opt, o);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
         cJSON *ex = cJSON_AddObjectToObject(opt, "exclude");
         cJSON_AddNumberToObject(ex, "level", r->texture_level);
@@ -958,6 +1036,7 @@ static cJSON *json_stats(const track_result_t *r, const track_opts_t *o)
     cJSON_AddNumberToObject(st, "masked", r->stats.masked);
     cJSON_AddNumberToObject(st, "edge", r->stats.edge);
     json_out_add_fixed(st, "time_s", r->secs, 6);
+    track_metric_json_stats(st, o, r);
     if (o->have_mem) {
         json_out_add_u64(st, "mem_bytes", o->mem);
         json_out_add_u64(st, "plate_bytes_first", r->arena_first);
@@ -989,6 +1068,12 @@ static cJSON *json_window(void *ctx, size_t k)
         cJSON_AddNumberToObject(item, "ref_dx", w->ref[k][0]);
         cJSON_AddNumberToObject(item, "ref_dy", w->ref[k][1]);
     }
+    if (w->r->clean != NULL && (w->r->clean[k].flags & SSDA_RELAX_VALID) != 0u) {
+        json_out_add_fixed(item, "relax_dx", w->r->clean[k].dx_q8 / 256.0, 4);
+        json_out_add_fixed(item, "relax_dy", w->r->clean[k].dy_q8 / 256.0, 4);
+        cJSON_AddBoolToObject(item, "changed", (w->r->clean[k].flags & SSDA_RELAX_CHANGED) != 0u);
+    }
+    track_metric_json_window(item, w->r, k);
     return item;
 }
 

@@ -7,6 +7,7 @@
 #define SSDA_TRACK_RUN_H
 
 #include "cli.h"
+#include "ssda/relax.h"
 #include "draw.h"
 #include "json_out.h"
 #include "ssda/track.h"
@@ -28,6 +29,9 @@ typedef struct {
     const char *overlay_path; /* --overlay OUT.png or NULL */
     double arrow_scale;       /* --arrow-scale, 0 = automatic */
     int quiet;
+    uint32_t relax;           /* --relax N: relaxation labelling iterations, 0 = none */
+    int relax_median;         /* --relax-median: the normalised median test */
+    int metric;               /* --metric: TRACK_METRIC_* (track_metric.h), 0 = not given */
 } track_opts_t;
 
 /* Defaults: 16 px windows, 32 px areas, step 16, auto threshold, prediction
@@ -68,6 +72,11 @@ typedef struct {
     size_t arena_first;           /* --mem: plate memory of FIRST and SECOND, bytes */
     size_t arena_second;
     double secs;                  /* tracking time only */
+    ssda_relax_vector_t *clean;   /* --relax / --relax-median: grid.count entries */
+    uint32_t changed;             /* vectors the cleaning changed */
+    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN where not OK */
+    uint64_t metric_ops;          /* --metric: pixel ops of the correlation part */
+    double metric_secs;           /* --metric: its time */
 } track_result_t;
 
 /*

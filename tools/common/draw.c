@@ -117,12 +117,13 @@ static const double status_rgb[DRAW_STATUS_COUNT][3] = {
     {0.50, 0.60, 0.75}, /* flat: blue-grey */
     {0.72, 0.45, 1.00}, /* ambiguous: violet */
     {1.00, 0.18, 0.18}, /* at limit: red */
+    {1.00, 0.35, 0.70}, /* changed by a cleaning: pink */
 };
 
 /* Statuses drawn as an arrow (a vector that exists), the others as a mark. */
 static int has_arrow(int status)
 {
-    return status == DRAW_OK || status == DRAW_AT_LIMIT;
+    return status == DRAW_OK || status == DRAW_AT_LIMIT || status == DRAW_CHANGED;
 }
 static const double truth_rgb[3] = {0.10, 0.90, 1.00}; /* cyan */
 
@@ -351,14 +352,15 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
                         int draw)
 {
     enum { ITEM_TRUTH = DRAW_STATUS_COUNT, ITEM_DOT, ITEM_COUNT };
-    static const int order[ITEM_COUNT] = {DRAW_OK,       ITEM_DOT,       DRAW_AT_LIMIT,
-                                          DRAW_AMBIGUOUS, DRAW_FLAT,     DRAW_EXCLUDED,
-                                          DRAW_MASKED,   DRAW_EDGE,      ITEM_TRUTH};
+    static const int order[ITEM_COUNT] = {DRAW_OK,       ITEM_DOT,  DRAW_AT_LIMIT, DRAW_CHANGED,
+                                          DRAW_AMBIGUOUS, DRAW_FLAT, DRAW_EXCLUDED, DRAW_MASKED,
+                                          DRAW_EDGE,     ITEM_TRUTH};
     static const char *names[DRAW_STATUS_COUNT] = {
         "vector", "excluded (all dark or all bright)", "masked (fill value)",
         "edge (area leaves image)", "flat (no texture, not searched)",
         "ambiguous (another match about as good)",
-        "at limit (best match on the border of the search: motion may be larger)"};
+        "at limit (best match on the border of the search: motion may be larger)",
+        "changed by the cleaning (an outlier), as matched"};
     char buf[256];
     double x = 12.0;
     int lines = 1;

@@ -23,13 +23,15 @@ typedef enum {
     DRAW_FLAT = 4,     /* no texture (below the flat level), not searched: blue-grey dot */
     DRAW_AMBIGUOUS = 5, /* another placement about as good: violet diamond */
     DRAW_AT_LIMIT = 6, /* best placement on the border of the range: red arrow */
-    DRAW_STATUS_COUNT = 7
+    DRAW_CHANGED = 7,  /* changed by a cleaning of the field (an outlier): pink arrow */
+    DRAW_STATUS_COUNT = 8
 } draw_status_t;
 
 /* One window's vector, in the background image's pixel coordinates. */
 typedef struct {
     double x, y;        /* arrow tail: the window's centre */
-    double dx, dy;      /* motion in px (x right, y down); DRAW_OK and DRAW_AT_LIMIT */
+    double dx, dy;      /* motion in px (x right, y down); DRAW_OK, DRAW_AT_LIMIT and
+                           DRAW_CHANGED */
     int status;         /* draw_status_t */
     int has_truth;      /* 1: tdx, tdy hold the known motion (drawn thin, cyan) */
     double tdx, tdy;

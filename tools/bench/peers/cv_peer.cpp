@@ -1,7 +1,9 @@
 // cv_peer.cpp - OpenCV's template matching behind the C interface of cv_peer.h.
 #include "cv_peer.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include <opencv2/core.hpp>
 #include <opencv2/core/utility.hpp>
@@ -66,6 +68,38 @@ extern "C" int cv_peer_match(const cv_peer_image_t *img, const cv_peer_image_t *
             best_x[k] = (uint16_t)best.x;
             best_y[k] = (uint16_t)best.y;
         }
+    } catch (const cv::Exception &e) {
+        std::fprintf(stderr, "cv_peer: %s\n", e.what());
+        return -1;
+    }
+    return 0;
+}
+
+extern "C" int cv_peer_ccoeff_scores(const cv_peer_image_t *img, const cv_peer_image_t *tmpl,
+                                     const cv_peer_job_t *job, uint16_t win_w, uint16_t win_h,
+                                     uint16_t area_w, uint16_t area_h, uint16_t *best_x,
+                                     uint16_t *best_y, double *best, double *second)
+{
+    cv::Mat result;
+    try {
+        cv::Mat area = img->mat(cv::Rect(job->ax, job->ay, area_w, area_h));
+        cv::Mat window = tmpl->mat(cv::Rect(job->wx, job->wy, win_w, win_h));
+        cv::Point hi;
+        double vmax = 0.0, v2 = -2.0;
+        cv::matchTemplate(area, window, result, cv::TM_CCOEFF_NORMED);
+        cv::minMaxLoc(result, nullptr, &vmax, nullptr, &hi);
+        for (int y = 0; y < result.rows; y++) {
+            for (int x = 0; x < result.cols; x++) {
+                if (std::abs(x - hi.x) <= 1 && std::abs(y - hi.y) <= 1) {
+                    continue;
+                }
+                v2 = std::max(v2, (double)result.at<float>(y, x));
+            }
+        }
+        *best_x = (uint16_t)hi.x;
+        *best_y = (uint16_t)hi.y;
+        *best = vmax;
+        *second = v2;
     } catch (const cv::Exception &e) {
         std::fprintf(stderr, "cv_peer: %s\n", e.what());
         return -1;

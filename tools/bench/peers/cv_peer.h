@@ -51,6 +51,13 @@ int cv_peer_match(const cv_peer_image_t *img, const cv_peer_image_t *tmpl,
                   uint16_t area_w, uint16_t area_h, int method, uint16_t *best_x,
                   uint16_t *best_y);
 
+/* For TM_CCOEFF_NORMED, untimed: the best placement of one job, its score,
+   and the best score outside the 3 x 3 around it (second). Returns 0 or -1. */
+int cv_peer_ccoeff_scores(const cv_peer_image_t *img, const cv_peer_image_t *tmpl,
+                          const cv_peer_job_t *job, uint16_t win_w, uint16_t win_h,
+                          uint16_t area_w, uint16_t area_h, uint16_t *best_x,
+                          uint16_t *best_y, double *best, double *second);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,268 @@
+/* composite.c - composite template matching (seed 003, section 3; ssda/composite.h). */
+#include <string.h>
+
+#include "ssda/composite.h"
+#include "ncc_internal.h"
+#include "fixmath.h"
+
+/* The resolved job. */
+typedef struct {
+    const ssda_view_t *ref;
+    const ssda_view_t *next;
+    const ssda_composite_config_t *cfg;
+    uint32_t tp, step, cols, rows;
+    uint32_t roi_x, roi_y;
+    uint32_t radius_q8, min_radius;
+    uint32_t nx, ny;  /* positions of a template in NEXT */
+    uint64_t min_var; /* templates with var below this are FLAT (>= 1) */
+} job_t;
+
+/* Defaults and the region; SSDA_ERR_SIZE when it holds no template. */
+static int resolve_geometry(job_t *j)
+{
+    const ssda_composite_config_t *cfg = j->cfg;
+    uint32_t roi_w, roi_h;
+    j->tp = cfg->tp != 0u ? cfg->tp : SSDA_COMPOSITE_DEFAULT_TP;
+    j->step = cfg->step != 0u ? cfg->step : SSDA_COMPOSITE_DEFAULT_STEP;
+    j->radius_q8 = cfg->radius_q8 != 0u ? cfg->radius_q8 : SSDA_COMPOSITE_DEFAULT_RADIUS_Q8;
+    j->min_radius = cfg->min_radius != 0u ? cfg->min_radius : SSDA_COMPOSITE_DEFAULT_MIN_RADIUS;
+    j->roi_x = cfg->roi_x;
+    j->roi_y = cfg->roi_y;
+    if (j->roi_x >= j->ref->width || j->roi_y >= j->ref->height) {
+        return SSDA_ERR_SIZE;
+    }
+    roi_w = cfg->roi_w != 0u ? cfg->roi_w : j->ref->width - j->roi_x;
+    roi_h = cfg->roi_h != 0u ? cfg->roi_h : j->ref->height - j->roi_y;
+    if (j->roi_x + roi_w > j->ref->width || j->roi_y + roi_h > j->ref->height ||
+        roi_w < j->tp || roi_h < j->tp || j->next->width < j->tp || j->next->height < j->tp) {
+        return SSDA_ERR_SIZE;
+    }
+    j->cols = SSDA_DIV32(roi_w - j->tp, j->step) + 1u; /* setup only */
+    j->rows = SSDA_DIV32(roi_h - j->tp, j->step) + 1u;
+    j->nx = (uint32_t)j->next->width - j->tp + 1u;
+    j->ny = (uint32_t)j->next->height - j->tp + 1u;
+    return SSDA_OK;
+}
+
+static int resolve(job_t *j, const ssda_view_t *ref, const ssda_view_t *next,
+                   const ssda_composite_config_t *cfg, size_t out_count)
+{
+    uint64_t s;
+    int err = ssda_view_check(ref);
+    if (err == SSDA_OK) {
+        err = ssda_view_check(next);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if (ref->format != next->format) {
+        return SSDA_ERR_FORMAT;
+    }
+#ifdef SSDA_CFG_NO_U16
+    if (ref->format != (uint8_t)SSDA_PIX_U8) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+    if (cfg->tp > 256u || cfg->metric > (uint8_t)SSDA_NCC_ABS ||
+        (cfg->flags & (uint8_t)~SSDA_COMPOSITE_SUBPIXEL) != 0u) {
+        return SSDA_ERR_ARG;
+    }
+    j->ref = ref;
+    j->next = next;
+    j->cfg = cfg;
+    err = resolve_geometry(j);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    if ((uint64_t)out_count < (uint64_t)j->cols * j->rows ||
+        (uint64_t)cfg->work_size < ssda__ncc_work_need(next->width, j->tp, j->tp) ||
+        (((uintptr_t)cfg->work) & 7u) != 0u) {
+        return SSDA_ERR_BUFFER;
+    }
+    /* std >= min_std  <=>  var >= (min_std_q8 n)^2 / 2^16 (n = T^2 <= 2^16):
+       the square < 2^64; at least 1, so flat templates are always FLAT */
+    s = (uint64_t)cfg->min_std_q8 * j->tp * j->tp;
+    j->min_var = (s * s + 65535u) >> 16;
+    j->min_var = j->min_var != 0u ? j->min_var : 1u;
+    return SSDA_OK;
+}
+
+/* Template k's view in REF. */
+static void template_view(const job_t *j, uint32_t k, ssda_view_t *v, uint32_t *x, uint32_t *y)
+{
+    const uint32_t row = SSDA_DIV32(k, j->cols);
+    *x = j->roi_x + (k - row * j->cols) * j->step;
+    *y = j->roi_y + row * j->step;
+    (void)ssda_view_roi(v, j->ref, (uint16_t)*x, (uint16_t)*y, (uint16_t)j->tp, (uint16_t)j->tp);
+}
+
+/* Sub-pixel offset, Q8 in [-128, 128], of the peak of a parabola through
+   r_m, r_0, r_p (Q2.30, r_0 the largest) at -1, 0, +1: 0 where a neighbour
+   is missing or the three do not make a peak. */
+static int32_t parabola_q8(int32_t rm, int32_t r0, int32_t rp, bool neg)
+{
+    int64_t a, b, num, den, q;
+    if (rm == SSDA_NCC_NONE || rp == SSDA_NCC_NONE) {
+        return 0;
+    }
+    /* Q28 (|.| <= 2^28): a peak of |rho| at a negative rho is a trough */
+    a = (int64_t)(neg ? -rm : rm) / 4 - (int64_t)(neg ? -r0 : r0) / 4;
+    b = (int64_t)(neg ? -rp : rp) / 4 - (int64_t)(neg ? -r0 : r0) / 4;
+    /* offset = (r_m - r_p) / (2 (r_m - 2 r_0 + r_p)) = (a - b) / (2 (a + b)) */
+    den = -2 * (a + b); /* > 0 at a peak, <= 2^31 */
+    if (den <= 0) {
+        return 0;
+    }
+    num = (b - a) * 256; /* |.| < 2^37 */
+    q = num >= 0 ? (int64_t)SSDA_DIV64_32((uint64_t)num, (uint32_t)den)
+                 : -(int64_t)SSDA_DIV64_32((uint64_t)-num, (uint32_t)den);
+    return (int32_t)(q > 128 ? 128 : (q < -128 ? -128 : q));
+}
+
+/* Search template t (view tv) in NEXT: the whole of it for the origin
+   (radius < 0), else the disk around (px, py) of that radius; place gets
+   the integer top-left found in NEXT. */
+static void search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py,
+                   int64_t radius, ssda_composite_tp_t *t, uint64_t *ops, int64_t *place)
+{
+    ssda_ncc_config_t c;
+    ssda_ncc_result_t res;
+    ssda_view_t area = *j->next;
+    uint32_t ax = 0u, ay = 0u;
+    (void)memset(&c, 0, sizeof c);
+    c.metric = j->cfg->metric;
+    c.work = j->cfg->work;
+    c.work_size = j->cfg->work_size;
+    if ((j->cfg->flags & SSDA_COMPOSITE_SUBPIXEL) != 0u) {
+        c.flags |= SSDA_NCC_AROUND;
+    }
+    if (radius >= 0) {
+        /* the disk's bounding box in positions, clipped to NEXT */
+        const int64_t r = radius;
+        const int64_t x0 = px - r < 0 ? 0 : px - r, y0 = py - r < 0 ? 0 : py - r;
+        const int64_t x1 = px + r >= (int64_t)j->nx ? (int64_t)j->nx - 1 : px + r;
+        const int64_t y1 = py + r >= (int64_t)j->ny ? (int64_t)j->ny - 1 : py + r;
+        const int64_t w = x1 - x0 + (int64_t)j->tp; /* <= NEXT's width */
+        const int64_t h = y1 - y0 + (int64_t)j->tp;
+        ax = (uint32_t)x0;
+        ay = (uint32_t)y0;
+        (void)ssda_view_roi(&area, j->next, (uint16_t)ax, (uint16_t)ay, (uint16_t)w, (uint16_t)h);
+        c.flags |= SSDA_NCC_DISK;
+        c.radius = (uint16_t)(r > 65535 ? 65535 : r);
+        c.predict_x = (int32_t)(px - x0);
+        c.predict_y = (int32_t)(py - y0);
+    }
+    ssda__ncc_search(&area, tv, &c, &res);
+    *ops += res.pixel_ops;
+    t->rho_q30 = res.rho_q30;
+    place[0] = (int64_t)ax + res.x;
+    place[1] = (int64_t)ay + res.y;
+    t->dx = (int32_t)((place[0] - t->x) * 256);
+    t->dy = (int32_t)((place[1] - t->y) * 256);
+    if ((c.flags & SSDA_NCC_AROUND) != 0u) {
+        t->dx += parabola_q8(res.around_q30[3], res.around_q30[4], res.around_q30[5],
+                             res.rho_q30 < 0);
+        t->dy += parabola_q8(res.around_q30[1], res.around_q30[4], res.around_q30[7],
+                             res.rho_q30 < 0);
+    }
+}
+
+/* Pass 1: every template's place, variance and status; the origin (the
+   largest variance, ties to the smallest k), or UINT32_MAX if none. */
+static uint32_t measure(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops)
+{
+    uint32_t k, origin = UINT32_MAX;
+    uint64_t best = 0u;
+    for (k = 0u; k < j->cols * j->rows; k++) {
+        ssda_composite_tp_t *t = &out[k];
+        ssda__ncc_win_t w;
+        ssda_view_t tv;
+        uint32_t x, y;
+        template_view(j, k, &tv, &x, &y);
+        ssda__ncc_window(&tv, &w, ops);
+        (void)memset(t, 0, sizeof *t);
+        t->x = (uint16_t)x;
+        t->y = (uint16_t)y;
+        t->var = w.var_w;
+        t->status = (uint8_t)(w.var_w >= j->min_var ? SSDA_COMPOSITE_OK : SSDA_COMPOSITE_FLAT);
+        if (t->status == (uint8_t)SSDA_COMPOSITE_OK && w.var_w > best) {
+            best = w.var_w;
+            origin = k;
+        }
+    }
+    return origin;
+}
+
+/* ceil(radius_q8 |v| / 256), at least min_radius: |v| rounded up first. */
+static int64_t disk_radius(const job_t *j, int64_t vx, int64_t vy)
+{
+    const uint64_t ux = (uint64_t)(vx < 0 ? -vx : vx); /* < 2^16 */
+    const uint64_t uy = (uint64_t)(vy < 0 ? -vy : vy);
+    const uint64_t v2 = ux * ux + uy * uy; /* < 2^33 */
+    uint64_t len = ssda__isqrt64(v2);
+    uint64_t r;
+    if (len * len < v2) {
+        len++;
+    }
+    r = ((uint64_t)j->radius_q8 * len + 255u) >> 8; /* < 2^16 * 2^17 */
+    return (int64_t)(r > j->min_radius ? r : j->min_radius);
+}
+
+int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
+                         const ssda_composite_config_t *cfg, ssda_composite_tp_t *out,
+                         size_t out_count, ssda_composite_result_t *result)
+{
+    job_t j;
+    ssda_composite_result_t res;
+    int err;
+    if (ref == NULL || next == NULL || cfg == NULL || out == NULL || result == NULL ||
+        cfg->work == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = resolve(&j, ref, next, cfg, out_count);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    (void)memset(&res, 0, sizeof res);
+    res.cols = (uint16_t)j.cols;
+    res.rows = (uint16_t)j.rows;
+    res.count = j.cols * j.rows;
+    res.origin = measure(&j, out, &res.pixel_ops);
+    if (res.origin != UINT32_MAX) {
+        ssda_composite_tp_t *o = &out[res.origin];
+        int64_t p0[2], place[2], sum = 0; /* sum of rho: |.| < 2^30 * 2^32 */
+        uint32_t k;
+        ssda_view_t tv;
+        uint32_t x, y;
+        template_view(&j, res.origin, &tv, &x, &y);
+        o->origin = 1u;
+        search(&j, &tv, 0, 0, -1, o, &res.pixel_ops, p0);
+        for (k = 0u; k < res.count; k++) {
+            ssda_composite_tp_t *t = &out[k];
+            int64_t vx, vy, px, py;
+            if (k == res.origin || t->status != (uint8_t)SSDA_COMPOSITE_OK) {
+                continue;
+            }
+            vx = (int64_t)t->x - o->x;
+            vy = (int64_t)t->y - o->y;
+            px = p0[0] + vx;
+            py = p0[1] + vy;
+            if (px < 0 || py < 0 || px >= (int64_t)j.nx || py >= (int64_t)j.ny) {
+                t->status = (uint8_t)SSDA_COMPOSITE_EDGE;
+                continue;
+            }
+            template_view(&j, k, &tv, &x, &y);
+            search(&j, &tv, px, py, disk_radius(&j, vx, vy), t, &res.pixel_ops, place);
+        }
+        for (k = 0u; k < res.count; k++) {
+            if (out[k].status == (uint8_t)SSDA_COMPOSITE_OK) {
+                sum += out[k].rho_q30;
+                res.ok++;
+            }
+        }
+        res.mean_rho_q30 = (int32_t)(sum >= 0 ? (int64_t)SSDA_DIV64_32((uint64_t)sum, res.ok)
+                                             : -(int64_t)SSDA_DIV64_32((uint64_t)-sum, res.ok));
+    }
+    *result = res;
+    return SSDA_OK;
+}

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The correlation parts of the tool (issue 16): `ssda match --metric` and
+# `ssda flow`, `ssda track --metric`. Three CTest groups:
+#   cli_flow.sh match|flow|track SSDA GEN CHECK WORKDIR FLOWTOOL
+. "$(dirname "$0")/cli_lib.sh" "$@"
+flowtool=$6
+
+case $group in
+match)
+  "$gen" texture a.png --size 96x80 --seed 5
+  # a window of a at (37, 32), made darker and flatter (x 0.5 + 90, rounded)
+  "$flowtool" crop a.png w.png 37 32 24 20
+  "$flowtool" gain w.png g.png 0.5 90
+  run 0 match a.png w.png --metric ncc --json && chk match-json out.txt 37 32 0 true &&
+    grep -q '"rho":1.000000' out.txt && grep -q '"metric":"ncc"' out.txt ||
+    fail "exact copy: $(cat out.txt)"
+  run 0 match a.png g.png --metric ncc --json && chk match-json out.txt 37 32 - true ||
+    fail "ncc under gain and offset: $(cat out.txt)"
+  # inverted contrast: absncc finds it with rho = -1, ncc does not
+  "$flowtool" gain w.png inv.png -1 255
+  run 0 match a.png inv.png --metric absncc --json && chk match-json out.txt 37 32 - true &&
+    grep -q '"rho":-1.000000' out.txt || fail "absncc on the inverse: $(cat out.txt)"
+  run 0 match a.png inv.png --metric ncc --json && grep -q '"x":37,"y":32' out.txt &&
+    fail "ncc took the inverse"
+  # the text says rho and the SAD there
+  run 0 match a.png g.png --metric ncc && grep -q "^rho: " out.txt && grep -q "^SAD there: " out.txt ||
+    fail "text output: $(cat out.txt)"
+  # SAD keeps its JSON, plus rho at its best placement
+  run 0 match a.png w.png --json && grep -q '"sad":0' out.txt && grep -q '"rho":1.000000' out.txt ||
+    fail "sad JSON lacks rho: $(cat out.txt)"
+  # usage
+  run 2 match a.png w.png --metric l2 && stderr_has "bad --metric 'l2'"
+  run 2 match a.png w.png --metric ncc --threshold none && stderr_has "are SAD options"
+  run 2 match a.png w.png --metric ncc --scan coarse && stderr_has "are SAD options"
+  run 0 match a.png w.png --metric ncc --predict 3,4 --json && chk match-json out.txt 37 32 0 true
+  ;;
+
+flow)
+  "$gen" texture r.png --size 120x100 --seed 7
+  "$gen" texture n.png --size 120x100 --seed 7 --shift 2,-3
+  "$flowtool" gain n.png nb.png 1.3 -25
+  run 0 flow r.png nb.png --region 20,20,70,60 --json f.json --overlay f.png &&
+    "$flowtool" check f.json 2 -3 0.95 || fail "flow under a brightness change"
+  [ -s f.png ] || fail "no overlay"
+  grep -q "^templates: " out.txt && grep -q "^origin: " out.txt || fail "summary: $(cat out.txt)"
+  run 0 flow r.png nb.png --region 20,20,70,60 --tp 16 --tp-step 8 --relax 30 --json f.json &&
+    "$flowtool" check f.json 2 -3 0.95 --relaxed || fail "relaxed field"
+  run 0 flow r.png nb.png --region 20,20,70,60 --relax-median --subpixel --json - &&
+    grep -q '"cleaning":"median"' out.txt || fail "median cleaning: $(head -c 300 out.txt)"
+  run 0 flow r.png nb.png --region 20,20,70,60 --metric absncc --radius 0.5 --min-radius 2 \
+      --min-std 5 --relax 10 --relax-keep --json f.json && "$flowtool" check f.json 2 -3 0.9
+  # errors leave no output
+  run 1 flow r.png nb.png --region 110,90,30,30 --json e.json --overlay e.png &&
+    stderr_has "must lie inside REF" && absent e.json e.png
+  run 1 flow r.png missing.png --json e.json && absent e.json
+  run 2 flow r.png && stderr_has "need REF.png and NEXT.png"
+  run 2 flow r.png nb.png --tp 1 && stderr_has "bad --tp '1'"
+  run 2 flow r.png nb.png --region 1,2,3 && stderr_has "bad --region '1,2,3'"
+  run 2 flow r.png nb.png --metric sad && stderr_has "bad --metric 'sad'"
+  run 2 flow r.png nb.png --relax-keep && stderr_has "--relax-keep needs --relax N"
+  run 2 flow r.png nb.png --relax 5 --relax-median && stderr_has "not both"
+  run 0 flow --help && grep -q "composite template" out.txt || fail "help"
+  # ssda track cleans its grid too (same fields)
+  "$gen" texture n2.png --size 120x100 --seed 7 --shift 2,-3
+  run 0 track r.png n2.png --relax 30 --json t.json --quiet &&
+    grep -q '"relax_dx":2.0000,"relax_dy":-3.0000' t.json && grep -q '"cleaning":"relax"' t.json ||
+    fail "track --relax: $(head -c 400 t.json)"
+  run 0 track r.png n2.png --relax-median --json t.json --quiet &&
+    grep -q '"cleaning":"median"' t.json && grep -q '"relax_dx"' t.json || fail "track --relax-median"
+  run 2 track r.png n2.png --relax 3 --relax-median && stderr_has "not both"
+  run 2 track r.png n2.png --relax x && stderr_has "bad --relax 'x'"
+  ;;
+
+track)
+  # a known motion (2, -3) and a gain and offset change (x 0.6 + 60)
+  "$gen" texture r.png --size 120x100 --seed 7
+  "$gen" texture n.png --size 120x100 --seed 7 --shift 2,-3
+  "$flowtool" gain n.png nb.png 0.6 60
+  for m in sad ncc absncc; do
+    # rho and sad of every ok window against a double-precision recomputation;
+    # with ncc/absncc the placement is the brute-force argmax of rho (|rho|)
+    run 0 track r.png nb.png --metric $m --json t.json --quiet &&
+      "$flowtool" track-rho r.png nb.png t.json $m 24 &&
+      grep -q "\"metric\":\"$m\"" t.json && grep -q '"metric_time_s"' t.json ||
+      fail "track --metric $m: $(head -c 400 t.json)"
+  done
+  # the correlation vectors are the known motion in every ok window
+  run 0 track r.png nb.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 || fail "ncc vectors under gain"
+  grep -q "^metric:  ncc" out.txt || fail "summary line: $(cat out.txt)"
+  # inverted contrast: absncc tracks it (rho = -1 at the motion), ncc does not
+  "$flowtool" gain n.png ni.png -1 255
+  run 0 track r.png ni.png --metric absncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"rho":-1.000000' t.json ||
+    fail "absncc on the inverse"
+  run 0 track r.png ni.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 0.5 && fail "ncc tracked the inverse"
+  # with cleaning and an overlay; without --metric no rho
+  run 0 track r.png nb.png --metric ncc --relax 10 --json t.json --overlay t.png --quiet &&
+    grep -q '"relax_dx":2.0000,"relax_dy":-3.0000' t.json && [ -s t.png ] || fail "ncc + relax"
+  run 0 track r.png nb.png --json t.json --quiet && grep -q '"rho"' t.json && fail "rho without --metric"
+  grep -q '"metric":"sad"' t.json || fail "default metric not named"
+  run 2 track r.png nb.png --metric l1 && stderr_has "bad --metric 'l1'"
+  "$gen" texture big.png --size 260x260 --seed 3
+  run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
+    stderr_has "at most 65536 pixels"
+  run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
+  ;;
+esac
+finish
