@@ -9,16 +9,14 @@
  * position has to beat (the reference key).
  */
 #include "match_rows.h"
+#include "match_quality.h"
 #include "kernel/kernels.h"
 #include "fixmath.h"
 #include "compiler.h"
 
-/* A candidate ordered by the tie rule: (sad, y, x) lexicographically. */
-typedef struct {
-    uint64_t sad; /* <= 65535^3 < 2^48 */
-    uint32_t x;
-    uint32_t y;
-} cand_t;
+/* A candidate ordered by the tie rule: (sad, y, x) lexicographically, or
+   (sad, distance to the prediction, y, x) with SSDA_MATCH_TIE_NEAREST. */
+typedef ssda__cand_t cand_t;
 
 /* Features compiled in (include/ssda/config.h). */
 #if !defined(SSDA_CFG_NO_FIXED) || !defined(SSDA_CFG_NO_RAMP)
@@ -34,7 +32,11 @@ typedef struct {
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
     int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
+    uint32_t tx, ty;     /* SSDA_MATCH_TIE_NEAREST: the prediction clamped into range */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
+    cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
+    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+    uint8_t nlist, cap;  /* entries in list, its capacity (2R+1)^2 + 1 <= 26 */
     bool u8;             /* 8-bit samples (else 16-bit) */
 #ifdef ENGINE_FALLBACK
     bool have_fb;
@@ -58,17 +60,36 @@ typedef struct {
     uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
-static bool cand_less(const cand_t *a, const cand_t *b)
+/* Squared distance of (x, y) to the clamped prediction: < 2 * 2^32. */
+static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t dx = x > e->tx ? x - e->tx : e->tx - x; /* < 2^16 */
+    const uint32_t dy = y > e->ty ? y - e->ty : e->ty - y;
+    return (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
+}
+
+/* (ax, ay) before (bx, by) by the tie rule, SADs aside: nearer to the
+   prediction (SSDA_MATCH_TIE_NEAREST), then smaller y, then smaller x. */
+static bool pos_before(const engine_t *e, uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by)
+{
+    if (e->plan->tie_nearest) {
+        const uint64_t da = dist2(e, ax, ay);
+        const uint64_t db = dist2(e, bx, by);
+        if (da != db) {
+            return da < db;
+        }
+    }
+    return ay < by || (ay == by && ax < bx);
+}
+
+static bool cand_less(const engine_t *e, const cand_t *a, const cand_t *b)
 {
     /* The analyzer takes a fetch returning > 0 (match_rows.h: 0 or < 0) as
        a completed position with its sum unset. */
     if (a->sad != b->sad) { /* NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult) */
         return a->sad < b->sad;
     }
-    if (a->y != b->y) {
-        return a->y < b->y;
-    }
-    return a->x < b->x;
+    return pos_before(e, a->x, a->y, b->x, b->y);
 }
 
 #ifndef SSDA_CFG_NO_RAMP
@@ -154,7 +175,7 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
         c.sad = partial;
         c.x = x;
         c.y = y;
-        if (!cand_less(&c, &e->fb)) {
+        if (!cand_less(e, &c, &e->fb)) {
             return;
         }
     } else if (e->have_fb && pixels < e->fb_pixels) {
@@ -201,10 +222,12 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
 {
     uint64_t cut_at = e->plan->fixed_cut;
     if (e->plan->use_ref && e->ref != NULL) {
-        /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
+        /* A position before ref by the tie rule wins a tie, so it needs
+           sad <= ref. With uniqueness (ref is the best: raster or predict
+           scan) every position within the ratio of the best completes. */
         const cand_t *ref = e->ref;
-        bool before = y < ref->y || (y == ref->y && x < ref->x);
-        uint64_t lim = ref->sad + (before ? 1u : 0u);
+        uint64_t lim = e->list != NULL ? e->loose
+                       : ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
         if (lim < cut_at) {
             cut_at = lim;
         }
@@ -321,6 +344,29 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     return 1;
 }
 
+/* Keep c among the cap smallest completed positions, ascending by the tie
+   rule (the largest goes when full). (2R+1)^2 + 1 entries always hold the
+   best position outside the final winner's square whenever it is within
+   the ratio: every such position completes, and at most (2R+1)^2 of the
+   entries lie in the square. */
+static void list_insert(engine_t *e, const cand_t *c)
+{
+    uint32_t i = e->nlist;
+    if (i == e->cap) {
+        if (!cand_less(e, c, &e->list[i - 1u])) {
+            return;
+        }
+        i--;
+    } else {
+        e->nlist++;
+    }
+    while (i > 0u && cand_less(e, c, &e->list[i - 1u])) {
+        e->list[i] = e->list[i - 1u];
+        i--;
+    }
+    e->list[i] = *c;
+}
+
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
 static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
@@ -332,11 +378,17 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     e->completed++;
     c->x = x;
     c->y = y;
-    if (e->n_best == 0u || cand_less(c, &e->best)) {
+    if (e->list != NULL) {
+        list_insert(e, c);
+    }
+    if (e->n_best == 0u || cand_less(e, c, &e->best)) {
         e->second = e->best;
         e->best = *c;
         e->n_best = (uint8_t)(e->n_best < 2u ? e->n_best + 1u : 2u);
-    } else if (e->n_best == 1u || cand_less(c, &e->second)) {
+        if (e->list != NULL) { /* c->sad < 2^48: the level < 2^50 */
+            e->loose = ssda__mul_q8(c->sad, e->plan->unique_q8) + 1u;
+        }
+    } else if (e->n_best == 1u || cand_less(e, c, &e->second)) {
         e->second = *c;
         e->n_best = 2u;
     } else {
@@ -370,7 +422,6 @@ static int scan_raster(engine_t *e)
     return SSDA_OK;
 }
 
-#ifndef SSDA_CFG_NO_PREDICT
 static uint32_t clamp_pos(int32_t v, uint32_t n)
 {
     if (v < 0) {
@@ -378,6 +429,8 @@ static uint32_t clamp_pos(int32_t v, uint32_t n)
     }
     return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
 }
+
+#ifndef SSDA_CFG_NO_PREDICT
 
 /* Visit the positions from (x0, y0) to (x1, y1) inclusive (one row or one
    column: one of the two ranges is a single value), clipped to the range.
@@ -490,7 +543,7 @@ static int hill_climb(engine_t *e, const cand_t *start)
                 e->ref = NULL; /* next dies here */
                 return done;
             }
-            if (done > 0 && cand_less(&c, &next)) {
+            if (done > 0 && cand_less(e, &c, &next)) {
                 next = c;
             }
         }
@@ -662,6 +715,48 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
 
 #endif
 
+/* The result of a finished scan, with the quality the plan asks for
+   (written only when every fetch succeeded). */
+static int finish(engine_t *e, ssda_match_result_t *result)
+{
+    const ssda_match_plan_t *plan = e->plan;
+    int16_t sx = 0, sy = 0;
+    uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+    if (plan->subpixel && e->n_best > 0u) {
+        int err = ssda__subpixel(e->area, e->win, e->list, e->nlist, &e->best, e->nx, e->ny,
+                                 &e->ops, &sx, &sy);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+    if (e->list != NULL && e->n_best > 0u) {
+        uq = ssda__unique_q8(e->list, e->nlist, &e->best, plan->unique_q8,
+                             plan->unique_radius);
+    }
+    result->sub_x_q8 = sx;
+    result->sub_y_q8 = sy;
+    result->unique_q8 = uq;
+#ifdef ENGINE_FALLBACK
+    if (e->n_best == 0u) {
+        /* every position cut (FIXED/RAMP): the paper's fallback */
+        result->sad = e->fb.sad;
+        result->x = (uint16_t)e->fb.x;
+        result->y = (uint16_t)e->fb.y;
+        result->exact = false;
+    } else
+#endif
+    {
+        result->sad = e->best.sad;
+        result->x = (uint16_t)e->best.x;
+        result->y = (uint16_t)e->best.y;
+        result->exact = plan->exact;
+    }
+    result->positions = e->positions;
+    result->completed = e->completed;
+    result->pixel_ops = e->ops;
+    return SSDA_OK;
+}
+
 int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
                      ssda_match_result_t *result)
@@ -683,7 +778,15 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.ny = (uint32_t)area->height - e.M + 1u;
     e.px = predict_x;
     e.py = predict_y;
+    e.tx = clamp_pos(predict_x, e.nx);
+    e.ty = clamp_pos(predict_y, e.ny);
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+    if (plan->unique_radius != 0u) {
+        const uint32_t side = 2u * plan->unique_radius + 1u; /* 3 or 5 */
+        e.list = (cand_t *)plan->list;
+        e.cap = (uint8_t)(side * side + 1u);
+        e.loose = UINT64_MAX;
+    }
 #ifndef SSDA_CFG_NO_BOUNDS
     if (plan->bounds) {
         err = build_bounds(&e);
@@ -709,23 +812,5 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     if (err != SSDA_OK) { /* NOLINT(readability-misleading-indentation) */
         return err;
     }
-#ifdef ENGINE_FALLBACK
-    if (e.n_best == 0u) {
-        /* every position cut (FIXED/RAMP): the paper's fallback */
-        result->sad = e.fb.sad;
-        result->x = (uint16_t)e.fb.x;
-        result->y = (uint16_t)e.fb.y;
-        result->exact = false;
-    } else
-#endif
-    {
-        result->sad = e.best.sad;
-        result->x = (uint16_t)e.best.x;
-        result->y = (uint16_t)e.best.y;
-        result->exact = plan->exact;
-    }
-    result->positions = e.positions;
-    result->completed = e.completed;
-    result->pixel_ops = e.ops;
-    return SSDA_OK;
+    return finish(&e, result);
 }

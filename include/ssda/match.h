@@ -10,9 +10,11 @@
  * 0-based, x right, y down; 0 <= x <= L'-L, 0 <= y <= M'-M.
  *
  * TIE RULE: the best position has the smallest SAD; among equal SADs the
- * smallest y, then the smallest x. In the exact modes (SSDA_THRESHOLD_AUTO and
- * SSDA_THRESHOLD_NONE with the raster or predict scan) every scan, pixel order,
- * bound option and kernel returns the same (x, y, sad).
+ * smallest y, then the smallest x (with SSDA_MATCH_TIE_NEAREST: the one
+ * nearest to the prediction first, as tracking does). In the exact modes
+ * (SSDA_THRESHOLD_AUTO and SSDA_THRESHOLD_NONE with the raster or predict
+ * scan) every scan, pixel order, bound option and kernel returns the same
+ * (x, y, sad), and the same quality (SSDA_MATCH_UNIQUE, SSDA_MATCH_SUBPIXEL).
  *
  * Overflow: widths and heights are at most 65535, samples at most 65535, so
  * one window row's SAD is at most 65535 * 65535 = 4 294 836 225 < 2^32 and is
@@ -102,6 +104,60 @@ typedef enum {
  */
 #define SSDA_MATCH_BOUNDS 0x01u
 
+/*
+ * Flag: the tie rule of tracking. Among equal SADs the position nearest to
+ * the prediction (predict_x, predict_y), clamped into the range as the
+ * PREDICT scan clamps it, wins: the smallest (x - px)^2 + (y - py)^2, then
+ * the smallest y, then the smallest x. Any scan; the exact modes still
+ * return the minimum (it only decides between equal SADs). Cost: on equal
+ * SADs, two squared distances.
+ */
+#define SSDA_MATCH_TIE_NEAREST 0x02u
+
+/*
+ * Flag: uniqueness, exact. Besides the best position, the best SAD among
+ * positions outside the (2R+1) x (2R+1) square centred on it (R =
+ * unique_radius) is found whenever it is at most unique_q8 / 256 times the
+ * best SAD (floor(unique_q8 * sad / 256)); result.unique_q8 is then
+ * floor(256 * that SAD / sad), in 256 .. unique_q8 (256 when both are 0),
+ * else SSDA_MATCH_UNIQUE_NONE: no other minimum comes that close.
+ * How: positions are cut at the ratio times the best SAD instead of the best
+ * SAD, so every position within the ratio is summed in full, and the
+ * (2R+1)^2 + 1 smallest completed positions are kept in the work buffer (at
+ * most (2R+1)^2 of them lie in the square, so the best outside it is always
+ * kept). Cost: the positions within the ratio are summed in full instead of
+ * being cut after a few rows (about 10 % more pixel_ops on textured image
+ * pairs, docs/tracking.md). Exact modes only (AUTO or NONE; raster or
+ * predict scan); needs SSDA_MATCH_UNIQUE_WORK bytes of work buffer (after
+ * the bounds tables: SSDA_MATCH_WORK_SIZE_UNIQUE).
+ */
+#define SSDA_MATCH_UNIQUE 0x04u
+/* result.unique_q8 when no position outside the square is within the ratio */
+#define SSDA_MATCH_UNIQUE_NONE 0xFFFFu
+/* Defaults, chosen from data (docs/tracking.md): ratio 1.10 in Q8.8
+   (282 / 256 = 1.1016) and radius 2 (a 5 x 5 square). */
+#define SSDA_MATCH_DEFAULT_UNIQUE_Q8 282u
+#define SSDA_MATCH_DEFAULT_UNIQUE_RADIUS 2u
+/* The largest radius, and the bytes of the list of the smallest completed
+   positions: (2 * 2 + 1)^2 + 1 = 26 entries of 16 bytes. */
+#define SSDA_MATCH_MAX_UNIQUE_RADIUS 2u
+#define SSDA_MATCH_UNIQUE_WORK 416u
+
+/*
+ * Flag: sub-pixel position. After the search, the SADs l, c, r of the best
+ * position and its two neighbours on each axis (from the search when it
+ * summed them in full, else summed now) give an equiangular (V-shaped) fit:
+ *     offset = (l - r) / (2 (max(l, r) - c)),  |offset| <= 1/2 px,
+ * the exact minimum of a symmetric V through the three points (a SAD, a sum
+ * of absolute differences, grows linearly on each side of its minimum; a
+ * parabola suits squared differences and pulls SAD estimates toward whole
+ * pixels). result.sub_x_q8, sub_y_q8: the offset in Q8.8 px (-128 .. 128),
+ * rounded half away from zero; 0 on an axis where the best position is on
+ * the border of the range (no neighbour) or all three SADs are equal.
+ * Exact modes only. Cost: at most 4 window SADs.
+ */
+#define SSDA_MATCH_SUBPIXEL 0x08u
+
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
    area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
    size_t is 32 bits the macro wraps for jobs needing 4 GB or more (areas
@@ -110,6 +166,13 @@ typedef enum {
 #define SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h)                   \
     (((((size_t)(area_w) - (size_t)(win_w)) + 1u) * (size_t)(area_h) +       \
       2u * (size_t)(win_h)) * sizeof(uint32_t))
+
+/* Bytes of work buffer for SSDA_MATCH_BOUNDS and SSDA_MATCH_UNIQUE together
+   (the bounds tables rounded up to 8 bytes, then the list; enough for either
+   flag alone too). Wraps like SSDA_MATCH_WORK_SIZE. */
+#define SSDA_MATCH_WORK_SIZE_UNIQUE(area_w, area_h, win_w, win_h)            \
+    (((SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h) + 7u) & ~(size_t)7u) + \
+     (size_t)SSDA_MATCH_UNIQUE_WORK)
 
 /* Default K (safety factor of eqs. 3 and 4) in Q8.8: 2.0, the seed's value. */
 #define SSDA_DEFAULT_K_Q8 512u
@@ -124,15 +187,20 @@ typedef struct {
     uint8_t threshold;        /* ssda_threshold_t */
     uint8_t scan;             /* ssda_scan_t */
     uint8_t order;            /* ssda_order_t */
-    uint8_t flags;            /* SSDA_MATCH_BOUNDS or 0 */
+    uint8_t flags;            /* SSDA_MATCH_BOUNDS | _TIE_NEAREST | _UNIQUE | _SUBPIXEL */
     uint16_t k_q8;            /* K of eqs. 3/4, Q8.8, 0..65535 (0 = SSDA_DEFAULT_K_Q8) */
     uint16_t coarse_step;     /* SSDA_SCAN_COARSE grid step, px (0 = 8) */
     uint32_t lambda_q8;       /* RAMP: lambda of eq. 3, SAD units per pixel, Q24.8 */
     uint64_t fixed_threshold; /* FIXED: T, SAD units */
-    int32_t predict_x;        /* PREDICT: predicted top-left x in area coordinates; */
-    int32_t predict_y;        /*   any value, clamped into the valid range */
-    void *work;               /* SSDA_MATCH_BOUNDS: caller buffer, 4-byte aligned, */
-    size_t work_size;         /*   >= SSDA_MATCH_WORK_SIZE(...) bytes; else unused */
+    int32_t predict_x;        /* PREDICT, TIE_NEAREST: predicted top-left x in area */
+    int32_t predict_y;        /*   coordinates; any value, clamped into the range */
+    uint16_t unique_q8;       /* UNIQUE: ratio, Q8.8, 257 .. 1024 (0 = 282, 1.10) */
+    uint8_t unique_radius;    /* UNIQUE: square radius R, 1 or 2 (0 = 2) */
+    void *work;               /* BOUNDS: caller buffer, 4-byte aligned, >=
+                                 SSDA_MATCH_WORK_SIZE(...) bytes; UNIQUE: 8-byte
+                                 aligned, >= SSDA_MATCH_UNIQUE_WORK bytes, or with
+                                 BOUNDS >= SSDA_MATCH_WORK_SIZE_UNIQUE(...) */
+    size_t work_size;         /* bytes of work; else unused */
 } ssda_match_config_t;
 
 /*
@@ -155,6 +223,11 @@ typedef struct {
     bool ramp;            /* RAMP or AUTO_RAMP */
     bool fallback;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool exact;           /* a completed best is the true minimum */
+    bool tie_nearest;     /* SSDA_MATCH_TIE_NEAREST */
+    bool subpixel;        /* SSDA_MATCH_SUBPIXEL */
+    uint8_t unique_radius; /* SSDA_MATCH_UNIQUE: R (resolved); 0 = no uniqueness */
+    uint16_t unique_q8;   /* SSDA_MATCH_UNIQUE: the ratio (resolved) */
+    void *list;           /* SSDA_MATCH_UNIQUE: the list, in the work buffer */
 } ssda_match_plan_t;
 
 /* Outcome of one search. */
@@ -167,6 +240,9 @@ typedef struct {
     uint32_t completed;  /* positions whose SAD was summed over all pixels */
     uint16_t x;          /* best top-left column in the area */
     uint16_t y;          /* best top-left row in the area */
+    int16_t sub_x_q8;    /* SSDA_MATCH_SUBPIXEL: the minimum lies at x + sub_x_q8 / 256 */
+    int16_t sub_y_q8;    /*   and y + sub_y_q8 / 256 (-128 .. 128); else 0 */
+    uint16_t unique_q8;  /* SSDA_MATCH_UNIQUE: see the flag; else SSDA_MATCH_UNIQUE_NONE */
     bool exact;          /* true: (x, y, sad) is the true minimum by the tie rule */
 } ssda_match_result_t;
 
@@ -177,15 +253,19 @@ typedef struct {
  *   cfg:          options; NULL means all defaults (AUTO, raster, rows).
  *   result:       written on success only.
  * Returns SSDA_OK, or without writing *result:
- *   SSDA_ERR_NULL     area, window or result NULL; bounds requested with a
- *                     NULL work buffer
+ *   SSDA_ERR_NULL     area, window or result NULL; bounds or uniqueness
+ *                     requested with a NULL work buffer
  *   SSDA_ERR_SIZE/_STRIDE/_FORMAT  invalid views (see ssda_view_check);
  *                     SSDA_ERR_SIZE also when the window is larger than the area
  *   SSDA_ERR_FORMAT   area and window formats differ
  *   SSDA_ERR_ARG      unknown threshold/scan/order/flags value, or RAMP with
- *                     lambda_q8 == 0
- *   SSDA_ERR_BUFFER   bounds requested with work_size below the macro, or a
- *                     misaligned work buffer
+ *                     lambda_q8 == 0; UNIQUE or SUBPIXEL with a threshold
+ *                     other than AUTO and NONE or with the COARSE scan;
+ *                     unique_q8 not 0 and outside 257 .. 1024; unique_radius > 2
+ *   SSDA_ERR_BUFFER   bounds or uniqueness requested with work_size below
+ *                     what they need (macros above), or a misaligned work buffer
+ *   SSDA_ERR_UNSUPPORTED  UNIQUE or SUBPIXEL in a build without them
+ *                     (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL)
  */
 int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result);
