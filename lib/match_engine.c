@@ -344,6 +344,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     return 1;
 }
 
+#ifndef SSDA_CFG_NO_UNIQUE
 /* Keep c among the cap smallest completed positions, ascending by the tie
    rule (the largest goes when full). (2R+1)^2 + 1 entries always hold the
    best position outside the final winner's square whenever it is within
@@ -366,6 +367,7 @@ static void list_insert(engine_t *e, const cand_t *c)
     }
     e->list[i] = *c;
 }
+#endif
 
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
@@ -378,16 +380,20 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     e->completed++;
     c->x = x;
     c->y = y;
+#ifndef SSDA_CFG_NO_UNIQUE
     if (e->list != NULL) {
         list_insert(e, c);
     }
+#endif
     if (e->n_best == 0u || cand_less(e, c, &e->best)) {
         e->second = e->best;
         e->best = *c;
         e->n_best = (uint8_t)(e->n_best < 2u ? e->n_best + 1u : 2u);
+#ifndef SSDA_CFG_NO_UNIQUE
         if (e->list != NULL) { /* c->sad < 2^48: the level < 2^50 */
             e->loose = ssda__mul_q8(c->sad, e->plan->unique_q8) + 1u;
         }
+#endif
     } else if (e->n_best == 1u || cand_less(e, c, &e->second)) {
         e->second = *c;
         e->n_best = 2u;
@@ -722,6 +728,7 @@ static int finish(engine_t *e, ssda_match_result_t *result)
     const ssda_match_plan_t *plan = e->plan;
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+#ifndef SSDA_CFG_NO_SUBPIXEL
     if (plan->subpixel && e->n_best > 0u) {
         int err = ssda__subpixel(e->area, e->win, e->list, e->nlist, &e->best, e->nx, e->ny,
                                  &e->ops, &sx, &sy);
@@ -729,10 +736,13 @@ static int finish(engine_t *e, ssda_match_result_t *result)
             return err;
         }
     }
+#endif
+#ifndef SSDA_CFG_NO_UNIQUE
     if (e->list != NULL && e->n_best > 0u) {
         uq = ssda__unique_q8(e->list, e->nlist, &e->best, plan->unique_q8,
                              plan->unique_radius);
     }
+#endif
     result->sub_x_q8 = sx;
     result->sub_y_q8 = sy;
     result->unique_q8 = uq;
@@ -781,12 +791,14 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.tx = clamp_pos(predict_x, e.nx);
     e.ty = clamp_pos(predict_y, e.ny);
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+#ifndef SSDA_CFG_NO_UNIQUE
     if (plan->unique_radius != 0u) {
         const uint32_t side = 2u * plan->unique_radius + 1u; /* 3 or 5 */
         e.list = (cand_t *)plan->list;
         e.cap = (uint8_t)(side * side + 1u);
         e.loose = UINT64_MAX;
     }
+#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     if (plan->bounds) {
         err = build_bounds(&e);

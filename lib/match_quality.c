@@ -4,6 +4,7 @@
 #include "kernel/kernels.h"
 #include "fixmath.h"
 
+#ifndef SSDA_CFG_NO_UNIQUE
 uint64_t ssda__mul_q8(uint64_t v, uint16_t q8)
 {
     /* v = vh 2^16 + vl: vh * q8 < 2^32 * 2^11 (< 2^59 shifted), vl * q8 < 2^27 */
@@ -29,6 +30,9 @@ uint16_t ssda__ratio_q8(uint64_t s, uint64_t b)
     return (uint16_t)q;
 }
 
+#endif
+
+#ifndef SSDA_CFG_NO_SUBPIXEL
 int16_t ssda__vfit_q8(uint64_t l, uint64_t c, uint64_t r)
 {
     uint64_t den = (l > r ? l : r) - c; /* >= |l - r|: c is the smallest */
@@ -47,6 +51,9 @@ int16_t ssda__vfit_q8(uint64_t l, uint64_t c, uint64_t r)
     return (int16_t)(l >= r ? (int32_t)q : -(int32_t)q);
 }
 
+#endif
+
+#ifndef SSDA_CFG_NO_UNIQUE
 uint16_t ssda__unique_q8(const ssda__cand_t *list, uint32_t n, const ssda__cand_t *best,
                          uint16_t q8, uint32_t rad)
 {
@@ -61,7 +68,9 @@ uint16_t ssda__unique_q8(const ssda__cand_t *list, uint32_t n, const ssda__cand_
     }
     return (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 }
+#endif
 
+#ifndef SSDA_CFG_NO_SUBPIXEL
 /* SAD of position (x, y): from the list when the search summed it in full,
    else summed now (L x M pixels added to *ops). */
 static int sad_of(const ssda__rows_t *area, const ssda__rows_t *win, const ssda__cand_t *list,
@@ -131,3 +140,4 @@ int ssda__subpixel(const ssda__rows_t *area, const ssda__rows_t *win, const ssda
     }
     return err;
 }
+#endif
