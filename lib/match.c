@@ -75,11 +75,6 @@ static int check_quality(const ssda_match_config_t *cfg, uint32_t area_w, uint32
                     cfg->unique_radius > SSDA_MATCH_MAX_UNIQUE_RADIUS))) {
         return SSDA_ERR_ARG;
     }
-#ifdef SSDA_CFG_NO_UNIQUE
-    if (unique) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
 #ifdef SSDA_CFG_NO_SUBPIXEL
     if ((cfg->flags & SSDA_MATCH_SUBPIXEL) != 0u) {
         return SSDA_ERR_UNSUPPORTED;
@@ -88,6 +83,14 @@ static int check_quality(const ssda_match_config_t *cfg, uint32_t area_w, uint32
     if (!unique) {
         return SSDA_OK;
     }
+#ifdef SSDA_CFG_NO_UNIQUE
+    (void)need;
+    (void)area_w;
+    (void)area_h;
+    (void)win_w;
+    (void)win_h;
+    return SSDA_ERR_UNSUPPORTED;
+#else
     if (cfg->work == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -98,6 +101,7 @@ static int check_quality(const ssda_match_config_t *cfg, uint32_t area_w, uint32
         return SSDA_ERR_BUFFER;
     }
     return SSDA_OK;
+#endif
 }
 
 /* The options against the geometry: SSDA_OK or the error ssda_match

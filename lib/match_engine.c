@@ -36,7 +36,9 @@ typedef struct {
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
     cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
     uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+#ifndef SSDA_CFG_NO_UNIQUE
     uint8_t nlist, cap;  /* entries in list, its capacity (2R+1)^2 + 1 <= 26 */
+#endif
     bool u8;             /* 8-bit samples (else 16-bit) */
 #ifdef ENGINE_FALLBACK
     bool have_fb;
@@ -65,7 +67,7 @@ static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
 {
     const uint32_t dx = x > e->tx ? x - e->tx : e->tx - x; /* < 2^16 */
     const uint32_t dy = y > e->ty ? y - e->ty : e->ty - y;
-    return (uint64_t)(dx * dx) + (uint64_t)(dy * dy);
+    return (uint64_t)dx * dx + (uint64_t)dy * dy;
 }
 
 /* (ax, ay) before (bx, by) by the tie rule, SADs aside: nearer to the
@@ -391,6 +393,7 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
         e->n_best = (uint8_t)(e->n_best < 2u ? e->n_best + 1u : 2u);
 #ifndef SSDA_CFG_NO_UNIQUE
         if (e->list != NULL) { /* c->sad < 2^48: the level < 2^50 */
+            /* NOLINTNEXTLINE(clang-analyzer-core.CallAndMessage): as in cand_less */
             e->loose = ssda__mul_q8(c->sad, e->plan->unique_q8) + 1u;
         }
 #endif
@@ -730,7 +733,12 @@ static int finish(engine_t *e, ssda_match_result_t *result)
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 #ifndef SSDA_CFG_NO_SUBPIXEL
     if (plan->subpixel && e->n_best > 0u) {
-        int err = ssda__subpixel(e->area, e->win, e->list, e->nlist, &e->best, e->nx, e->ny,
+#ifndef SSDA_CFG_NO_UNIQUE
+        const uint32_t nlist = e->nlist; /* the search's full SADs */
+#else
+        const uint32_t nlist = 0u;
+#endif
+        int err = ssda__subpixel(e->area, e->win, e->list, nlist, &e->best, e->nx, e->ny,
                                  &e->ops, &sx, &sy);
         if (err != SSDA_OK) {
             return err;

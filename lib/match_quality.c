@@ -17,12 +17,13 @@ uint16_t ssda__ratio_q8(uint64_t s, uint64_t b)
 {
     uint64_t num = s << 8; /* <= 4 b * 256 < 2^58 */
     uint32_t q = 0u;       /* < 2^11 */
-    uint32_t bit;
+    uint32_t i;
     if (b == 0u) {
         return 256u;
     }
-    for (bit = 11u; bit-- > 0u;) {
-        if ((b << bit) <= num) { /* b << 10 < 2^58 */
+    for (i = 0u; i < 11u; i++) {
+        const uint32_t bit = 10u - i; /* quotient bits, highest first */
+        if ((b << bit) <= num) {      /* b << 10 < 2^58 */
             num -= b << bit;
             q |= 1u << bit;
         }

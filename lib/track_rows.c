@@ -153,7 +153,8 @@ static int texture_q8(const ssda__rows_t *win, uint64_t sum, uint32_t *out,
                       uint64_t *pixels_read)
 {
     const uint32_t n = (uint32_t)win->width * win->height;
-    const uint32_t m = SSDA_DIV64_32(sum, n); /* <= 65535 */
+    /* n >= 1: windows are at least 1 x 1 */
+    const uint32_t m = SSDA_DIV64_32(sum, n); /* NOLINT(clang-analyzer-core.DivideZero) */
     uint64_t dev = 0u;
     uint32_t y;
     for (y = 0u; y < win->height; y++) {
