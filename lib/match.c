@@ -18,6 +18,11 @@ void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride, uint3
     rows->format = format;
 }
 
+void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view)
+{
+    ssda__rows_mem(rows, view->data, view->stride, view->width, view->height, view->format);
+}
+
 void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx, uint32_t w,
                     uint32_t h, uint8_t format)
 {
@@ -294,9 +299,8 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
     if (err != SSDA_OK) {
         return err;
     }
-    ssda__rows_mem(&a, area->data, area->stride, area->width, area->height, area->format);
-    ssda__rows_mem(&w, window->data, window->stride, window->width, window->height,
-                   window->format);
+    ssda__rows_view(&a, area);
+    ssda__rows_view(&w, window);
     return ssda__match_rows(&a, &w, &plan, cfg->predict_x, cfg->predict_y, result);
 }
 

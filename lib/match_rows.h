@@ -37,6 +37,9 @@ typedef struct {
 SSDA_INTERNAL void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride,
                                   uint32_t w, uint32_t h, uint8_t format);
 
+/* Rows of a valid view (ssda__rows_mem of its fields). */
+SSDA_INTERNAL void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view);
+
 /* Rows of a w x h image behind a fetch callback (a streamed source). */
 SSDA_INTERNAL void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx,
                                   uint32_t w, uint32_t h, uint8_t format);

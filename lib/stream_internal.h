@@ -88,8 +88,15 @@ SSDA_INTERNAL int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rec
                                           uint32_t span, uint32_t rows, uint32_t q,
                                           size_t extra, ssda_source_plan_t *plan);
 
-/* Give the plate the planned shape, keeping its pixels when the shape does
-   not change (the same width has the same pitch). */
+/* Plan the plate of s as ssda__stream_plate_plan does, straight into the
+   source (a job that plans and uses at once), keeping its pixels when the
+   shape does not change. Same returns; on error s is unchanged. */
+SSDA_INTERNAL int ssda__stream_plate_shape(ssda_source_t *s, const ssda_rect_t *r,
+                                           uint32_t span, uint32_t rows, uint32_t q,
+                                           size_t extra);
+
+/* Give the plate a shape planned before, keeping its pixels when the shape
+   does not change (the same width has the same pitch). */
 static inline void ssda__stream_plate_use(ssda_source_t *s, const ssda_source_plan_t *plan)
 {
     if (plan->pw != s->plate.pw || plan->ph != s->plate.ph) {

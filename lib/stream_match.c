@@ -10,30 +10,25 @@ static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
     return (cfg->flags & SSDA_MATCH_BOUNDS) != 0u ? a->width : w->width;
 }
 
-/* Plan and shape the plates of the streamed operands for the search: the
-   raster scan revisits a band of window-height rows moving down; the other
-   scans jump around the whole area. Out of line: the plans stay off the
-   frame the search runs under. */
-static SSDA_NOINLINE void shape_plates(ssda_source_t *area, const ssda_rect_t *ar,
-                                       ssda_source_t *window, const ssda_rect_t *wr,
-                                       const ssda_match_config_t *cfg)
+/* Shape the plates of the streamed operands for the search: the raster
+   scan revisits a band of window-height rows moving down; the other scans
+   jump around the whole area. */
+static void shape_plates(ssda_source_t *area, const ssda_rect_t *ar, ssda_source_t *window,
+                         const ssda_rect_t *wr, const ssda_match_config_t *cfg)
 {
-    ssda_source_plan_t plan;
     if (area->view == NULL) {
         const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
-        (void)ssda__stream_plate_plan(area, ar, area_span(cfg, ar, wr),
-                                      raster ? wr->height : ar->height, 1u, 0u, &plan);
+        (void)ssda__stream_plate_shape(area, ar, area_span(cfg, ar, wr),
+                                       raster ? wr->height : ar->height, 1u, 0u);
         /* A raster scan's band of window-height rows moves down one row at
            a time: a plate with spare rows jumps by them (rows needed are
            read once, each slide copies the band's rows in the arena). */
-        if (raster && plan.ph >= wr->height) {
-            plan.qy = (uint16_t)(plan.ph - wr->height + 1u);
+        if (raster && area->plate.ph >= wr->height) {
+            area->plate.qy = (uint16_t)(area->plate.ph - wr->height + 1u);
         }
-        ssda__stream_plate_use(area, &plan);
     }
     if (window->view == NULL) {
-        (void)ssda__stream_plate_plan(window, wr, wr->width, wr->height, 0u, 0u, &plan);
-        ssda__stream_plate_use(window, &plan);
+        (void)ssda__stream_plate_shape(window, wr, wr->width, wr->height, 0u, 0u);
     }
 }
 

@@ -131,6 +131,18 @@ int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rect_t *r, uint32
     return SSDA_OK;
 }
 
+int ssda__stream_plate_shape(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+                             uint32_t rows, uint32_t q, size_t extra)
+{
+    const uint16_t pw = s->plate.pw, ph = s->plate.ph;
+    /* the plan reads the source's configuration only: safe into s->plate */
+    int err = ssda__stream_plate_plan(s, r, span, rows, q, extra, &s->plate);
+    if (err == SSDA_OK && (s->plate.pw != pw || s->plate.ph != ph)) {
+        s->rows = 0u;
+    }
+    return err;
+}
+
 /* One read of [off, off + len) widened to read_size, so that byte off lands
    at `at`. Counts it. Returns 0 or the callback's error. len <= 2^31 (a
    plate or bounce buffer) and read_size <= 2^16: the sum cannot wrap, and

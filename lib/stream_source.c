@@ -58,8 +58,8 @@ static int check_device(ssda_source_config_t *c)
    below 2^32) or SSDA_ERR_STRIDE. */
 static int image_extent(ssda_source_config_t *c, uint32_t row_bytes, uint32_t *extent)
 {
-    const uint32_t bpp = c->format;
     if (STREAM_LAYOUT(c) == (uint8_t)SSDA_LAYOUT_TILED) {
+        const uint32_t bpp = c->format;
         /* tiles <= 65535^2 < 2^32 */
         uint32_t tiles = SSDA_DIV32((uint32_t)c->width + c->tile_w - 1u, c->tile_w) *
                          SSDA_DIV32((uint32_t)c->height + c->tile_h - 1u, c->tile_h);
@@ -196,19 +196,6 @@ int ssda__stream_rect(const ssda_source_t *s, const ssda_rect_t *in, ssda_rect_t
     return SSDA_OK;
 }
 
-/* Reshape the plate for spans of n px: whole rows if they fit, else n px.
-   Out of line: its plan stays off ssda_source_row's frame, under which the
-   plate's reads run. */
-static SSDA_NOINLINE int reshape(ssda_source_t *src, const ssda_rect_t *all, uint32_t n)
-{
-    ssda_source_plan_t plan;
-    int err = ssda__stream_plate_plan(src, all, n, 1u, 0u, 0u, &plan);
-    if (err == SSDA_OK) {
-        ssda__stream_plate_use(src, &plan);
-    }
-    return err;
-}
-
 int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
                     const uint8_t **px)
 {
@@ -228,7 +215,8 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
     }
     (void)ssda__stream_rect(src, NULL, &all);
     if (n > src->plate.pw) {
-        int err = reshape(src, &all, n);
+        /* reshape for this width: whole rows if they fit, else n px */
+        int err = ssda__stream_plate_shape(src, &all, n, 1u, 0u, 0u);
         if (err != SSDA_OK) {
             return err;
         }

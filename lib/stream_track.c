@@ -11,6 +11,7 @@
  * memory, placed by an origin): the engine runs at in-RAM speed, with no
  * call per row. Otherwise the tracker fetches rows through the plate cache.
  */
+#include <string.h>
 #include "stream_internal.h"
 #include "track_rows.h"
 
@@ -99,29 +100,25 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
 
 /* Plan the strip [c0, c1): its rectangles, and plates as wide as the strip
    sliding down one grid step at a time (each holds at least one row,
-   checked by the caller). Out of line: its plans stay off the frame the
-   searches run under. */
-static SSDA_NOINLINE void plan_strip(ssda_source_t *first, ssda_source_t *second,
-                                     const ssda_track_plan_t *plan, strip_t *st)
+   checked by the caller). */
+static void plan_strip(ssda_source_t *first, ssda_source_t *second,
+                       const ssda_track_plan_t *plan, strip_t *st)
 {
     const ssda_track_grid_t *g = &plan->grid;
-    ssda_source_plan_t pp;
     st->banded = ssda__stream_grid_rects(g, plan->first_w, plan->first_h, st->c0, st->c1,
                                          &st->ar, &st->wr, &st->lo, &st->hi);
     if (!st->banded) {
         return; /* no window reads anything */
     }
     if (first->view == NULL) {
-        (void)ssda__stream_plate_plan(first, &st->ar, g->search_w, g->search_h, g->step_y,
-                                      ssda__stream_run_extra(first, g->step_y), &pp);
-        ssda__stream_plate_use(first, &pp);
-        st->banded = ssda__stream_plan_holds_band(&pp, g->search_h);
+        (void)ssda__stream_plate_shape(first, &st->ar, g->search_w, g->search_h, g->step_y,
+                                       ssda__stream_run_extra(first, g->step_y));
+        st->banded = ssda__stream_plan_holds_band(&first->plate, g->search_h);
     }
     if (second->view == NULL) {
-        (void)ssda__stream_plate_plan(second, &st->wr, g->win_w, g->win_h, g->step_y,
-                                      ssda__stream_run_extra(second, g->step_y), &pp);
-        ssda__stream_plate_use(second, &pp);
-        st->banded = st->banded && ssda__stream_plan_holds_band(&pp, g->win_h);
+        (void)ssda__stream_plate_shape(second, &st->wr, g->win_w, g->win_h, g->step_y,
+                                       ssda__stream_run_extra(second, g->step_y));
+        st->banded = st->banded && ssda__stream_plan_holds_band(&second->plate, g->win_h);
     }
 }
 
@@ -130,7 +127,6 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
                       size_t out_count, ssda_track_stats_t *stats)
 {
     static const ssda_track_config_t defaults;
-    static const ssda_track_stats_t zero;
     ssda_track_plan_t plan;
     ssda_track_stats_t acc;
     ssda__rows_t frows, srows;
@@ -167,7 +163,7 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     ssda__stream_rows(&frows, first, NULL);
     ssda__stream_rows(&srows, second, NULL);
     k = strip_cols(&plan, first, second);
-    acc = zero;
+    (void)memset(&acc, 0, sizeof acc);
     for (c0 = 0u; c0 < plan.grid.cols; c0 += k) {
         st.c0 = c0;
         st.c1 = plan.grid.cols - c0 > k ? c0 + k : plan.grid.cols;

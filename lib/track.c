@@ -17,9 +17,8 @@ int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
     if (err != SSDA_OK) {
         return err;
     }
-    ssda__rows_mem(&a, first->data, first->stride, first->width, first->height, first->format);
-    ssda__rows_mem(&b, second->data, second->stride, second->width, second->height,
-                   second->format);
+    ssda__rows_view(&a, first);
+    ssda__rows_view(&b, second);
     /* RAM sources never fail a fetch: an error here is an argument error,
        found before anything is written. */
     return ssda__track_rows(&a, &b, cfg, out, out_count, stats);

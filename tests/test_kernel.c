@@ -261,6 +261,66 @@ static void test_long_random_rows(void)
                              ssda__absdiff_row_i16(rows, rows + N_MAX + 2u, N_MAX));
 }
 
+/* Products (correlation kernels): sum over rows of sum a[i] b[i], 64-bit. */
+static uint64_t ref_dot(const void *a, size_t as, const void *b, size_t bs, uint32_t n,
+                        uint32_t rows, int u16)
+{
+    uint64_t s = 0;
+    uint32_t r, i;
+    for (r = 0; r < rows; r++) {
+        for (i = 0; i < n; i++) {
+            if (u16) {
+                s += (uint64_t)((const uint16_t *)(const void *)((const uint8_t *)a + r * as))[i] *
+                     ((const uint16_t *)(const void *)((const uint8_t *)b + r * bs))[i];
+            } else {
+                s += (uint64_t)((const uint8_t *)a + r * as)[i] * ((const uint8_t *)b + r * bs)[i];
+            }
+        }
+    }
+    return s;
+}
+
+static void test_dot_random_every_length_alignment_and_rows(void)
+{
+    const uint8_t *bytes = (const uint8_t *)g_big;
+    test_rng_t r;
+    uint32_t i, oa, ob, n, rows;
+    test_rng_seed(&r, 0xD07u);
+    for (i = 0; i < 2u * (N_MAX + 1u); i++) {
+        g_big[i] = (uint16_t)sample(&r, 65535u);
+    }
+    for (oa = 0; oa < MAX_OFF; oa++) {
+        for (ob = 0; ob < MAX_OFF; ob += 3u) {
+            for (n = 0; n <= MAX_LEN; n++) {
+                for (rows = 1; rows <= 3u; rows += 2u) {
+                    const uint8_t *a8 = bytes + oa, *b8 = bytes + 1000u + ob;
+                    const uint16_t *a16 = g_big + 3000u + oa, *b16 = g_big + 9000u + ob;
+                    TEST_ASSERT_EQUAL_UINT64_MESSAGE(ref_dot(a8, 233, b8, 301, n, rows, 0),
+                                                     ssda__dot_u8(a8, 233, b8, 301, n, rows),
+                                                     ssda__kernel_name());
+                    TEST_ASSERT_EQUAL_UINT64_MESSAGE(ref_dot(a16, 466, b16, 602, n, rows, 1),
+                                                     ssda__dot_u16(a16, 466, b16, 602, n, rows),
+                                                     ssda__kernel_name());
+                }
+            }
+        }
+    }
+}
+
+/* 65536 products of 255 * 255 (4 261 478 400, just under 2^32) and of
+   65535 * 65535 (just under 2^48), in the shapes 32768 x 2 and 65535 x 1. */
+static void test_dot_worst_case(void)
+{
+    const uint8_t *bytes = (const uint8_t *)g_big;
+    fill_big(0xFFFFu, 0xFFFFu);
+    TEST_ASSERT_EQUAL_UINT32(65536u * 65025u, ssda__dot_u8(bytes, 32768, bytes + 65536u, 32768, 32768, 2));
+    TEST_ASSERT_EQUAL_UINT32(65535u * 65025u, ssda__dot_u8(bytes + 1, 0, bytes + 3, 0, 65535, 1));
+    TEST_ASSERT_EQUAL_UINT64(65536ull * 65535u * 65535u,
+                             ssda__dot_u16(g_big, 65536, g_big + 1, 65536, 32768, 2));
+    TEST_ASSERT_EQUAL_UINT64(65535ull * 65535u * 65535u,
+                             ssda__dot_u16(g_big + 1, 0, g_big, 0, 65535, 1));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -273,5 +333,7 @@ int main(void)
     RUN_TEST(test_sad_u16_worst_case);
     RUN_TEST(test_absdiff_i16_worst_case);
     RUN_TEST(test_long_random_rows);
+    RUN_TEST(test_dot_random_every_length_alignment_and_rows);
+    RUN_TEST(test_dot_worst_case);
     return UNITY_END();
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
-# test: host build with -Werror, a host build with ASan + UBSan, the line and
+# test: host build with -Werror (with the Python binding and its pytest
+# suite), a host build with ASan + UBSan, the line and
 # branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
 # of lib/ (cppcheck + MISRA C 2012, clang-tidy), a 5-second run of every fuzz
 # target (libFuzzer), the library tests as bare-metal images under
@@ -14,11 +15,15 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
 
+# The Python binding's build and tests (tools/python, docs/python.md) use
+# Debian's Python and its packages, never a pip download.
+python_pkgs=(python3-dev python3-numpy python3-pytest python3-matplotlib python3-pil
+             python3-setuptools python3-pip python3-venv)
 skip_cross=${SSDA_SKIP_CROSS:-0}
 if [ "$skip_cross" = 1 ]; then
-  bash tools/setup-deps.sh
+  bash tools/setup-deps.sh "${python_pkgs[@]}"
 else
-  bash tools/setup-deps.sh gcc-arm-none-eabi libnewlib-arm-none-eabi \
+  bash tools/setup-deps.sh "${python_pkgs[@]}" gcc-arm-none-eabi libnewlib-arm-none-eabi \
        gcc-riscv64-unknown-elf qemu-system-arm
 fi
 unity=$(bash tools/fetch-unity.sh)
@@ -34,7 +39,9 @@ configure_build_test() { # <dir> <cmake args...>
   ctest --test-dir "$dir" --output-on-failure -j "$jobs"
 }
 
-configure_build_test build/host
+# The host build also builds the Python binding with Debian's Python and
+# runs its pytest suite and a pip install (tools/python, docs/python.md).
+configure_build_test build/host -DSSDA_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
   configure_build_test build/asan -DSSDA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
 

@@ -21,6 +21,15 @@
  * are not used. The two lanes are then added to the 32-bit sum (UXTAH and an
  * ADD with LSR #16): 7 instructions per 2 pixels with the loads.
  *
+ * Products (correlation), 8-bit: a mask spreads bytes 0 and 2 (and, after a
+ * shift by 8, bytes 1 and 3) of a word into two halfword lanes (one AND
+ * each, the shift folded into it); SMLAD
+ * multiplies both lane pairs and adds them to the accumulator. The lanes hold
+ * 0..255, so the signed products are the unsigned ones, and the 32-bit sum
+ * wraps like uint32_t arithmetic: the total < 2^32 (kernels.h) is exact
+ * (SMLAD's Q flag may be set; nothing reads it). 16-bit: no unsigned dual
+ * multiply; the portable loop (one UMLAL per pixel).
+ *
  * Loads: memcpy of 4 bytes compiles to a single LDR; ARMv7-M and ARMv8-M
  * Mainline allow unaligned LDR, so any pointer alignment works (unaligned
  * words may cost a cycle more on the bus, never an instruction).
@@ -155,6 +164,47 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
             b += 2;
         }
         sum += ssda__portable_absdiff_row_i16(a, b, n & 1u);
+    }
+    return sum;
+}
+
+/* Products of four byte pairs added to acc (see the file comment). */
+static inline uint32_t dot_u8x4(uint32_t a, uint32_t b, uint32_t acc)
+{
+    const uint32_t lanes = 0x00FF00FFu; /* bytes 0 and 2 as halfword lanes */
+    acc = (uint32_t)__smlad((int16x2_t)(a & lanes), (int16x2_t)(b & lanes), (int32_t)acc);
+    return (uint32_t)__smlad((int16x2_t)((a >> 8) & lanes), (int16x2_t)((b >> 8) & lanes),
+                             (int32_t)acc);
+}
+
+uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                      size_t bstride, uint32_t n, uint32_t rows)
+{
+    uint32_t sum = 0u; /* n * rows <= 65536: < 2^32 (kernels.h) */
+    uint32_t r;
+    for (r = 0u; r < rows; r++) {
+        const uint8_t *pa = a + r * astride;
+        const uint8_t *pb = b + r * bstride;
+        const uint8_t *end4 = pa + (n & ~3u);
+        while (pa != end4) {
+            sum = dot_u8x4(load_u32(pa), load_u32(pb), sum);
+            pa += 4;
+            pb += 4;
+        }
+        sum += ssda__portable_dot_row_u8(pa, pb, n & 3u);
+    }
+    return sum;
+}
+
+uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                       size_t bstride, uint32_t n, uint32_t rows)
+{
+    uint64_t sum = 0u; /* < 2^48 (kernels.h) */
+    uint32_t r;
+    for (r = 0u; r < rows; r++) {
+        sum += ssda__portable_dot_row_u16(
+            (const uint16_t *)(const void *)((const uint8_t *)(const void *)a + r * astride),
+            (const uint16_t *)(const void *)((const uint8_t *)(const void *)b + r * bstride), n);
     }
     return sum;
 }

@@ -17,6 +17,30 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
     return ssda__portable_absdiff_row_i16(a, b, n);
 }
 
+uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                      size_t bstride, uint32_t n, uint32_t rows)
+{
+    uint32_t sum = 0u; /* n * rows <= 65536: < 2^32 (kernels.h) */
+    uint32_t r;
+    for (r = 0u; r < rows; r++) {
+        sum += ssda__portable_dot_row_u8(a + r * astride, b + r * bstride, n);
+    }
+    return sum;
+}
+
+uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                       size_t bstride, uint32_t n, uint32_t rows)
+{
+    uint64_t sum = 0u; /* < 2^48 (kernels.h) */
+    uint32_t r;
+    for (r = 0u; r < rows; r++) {
+        sum += ssda__portable_dot_row_u16(
+            (const uint16_t *)(const void *)((const uint8_t *)(const void *)a + r * astride),
+            (const uint16_t *)(const void *)((const uint8_t *)(const void *)b + r * bstride), n);
+    }
+    return sum;
+}
+
 const char *ssda__kernel_name(void)
 {
     return "portable";

@@ -8,6 +8,7 @@
 #ifndef SSDA_KERNEL_KERNELS_H
 #define SSDA_KERNEL_KERNELS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "compiler.h"
@@ -23,6 +24,15 @@ SSDA_INTERNAL uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, u
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
+
+/* Correlation (ncc.h): sum of a[i] * b[i] over `rows` rows of n pixels,
+   row r of a at a + r * astride bytes (b likewise), n * rows <= 65536.
+   8-bit worst case 65536 * 255^2 = 4 261 478 400 < 2^32; 16-bit
+   65536 * 65535^2 < 2^48. */
+SSDA_INTERNAL uint32_t ssda__dot_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                      size_t bstride, uint32_t n, uint32_t rows);
+SSDA_INTERNAL uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                       size_t bstride, uint32_t n, uint32_t rows);
 
 /* Name of the compiled kernel set ("portable", "sse2", "armv7em"). */
 SSDA_INTERNAL const char *ssda__kernel_name(void);

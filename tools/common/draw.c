@@ -111,7 +111,16 @@ static const double status_rgb[DRAW_STATUS_COUNT][3] = {
     {0.62, 0.62, 0.62}, /* excluded: grey */
     {1.00, 0.25, 0.85}, /* masked: magenta */
     {1.00, 0.50, 0.05}, /* edge: orange */
+    {0.50, 0.60, 0.75}, /* flat: blue-grey */
+    {0.72, 0.45, 1.00}, /* ambiguous: violet */
+    {1.00, 0.18, 0.18}, /* at limit: red */
 };
+
+/* Statuses drawn as an arrow (a vector that exists), the others as a mark. */
+static int has_arrow(int status)
+{
+    return status == DRAW_OK || status == DRAW_AT_LIMIT;
+}
 static const double truth_rgb[3] = {0.10, 0.90, 1.00}; /* cyan */
 
 /* Contrast stretch levels: 0.5 % and 99.5 % of the non-masked pixels. */
@@ -246,12 +255,12 @@ static void status_mark(cairo_t *cr, double x, double y, int status, double r)
 {
     const double *c = status_rgb[status];
     int pass;
-    if (status == DRAW_EXCLUDED) { /* the commonest mark: small and quiet */
+    if (status == DRAW_EXCLUDED || status == DRAW_FLAT) { /* the commonest: small, quiet */
         r *= 0.7;
     }
     for (pass = 0; pass < 2; pass++) {
-        cairo_set_line_width(cr, pass == 0 ? (status == DRAW_EXCLUDED ? 3.0 : 4.0)
-                                           : (status == DRAW_EXCLUDED ? 1.2 : 2.0));
+        const int quiet = status == DRAW_EXCLUDED || status == DRAW_FLAT;
+        cairo_set_line_width(cr, pass == 0 ? (quiet ? 3.0 : 4.0) : (quiet ? 1.2 : 2.0));
         if (pass == 0) {
             cairo_set_source_rgb(cr, 0, 0, 0);
         } else {
@@ -264,6 +273,19 @@ static void status_mark(cairo_t *cr, double x, double y, int status, double r)
             cairo_line_to(cr, x + r, y - r);
         } else if (status == DRAW_MASKED) {
             cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r);
+        } else if (status == DRAW_AMBIGUOUS) {
+            cairo_move_to(cr, x, y - 1.3 * r);
+            cairo_line_to(cr, x + 1.3 * r, y);
+            cairo_line_to(cr, x, y + 1.3 * r);
+            cairo_line_to(cr, x - 1.3 * r, y);
+            cairo_close_path(cr);
+        } else if (status == DRAW_FLAT) { /* a filled dot: outline pass, then fill */
+            cairo_new_sub_path(cr);
+            cairo_arc(cr, x, y, 0.6 * r, 0, 2 * PI);
+            if (pass == 1) {
+                cairo_fill(cr);
+                continue;
+            }
         } else {
             cairo_new_sub_path(cr);
             cairo_arc(cr, x, y, r, 0, 2 * PI);
@@ -326,11 +348,14 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
                         int draw)
 {
     enum { ITEM_TRUTH = DRAW_STATUS_COUNT, ITEM_DOT, ITEM_COUNT };
-    static const int order[ITEM_COUNT] = {DRAW_OK,   ITEM_DOT,  DRAW_EXCLUDED,
-                                          DRAW_MASKED, DRAW_EDGE, ITEM_TRUTH};
-    static const char *names[DRAW_STATUS_COUNT] = {"vector", "excluded (all dark or all bright)",
-                                                    "masked (fill value)",
-                                                    "edge (area leaves image)"};
+    static const int order[ITEM_COUNT] = {DRAW_OK,       ITEM_DOT,       DRAW_AT_LIMIT,
+                                          DRAW_AMBIGUOUS, DRAW_FLAT,     DRAW_EXCLUDED,
+                                          DRAW_MASKED,   DRAW_EDGE,      ITEM_TRUTH};
+    static const char *names[DRAW_STATUS_COUNT] = {
+        "vector", "excluded (all dark or all bright)", "masked (fill value)",
+        "edge (area leaves image)", "flat (no texture, not searched)",
+        "ambiguous (another match about as good)",
+        "at limit (best match on the border of the search: motion may be larger)"};
     char buf[256];
     double x = 12.0;
     int lines = 1;
@@ -373,8 +398,8 @@ static int legend_items(cairo_t *cr, const draw_vectors_opts_t *o, const size_t 
                 arrow(cr, x, y - 4, x + 26, y - 4, truth_rgb, 1.6);
             } else if (i == ITEM_DOT) {
                 arrow(cr, x + 12, y - 4, x + 12, y - 4, status_rgb[DRAW_OK], 2.5);
-            } else if (i == DRAW_OK) {
-                arrow(cr, x, y - 4, x + 26, y - 4, status_rgb[DRAW_OK], 2.5);
+            } else if (has_arrow(i)) {
+                arrow(cr, x, y - 4, x + 26, y - 4, status_rgb[i], 2.5);
             } else {
                 status_mark(cr, x + 12, y - 4, i, 5.0);
             }
@@ -406,7 +431,7 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     cairo_surface_t *img_s, *out;
     cairo_t *cr;
     double z, scale, top, bottom, W, H, ox, lw, ref, y;
-    size_t counts[DRAW_STATUS_COUNT] = {0, 0, 0, 0}, i, truths = 0, dots = 0, moving_dots = 0;
+    size_t counts[DRAW_STATUS_COUNT] = {0}, i, truths = 0, dots = 0, moving_dots = 0;
     double dot_below;
     char buf[256];
     int rc;
@@ -472,9 +497,9 @@ int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const dr
     for (i = 0; i < n; i++) {
         int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
         double tx = ox + (v[i].x + 0.5) * z, ty = top + (v[i].y + 0.5) * z;
-        if (st == DRAW_OK) {
+        if (has_arrow(st)) {
             arrow(cr, tx, ty, tx + v[i].dx * scale * z, ty + v[i].dy * scale * z,
-                  status_rgb[DRAW_OK], lw);
+                  status_rgb[st], lw);
         } else {
             status_mark(cr, tx, ty, st, fmax(3.5, lw * 1.8));
         }

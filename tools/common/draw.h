@@ -20,13 +20,16 @@ typedef enum {
     DRAW_EXCLUDED = 1, /* too little texture, not searched: grey cross */
     DRAW_MASKED = 2,   /* window holds fill pixels (--mask-value): magenta square */
     DRAW_EDGE = 3,     /* search area leaves the image: orange ring */
-    DRAW_STATUS_COUNT = 4
+    DRAW_FLAT = 4,     /* no texture (below the flat level), not searched: blue-grey dot */
+    DRAW_AMBIGUOUS = 5, /* another placement about as good: violet diamond */
+    DRAW_AT_LIMIT = 6, /* best placement on the border of the range: red arrow */
+    DRAW_STATUS_COUNT = 7
 } draw_status_t;
 
 /* One window's vector, in the background image's pixel coordinates. */
 typedef struct {
     double x, y;        /* arrow tail: the window's centre */
-    double dx, dy;      /* motion in px (x right, y down); DRAW_OK only */
+    double dx, dy;      /* motion in px (x right, y down); DRAW_OK and DRAW_AT_LIMIT */
     int status;         /* draw_status_t */
     int has_truth;      /* 1: tdx, tdy hold the known motion (drawn thin, cyan) */
     double tdx, tdy;

@@ -1,0 +1,23 @@
+"""ssda for Python: the ssda C library's exact, fixed-point SSDA template
+matching, grid tracking, differential operator, block-streamed images and
+AMDF pitch, on NumPy arrays, with the numbers the firmware computes, bit for
+bit. See docs/python.md; every function's docstring names the C call.
+
+Images are 2-D uint8 or uint16 arrays, sound 1-D int16 arrays; the library
+reads them in place when their layout allows (rows of contiguous pixels,
+positive row stride), else from a copy. Errors of the library raise
+ssda.Error (code, message, function); wrong dtypes and shapes raise
+TypeError / ValueError. Searches release the GIL.
+"""
+from ._ssda import (  # noqa: F401  (the extension's whole API)
+    ERR_ARG, ERR_BUFFER, ERR_FORMAT, ERR_IO, ERR_NULL, ERR_OVERFLOW, ERR_SIZE,
+    ERR_STATE, ERR_STRIDE, ERR_UNSUPPORTED, KERNEL, PITCH_ESTIMATE_DTYPE,
+    TRACK_EDGE, TRACK_EXCLUDED, TRACK_MASKED, TRACK_OK, TRACK_VECTOR_DTYPE,
+    VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH, Error, GradResult, Grid,
+    MatchResult, Pitch, PitchInfo, Source, SourceStats, TrackResult,
+    TrackStats, __version__, grad, match, sad_at, stream_match, stream_track,
+    strerror, track, track_grid,
+)
+from ._pitch_track import PitchTrack, pitch  # noqa: F401
+
+__all__ = [name for name in dir() if not name.startswith("_")] + ["__version__"]

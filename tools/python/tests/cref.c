@@ -1,0 +1,285 @@
+/* cref.c - the C side of the Python binding's tests: runs one library call
+   on raw input files and prints every field of its result as text, so that
+   the tests compare the binding's results with the C library's, field for
+   field. Options are name=value pairs naming config struct fields.
+
+   cref match  AREA W H WIN W H BPP [opts]   one line: x y sad exact pixel_ops positions completed
+   cref sad_at AREA W H WIN W H BPP X Y      one line: sad
+   cref track  FIRST SECOND W H BPP [opts]   grid line, stats line, then one line per window:
+                                             sad dx dy x y status exact
+   cref grad   IN W H BPP OUT_BPP SHIFT OUT  writes OUT (packed samples); prints saturated
+   cref pitch  SAMPLES N RATE [opts]         one line per estimate: frame center lag
+                                             period_q16 f0_q16 diffs confidence_q15 voiced dip silent
+   Files are raw native-order samples, rows packed. Exit 0, or 1 with the
+   library's error code printed ("error N"). */
+#include "ssda/grad.h"
+#include "ssda/match.h"
+#include "ssda/pitch.h"
+#include "ssda/track.h"
+
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    const char *name;
+    size_t offset;
+    int size; /* bytes; negative: signed */
+} field_t;
+
+#define F(type, member, size) {#member, offsetof(type, member), size}
+
+static const field_t match_fields[] = {
+    F(ssda_match_config_t, threshold, 1), F(ssda_match_config_t, scan, 1),
+    F(ssda_match_config_t, order, 1),     F(ssda_match_config_t, flags, 1),
+    F(ssda_match_config_t, k_q8, 2),      F(ssda_match_config_t, coarse_step, 2),
+    F(ssda_match_config_t, lambda_q8, 4), F(ssda_match_config_t, fixed_threshold, 8),
+    F(ssda_match_config_t, predict_x, -4), F(ssda_match_config_t, predict_y, -4),
+    {NULL, 0, 0}};
+
+static const field_t track_fields[] = {
+    F(ssda_track_config_t, win_w, 2),   F(ssda_track_config_t, win_h, 2),
+    F(ssda_track_config_t, search_w, 2), F(ssda_track_config_t, search_h, 2),
+    F(ssda_track_config_t, step_x, 2),  F(ssda_track_config_t, step_y, 2),
+    F(ssda_track_config_t, roi_x, 2),   F(ssda_track_config_t, roi_y, 2),
+    F(ssda_track_config_t, roi_w, 2),   F(ssda_track_config_t, roi_h, 2),
+    F(ssda_track_config_t, predict, 1), F(ssda_track_config_t, flags, 1),
+    F(ssda_track_config_t, mask_value, 2), F(ssda_track_config_t, texture_threshold, 2),
+    F(ssda_track_config_t, texture_min_count, 4), {NULL, 0, 0}};
+
+static const field_t pitch_fields[] = {
+    F(ssda_pitch_config_t, f0_min_hz, 2),  F(ssda_pitch_config_t, f0_max_hz, 2),
+    F(ssda_pitch_config_t, frame_len, 2),  F(ssda_pitch_config_t, hop, 2),
+    F(ssda_pitch_config_t, threshold_q15, 2), F(ssda_pitch_config_t, voicing_q15, 2),
+    F(ssda_pitch_config_t, silence_mad, 2), F(ssda_pitch_config_t, chunk, 2),
+    F(ssda_pitch_config_t, lowpass_hz, 2), F(ssda_pitch_config_t, flags, 1),
+    {NULL, 0, 0}};
+
+/* name=value into the struct at base; prefix "m." addresses the match
+   options inside a track config. Returns 0, or -1 for an unknown name. */
+static int set_field(void *base, const field_t *fields, const char *arg)
+{
+    const char *eq = strchr(arg, '=');
+    const field_t *f;
+    long long v;
+    if (eq == NULL) {
+        return -1;
+    }
+    v = strtoll(eq + 1, NULL, 0);
+    for (f = fields; f->name != NULL; f++) {
+        if (strlen(f->name) == (size_t)(eq - arg) && strncmp(f->name, arg, (size_t)(eq - arg)) == 0) {
+            char *p = (char *)base + f->offset;
+            switch (f->size) {
+            case 1: *(uint8_t *)p = (uint8_t)v; break;
+            case 2: *(uint16_t *)p = (uint16_t)v; break;
+            case 4: *(uint32_t *)p = (uint32_t)v; break;
+            case -4: *(int32_t *)p = (int32_t)v; break;
+            default: *(uint64_t *)p = (uint64_t)strtoull(eq + 1, NULL, 0); break;
+            }
+            return 0;
+        }
+    }
+    return -1;
+}
+
+static void *load(const char *path, size_t bytes)
+{
+    FILE *f = fopen(path, "rb");
+    void *p = malloc(bytes > 0 ? bytes : 1);
+    if (f == NULL || p == NULL || fread(p, 1, bytes, f) != bytes) {
+        fprintf(stderr, "cref: cannot read %zu bytes of %s\n", bytes, path);
+        exit(2);
+    }
+    fclose(f);
+    return p;
+}
+
+static int fail(int e)
+{
+    printf("error %d\n", e);
+    return 1;
+}
+
+static int view(ssda_view_t *v, const void *data, const char *w, const char *h, int bpp)
+{
+    unsigned long width = strtoul(w, NULL, 0), height = strtoul(h, NULL, 0);
+    return ssda_view_init(v, data, (uint16_t)width, (uint16_t)height,
+                          (uint32_t)(width * (unsigned long)bpp),
+                          bpp == 1 ? SSDA_PIX_U8 : SSDA_PIX_U16);
+}
+
+static size_t bytes_of(const char *w, const char *h, int bpp)
+{
+    return (size_t)strtoul(w, NULL, 0) * strtoul(h, NULL, 0) * (size_t)bpp;
+}
+
+static int run_match(int argc, char **argv)
+{
+    int bpp = atoi(argv[8]), i, e;
+    void *a = load(argv[2], bytes_of(argv[3], argv[4], bpp));
+    void *w = load(argv[5], bytes_of(argv[6], argv[7], bpp));
+    ssda_view_t va, vw;
+    ssda_match_config_t cfg;
+    ssda_match_result_t r;
+    if ((e = view(&va, a, argv[3], argv[4], bpp)) != SSDA_OK ||
+        (e = view(&vw, w, argv[6], argv[7], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    if (strcmp(argv[1], "sad_at") == 0) {
+        uint64_t sad;
+        e = ssda_sad_at(&va, &vw, (uint16_t)atoi(argv[9]), (uint16_t)atoi(argv[10]), &sad);
+        if (e != SSDA_OK) {
+            return fail(e);
+        }
+        printf("%llu\n", (unsigned long long)sad);
+        return 0;
+    }
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 9; i < argc; i++) {
+        if (set_field(&cfg, match_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if (cfg.flags & SSDA_MATCH_BOUNDS) {
+        cfg.work_size = SSDA_MATCH_WORK_SIZE(va.width, va.height, vw.width, vw.height);
+        cfg.work = malloc(cfg.work_size);
+    }
+    if ((e = ssda_match(&va, &vw, &cfg, &r)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %llu %d %llu %u %u\n", r.x, r.y, (unsigned long long)r.sad, r.exact ? 1 : 0,
+           (unsigned long long)r.pixel_ops, r.positions, r.completed);
+    return 0;
+}
+
+static int run_track(int argc, char **argv)
+{
+    int bpp = atoi(argv[6]), i, e;
+    size_t bytes = bytes_of(argv[4], argv[5], bpp);
+    void *a = load(argv[2], bytes), *b = load(argv[3], bytes);
+    ssda_view_t va, vb;
+    ssda_track_config_t cfg;
+    ssda_track_grid_t g;
+    ssda_track_stats_t s;
+    ssda_track_vector_t *v;
+    if ((e = view(&va, a, argv[4], argv[5], bpp)) != SSDA_OK ||
+        (e = view(&vb, b, argv[4], argv[5], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 7; i < argc; i++) {
+        int rc = strncmp(argv[i], "m.", 2) == 0 ? set_field(&cfg.match, match_fields, argv[i] + 2)
+                                                : set_field(&cfg, track_fields, argv[i]);
+        if (rc != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if ((e = ssda_track_grid(&cfg, vb.width, vb.height, &g)) != SSDA_OK) {
+        return fail(e);
+    }
+    if (cfg.match.flags & SSDA_MATCH_BOUNDS) {
+        cfg.match.work_size = SSDA_TRACK_WORK_SIZE(g.search_w, g.search_h, g.win_w, g.win_h);
+        cfg.match.work = malloc(cfg.match.work_size);
+    }
+    v = calloc(g.count, sizeof *v);
+    if ((e = ssda_track(&va, &vb, &cfg, v, g.count, &s)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %u\n", g.count, g.cols, g.rows);
+    printf("%llu %llu %llu %llu %u %u %u %u %u\n", (unsigned long long)s.pixel_ops,
+           (unsigned long long)s.positions, (unsigned long long)s.completed,
+           (unsigned long long)s.check_pixels, s.windows, s.ok, s.excluded, s.masked, s.edge);
+    for (i = 0; i < (int)g.count; i++) {
+        printf("%llu %d %d %u %u %u %d\n", (unsigned long long)v[i].sad, (int)v[i].dx,
+               (int)v[i].dy, v[i].x, v[i].y, v[i].status, v[i].exact ? 1 : 0);
+    }
+    return 0;
+}
+
+static int run_grad(char **argv)
+{
+    int bpp = atoi(argv[5]), obpp = atoi(argv[6]), e;
+    void *in = load(argv[2], bytes_of(argv[3], argv[4], bpp));
+    ssda_view_t v;
+    ssda_grad_out_t go;
+    uint32_t sat = 0;
+    FILE *f;
+    if ((e = view(&v, in, argv[3], argv[4], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    memset(&go, 0, sizeof go);
+    go.format = (uint8_t)obpp;
+    go.shift = (uint8_t)atoi(argv[7]);
+    go.size = SSDA_GRAD_SIZE(v.width, v.height, go.format);
+    go.data = malloc(go.size);
+    if ((e = ssda_grad(&v, &go, &sat)) != SSDA_OK) {
+        return fail(e);
+    }
+    f = fopen(argv[8], "wb");
+    if (f == NULL || fwrite(go.data, 1, go.size, f) != go.size || fclose(f) != 0) {
+        return 2;
+    }
+    printf("%u\n", sat);
+    return 0;
+}
+
+static int run_pitch(int argc, char **argv)
+{
+    size_t n = strtoul(argv[3], NULL, 0), pos = 0, used, bytes;
+    int16_t *x = load(argv[2], n * sizeof *x);
+    ssda_pitch_config_t cfg;
+    ssda_pitch_t p;
+    ssda_pitch_estimate_t est;
+    int i, e;
+    void *buf;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.sample_rate_hz = (uint32_t)strtoul(argv[4], NULL, 0);
+    for (i = 5; i < argc; i++) {
+        if (set_field(&cfg, pitch_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    if ((e = ssda_pitch_buffer_size(&cfg, &bytes)) != SSDA_OK) {
+        return fail(e);
+    }
+    buf = malloc(bytes);
+    if ((e = ssda_pitch_init(&p, &cfg, buf, bytes)) != SSDA_OK) {
+        return fail(e);
+    }
+    while (pos < n) {
+        e = ssda_pitch_push(&p, x + pos, n - pos, &used, &est);
+        if (e < 0) {
+            return fail(e);
+        }
+        pos += used;
+        if (e == 1) {
+            printf("%u %u %u %u %u %u %u %d %d %d\n", est.frame, est.center, est.lag,
+                   est.period_q16, est.f0_q16, est.diffs, est.confidence_q15,
+                   est.voiced ? 1 : 0, est.dip ? 1 : 0, est.silent ? 1 : 0);
+        }
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc >= 9 && (strcmp(argv[1], "match") == 0 ||
+                      (strcmp(argv[1], "sad_at") == 0 && argc == 11))) {
+        return run_match(argc, argv);
+    }
+    if (argc >= 7 && strcmp(argv[1], "track") == 0) {
+        return run_track(argc, argv);
+    }
+    if (argc == 9 && strcmp(argv[1], "grad") == 0) {
+        return run_grad(argv);
+    }
+    if (argc >= 5 && strcmp(argv[1], "pitch") == 0) {
+        return run_pitch(argc, argv);
+    }
+    fprintf(stderr, "usage: see cref.c\n");
+    return 2;
+}
