@@ -732,7 +732,7 @@ static int finish(engine_t *e, ssda_match_result_t *result)
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 #ifndef SSDA_CFG_NO_SUBPIXEL
-    if (plan->subpixel && e->n_best > 0u) {
+    if (plan->subpixel) { /* exact modes: some position completed */
 #ifndef SSDA_CFG_NO_UNIQUE
         const uint32_t nlist = e->nlist; /* the search's full SADs */
 #else
@@ -746,7 +746,7 @@ static int finish(engine_t *e, ssda_match_result_t *result)
     }
 #endif
 #ifndef SSDA_CFG_NO_UNIQUE
-    if (e->list != NULL && e->n_best > 0u) {
+    if (e->list != NULL) { /* exact modes too */
         uq = ssda__unique_q8(e->list, e->nlist, &e->best, plan->unique_q8,
                              plan->unique_radius);
     }

@@ -610,6 +610,40 @@ static void test_subpixel_fit_on_large_sads(void)
     TEST_ASSERT_EQUAL_INT16(0, res.sub_y_q8); /* one row of placements: no fit */
 }
 
+/* Outside the exact modes (here the coarse scan, without prediction) the
+   fit is not asked for: the sub-pixel vector is the whole one. */
+static void test_no_fit_outside_the_exact_modes(void)
+{
+    uint8_t *f = (uint8_t *)g_first, *s = (uint8_t *)g_second;
+    test_rng_t rng;
+    ssda_view_t a, b;
+    ssda_track_config_t cfg;
+    ssda_track_grid_t g;
+    uint32_t i, k, searched = 0;
+    test_rng_seed(&rng, 5u);
+    test_fill_texture_u8(f, IMG, IMG, IMG, &rng);
+    for (i = 0; i < IMG * IMG; i++) {
+        s[i] = i % IMG >= 2u ? f[i - 2u] : f[i];
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, f, IMG, IMG, IMG, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, s, IMG, IMG, IMG, SSDA_PIX_U8));
+    for (i = 0; i < 2u; i++) {
+        memset(&cfg, 0, sizeof cfg);
+        cfg.match.scan = i ? SSDA_SCAN_RASTER : SSDA_SCAN_COARSE;
+        cfg.match.threshold = i ? SSDA_THRESHOLD_AUTO_RAMP : SSDA_THRESHOLD_AUTO;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&cfg, IMG, IMG, &g));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, MAXWIN, NULL));
+        for (k = 0; k < g.count; k++) {
+            if (g_out[k].status == SSDA_TRACK_OK || g_out[k].status == SSDA_TRACK_AT_LIMIT) {
+                searched++;
+                TEST_ASSERT_EQUAL_INT32(256 * g_out[k].dx, g_out[k].sub_dx_q8);
+                TEST_ASSERT_EQUAL_INT32(256 * g_out[k].dy, g_out[k].sub_dy_q8);
+            }
+        }
+    }
+    TEST_ASSERT_TRUE(searched > 0u);
+}
+
 /* Errors: nothing written. */
 static void test_quality_argument_errors(void)
 {
@@ -664,6 +698,7 @@ int main(void)
     RUN_TEST(test_flat_boundary);
     RUN_TEST(test_subpixel_on_known_fractional_shift);
     RUN_TEST(test_subpixel_fit_on_large_sads);
+    RUN_TEST(test_no_fit_outside_the_exact_modes);
     RUN_TEST(test_quality_argument_errors);
     return UNITY_END();
 }
