@@ -33,6 +33,8 @@ typedef struct {
     uint32_t nx, ny;     /* positions per row and per column */
     int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
     uint32_t tx, ty;     /* SSDA_MATCH_TIE_NEAREST: the prediction clamped into range */
+    uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
+    uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
     cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
     uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
@@ -40,7 +42,14 @@ typedef struct {
     uint8_t nlist, cap;  /* entries in list, its capacity (2R+1)^2 + 1 <= 26 */
 #endif
     bool u8;             /* 8-bit samples (else 16-bit) */
+    /* the plan's flags the per-position path tests, copied at the start
+       (one load from the engine, not two through the plan) */
+    bool use_ref;        /* positions are cut once they cannot beat ref */
+    bool bounds;         /* successive elimination active */
+    bool ramp_mode;      /* RAMP or AUTO_RAMP */
+    bool tie_near;       /* SSDA_MATCH_TIE_NEAREST */
 #ifdef ENGINE_FALLBACK
+    bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
 #endif
     uint8_t n_best;      /* 0, 1 or 2 valid entries */
@@ -74,7 +83,7 @@ static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
    prediction (SSDA_MATCH_TIE_NEAREST), then smaller y, then smaller x. */
 static bool pos_before(const engine_t *e, uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by)
 {
-    if (e->plan->tie_nearest) {
+    if (e->tie_near) {
         const uint64_t da = dist2(e, ax, ay);
         const uint64_t db = dist2(e, bx, by);
         if (da != db) {
@@ -169,7 +178,7 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
    if it is the fallback so far (most pixels, then the tie rule). */
 static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint32_t pixels)
 {
-    if (!e->plan->fallback) {
+    if (!e->need_fb) {
         return; /* a mode whose first placement always completes */
     }
     if (e->have_fb && pixels == e->fb_pixels) {
@@ -222,8 +231,8 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
    plan's fixed cut, lowered to what can still beat the reference. */
 static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
 {
-    uint64_t cut_at = e->plan->fixed_cut;
-    if (e->plan->use_ref && e->ref != NULL) {
+    uint64_t cut_at = e->fixed_cut;
+    if (e->use_ref && e->ref != NULL) {
         /* A position before ref by the tie rule wins a tie, so it needs
            sad <= ref. With uniqueness (ref is the best: raster or predict
            scan) every position within the ratio of the best completes. */
@@ -237,39 +246,21 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
     return cut_at;
 }
 
-/* A placement's first row (most placements are cut on it), in chunks of
-   SSDA_FIRST_ROW_CHUNK pixels with the cut tested after each but the last
-   (the caller tests the whole row): adds its SAD to *partial and returns
-   0, or the pixels summed when cut. */
-static SSDA_ALWAYS_INLINE uint32_t first_row(engine_t *e, const uint8_t *ap, const uint8_t *wp,
-                                             uint64_t *partial, uint64_t rest, uint64_t cut_at)
-{
-    uint32_t done = 0u;
-    while (done < e->L) {
-        uint32_t n = e->L - done < SSDA_FIRST_ROW_CHUNK ? e->L - done : SSDA_FIRST_ROW_CHUNK;
-        *partial += row_sad(e, ap + (size_t)done * e->area->format,
-                            wp + (size_t)done * e->area->format, n);
-        e->ops += n;
-        done += n;
-        if (done < e->L && *partial + rest >= cut_at) {
-            return done;
-        }
-    }
-    return 0u;
-}
-
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
  * summed over all pixels without being cut, 0 when cut, or a fetch error.
+ * Longer than the library's ~80 lines on purpose: it is the innermost
+ * per-position loop, and the first-row chunk loop moved into a helper
+ * (even always inlined, with the partial sum through a pointer) cost 2.3 %
+ * more instructions per search on the Cortex-M4 (tools/budget.sh,
+ * match.none), for the same results.
  */
 static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
-    const ssda_match_plan_t *plan = e->plan;
 #ifndef SSDA_CFG_NO_RAMP
-    const bool ramp = plan->ramp &&
-                      (plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
+    const bool ramp = e->ramp_mode &&
+                      (e->plan->threshold == (uint8_t)SSDA_THRESHOLD_RAMP || e->n_best > 0u);
 #endif
-    const uint32_t row_step = plan->row_step;
     uint64_t partial = 0u;        /* SAD of the rows summed: <= 65535^3 */
     uint64_t rest = 0u;           /* bound of the groups not started: <= 65535^3 */
     const uint64_t cut_at = cut_level(e, x, y); /* cut once partial + rest >= cut_at */
@@ -284,13 +275,13 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         return 0;
     }
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (plan->bounds) {
+    if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
             NOTE_CUT(e, x, y, 0u, 0u);
             return 0;
         }
-        if (row_step != 1u) {
+        if (e->row_step != 1u) {
             rest = 0u; /* spread order: the bound serves as a pre-check only */
         }
     }
@@ -317,16 +308,24 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         }
 #endif
         if (k == 0u && e->L >= 2u * SSDA_FIRST_ROW_CHUNK) {
-            uint32_t done = first_row(e, ap, wp, &partial, rest, cut_at);
-            if (done != 0u) {
-                NOTE_CUT(e, x, y, partial, done);
-                return 0;
+            /* Most placements are cut on their first row: test it in chunks. */
+            uint32_t done = 0u;
+            while (done < e->L) {
+                uint32_t n = e->L - done < SSDA_FIRST_ROW_CHUNK ? e->L - done : SSDA_FIRST_ROW_CHUNK;
+                partial += row_sad(e, ap + (size_t)done * e->area->format,
+                                   wp + (size_t)done * e->area->format, n);
+                e->ops += n;
+                done += n;
+                if (done < e->L && partial + rest >= cut_at) {
+                    NOTE_CUT(e, x, y, partial, done);
+                    return 0;
+                }
             }
         } else {
             partial += row_sad(e, ap, wp, e->L);
             e->ops += e->L;
         }
-        r += row_step;
+        r += e->row_step;
         if (r >= e->M) {
             r -= e->M;
         }
@@ -806,6 +805,15 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
         e.cap = (uint8_t)(side * side + 1u);
         e.loose = UINT64_MAX;
     }
+#endif
+    e.row_step = plan->row_step;
+    e.fixed_cut = plan->fixed_cut;
+    e.use_ref = plan->use_ref;
+    e.bounds = plan->bounds;
+    e.ramp_mode = plan->ramp;
+    e.tie_near = plan->tie_nearest;
+#ifdef ENGINE_FALLBACK
+    e.need_fb = plan->fallback;
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
     if (plan->bounds) {
