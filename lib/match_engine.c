@@ -76,7 +76,9 @@ static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
 {
     const uint32_t dx = x > e->tx ? x - e->tx : e->tx - x; /* < 2^16 */
     const uint32_t dy = y > e->ty ? y - e->ty : e->ty - y;
-    return (uint64_t)dx * dx + (uint64_t)dy * dy;
+    const uint32_t sx = dx * dx; /* < 2^32: no 64-bit multiply on the M0+ */
+    const uint32_t sy = dy * dy;
+    return (uint64_t)sx + sy;
 }
 
 /* (ax, ay) before (bx, by) by the tie rule, SADs aside: nearer to the

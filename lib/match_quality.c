@@ -9,7 +9,7 @@ uint64_t ssda__mul_q8(uint64_t v, uint16_t q8)
 {
     /* v = vh 2^16 + vl: vh * q8 < 2^32 * 2^11 (< 2^59 shifted), vl * q8 < 2^27 */
     const uint64_t hi = ssda__mul_u32_u16((uint32_t)(v >> 16), q8);
-    const uint64_t lo = (v & 0xFFFFu) * (uint64_t)q8;
+    const uint32_t lo = (uint32_t)(v & 0xFFFFu) * q8; /* < 2^27: 32-bit */
     return ((hi << 16) + lo) >> 8;
 }
 
@@ -104,7 +104,7 @@ static int sad_of(const ssda__rows_t *area, const ssda__rows_t *win, const ssda_
 #endif
         total += ssda__sad_row_u8(ap, wp, win->width);
     }
-    *ops += (uint64_t)win->width * win->height;
+    *ops += (uint32_t)win->width * win->height; /* < 2^32 */
     *sad = total;
     return SSDA_OK;
 }
