@@ -32,7 +32,6 @@ typedef struct {
     uint32_t L, M;       /* window width and height */
     uint32_t nx, ny;     /* positions per row and per column */
     int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
-    uint32_t tx, ty;     /* SSDA_MATCH_TIE_NEAREST: the prediction clamped into range */
     uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
     uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
@@ -71,11 +70,21 @@ typedef struct {
     uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
-/* Squared distance of (x, y) to the clamped prediction: < 2 * 2^32. */
-static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
+static uint32_t clamp_pos(int32_t v, uint32_t n)
 {
-    const uint32_t dx = x > e->tx ? x - e->tx : e->tx - x; /* < 2^16 */
-    const uint32_t dy = y > e->ty ? y - e->ty : e->ty - y;
+    if (v < 0) {
+        return 0u;
+    }
+    return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
+}
+
+/* Squared distance of (x, y) to the prediction clamped into the range:
+   < 2 * 2^32 (clamped here: ties are rare, the engine stays small). */
+static SSDA_ALWAYS_INLINE uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t tx = clamp_pos(e->px, e->nx), ty = clamp_pos(e->py, e->ny);
+    const uint32_t dx = x > tx ? x - tx : tx - x; /* < 2^16 */
+    const uint32_t dy = y > ty ? y - ty : ty - y;
     const uint32_t sx = dx * dx; /* < 2^32: no 64-bit multiply on the M0+ */
     const uint32_t sy = dy * dy;
     return (uint64_t)sx + sy;
@@ -83,7 +92,8 @@ static uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
 
 /* (ax, ay) before (bx, by) by the tie rule, SADs aside: nearer to the
    prediction (SSDA_MATCH_TIE_NEAREST), then smaller y, then smaller x. */
-static bool pos_before(const engine_t *e, uint32_t ax, uint32_t ay, uint32_t bx, uint32_t by)
+static SSDA_ALWAYS_INLINE bool pos_before(const engine_t *e, uint32_t ax, uint32_t ay,
+                                          uint32_t bx, uint32_t by)
 {
     if (e->tie_near) {
         const uint64_t da = dist2(e, ax, ay);
@@ -432,14 +442,6 @@ static int scan_raster(engine_t *e)
     return SSDA_OK;
 }
 
-static uint32_t clamp_pos(int32_t v, uint32_t n)
-{
-    if (v < 0) {
-        return 0u;
-    }
-    return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
-}
-
 #ifndef SSDA_CFG_NO_PREDICT
 
 /* Visit the positions from (x0, y0) to (x1, y1) inclusive (one row or one
@@ -726,8 +728,9 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
 #endif
 
 /* The result of a finished scan, with the quality the plan asks for
-   (written only when every fetch succeeded). */
-static int finish(engine_t *e, ssda_match_result_t *result)
+   (written only when every fetch succeeded). Out of line: its locals stay
+   off the frame that holds the engine during the scan. */
+static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
 {
     const ssda_match_plan_t *plan = e->plan;
     int16_t sx = 0, sy = 0;
@@ -797,8 +800,6 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.ny = (uint32_t)area->height - e.M + 1u;
     e.px = predict_x;
     e.py = predict_y;
-    e.tx = clamp_pos(predict_x, e.nx);
-    e.ty = clamp_pos(predict_y, e.ny);
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
 #ifndef SSDA_CFG_NO_UNIQUE
     if (plan->unique_radius != 0u) {
