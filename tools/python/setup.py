@@ -63,5 +63,7 @@ setup(
         sources=sorted(glob.glob("src/*.c")),
         include_dirs=[os.path.join(ROOT, "include"), LIB],
         define_macros=[("SSDAPY_KERNEL", '"%s"' % KERNEL)],
+        # export PyInit__ssda only (gcc, clang): the library stays inside
+        extra_compile_args=[] if os.name == "nt" else ["-fvisibility=hidden"],
     )],
 )

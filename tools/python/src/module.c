@@ -13,6 +13,7 @@ static int (*const feature_inits[])(PyObject *) = {
     ssdapy_init_grad,
     ssdapy_init_pitch,
     ssdapy_init_stream,
+    ssdapy_init_ncc,
 };
 
 static const char error_doc[] =

@@ -143,6 +143,7 @@ int ssdapy_init_track(PyObject *m);
 int ssdapy_init_grad(PyObject *m);
 int ssdapy_init_pitch(PyObject *m);
 int ssdapy_init_stream(PyObject *m);
+int ssdapy_init_ncc(PyObject *m);
 
 /* Shared by the search and tracking features (bind_match.c): take the
    search options (threshold, scan, order, bounds, k_q8, lambda_q8,

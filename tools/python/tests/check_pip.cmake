@@ -26,6 +26,11 @@ y, x = np.mgrid[0:64, 0:64]
 a = ((x * x + 3 * y * y + x * y) >> 2).astype(np.uint8)  # README's texture
 r = ssda.match(a, a[20:28, 37:45])
 assert (r.x, r.y, r.sad, r.exact) == (37, 20, 0, True), r
+import shutil, subprocess
+if shutil.which('nm'):  # the module exports its init function only
+    out = subprocess.run(['nm', '-D', '--defined-only', ssda._ssda.__file__],
+                         capture_output=True, text=True, check=True).stdout
+    assert [l.split()[-1] for l in out.splitlines()] == ['PyInit__ssda'], out
 print('ssda', ssda.__version__, 'installed by pip:', r)
 " WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE rc)
 if(rc)

@@ -8,12 +8,16 @@
    cref track  FIRST SECOND W H BPP [opts]   grid line, stats line, then one line per window:
                                              sad dx dy x y status exact
    cref grad   IN W H BPP OUT_BPP SHIFT OUT  writes OUT (packed samples); prints saturated
+   cref ncc    AREA W H WIN W H BPP [opts]   one line: x y rho_q30 flags pixel_ops positions
+                                             completed [9 around_q30 values with AROUND]
+   cref ncc_at AREA W H WIN W H BPP X Y      one line: rho_q30
    cref pitch  SAMPLES N RATE [opts]         one line per estimate: frame center lag
                                              period_q16 f0_q16 diffs confidence_q15 voiced dip silent
    Files are raw native-order samples, rows packed. Exit 0, or 1 with the
    library's error code printed ("error N"). */
 #include "ssda/grad.h"
 #include "ssda/match.h"
+#include "ssda/ncc.h"
 #include "ssda/pitch.h"
 #include "ssda/track.h"
 
@@ -37,6 +41,11 @@ static const field_t match_fields[] = {
     F(ssda_match_config_t, lambda_q8, 4), F(ssda_match_config_t, fixed_threshold, 8),
     F(ssda_match_config_t, predict_x, -4), F(ssda_match_config_t, predict_y, -4),
     {NULL, 0, 0}};
+
+static const field_t ncc_fields[] = {
+    F(ssda_ncc_config_t, metric, 1), F(ssda_ncc_config_t, flags, 1),
+    F(ssda_ncc_config_t, radius, 2), F(ssda_ncc_config_t, predict_x, -4),
+    F(ssda_ncc_config_t, predict_y, -4), {NULL, 0, 0}};
 
 static const field_t track_fields[] = {
     F(ssda_track_config_t, win_w, 2),   F(ssda_track_config_t, win_h, 2),
@@ -151,6 +160,48 @@ static int run_match(int argc, char **argv)
     }
     printf("%u %u %llu %d %llu %u %u\n", r.x, r.y, (unsigned long long)r.sad, r.exact ? 1 : 0,
            (unsigned long long)r.pixel_ops, r.positions, r.completed);
+    return 0;
+}
+
+static int run_ncc(int argc, char **argv)
+{
+    int bpp = atoi(argv[8]), i, e;
+    void *a = load(argv[2], bytes_of(argv[3], argv[4], bpp));
+    void *w = load(argv[5], bytes_of(argv[6], argv[7], bpp));
+    ssda_view_t va, vw;
+    ssda_ncc_config_t cfg;
+    ssda_ncc_result_t r;
+    if ((e = view(&va, a, argv[3], argv[4], bpp)) != SSDA_OK ||
+        (e = view(&vw, w, argv[6], argv[7], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    if (strcmp(argv[1], "ncc_at") == 0) {
+        int32_t rho;
+        e = ssda_ncc_at(&va, &vw, (uint16_t)atoi(argv[9]), (uint16_t)atoi(argv[10]), &rho);
+        if (e != SSDA_OK) {
+            return fail(e);
+        }
+        printf("%d\n", (int)rho);
+        return 0;
+    }
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 9; i < argc; i++) {
+        if (set_field(&cfg, ncc_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    cfg.work_size = SSDA_NCC_WORK_SIZE(va.width, vw.width, vw.height);
+    cfg.work = malloc(cfg.work_size); /* malloc: aligned for any type */
+    if ((e = ssda_ncc_match(&va, &vw, &cfg, &r)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %d %u %llu %u %u", r.x, r.y, (int)r.rho_q30, r.flags,
+           (unsigned long long)r.pixel_ops, r.positions, r.completed);
+    for (i = 0; (cfg.flags & SSDA_NCC_AROUND) != 0u && i < 9; i++) {
+        printf(" %d", (int)r.around_q30[i]);
+    }
+    printf("\n");
     return 0;
 }
 
@@ -270,6 +321,10 @@ int main(int argc, char **argv)
     if (argc >= 9 && (strcmp(argv[1], "match") == 0 ||
                       (strcmp(argv[1], "sad_at") == 0 && argc == 11))) {
         return run_match(argc, argv);
+    }
+    if (argc >= 9 && (strcmp(argv[1], "ncc") == 0 ||
+                      (strcmp(argv[1], "ncc_at") == 0 && argc == 11))) {
+        return run_ncc(argc, argv);
     }
     if (argc >= 7 && strcmp(argv[1], "track") == 0) {
         return run_track(argc, argv);

@@ -148,3 +148,13 @@ def test_pitch_state_serves_one_thread_at_a_time():
         t.join()
     # either they happened not to overlap, or the late ones were refused: never a race
     assert all("in use" in str(e) for e in errors)
+
+
+def test_the_module_exports_its_init_function_only():
+    import shutil
+    import subprocess
+    if not shutil.which("nm"):
+        pytest.skip("no nm")
+    out = subprocess.run(["nm", "-D", "--defined-only", ssda._ssda.__file__],
+                         capture_output=True, text=True, check=True).stdout
+    assert [line.split()[-1] for line in out.splitlines()] == ["PyInit__ssda"]
