@@ -47,6 +47,9 @@ foreach(_l IN LISTS _lines)
   endif()
   set(_name "${CMAKE_MATCH_1}")
   string(REGEX REPLACE "^_(ssda_)" "\\1" _name "${_name}") # Mach-O's leading underscore
+  # instrumentation's companions of a variable (ASan's ODR indicator,
+  # gcov's counters) are judged by the variable's name
+  string(REGEX REPLACE "^(__odr_asan[._]|__gcov[0-9]*[._])" "" _name "${_name}")
   if(_name MATCHES "^ssda__")
     math(EXPR _internal "${_internal} + 1")
   elseif(_name IN_LIST _public)

@@ -20,7 +20,17 @@ void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride, uint3
 
 void ssda__rows_view(ssda__rows_t *rows, const ssda_view_t *view)
 {
-    ssda__rows_mem(rows, view->data, view->stride, view->width, view->height, view->format);
+    /* ssda__rows_mem of the view's fields, written out: a search on views
+       links this one constructor only */
+    rows->base = (const uint8_t *)view->data;
+    rows->stride = view->stride;
+    rows->fetch = NULL;
+    rows->ctx = NULL;
+    rows->x0 = 0u;
+    rows->y0 = 0u;
+    rows->width = view->width;
+    rows->height = view->height;
+    rows->format = view->format;
 }
 
 void ssda__rows_dev(ssda__rows_t *rows, ssda__row_fetch_fn fetch, void *ctx, uint32_t w,
@@ -172,6 +182,8 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
     return check_quality(cfg, area_w, area_h, win_w, win_h);
 }
 
+const ssda_match_config_t ssda__match_defaults; /* all zero */
+
 #ifndef SSDA_CFG_NO_SPREAD
 static uint32_t gcd_u32(uint32_t a, uint32_t b)
 {
@@ -219,22 +231,11 @@ int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t a
         plan->row_step = spread_step(win_h);
     }
 #endif
-    plan->bounds = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
-    plan->ramp = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
-    plan->fallback = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
+    plan->flags = cfg->flags;
     plan->fixed_cut = UINT64_MAX;
     if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
         plan->fixed_cut = cfg->fixed_threshold + 1u;
     }
-    plan->use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                    mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
-                    (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
-                     (plan->bounds || cfg->scan == (uint8_t)SSDA_SCAN_COARSE));
-    plan->exact = cfg->scan != (uint8_t)SSDA_SCAN_COARSE &&
-                  (mode == (uint8_t)SSDA_THRESHOLD_AUTO || mode == (uint8_t)SSDA_THRESHOLD_NONE ||
-                   mode == (uint8_t)SSDA_THRESHOLD_FIXED);
-    plan->tie_nearest = (cfg->flags & SSDA_MATCH_TIE_NEAREST) != 0u;
-    plan->subpixel = (cfg->flags & SSDA_MATCH_SUBPIXEL) != 0u;
     plan->unique_radius = 0u;
     plan->unique_q8 = 0u;
     plan->list = NULL;
@@ -280,7 +281,6 @@ static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
 int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
     ssda_match_plan_t plan;
     ssda__rows_t a, w;
     int err;
@@ -292,7 +292,7 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
         return err;
     }
     if (cfg == NULL) {
-        cfg = &defaults;
+        cfg = &ssda__match_defaults;
     }
     err = ssda__match_plan(cfg, area->width, area->height, window->width, window->height,
                            &plan);

@@ -736,7 +736,7 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 #ifndef SSDA_CFG_NO_SUBPIXEL
-    if (plan->subpixel) { /* exact modes: some position completed */
+    if ((plan->flags & SSDA_MATCH_SUBPIXEL) != 0u) { /* exact modes: some position completed */
 #ifndef SSDA_CFG_NO_UNIQUE
         const uint32_t nlist = e->nlist; /* the search's full SADs */
 #else
@@ -771,7 +771,10 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
         result->sad = e->best.sad;
         result->x = (uint16_t)e->best.x;
         result->y = (uint16_t)e->best.y;
-        result->exact = plan->exact;
+        result->exact = plan->scan != (uint8_t)SSDA_SCAN_COARSE &&
+                        (plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                         plan->threshold == (uint8_t)SSDA_THRESHOLD_NONE ||
+                         plan->threshold == (uint8_t)SSDA_THRESHOLD_FIXED);
     }
     result->positions = e->positions;
     result->completed = e->completed;
@@ -784,6 +787,7 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      ssda_match_result_t *result)
 {
     engine_t e = {0};
+    const uint8_t mode = plan->threshold;
     int err;
 #ifdef SSDA_CFG_NO_U16
     if (area->format != (uint8_t)SSDA_PIX_U8) {
@@ -811,15 +815,19 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
 #endif
     e.row_step = plan->row_step;
     e.fixed_cut = plan->fixed_cut;
-    e.use_ref = plan->use_ref;
-    e.bounds = plan->bounds;
-    e.ramp_mode = plan->ramp;
-    e.tie_near = plan->tie_nearest;
+    /* the mode's flags, derived from the plan */
+    e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
+    e.tie_near = (plan->flags & SSDA_MATCH_TIE_NEAREST) != 0u;
 #ifdef ENGINE_FALLBACK
-    e.need_fb = plan->fallback;
+    e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
 #endif
+    e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
+                (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
+                 (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (plan->bounds) {
+    if (e.bounds) {
         err = build_bounds(&e);
         if (err != SSDA_OK) {
             return err;

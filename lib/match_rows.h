@@ -61,6 +61,10 @@ static inline int ssda__rows_get(const ssda__rows_t *src, uint32_t x, uint32_t y
     return src->fetch(src->ctx, src->x0 + x, src->y0 + y, n, px);
 }
 
+/* The zero-filled options (AUTO, raster scan, row order): what a NULL
+   configuration means, one copy for the whole library. */
+SSDA_INTERNAL extern const ssda_match_config_t ssda__match_defaults;
+
 /*
  * Check cfg against area/window geometry and resolve it into *plan (defaults
  * and derived values: the row order's step for a window win_h rows tall, the

@@ -246,18 +246,6 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     est->diffs = w->diffs;
 }
 
-/* The scan's flags (scan_lags), a local of it: its helpers are inlined. */
-typedef struct {
-    bool armed;           /* a peak n > rearm was seen since the last run began
-                             (at the start: n(lag_min - 1) > threshold, or
-                             n(lag_min / 2) > rearm), so the next run is a dip */
-    bool in_run;          /* the current lag is in a run under the threshold */
-    bool run_armed;       /* the open run was entered armed */
-    bool best_need_right; /* the best lag's right neighbour is the next lag */
-    bool run_need_right;  /* the run minimum's right neighbour is the next lag */
-    bool found;           /* a valid dip was found: its minimum is in w->t_* */
-} scan_flags_t;
-
 /*
  * Before the scan: the predicted lag (SSDA_PITCH_TRACK: the seed's
  * prediction, summed first, in full; its value becomes the best so far and
@@ -265,8 +253,7 @@ typedef struct {
  * Returns the predicted lag (0: none) and B(lag_min - 1) in *b_sum.
  */
 static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t predict_lag,
-                                              uint32_t rearm, uint32_t *b_sum,
-                                              scan_flags_t *f)
+                                              uint32_t rearm, uint32_t *b_sum, bool *armed)
 {
     const ssda_pitch_info_t *info = w->info;
     const int16_t *x = w->x;
@@ -288,8 +275,8 @@ static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t pre
     *b_sum = ssda__pitch_level(x + info->lag_min - 1u, k, w->mean);
     evaluate(w, info->lag_min - 1u, w->level + *b_sum,
              full ? NO_BOUND : threshold_bound(thr, w->level + *b_sum), &w->prev);
-    f->armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
-    if (!f->armed) {
+    *armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
+    if (!*armed) {
         /* lag_min - 1 lies in a dip already: a period just above lag_min
            (f0 just below f0_max), or the lag-0 tail of a slow signal. The
            first has its half-period peak near lag_min / 2, the second stays
@@ -297,7 +284,7 @@ static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t pre
         const uint32_t half = info->lag_min / 2u; /* >= 2 */
         const uint32_t sh = w->level + ssda__pitch_level(x + half, k, w->mean);
         evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
-        f->armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
+        *armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
     }
     return pred;
 }
@@ -325,8 +312,9 @@ static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_
 }
 
 /* An exact candidate w->cur at lag: the new best lag (the global-minimum
-   fallback) if it beats it by the tie rule (smaller n, then smaller lag). */
-static SSDA_ALWAYS_INLINE void note_best(ssda_pitch_work_t *w, uint32_t lag, scan_flags_t *f)
+   fallback) if it beats it by the tie rule (smaller n, then smaller lag).
+   Returns true when the best lag's right neighbour is the next lag. */
+static SSDA_ALWAYS_INLINE bool note_best(ssda_pitch_work_t *w, uint32_t lag)
 {
     bool better;
     if (w->best_lag == 0u) {
@@ -340,37 +328,26 @@ static SSDA_ALWAYS_INLINE void note_best(ssda_pitch_work_t *w, uint32_t lag, sca
         w->best = w->cur;
         w->best_lag = lag;
         w->best_left = w->prev;
-        f->best_need_right = true;
-    } else if (lag == w->best_lag) {
-        w->best_left = w->prev; /* the predicted lag, reached by the scan */
-        f->best_need_right = true;
-    } else {
-        /* not better: the best lag stays */
+        return true;
     }
+    if (lag == w->best_lag) {
+        w->best_left = w->prev; /* the predicted lag, reached by the scan */
+        return true;
+    }
+    return false; /* not better: the best lag stays */
 }
 
 /* The run ended at lag - 1. It is a dip if it was entered from a peak,
    and its minimum is neither a lag_max that still falls (a period beyond
    lag_max) nor a lag_min below which it still falls (the tail of a dip
    below lag_min, e.g. a strong 2nd harmonic's, which may now arm: its
-   multiple follows). The first dip's minimum becomes the chosen lag;
-   returns true when the scan can stop (no later lag can change it). */
-static SSDA_ALWAYS_INLINE bool end_run(ssda_pitch_work_t *w, scan_flags_t *f)
+   multiple follows). Returns whether it is. */
+static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_armed)
 {
     const ssda_pitch_info_t *info = w->info;
-    bool valid = f->run_armed &&
-                 (w->run_lag != info->lag_max || !n_less(&w->run_right, &w->run)) &&
-                 (w->run_lag != info->lag_min || !n_less(&w->run_left, &w->run));
-    f->in_run = false;
-    if (valid && !f->found) {
-        f->found = true;
-        w->t_lag = w->run_lag;
-        w->t_left = w->run_left;
-        w->t_mid = w->run;
-        w->t_right = w->run_right;
-        return !SSDA_PITCH_HAS_FULL(info->flags);
-    }
-    return false;
+    return run_armed &&
+           (w->run_lag != info->lag_max || !n_less(&w->run_right, &w->run)) &&
+           (w->run_lag != info->lag_min || !n_less(&w->run_left, &w->run));
 }
 
 /*
@@ -392,9 +369,14 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     const uint32_t thr = info->threshold_q15;
     const int32_t mean = w->mean;
     const uint32_t rearm = ssda__pitch_rearm_q15(thr);
-    scan_flags_t f = {false, false, false, false, false, false};
+    /* Armed: a peak n > rearm was seen since the last run began (at the
+       start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so
+       the next run is a real dip. */
+    bool armed;
+    bool in_run = false, run_armed = false, found = false;
+    bool best_need_right = false, run_need_right = false;
     uint32_t b_sum, lag;
-    const uint32_t pred = scan_start(w, predict_lag, rearm, &b_sum, &f);
+    const uint32_t pred = scan_start(w, predict_lag, rearm, &b_sum, &armed);
 
     for (lag = info->lag_min; lag <= lag_max + 1u; lag++) {
         const bool candidate = lag <= lag_max;
@@ -405,51 +387,61 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
         if (lag == pred) {
             w->cur = w->pred;
         } else {
-            evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, f.armed, rearm),
+            evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, armed, rearm),
                      &w->cur);
         }
         /* Neighbours wanted by the best lag and by the run minimum. */
-        if (f.best_need_right) {
+        if (best_need_right) {
             w->best_right = w->cur;
-            f.best_need_right = false;
+            best_need_right = false;
         }
-        if (f.run_need_right) {
+        if (run_need_right) {
             w->run_right = w->cur;
-            f.run_need_right = false;
+            run_need_right = false;
         }
         if (candidate && is_exact(&w->cur)) {
-            note_best(w, lag, &f);
+            best_need_right = note_best(w, lag);
         }
         if (candidate && is_exact(&w->cur) && n_at_most_q15(&w->cur, thr)) {
-            if (!f.in_run) {
-                f.run_armed = f.armed; /* the run uses up the arming */
-                f.armed = false;
+            if (!in_run) {
+                run_armed = armed; /* the run uses up the arming */
+                armed = false;
             }
-            if (!f.in_run || n_less(&w->cur, &w->run)) {
+            if (!in_run || n_less(&w->cur, &w->run)) {
                 w->run = w->cur;
                 w->run_lag = lag;
                 w->run_left = w->prev;
-                f.run_need_right = true;
+                run_need_right = true;
             }
-            f.in_run = true;
-        } else if (f.in_run && end_run(w, &f)) {
-            break; /* no later lag can change the choice */
+            in_run = true;
+        } else if (in_run) {
+            in_run = false;
+            if (run_is_dip(w, run_armed) && !found) {
+                found = true;
+                w->t_lag = w->run_lag;
+                w->t_left = w->run_left;
+                w->t_mid = w->run;
+                w->t_right = w->run_right;
+                if (!full) {
+                    break; /* no later lag can change the choice */
+                }
+            }
         } else {
-            /* outside a run, and still outside (or a run just ended) */
+            /* outside a run, and still outside */
         }
-        if (!f.in_run && !f.armed && candidate && !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm))) {
-            f.armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
+        if (!in_run && !armed && candidate && !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm))) {
+            armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
         }
         w->prev = w->cur;
     }
 
-    if (!f.found) {
+    if (!found) {
         w->t_lag = w->best_lag;
         w->t_left = w->best_left;
         w->t_mid = w->best;
         w->t_right = w->best_right;
     }
-    return f.found;
+    return found;
 }
 
 void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,

@@ -81,19 +81,23 @@ static inline bool ssda__stream_holds(const ssda_source_t *s, uint32_t w, uint32
  * starts of the bands the job visits (the plate's row lattice, see place_y;
  * 0 = 1, at most the plate height). extra: bytes left to the bounce buffer
  * beyond its minimum when the plate is shaped for the region or for `rows`
- * (not in the span x 1 fallback). Pure: the source is not changed.
- * Returns SSDA_OK or SSDA_ERR_BUFFER (not even one row of span px fits).
+ * (not in the span x 1 fallback). The plan goes to *plan, which the
+ * source is not changed for, or to &s->plate (a job that plans and uses at
+ * once), which keeps the plate's pixels when its shape holds (as
+ * ssda__stream_plate_use). Returns SSDA_OK or SSDA_ERR_BUFFER (not even one
+ * row of span px fits), with *plan and s unchanged.
  */
-SSDA_INTERNAL int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rect_t *r,
+SSDA_INTERNAL int ssda__stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r,
                                           uint32_t span, uint32_t rows, uint32_t q,
                                           size_t extra, ssda_source_plan_t *plan);
 
-/* Plan the plate of s as ssda__stream_plate_plan does, straight into the
-   source (a job that plans and uses at once), keeping its pixels when the
-   shape does not change. Same returns; on error s is unchanged. */
-SSDA_INTERNAL int ssda__stream_plate_shape(ssda_source_t *s, const ssda_rect_t *r,
+/* Plan the plate of s straight into the source (ssda__stream_plate_plan). */
+static inline int ssda__stream_plate_shape(ssda_source_t *s, const ssda_rect_t *r,
                                            uint32_t span, uint32_t rows, uint32_t q,
-                                           size_t extra);
+                                           size_t extra)
+{
+    return ssda__stream_plate_plan(s, r, span, rows, q, extra, &s->plate);
+}
 
 /* Give the plate a shape planned before, keeping its pixels when the shape
    does not change (the same width has the same pitch). */

@@ -36,7 +36,6 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
                       ssda_source_t *window, const ssda_rect_t *window_rect,
                       const ssda_match_config_t *cfg, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults; /* zero: AUTO, raster, rows */
     ssda_match_plan_t plan;
     ssda_rect_t ar, wr;
     ssda__rows_t a, w;
@@ -65,7 +64,7 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
         return SSDA_ERR_SIZE;
     }
     if (cfg == NULL) {
-        cfg = &defaults;
+        cfg = &ssda__match_defaults;
     }
     err = ssda__match_plan(cfg, ar.width, ar.height, wr.width, wr.height, &plan);
     if (err != SSDA_OK) {

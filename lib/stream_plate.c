@@ -95,7 +95,7 @@ uint32_t ssda__stream_plate_fit_w(const ssda_source_t *s, uint32_t h, size_t ext
     return (uint32_t)w;
 }
 
-int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+int ssda__stream_plate_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
                             uint32_t rows, uint32_t q, size_t extra, ssda_source_plan_t *plan)
 {
     uint32_t w = r->width;
@@ -118,7 +118,11 @@ int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rect_t *r, uint32
     }
     pitch = pitch_for(s, w); /* h * pitch <= room_of(s) <= 2^31 */
     /* pitch_for depends on w and the source's fixed config only: the same
-       w gives the same pitch (ssda__stream_plate_use keeps the pixels) */
+       w gives the same pitch, so a plate planned into the source keeps its
+       pixels when its shape holds (the plan reads only s->cfg before) */
+    if (plan == &s->plate && (w != s->plate.pw || h != s->plate.ph)) {
+        s->rows = 0u;
+    }
     plan->pw = (uint16_t)w;
     plan->ph = (uint16_t)h;
     plan->pitch = (uint32_t)pitch;
@@ -129,18 +133,6 @@ int ssda__stream_plate_plan(const ssda_source_t *s, const ssda_rect_t *r, uint32
     plan->region = *r;
     plan->qy = (uint16_t)(q == 0u ? 1u : (q < h ? q : h));
     return SSDA_OK;
-}
-
-int ssda__stream_plate_shape(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
-                             uint32_t rows, uint32_t q, size_t extra)
-{
-    const uint16_t pw = s->plate.pw, ph = s->plate.ph;
-    /* the plan reads the source's configuration only: safe into s->plate */
-    int err = ssda__stream_plate_plan(s, r, span, rows, q, extra, &s->plate);
-    if (err == SSDA_OK && (s->plate.pw != pw || s->plate.ph != ph)) {
-        s->rows = 0u;
-    }
-    return err;
 }
 
 /* One read of [off, off + len) widened to read_size, so that byte off lands

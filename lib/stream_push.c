@@ -102,7 +102,6 @@ static int match_rects(const ssda_push_config_t *cfg, ssda_rect_t *area, ssda_re
 int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
                          const ssda_match_config_t *match, ssda_match_result_t *result)
 {
-    static const ssda_match_config_t defaults;
     ssda_match_plan_t plan;
     ssda_rect_t area, wr;
     int err = check_common(push, cfg, result);
@@ -117,7 +116,7 @@ int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
         return err;
     }
     if (match == NULL) {
-        match = &defaults;
+        match = &ssda__match_defaults;
     }
     err = ssda__match_plan(match, area.width, area.height, wr.width, wr.height, &plan);
     if (err != SSDA_OK) {
@@ -215,7 +214,6 @@ int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
                          const ssda_track_config_t *track, ssda_track_vector_t *out,
                          size_t out_count, ssda_track_stats_t *stats)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_rect_t kept, oreg;
     uint32_t lo, hi;
@@ -234,7 +232,7 @@ int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
         return SSDA_ERR_SIZE;
     }
     first = cfg->role == SSDA_PUSH_FIRST;
-    err = track_layout(cfg, track != NULL ? track : &defaults, &plan, &kept, &oreg, &lo, &hi);
+    err = track_layout(cfg, track != NULL ? track : &ssda__track_defaults, &plan, &kept, &oreg, &lo, &hi);
     if (err != SSDA_OK) {
         return err;
     }

@@ -126,7 +126,6 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
                       const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                       size_t out_count, ssda_track_stats_t *stats)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_track_stats_t acc;
     ssda__rows_t frows, srows;
@@ -146,7 +145,7 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     if (first->cfg.format != second->cfg.format) {
         return SSDA_ERR_FORMAT;
     }
-    err = ssda__track_plan(cfg != NULL ? cfg : &defaults, second->cfg.format, first->cfg.width,
+    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->cfg.format, first->cfg.width,
                            first->cfg.height, second->cfg.width, second->cfg.height, &plan);
     if (err != SSDA_OK) {
         return err;

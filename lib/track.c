@@ -19,7 +19,8 @@ int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
     }
     ssda__rows_view(&a, first);
     ssda__rows_view(&b, second);
-    /* RAM sources never fail a fetch: an error here is an argument error,
-       found before anything is written. */
-    return ssda__track_rows(&a, &b, cfg, out, out_count, stats);
+    /* checked views: no second check of the row sources. RAM sources never
+       fail a fetch: an error here is an argument error, found before
+       anything is written. */
+    return ssda__track_run(&a, &b, cfg, out, out_count, stats);
 }

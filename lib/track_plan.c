@@ -1,6 +1,8 @@
 /* track_plan.c - grid layout and configuration checks of grid tracking. */
 #include "track_rows.h"
 
+const ssda_track_config_t ssda__track_defaults; /* all zero */
+
 /* One axis of the grid: window, search, step and region along it. */
 typedef struct {
     uint32_t win, search, step, start, len, count;
@@ -63,13 +65,12 @@ static int resolve_grid(const ssda_track_config_t *cfg, uint32_t width, uint32_t
 int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t height,
                     ssda_track_grid_t *grid)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_grid_t g;
     int err;
     if (grid == NULL) {
         return SSDA_ERR_NULL;
     }
-    err = resolve_grid(cfg != NULL ? cfg : &defaults, width, height, &g);
+    err = resolve_grid(cfg != NULL ? cfg : &ssda__track_defaults, width, height, &g);
     if (err == SSDA_OK) {
         *grid = g;
     }

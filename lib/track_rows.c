@@ -418,30 +418,18 @@ int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
     return SSDA_OK;
 }
 
-int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
+int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats)
 {
-    static const ssda_track_config_t defaults;
     ssda_track_plan_t plan;
     ssda_track_stats_t st;
     int err;
-
-    if (first == NULL || second == NULL || out == NULL) {
-        return SSDA_ERR_NULL;
-    }
-    err = check_rows(first);
-    if (err == SSDA_OK) {
-        err = check_rows(second);
-    }
-    if (err != SSDA_OK) {
-        return err;
-    }
     if (first->format != second->format) {
         return SSDA_ERR_FORMAT;
     }
-    err = ssda__track_plan(cfg != NULL ? cfg : &defaults, second->format, first->width,
-                           first->height, second->width, second->height, &plan);
+    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->format,
+                           first->width, first->height, second->width, second->height, &plan);
     if (err != SSDA_OK) {
         return err;
     }
@@ -454,4 +442,22 @@ int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
         *stats = st;
     }
     return err;
+}
+
+int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
+                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                     size_t out_count, ssda_track_stats_t *stats)
+{
+    int err;
+    if (first == NULL || second == NULL || out == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    err = check_rows(first);
+    if (err == SSDA_OK) {
+        err = check_rows(second);
+    }
+    if (err != SSDA_OK) {
+        return err;
+    }
+    return ssda__track_run(first, second, cfg, out, out_count, stats);
 }

@@ -26,6 +26,10 @@ static inline bool ssda__track_out_fits(uint32_t count, size_t out_count)
     return out_count >= count;
 }
 
+/* The zero-filled options (the seed's grid, AUTO): what a NULL
+   configuration means, one copy for the whole library. */
+SSDA_INTERNAL extern const ssda_track_config_t ssda__track_defaults;
+
 /*
  * Resolve and check cfg (never NULL) for images of the given format, FIRST
  * first_w x first_h and SECOND second_w x second_h, into *plan
@@ -53,6 +57,13 @@ SSDA_INTERNAL int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t forma
 SSDA_INTERNAL int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t *second,
                                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                                    size_t out_count, ssda_track_stats_t *stats);
+
+/* ssda__track_rows after its checks of the row sources, for callers whose
+   sources are valid already (ssda_track's views): formats, the plan, the
+   whole grid. Same returns. */
+SSDA_INTERNAL int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,
+                                  const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+                                  size_t out_count, ssda_track_stats_t *stats);
 
 /*
  * Where the row sources given to ssda__track_part lie in the images, for a

@@ -218,13 +218,7 @@ typedef struct {
     uint16_t coarse_step; /* SSDA_SCAN_COARSE grid step (default resolved) */
     uint8_t threshold;    /* ssda_threshold_t */
     uint8_t scan;         /* ssda_scan_t */
-    bool bounds;          /* successive elimination on (never with NONE) */
-    bool use_ref;         /* positions are cut once they cannot beat the reference */
-    bool ramp;            /* RAMP or AUTO_RAMP */
-    bool fallback;        /* FIXED or RAMP: the all-cut fallback may be needed */
-    bool exact;           /* a completed best is the true minimum */
-    bool tie_nearest;     /* SSDA_MATCH_TIE_NEAREST */
-    bool subpixel;        /* SSDA_MATCH_SUBPIXEL */
+    uint8_t flags;        /* SSDA_MATCH_* flags as given */
     uint8_t unique_radius; /* SSDA_MATCH_UNIQUE: R (resolved); 0 = no uniqueness */
     uint16_t unique_q8;   /* SSDA_MATCH_UNIQUE: the ratio (resolved) */
     void *list;           /* SSDA_MATCH_UNIQUE: the list, in the work buffer */
