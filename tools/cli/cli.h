@@ -151,5 +151,7 @@ int cmd_track(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_grad(int argc, char **argv);
 int cmd_pitch(int argc, char **argv);
+int cmd_symreg(int argc, char **argv);
+int cmd_shape(int argc, char **argv);
 
 #endif /* SSDA_CLI_H */

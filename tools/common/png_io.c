@@ -418,3 +418,34 @@ int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t 
     atomic_file_abort(&af); /* after an error: the temp file (a no-op after commit) */
     return rc;
 }
+
+int png_write_gray_to(FILE *fp, const char *name, const gray_image_t *img, char *err,
+                      size_t errlen)
+{
+    png_writer_t w;
+    int rc = -1;
+
+    memset(&w, 0, sizeof w);
+    if (img == NULL || img->pixels == NULL || img->width == 0 || img->height == 0 ||
+        img->width > SSDA_MAX_DIM || img->height > SSDA_MAX_DIM ||
+        (img->bits != 8 && img->bits != 16)) {
+        tool_set_err(err, errlen, "'%s': nothing valid to write", name);
+        return -1;
+    }
+    w.fp = fp;
+    w.row = malloc((size_t)img->width * 2u);
+    w.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &w.ectx, on_png_error,
+                                    on_png_warning);
+    if (w.row == NULL || w.png == NULL || (w.info = png_create_info_struct(w.png)) == NULL) {
+        tool_set_err(err, errlen, "'%s': out of memory", name);
+    } else if (write_protected(&w, img) != 0) {
+        tool_set_err(err, errlen, "cannot write '%s': %s", name, w.ectx.msg);
+    } else {
+        rc = 0;
+    }
+    if (w.png != NULL) {
+        png_destroy_write_struct(&w.png, w.info != NULL ? &w.info : NULL);
+    }
+    free(w.row);
+    return rc;
+}
