@@ -79,4 +79,10 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
 int demo_pitch(const demo_ctx_t *c, const demo_signal_t *sig, int synthetic,
                const char *ref_csv, const char *plot_name, const char *label);
 
+/* Part 3: registration by closed loops (seed 001) of a synthetic aerial
+   pair with a known similarity and gain; writes the inputs and
+   symreg_overlay.png. Returns 0, or -1 on failure or when the corners are
+   off by 2 px or more. */
+int demo_symreg(const demo_ctx_t *c, const char *label_prefix);
+
 #endif /* SSDA_DEMO_H */

@@ -14,8 +14,9 @@ static const char usage[] =
     "usage: ssda-demo [--out DIR] [--quiet] [FIRST.png SECOND.png] [SOUND.wav [--ref F0.csv]]\n"
     "                 [--mask-value V] [--step N]\n"
     "\n"
-    "With no files: makes a synthetic cloud pair moved by a known wind and a synthetic\n"
-    "voice with a known f0, tracks and pitches them with the library, and reports the\n"
+    "With no files: makes a synthetic cloud pair moved by a known wind, a synthetic\n"
+    "voice with a known f0 and an aerial pair turned, scaled and darkened by a known\n"
+    "amount; tracks, pitches and registers them with the library, and reports the\n"
     "accuracy against the truth and the work the early exit saved. With files: the same\n"
     "on your image pair and/or sound (any PNG; WAV, FLAC, OGG, ...).\n"
     "\n"
@@ -130,6 +131,10 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
     if (demo_pitch(c, &voice, 1, NULL, "pitch_plot.png", label) != 0) {
         goto done;
     }
+    demo_heading(c, "3. Registration by closed loops and Fourier descriptors (seed 001)");
+    if (demo_symreg(c, "") != 0) {
+        goto done;
+    }
     tool_path(argv0, tool, sizeof tool);
     demo_heading(c, "Next: the same on your own files");
     printf("   %s track FIRST.png SECOND.png --overlay vectors.png --json vectors.json\n", tool);
@@ -137,6 +142,8 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
     printf("   for example on the files above:\n");
     printf("   %s track %s %s --exclude --overlay %s/my_vectors.png\n", tool, p1, p2, c->out_dir);
     printf("   %s pitch %s --ref %s --plot %s/my_pitch.png\n", tool, pw, pc, c->out_dir);
+    printf("   %s symreg %s/aerial_1.png %s/aerial_2.png --overlay %s/my_loops.png -o "
+           "%s/registered.png\n", tool, c->out_dir, c->out_dir, c->out_dir, c->out_dir);
     printf("   (docs/cli.md lists every option)\n");
     rc = 0;
 done:

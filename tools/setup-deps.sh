@@ -3,7 +3,7 @@
 # otherwise it lists what to install). Usage: tools/setup-deps.sh [extra packages...]
 set -euo pipefail
 
-want=(cmake gcc make pkg-config help2man libpng-dev libcairo2-dev libsndfile1-dev "$@")
+want=(cmake gcc make pkg-config help2man libpng-dev libcairo2-dev libsndfile1-dev libcjson-dev libjansson-dev "$@")
 missing=()
 for p in "${want[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,7 +2,8 @@
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror (with the Python binding and its pytest
-# suite), a host build with ASan + UBSan, the line and
+# suite), a host build with ASan + UBSan, a 32-bit (-m32) host build with
+# ASan + UBSan running the Unity suite, the line and
 # branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
 # of lib/ (cppcheck + MISRA C 2012, clang-tidy), a 5-second run of every fuzz
 # target (libFuzzer), the library tests as bare-metal images under
@@ -24,7 +25,7 @@ if [ "$skip_cross" = 1 ]; then
   bash tools/setup-deps.sh "${python_pkgs[@]}"
 else
   bash tools/setup-deps.sh "${python_pkgs[@]}" gcc-arm-none-eabi libnewlib-arm-none-eabi \
-       gcc-riscv64-unknown-elf qemu-system-arm
+       gcc-riscv64-unknown-elf qemu-system-arm gcc-multilib qemu-user
 fi
 unity=$(bash tools/fetch-unity.sh)
 
@@ -62,6 +63,31 @@ bash tools/lint.sh build/lint
 echo "==> build/fuzz (libFuzzer smoke run)" >&2
 bash tools/fuzz.sh --time 5 --build build/fuzz
 
+# 32-bit host build (issue 22): size_t of 32 bits, as on the targets, where
+# this library's real overruns were found, with ASan + UBSan: the whole Unity
+# suite (about a minute). Natively where the kernel runs i386 binaries, else
+# under qemu-i386 user mode (ASan's leak checker does not work there).
+# -msse2 -mfpmath=sse: the SSE2 kernel at 32 bits (the targets cover the
+# portable one), and the tests' float references without x87 excess precision.
+m32_test() {
+  local dir=build/m32 emu=() leaks=1
+  mkdir -p "$dir"
+  printf 'int main(void) { return 0; }\n' >"$dir/probe.c"
+  if ! cc -m32 -fsanitize=address,undefined "$dir/probe.c" -o "$dir/probe" 2>"$dir/probe.log"; then
+    cat "$dir/probe.log"; echo "tools/test.sh: cannot link -m32 with sanitizers (gcc-multilib)" >&2
+    exit 1
+  fi
+  if ! "$dir/probe" 2>/dev/null; then
+    echo "tools/test.sh: this kernel does not run i386 binaries: qemu-i386" >&2
+    emu=(-DCMAKE_CROSSCOMPILING_EMULATOR=qemu-i386)
+    leaks=0
+  fi
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=$leaks \
+    configure_build_test "$dir" -DCMAKE_C_FLAGS="-m32 -msse2 -mfpmath=sse" -DSSDA_SANITIZE=ON \
+      -DCMAKE_BUILD_TYPE=Debug -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF -DSSDA_INSTALL=OFF \
+      "${emu[@]}"
+}
+
 # Cross: tests on emulated Cortex-M3 (-Os), M4F and M7 (-O2) and M33 (-Os)
 # under QEMU with semihosting (cmake/SsdaTarget.cmake, tests/target/, docs/target.md); a
 # guest that hangs is stopped by the CTest timeout.
@@ -91,6 +117,7 @@ cross_lib() { # <toolchain>
 }
 
 if [ "$skip_cross" != 1 ]; then
+  m32_test
   qemu_test cortex-m3 MinSizeRel
   qemu_test cortex-m4f RelWithDebInfo
   qemu_test cortex-m7 RelWithDebInfo

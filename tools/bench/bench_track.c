@@ -129,6 +129,83 @@ typedef struct {
 
 static int g_only = -1; /* --only K: run brute force and mode K only (profiling) */
 
+/* FIXED threshold: the 95th percentile of the true minimum SADs (ref, the
+   brute-force vectors), so that about 5 % of windows fall back (the seed
+   tuned T by experiment). */
+static uint64_t fixed_threshold_of(const ssda_track_vector_t *ref, uint32_t count, uint32_t ok)
+{
+    uint64_t *sads = malloc((size_t)ok * sizeof *sads + 1), t;
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < count; k++) {
+        if (ref[k].status == SSDA_TRACK_OK) {
+            sads[n++] = ref[k].sad;
+        }
+    }
+    qsort(sads, n, sizeof *sads, cmp_u64);
+    t = n ? sads[(size_t)(0.95 * (n - 1))] : 0;
+    free(sads);
+    return t;
+}
+
+/* Mode md, best of reps runs, into r (vectors into out; compared with ref). */
+static int run_mode(const ssda_view_t *first, const ssda_view_t *second,
+                    const ssda_track_config_t *cfg, const ssda_track_grid_t *grid, int reps,
+                    const ssda_track_vector_t *ref, ssda_track_vector_t *out,
+                    ssda_track_stats_t *st, row_t *r)
+{
+    double best = 1e30;
+    for (int k = 0; k < reps; k++) {
+        double t0 = now_s(), t;
+        int e = ssda_track(first, second, cfg, out, grid->count, st);
+        t = now_s() - t0;
+        if (e != SSDA_OK) {
+            return e;
+        }
+        best = t < best ? t : best;
+    }
+    r->ops = st->pixel_ops;
+    r->completed = st->completed;
+    r->seconds = best;
+    r->ok = st->ok;
+    for (uint32_t k = 0; k < grid->count; k++) {
+        const ssda_track_vector_t *a = &ref[k], *b = &out[k];
+        if (a->status != SSDA_TRACK_OK) {
+            continue;
+        }
+        r->same += a->dx == b->dx && a->dy == b->dy && a->sad == b->sad;
+        r->within1 += abs(a->dx - b->dx) <= 1 && abs(a->dy - b->dy) <= 1;
+        r->exact_flagged += b->exact;
+    }
+    return SSDA_OK;
+}
+
+static void print_table(const char *title, const ssda_view_t *second,
+                        const ssda_track_grid_t *grid, const ssda_track_stats_t *st_none,
+                        int reps, uint64_t fixed_t, const row_t *rows)
+{
+    printf("\n### %s\n\n", title);
+    printf("%ux%u %d-bit, %u windows of 16x16 (step 16), each in the 32x32 area centred on it; "
+           "%u searched (%u masked, %u at the edge). Best of %d runs. FIXED T = %llu.\n\n",
+           second->width, second->height, second->format == SSDA_PIX_U8 ? 8 : 16, grid->count,
+           st_none->ok, st_none->masked, st_none->edge, reps, (unsigned long long)fixed_t);
+    printf("| mode | pixel ops / window | fewer ops than `none` | us / window | faster than `none` "
+           "| full sums / window | vectors = `none` | within 1 px | flagged exact |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (size_t m = 0; m < NMODES; m++) {
+        const row_t *r = &rows[m];
+        if (g_only >= 0 && m != 0 && (int)m != g_only) {
+            continue;
+        }
+        double opw = r->ok ? (double)r->ops / r->ok : 0;
+        double usw = r->ok ? 1e6 * r->seconds / r->ok : 0;
+        printf("| %s | %.0f | %.1fx | %.2f | %.1fx | %.1f | %.2f %% (%u/%u) | %.2f %% | %.0f %% |\n",
+               k_modes[m].name, opw, (double)rows[0].ops / (double)(r->ops ? r->ops : 1), usw,
+               rows[0].seconds / r->seconds, r->ok ? (double)r->completed / r->ok : 0, r->ok ? 100.0 * r->same / r->ok : 0, r->same,
+               r->ok, r->ok ? 100.0 * r->within1 / r->ok : 0,
+               r->ok ? 100.0 * r->exact_flagged / r->ok : 0);
+    }
+}
+
 static int run_pair(const char *title, const ssda_view_t *first, const ssda_view_t *second,
                     int use_mask, uint16_t mask, int reps)
 {
@@ -158,9 +235,7 @@ static int run_pair(const char *title, const ssda_view_t *first, const ssda_view
         const bench_mode_t *md = &k_modes[m];
         ssda_track_config_t cfg = base;
         ssda_track_stats_t st;
-        double best = 1e30;
-        row_t *r = &rows[m];
-        memset(r, 0, sizeof *r);
+        memset(&rows[m], 0, sizeof rows[m]);
         if (g_only >= 0 && m != 0 && (int)m != g_only) {
             continue;
         }
@@ -174,68 +249,17 @@ static int run_pair(const char *title, const ssda_view_t *first, const ssda_view
             cfg.match.work = work;
             cfg.match.work_size = work_size;
         }
-        for (int k = 0; k < reps; k++) {
-            double t0 = now_s();
-            e = ssda_track(first, second, &cfg, m == 0 ? ref : vec, grid.count, &st);
-            double t = now_s() - t0;
-            if (e != SSDA_OK) {
-                fprintf(stderr, "%s: %s\n", md->name, ssda_strerror(e));
-                return -1;
-            }
-            best = t < best ? t : best;
-        }
-        r->ops = st.pixel_ops;
-        r->completed = st.completed;
-        r->seconds = best;
-        r->ok = st.ok;
-        for (uint32_t k = 0; k < grid.count; k++) {
-            const ssda_track_vector_t *a = &ref[k], *b = m == 0 ? &ref[k] : &vec[k];
-            if (a->status != SSDA_TRACK_OK) {
-                continue;
-            }
-            r->same += a->dx == b->dx && a->dy == b->dy && a->sad == b->sad;
-            r->within1 += abs(a->dx - b->dx) <= 1 && abs(a->dy - b->dy) <= 1;
-            r->exact_flagged += b->exact;
+        e = run_mode(first, second, &cfg, &grid, reps, ref, m == 0 ? ref : vec, &st, &rows[m]);
+        if (e != SSDA_OK) {
+            fprintf(stderr, "%s: %s\n", md->name, ssda_strerror(e));
+            return -1;
         }
         if (m == 0) {
             st_none = st;
-            /* FIXED threshold: the 95th percentile of the true minimum SADs,
-               so that about 5 % of windows fall back (the seed tuned T by
-               experiment). */
-            uint64_t *sads = malloc((size_t)st.ok * sizeof *sads + 1);
-            uint32_t n = 0;
-            for (uint32_t k = 0; k < grid.count; k++) {
-                if (ref[k].status == SSDA_TRACK_OK) {
-                    sads[n++] = ref[k].sad;
-                }
-            }
-            qsort(sads, n, sizeof *sads, cmp_u64);
-            fixed_t = n ? sads[(size_t)(0.95 * (n - 1))] : 0;
-            free(sads);
+            fixed_t = fixed_threshold_of(ref, grid.count, st.ok);
         }
     }
-
-    printf("\n### %s\n\n", title);
-    printf("%ux%u %d-bit, %u windows of 16x16 (step 16), each in the 32x32 area centred on it; "
-           "%u searched (%u masked, %u at the edge). Best of %d runs. FIXED T = %llu.\n\n",
-           second->width, second->height, second->format == SSDA_PIX_U8 ? 8 : 16, grid.count,
-           st_none.ok, st_none.masked, st_none.edge, reps, (unsigned long long)fixed_t);
-    printf("| mode | pixel ops / window | fewer ops than `none` | us / window | faster than `none` "
-           "| full sums / window | vectors = `none` | within 1 px | flagged exact |\n");
-    printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (size_t m = 0; m < NMODES; m++) {
-        const row_t *r = &rows[m];
-        if (g_only >= 0 && m != 0 && (int)m != g_only) {
-            continue;
-        }
-        double opw = r->ok ? (double)r->ops / r->ok : 0;
-        double usw = r->ok ? 1e6 * r->seconds / r->ok : 0;
-        printf("| %s | %.0f | %.1fx | %.2f | %.1fx | %.1f | %.2f %% (%u/%u) | %.2f %% | %.0f %% |\n",
-               k_modes[m].name, opw, (double)rows[0].ops / (double)(r->ops ? r->ops : 1), usw,
-               rows[0].seconds / r->seconds, r->ok ? (double)r->completed / r->ok : 0, r->ok ? 100.0 * r->same / r->ok : 0, r->same,
-               r->ok, r->ok ? 100.0 * r->within1 / r->ok : 0,
-               r->ok ? 100.0 * r->exact_flagged / r->ok : 0);
-    }
+    print_table(title, second, &grid, &st_none, reps, fixed_t, rows);
     free(ref);
     free(vec);
     free(work);

@@ -27,5 +27,8 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_STREAM
     jobs_stream();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SYMREG
+    jobs_symreg();
+#endif
     return budget_failed();
 }

@@ -21,6 +21,9 @@ void jobs_track(void);
 void jobs_pitch(void);
 /* ssda_push_row of push-mode tracking: one row, and a whole frame. */
 void jobs_stream(void);
+/* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,
+   registration. */
+void jobs_symreg(void);
 
 /* Deterministic test data (xorshift32, smoothed). */
 uint32_t jobs_rand(uint32_t *state);

@@ -28,6 +28,10 @@ FEATURE_NAMES = {
     "stream": "block-streamed images (`stream.h`)",
     "track": "grid tracking (`track.h`)",
     "grad": "Fig. 8 operator (`grad.h`)",
+    "edge": "seed 001 edges (`edge.h`)",
+    "loops": "seed 001 closed loops (`loops.h`)",
+    "fourier": "Fourier descriptors (`fourier.h`)",
+    "symreg": "symbolic registration (`symreg.h`)",
     "view": "image views (`view.h`)",
     "ssda": "error names (`ssda.h`)",
 }
@@ -333,7 +337,8 @@ def main():
             w("\n\n")
         w("| feature | " + " | ".join(n for n, _ in targets) + " | Cortex-M0+ target |\n")
         w("|---|" + "---:|" * len(targets) + "---|\n")
-        order = [f for f in ("match", "pitch", "stream", "track", "grad", "view", "ssda") if f in feats]
+        order = [f for f in ("match", "pitch", "stream", "track", "grad", "edge", "loops",
+                             "fourier", "symreg", "view", "ssda") if f in feats]
         order += sorted(f for f in feats if f not in order) + ["all"]
         rows = []
         for feat in order:
@@ -508,6 +513,26 @@ def main():
                          fmt(get(r, key + ".worst")[0]) for _, _, r in runs]
                 w(f"| {label} | " + " | ".join(cells) +
                   f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
+
+        if any("symreg.edge_detect" in r for _, _, r in runs):
+            r0 = runs[0][2]
+            pairs = get(r0, "symreg.pairs")
+            w("\n| seed 001 on a 96 x 96 pair (a quarter turn, 3/4 brightness) | " +
+              " | ".join(f"{n}: instructions" for n in names) + " | per | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---|---:|\n")
+            for key, label, unit in (
+                    ("symreg.edge_detect", "`ssda_edge_detect` (operator + ridge thinning)", "pixel"),
+                    ("symreg.edge_refine", "`ssda_edge_refine` (3 x 3 stages, extension, T/I/V)", "pixel"),
+                    ("symreg.loops_find", "`ssda_loops_find` (prune, regions, contours)", "call"),
+                    ("symreg.fd_compute", "`ssda_fd_compute` (64 samples, order 10)", "loop"),
+                    ("symreg.fd_match", "`ssda_fd_match` (s, phi, alpha free)", "match"),
+                    ("symreg.fd_match_fixed", "`ssda_fd_match_fixed`", "match"),
+                    ("symreg.register", f"`ssda_symreg` ({pairs[3]} loops, {pairs[0]} pairs found)",
+                     "REF x MOV loop pair")):
+                digits = 1 if unit == "pixel" else 0
+                cells = [per(*get(r, key)[:2], digits) if unit != "call" else fmt(get(r, key)[0])
+                         for _, _, r in runs]
+                w(f"| {label} | " + " | ".join(cells) + f" | {unit} | {get(r0, key)[2]} |\n")
 
 
 if __name__ == "__main__":

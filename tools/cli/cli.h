@@ -43,8 +43,10 @@ typedef struct {
     const char *inline_value; /* value after '=' or NULL */
     int bad;           /* a usage error was already reported */
     const char *pos[CLI_MAX_POSITIONAL];
+    int pos_argi[CLI_MAX_POSITIONAL]; /* argv index of each positional */
     int npos;
     int options_done;
+    int dashdash_argi; /* argv index of "--", 0 if none */
 } cli_args_t;
 
 void cli_args_begin(cli_args_t *a, const char *cmd, int argc, char **argv);
@@ -57,6 +59,11 @@ int cli_flag(cli_args_t *a, const char *name);
 int cli_opt(cli_args_t *a, const char *name, const char **value);
 /* Report the current option as unknown; returns CLI_USAGE. */
 int cli_unknown(cli_args_t *a);
+/* After the loop: exactly n positionals? More: "unexpected argument 'X'"
+   naming the first extra one (after "--" every argument is a file: said
+   when X looks like an option); fewer: need (e.g. "need FIRST.png and
+   SECOND.png"). Returns CLI_OK or CLI_USAGE (printed). */
+int cli_positionals(const cli_args_t *a, int n, const char *need);
 
 /* Print "ssda CMD: message" and a hint to stderr; returns CLI_USAGE. */
 int cli_usage_error(const char *cmd, const char *fmt, ...);
@@ -99,13 +106,16 @@ int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_imag
 
 /* ---- output files: all or nothing ----
  * Each output is written to a temp file beside its final name; only when
- * every output is complete are they renamed into place. On any failure,
- * cli_outputs_abort deletes the temp files: no output is created or changed. */
+ * every output is complete are they renamed into place (atomic_file.h: a
+ * rename that still fails puts back what the others replaced). On any
+ * failure, cli_outputs_abort deletes the temp files: no output is created or
+ * changed. FIFOs, character devices and /dev/std* are written directly. */
 #define CLI_MAX_OUTPUTS 4
 
 typedef struct {
     const char *cmd;
     atomic_file_t f[CLI_MAX_OUTPUTS];
+    const char *path[CLI_MAX_OUTPUTS]; /* as given, for messages */
     int n;
 } cli_outputs_t;
 
@@ -117,11 +127,31 @@ int cli_outputs_commit(cli_outputs_t *o);
 /* Delete every temp file. */
 void cli_outputs_abort(cli_outputs_t *o);
 
+/* Can path (may be NULL: nothing to check) be written as an output? Run
+   before the work, so that a directory or a missing folder is said at once.
+   Prints the error; returns 0 or -1. */
+int cli_output_check(const char *cmd, const char *path);
+/* Does path name standard output ("-", /dev/stdout, /dev/fd/1)? Then the
+   text summary is not printed. NULL is not. */
+int cli_is_stdout(const char *path);
+
+/* ---- standard streams ---- */
+/* At start: a closed descriptor 0, 1 or 2 is opened read-only on /dev/null,
+   so that no output file gets its number and a write to a closed stdout
+   fails (EBADF) instead of landing in that file. */
+void cli_guard_std_fds(void);
+/* At exit: flush stdout; if anything written to it was lost (a full disk,
+   a closed stdout; not a reader that has gone, EPIPE), say so and turn a
+   success into CLI_INPUT. Returns the exit code. */
+int cli_finish_stdout(const char *cmd, int rc);
+
 /* ---- subcommands: (argc, argv) after the subcommand name; return an exit code ---- */
 int cmd_match(int argc, char **argv);
 int cmd_track(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_grad(int argc, char **argv);
 int cmd_pitch(int argc, char **argv);
+int cmd_symreg(int argc, char **argv);
+int cmd_shape(int argc, char **argv);
 
 #endif /* SSDA_CLI_H */

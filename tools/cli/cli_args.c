@@ -1,12 +1,15 @@
 /* cli_args.c - option scanning, value parsing and messages for `ssda`. */
+#define _POSIX_C_SOURCE 200809L /* fcntl, O_ACCMODE */
 #include "cli.h"
 
 #include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 void cli_args_begin(cli_args_t *a, const char *cmd, int argc, char **argv)
 {
@@ -24,6 +27,7 @@ int cli_next(cli_args_t *a)
         const char *eq;
         if (!a->options_done && strcmp(s, "--") == 0) {
             a->options_done = 1;
+            a->dashdash_argi = a->i - 1;
             continue;
         }
         /* "-" alone is a positional (stdout/stdin); "-5" is not an option either */
@@ -33,6 +37,7 @@ int cli_next(cli_args_t *a)
                 a->bad = 1;
                 return 0;
             }
+            a->pos_argi[a->npos] = a->i - 1;
             a->pos[a->npos++] = s;
             continue;
         }
@@ -82,6 +87,20 @@ int cli_opt(cli_args_t *a, const char *name, const char **value)
 int cli_unknown(cli_args_t *a)
 {
     return cli_usage_error(a->cmd, "unknown option '%.*s'", (int)a->name_len, a->name);
+}
+
+int cli_positionals(const cli_args_t *a, int n, const char *need)
+{
+    if (a->npos > n) {
+        const char *x = a->pos[n];
+        int after = a->dashdash_argi != 0 && a->pos_argi[n] > a->dashdash_argi && x[0] == '-';
+        return cli_usage_error(a->cmd, "unexpected argument '%s'%s", x,
+                               after ? " (after '--' every argument is a file name)" : "");
+    }
+    if (a->npos < n) {
+        return cli_usage_error(a->cmd, "%s", need);
+    }
+    return CLI_OK;
 }
 
 int cli_usage_error(const char *cmd, const char *fmt, ...)
@@ -332,6 +351,11 @@ void cli_outputs_begin(cli_outputs_t *o, const char *cmd)
     o->cmd = cmd;
 }
 
+static const char *shown_name(const char *path)
+{
+    return strcmp(path, "-") == 0 ? "standard output" : path;
+}
+
 FILE *cli_outputs_open(cli_outputs_t *o, const char *path)
 {
     if (o->n >= CLI_MAX_OUTPUTS) {
@@ -339,40 +363,25 @@ FILE *cli_outputs_open(cli_outputs_t *o, const char *path)
         return NULL;
     }
     if (atomic_file_open(&o->f[o->n], path) != 0) {
-        cli_input_error(o->cmd, "cannot create '%s': %s", path, strerror(errno));
+        cli_input_error(o->cmd, "cannot create '%s': %s", shown_name(path),
+                        atomic_file_strerror(errno));
         return NULL;
     }
+    o->path[o->n] = path;
     return o->f[o->n++].fp;
 }
 
 int cli_outputs_commit(cli_outputs_t *o)
 {
-    int i, pass, rc = CLI_OK;
-    for (i = 0; i < o->n; i++) { /* write errors first: nothing renamed if any */
-        if (o->f[i].fp != stdout && (fflush(o->f[i].fp) != 0 || ferror(o->f[i].fp))) {
-            cli_input_error(o->cmd, "cannot write '%s': %s", o->f[i].final_path,
-                            strerror(errno));
-            cli_outputs_abort(o);
-            return CLI_INPUT;
-        }
-    }
-    /* files first, standard output last: a reader of stdout that stops early
-       (| head) still finds the files complete */
-    for (pass = 0; pass < 2; pass++) {
-        for (i = 0; i < o->n; i++) {
-            const char *name = o->f[i].final_path != NULL ? o->f[i].final_path : "stdout";
-            char shown[512];
-            if ((o->f[i].fp == stdout) != (pass == 1)) {
-                continue;
-            }
-            snprintf(shown, sizeof shown, "%s", name);
-            if (atomic_file_commit(&o->f[i]) != 0 && rc == CLI_OK) {
-                rc = cli_input_error(o->cmd, "cannot write '%s': %s", shown, strerror(errno));
-            }
-        }
-    }
+    int failed = -1, n = o->n;
     o->n = 0;
-    return rc;
+    if (atomic_file_commit_all(o->f, n, &failed) != 0) {
+        int e = errno;
+        return cli_input_error(o->cmd, "cannot write '%s': %s",
+                               failed >= 0 ? shown_name(o->path[failed]) : "?",
+                               atomic_file_strerror(e));
+    }
+    return CLI_OK;
 }
 
 void cli_outputs_abort(cli_outputs_t *o)
@@ -382,6 +391,54 @@ void cli_outputs_abort(cli_outputs_t *o)
         atomic_file_abort(&o->f[i]);
     }
     o->n = 0;
+}
+
+int cli_output_check(const char *cmd, const char *path)
+{
+    if (path != NULL && atomic_file_check(path) != 0) {
+        cli_input_error(cmd, "cannot write '%s': %s", shown_name(path),
+                        atomic_file_strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+int cli_is_stdout(const char *path)
+{
+    return path != NULL && (strcmp(path, "-") == 0 || strcmp(path, "/dev/stdout") == 0 ||
+                            strcmp(path, "/dev/fd/1") == 0 ||
+                            strcmp(path, "/proc/self/fd/1") == 0);
+}
+
+/* ---- standard streams ---- */
+
+void cli_guard_std_fds(void)
+{
+    int fd;
+    for (fd = 0; fd <= 2; fd++) { /* open() takes the lowest free number */
+        if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+            int n = open("/dev/null", O_RDONLY);
+            if (n >= 0 && n != fd) {
+                close(n);
+            }
+        }
+    }
+}
+
+int cli_finish_stdout(const char *cmd, int rc)
+{
+    int e;
+    errno = 0;
+    if ((fflush(stdout) == 0 && !ferror(stdout)) || errno == EPIPE ||
+        atomic_file_stdout_gone()) {
+        return rc;
+    }
+    e = errno != 0 ? errno : atomic_file_stdout_errno();
+    if (rc == CLI_OK) {
+        cli_input_error(cmd, "cannot write standard output: %s", strerror(e));
+        rc = CLI_INPUT;
+    }
+    return rc;
 }
 
 void cli_warn_png_name(const char *cmd, const char *what, const char *path)

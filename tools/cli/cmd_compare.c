@@ -27,154 +27,162 @@ static void help(void)
           stdout);
 }
 
-int cmd_compare(int argc, char **argv)
-{
-    cli_args_t a;
-    cli_outputs_t out;
-    FILE *f;
-    track_opts_t o;
-    track_result_t r;
-    int32_t (*ref)[2] = NULL;
-    double (*truth)[2] = NULL;
-    uint32_t k, within[3] = {0, 0, 0}, hx, hy, ok = 0;
-    double t0, ncc_secs;
-    progress_t prog;
-    int rc;
-    char extra[512], title[256], sub[256];
+#define PCT(n) (ok ? 100.0 * (double)(n) / (double)ok : 0.0)
 
-    track_opts_init(&o);
-    cli_args_begin(&a, "compare", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            help();
-            return CLI_OK;
-        }
-        if (!track_opts_take(&a, &o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
+/* {"compare":{...}}: the members compare adds to track's JSON. */
+static cJSON *json_compare(uint32_t ok, const uint32_t within[3], double ssda_secs,
+                           double ncc_secs)
+{
+    cJSON *extra = cJSON_CreateObject();
+    cJSON *c = cJSON_AddObjectToObject(extra, "compare");
+    cJSON_AddStringToObject(c, "reference", "ncc");
+    cJSON_AddNumberToObject(c, "windows", ok);
+    cJSON_AddNumberToObject(c, "within_0", within[0]);
+    cJSON_AddNumberToObject(c, "within_1", within[1]);
+    cJSON_AddNumberToObject(c, "within_2", within[2]);
+    json_out_add_fixed(c, "within_0_pct", PCT(within[0]), 2);
+    json_out_add_fixed(c, "within_1_pct", PCT(within[1]), 2);
+    json_out_add_fixed(c, "within_2_pct", PCT(within[2]), 2);
+    json_out_add_fixed(c, "ssda_time_s", ssda_secs, 6);
+    json_out_add_fixed(c, "ncc_time_s", ncc_secs, 6);
+    return extra;
+}
+
+/* The NCC reference of every ok window and how the SSDA vectors compare. */
+typedef struct {
+    int32_t (*ref)[2];  /* grid.count entries: NCC vectors (ok windows) */
+    double (*truth)[2]; /* the same, for the overlay */
+    uint32_t within[3]; /* ok windows within 0, 1, 2 px of NCC */
+    uint32_t ok;
+    double secs;
+} ncc_cmp_t;
+
+/* Search every ok window again by exhaustive NCC over the same area. */
+static int ncc_reference(const track_result_t *r, int quiet, ncc_cmp_t *c)
+{
+    uint32_t k, hx = (r->grid.search_w - r->grid.win_w) / 2u;
+    uint32_t hy = (r->grid.search_h - r->grid.win_h) / 2u;
+    progress_t prog;
+    double t0;
+    c->ref = calloc(r->grid.count + 1u, sizeof *c->ref);
+    c->truth = calloc(r->grid.count + 1u, sizeof *c->truth);
+    if (c->ref == NULL || c->truth == NULL) {
+        return cli_input_error("compare", "out of memory");
     }
-    if (a.bad) {
-        return CLI_USAGE;
-    }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
-    }
-    cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
-    cli_outputs_begin(&out, a.cmd);
-    rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
-    if (rc != CLI_OK) {
-        return rc;
-    }
-    ref = calloc(r.grid.count + 1u, sizeof *ref);
-    truth = calloc(r.grid.count + 1u, sizeof *truth);
-    if (ref == NULL || truth == NULL) {
-        rc = cli_input_error(a.cmd, "out of memory");
-        goto done;
-    }
-    hx = (r.grid.search_w - r.grid.win_w) / 2u;
-    hy = (r.grid.search_h - r.grid.win_h) / 2u;
-    progress_begin(&prog, "NCC reference", r.grid.count, o.quiet);
+    progress_begin(&prog, "NCC reference", r->grid.count, quiet);
     t0 = progress_now();
-    for (k = 0; k < r.grid.count; k++) {
-        const ssda_track_vector_t *v = &r.vec[k];
+    for (k = 0; k < r->grid.count; k++) {
+        const ssda_track_vector_t *v = &r->vec[k];
         uint32_t bx, by, d;
         double score;
-        int32_t ddx, ddy;
         if (v->status != SSDA_TRACK_OK) {
             continue;
         }
-        if (ncc_search(&r.first, v->x - hx, v->y - hy, r.grid.search_w, r.grid.search_h,
-                       &r.second, v->x, v->y, r.grid.win_w, r.grid.win_h, &bx, &by,
+        if (ncc_search(&r->first, v->x - hx, v->y - hy, r->grid.search_w, r->grid.search_h,
+                       &r->second, v->x, v->y, r->grid.win_w, r->grid.win_h, &bx, &by,
                        &score) != 0) {
             progress_end(&prog);
-            rc = cli_input_error(a.cmd, "out of memory");
-            goto done;
+            return cli_input_error("compare", "out of memory");
         }
-        ref[k][0] = (int32_t)hx - (int32_t)bx;
-        ref[k][1] = (int32_t)hy - (int32_t)by;
-        truth[k][0] = ref[k][0];
-        truth[k][1] = ref[k][1];
-        ddx = abs(v->dx - ref[k][0]);
-        ddy = abs(v->dy - ref[k][1]);
-        d = (uint32_t)(ddx > ddy ? ddx : ddy);
-        ok++;
-        if (d <= 2u) {
-            within[2]++;
-            if (d <= 1u) {
-                within[1]++;
-                if (d == 0u) {
-                    within[0]++;
-                }
-            }
-        }
+        c->ref[k][0] = (int32_t)hx - (int32_t)bx;
+        c->ref[k][1] = (int32_t)hy - (int32_t)by;
+        c->truth[k][0] = c->ref[k][0];
+        c->truth[k][1] = c->ref[k][1];
+        d = (uint32_t)abs(v->dx - c->ref[k][0]);
+        d = d > (uint32_t)abs(v->dy - c->ref[k][1]) ? d : (uint32_t)abs(v->dy - c->ref[k][1]);
+        c->ok++;
+        c->within[2] += d <= 2u;
+        c->within[1] += d <= 1u;
+        c->within[0] += d == 0u;
         progress_update(&prog, k + 1u);
     }
-    ncc_secs = progress_now() - t0;
+    c->secs = progress_now() - t0;
     progress_end(&prog);
+    return CLI_OK;
+}
 
-#define PCT(n) (ok ? 100.0 * (double)(n) / (double)ok : 0.0)
-    snprintf(extra, sizeof extra,
-             "\"compare\":{\"reference\":\"ncc\",\"windows\":%u,\"within_0\":%u,"
-             "\"within_1\":%u,\"within_2\":%u,\"within_0_pct\":%.2f,\"within_1_pct\":%.2f,"
-             "\"within_2_pct\":%.2f,\"ssda_time_s\":%.6f,\"ncc_time_s\":%.6f}",
-             ok, within[0], within[1], within[2], PCT(within[0]), PCT(within[1]),
-             PCT(within[2]), r.secs, ncc_secs);
-    if (o.json_path != NULL) {
-        if ((f = cli_outputs_open(&out, o.json_path)) == NULL) {
-            rc = CLI_INPUT;
-            goto done;
-        }
-        track_write_json(f, &r, &o, (const int32_t(*)[2])ref, extra);
+/* --json and --overlay, all or nothing. */
+static int write_outputs(const track_opts_t *o, const char *first, const char *second,
+                         const track_result_t *r, const ncc_cmp_t *c)
+{
+    cli_outputs_t out;
+    FILE *f;
+    char title[256], sub[256];
+    uint32_t ok = c->ok;
+    int rc = CLI_OK;
+    cli_outputs_begin(&out, "compare");
+    if (o->json_path != NULL &&
+        ((f = cli_outputs_open(&out, o->json_path)) == NULL ||
+         track_write_json("compare", f, r, o, (const int32_t(*)[2])c->ref,
+                          json_compare(ok, c->within, r->secs, c->secs)) != 0)) {
+        rc = CLI_INPUT;
     }
-    if (o.overlay_path != NULL) {
-        snprintf(title, sizeof title, "ssda compare  %s -> %s", cli_basename(a.pos[0]),
-                 cli_basename(a.pos[1]));
+    if (rc == CLI_OK && o->overlay_path != NULL) {
+        snprintf(title, sizeof title, "ssda compare  %s -> %s", cli_basename(first),
+                 cli_basename(second));
         snprintf(sub, sizeof sub,
                  "SSDA vs exhaustive NCC on %u windows: within 0 px %.0f %%, 1 px %.0f %%, "
                  "2 px %.0f %%",
-                 ok, PCT(within[0]), PCT(within[1]), PCT(within[2]));
-        if ((f = cli_outputs_open(&out, o.overlay_path)) == NULL ||
-            track_write_overlay(a.cmd, f, o.overlay_path, &r, &o, (const double(*)[2])truth,
-                                "NCC reference", title, sub) != 0) {
+                 ok, PCT(c->within[0]), PCT(c->within[1]), PCT(c->within[2]));
+        if ((f = cli_outputs_open(&out, o->overlay_path)) == NULL ||
+            track_write_overlay("compare", f, o->overlay_path, r, o,
+                                (const double(*)[2])c->truth, "NCC reference", title, sub) != 0) {
             rc = CLI_INPUT;
-            goto done;
         }
     }
-    if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
-        goto done;
-    }
-    if (!(o.json_path != NULL && strcmp(o.json_path, "-") == 0) &&
-        !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
-        uint64_t brute = track_brute_ops(&r);
-        printf("SSDA vs exhaustive normalised cross-correlation on %u ok windows "
-               "(of %u; window %ux%u, search %ux%u):\n",
-               ok, r.grid.count, r.grid.win_w, r.grid.win_h, r.grid.search_w,
-               r.grid.search_h);
-        printf("  within 0 px: %4u  %5.1f %%\n", within[0], PCT(within[0]));
-        printf("  within 1 px: %4u  %5.1f %%\n", within[1], PCT(within[1]));
-        printf("  within 2 px: %4u  %5.1f %%\n", within[2], PCT(within[2]));
-        printf("time: SSDA %.2f ms (%.2f %% of brute-force pixel ops), NCC %.2f ms",
-               1e3 * r.secs, brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
-               1e3 * ncc_secs);
-        if (r.secs > 0.0 && ok > 0) {
-            printf(" (%.0fx the SSDA time)", ncc_secs / r.secs);
-        }
-        printf("\n");
-        if (o.json_path != NULL) { /* as track reports its files */
-            printf("wrote:   %s\n", o.json_path);
-        }
-        if (o.overlay_path != NULL) {
-            printf("wrote:   %s\n", o.overlay_path);
-        }
-    }
-#undef PCT
-done:
+    rc = rc == CLI_OK ? cli_outputs_commit(&out) : rc;
     cli_outputs_abort(&out);
-    free(ref);
-    free(truth);
+    return rc;
+}
+
+static void print_summary(const track_opts_t *o, const track_result_t *r, const ncc_cmp_t *c)
+{
+    uint64_t brute = track_brute_ops(r);
+    uint32_t ok = c->ok;
+    printf("SSDA vs exhaustive normalised cross-correlation on %u ok windows "
+           "(of %u; window %ux%u, search %ux%u):\n",
+           ok, r->grid.count, r->grid.win_w, r->grid.win_h, r->grid.search_w, r->grid.search_h);
+    printf("  within 0 px: %4u  %5.1f %%\n", c->within[0], PCT(c->within[0]));
+    printf("  within 1 px: %4u  %5.1f %%\n", c->within[1], PCT(c->within[1]));
+    printf("  within 2 px: %4u  %5.1f %%\n", c->within[2], PCT(c->within[2]));
+    printf("time: SSDA %.2f ms (%.2f %% of brute-force pixel ops), NCC %.2f ms",
+           1e3 * r->secs, brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0,
+           1e3 * c->secs);
+    if (r->secs > 0.0 && ok > 0) {
+        printf(" (%.0fx the SSDA time)", c->secs / r->secs);
+    }
+    printf("\n");
+    if (o->json_path != NULL) { /* as track reports its files */
+        printf("wrote:   %s\n", o->json_path);
+    }
+    if (o->overlay_path != NULL) {
+        printf("wrote:   %s\n", o->overlay_path);
+    }
+}
+
+int cmd_compare(int argc, char **argv)
+{
+    track_opts_t o;
+    track_result_t r;
+    ncc_cmp_t c;
+    const char *first, *second;
+    int rc = track_parse_args("compare", argc, argv, help, &o, &first, &second);
+    if (rc != CLI_OK) {
+        return rc < 0 ? CLI_OK : rc; /* -1: --help */
+    }
+    if ((rc = track_run("compare", first, second, &o, &r)) != CLI_OK) {
+        return rc;
+    }
+    memset(&c, 0, sizeof c);
+    rc = ncc_reference(&r, o.quiet, &c);
+    if (rc == CLI_OK) {
+        rc = write_outputs(&o, first, second, &r, &c);
+    }
+    if (rc == CLI_OK && !cli_is_stdout(o.json_path) && !cli_is_stdout(o.overlay_path)) {
+        print_summary(&o, &r, &c);
+    }
+    free(c.ref);
+    free(c.truth);
     track_result_free(&r);
     return rc;
 }

@@ -45,99 +45,96 @@ static uint32_t data_max(const gray_image_t *img)
     return m;
 }
 
-int cmd_grad(int argc, char **argv)
+typedef struct {
+    const char *in_path, *out_path;
+    uint32_t bits;  /* 0: the input's */
+    uint32_t shift;
+    int have_shift, crop;
+} grad_opts_t;
+
+/* Parse argv. Returns CLI_OK, CLI_USAGE, or -1 after --help. */
+static int parse_args(int argc, char **argv, grad_opts_t *o)
 {
     cli_args_t a;
     const char *v;
-    uint32_t bits = 0, shift = 0, sat = 0, in_max, up = 0, x, y;
-    int have_shift = 0, crop = 0, rc = CLI_INPUT, e;
-    gray_image_t in = {0}, out = {0};
-    ssda_view_t src;
-    ssda_grad_out_t go;
-    char err[512];
-
+    memset(o, 0, sizeof *o);
     cli_args_begin(&a, "grad", argc, argv);
-    while (cli_next(&a)) {
+    while (cli_next(&a) && !a.bad) {
         if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
             fputs(help, stdout);
-            return CLI_OK;
+            return -1;
         } else if (cli_opt(&a, "--bits", &v)) {
-            if (v != NULL && (cli_parse_u32(v, 8, 16, &bits) != 0 || (bits != 8 && bits != 16))) {
+            if (v != NULL &&
+                (cli_parse_u32(v, 8, 16, &o->bits) != 0 || (o->bits != 8 && o->bits != 16))) {
                 return cli_usage_error(a.cmd, "bad --bits '%s' (8 or 16)", v);
             }
         } else if (cli_opt(&a, "--shift", &v)) {
-            if (v != NULL && cli_parse_u32(v, 0, 31, &shift) != 0) {
+            if (v != NULL && cli_parse_u32(v, 0, 31, &o->shift) != 0) {
                 return cli_usage_error(a.cmd, "bad --shift '%s' (0..31)", v);
             }
-            have_shift = 1;
+            o->have_shift = 1;
         } else if (cli_flag(&a, "--crop")) {
-            crop = 1;
+            o->crop = 1;
         } else if (cli_flag(&a, "--quiet") || cli_flag(&a, "-q")) {
             /* nothing long-running */
         } else {
             return cli_unknown(&a);
         }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
     }
-    if (a.bad) {
+    if (a.bad || cli_positionals(&a, 2, "need IN.png and OUT.png") != CLI_OK) {
         return CLI_USAGE;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need IN.png and OUT.png");
+    o->in_path = a.pos[0];
+    o->out_path = a.pos[1];
+    return CLI_OK;
+}
+
+/* The default scale (no --shift): from the data's own maximum, not its
+   depth, so that 12-bit counts in a 16-bit PNG are not shifted as if they
+   reached 65535 (near black): E' >> shift with the smallest shift that fits,
+   or E' << *up when the depth is kept and even shift 0 leaves room. */
+static void default_scale(uint32_t in_max, uint32_t bits, uint32_t in_bits, uint32_t *shift,
+                          uint32_t *up)
+{
+    uint32_t out_max = bits == 16 ? 65535u : 255u;
+    uint64_t top = 4u * (uint64_t)in_max;
+    while ((top >> *shift) > out_max) {
+        (*shift)++;
     }
-    cli_warn_png_name(a.cmd, "output", a.pos[1]);
-    if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &in) != 0) {
-        return CLI_INPUT;
+    /* scale up only data that uses part of its own depth; 8 -> 16 keeps E' as is */
+    while (*shift == 0 && bits == in_bits && top > 0 && (top << (*up + 1u)) <= out_max) {
+        (*up)++;
     }
-    if (in.width < 3 || in.height < 3) {
-        cli_input_error(a.cmd, "'%s' is %u x %u; the operator needs at least 3 x 3", a.pos[0],
-                        in.width, in.height);
-        goto done;
+}
+
+/* The operator of in into out (allocated here, same size with a border of
+   0, or cropped), scaled by >> shift or << up. *sat: saturated pixels. */
+static int apply(const grad_opts_t *o, const gray_image_t *in, uint32_t bits, uint32_t shift,
+                 uint32_t up, gray_image_t *out, uint32_t *sat)
+{
+    ssda_view_t src;
+    ssda_grad_out_t go;
+    uint32_t x, y;
+    size_t off;
+    int e;
+    if (gray_image_alloc(out, o->crop ? in->width - 2 : in->width,
+                         o->crop ? in->height - 2 : in->height, (int)bits) != 0) {
+        return cli_input_error("grad", "out of memory");
     }
-    if (bits == 0) {
-        bits = in.bits;
-    }
-    in_max = data_max(&in);
+    off = o->crop ? 0u : out->stride + bits / 8u; /* pixel (1, 1) of a same-size image */
     go.format = bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
-    if (!have_shift) {
-        /* From the data's own maximum, not its depth: 12-bit counts in a 16-bit
-           PNG would otherwise be shifted as if they reached 65535 (near black). */
-        uint32_t out_max = bits == 16 ? 65535u : 255u;
-        uint64_t top = 4u * (uint64_t)in_max;
-        while ((top >> shift) > out_max) {
-            shift++;
-        }
-        /* scale up only data that uses part of its own depth; 8 -> 16 keeps E' as is */
-        while (shift == 0 && bits == in.bits && top > 0 && (top << (up + 1u)) <= out_max) {
-            up++;
-        }
-    }
     go.shift = (uint8_t)shift;
-    if (gray_image_alloc(&out, crop ? in.width - 2 : in.width, crop ? in.height - 2 : in.height,
-                         (int)bits) != 0) {
-        cli_input_error(a.cmd, "out of memory");
-        goto done;
-    }
-    go.stride = out.stride;
-    if (crop) {
-        go.data = out.pixels;
-        go.size = (size_t)out.stride * out.height;
-    } else { /* pixel (1, 1) of a same-size image */
-        size_t off = out.stride + bits / 8u;
-        go.data = (uint8_t *)out.pixels + off;
-        go.size = (size_t)out.stride * out.height - off;
-    }
-    gray_image_view(&in, &src);
-    e = ssda_grad(&src, &go, &sat);
+    go.stride = out->stride;
+    go.data = (uint8_t *)out->pixels + off;
+    go.size = (size_t)out->stride * out->height - off;
+    gray_image_view(in, &src);
+    e = ssda_grad(&src, &go, sat);
     if (e != SSDA_OK) {
-        cli_input_error(a.cmd, "operator failed: %s", ssda_strerror(e));
-        goto done;
+        return cli_input_error("grad", "operator failed: %s", ssda_strerror(e));
     }
-    for (y = 0; up > 0 && y < out.height; y++) { /* E' x 2^up: cannot overflow (see above) */
-        uint8_t *row = (uint8_t *)out.pixels + (size_t)y * out.stride;
-        for (x = 0; x < out.width; x++) {
+    for (y = 0; up > 0 && y < out->height; y++) { /* E' x 2^up: cannot overflow (above) */
+        uint8_t *row = (uint8_t *)out->pixels + (size_t)y * out->stride;
+        for (x = 0; x < out->width; x++) {
             if (bits == 16) {
                 ((uint16_t *)(void *)row)[x] = (uint16_t)(((uint16_t *)(void *)row)[x] << up);
             } else {
@@ -145,21 +142,52 @@ int cmd_grad(int argc, char **argv)
             }
         }
     }
-    if (png_write_gray(a.pos[1], &out, err, sizeof err) != 0) {
-        cli_input_error(a.cmd, "%s", err);
+    return CLI_OK;
+}
+
+int cmd_grad(int argc, char **argv)
+{
+    grad_opts_t o;
+    uint32_t bits, shift, sat = 0, in_max, up = 0;
+    gray_image_t in = {0}, out = {0};
+    char err[512];
+    int rc = parse_args(argc, argv, &o);
+    if (rc != CLI_OK) {
+        return rc < 0 ? CLI_OK : rc; /* -1: --help */
+    }
+    cli_warn_png_name("grad", "output", o.out_path);
+    if (cli_output_check("grad", o.out_path) != 0 ||
+        cli_load_png("grad", o.in_path, PNG_GRAY_NATIVE, &in) != 0) {
+        return CLI_INPUT;
+    }
+    if (in.width < 3 || in.height < 3) {
+        rc = cli_input_error("grad", "'%s' is %u x %u; the operator needs at least 3 x 3",
+                             o.in_path, in.width, in.height);
+        goto done;
+    }
+    bits = o.bits != 0 ? o.bits : in.bits;
+    in_max = data_max(&in);
+    shift = o.shift;
+    if (!o.have_shift) {
+        default_scale(in_max, bits, in.bits, &shift, &up);
+    }
+    if ((rc = apply(&o, &in, bits, shift, up, &out, &sat)) != CLI_OK) {
+        goto done;
+    }
+    if (png_write_gray(o.out_path, &out, err, sizeof err) != 0) {
+        rc = cli_input_error("grad", "%s", err);
         goto done;
     }
     if (sat > 0) {
         fprintf(stderr, "ssda grad: note: %u pixels saturated at %u (E' >> %u); use a larger "
                         "--shift or --bits 16 to keep them\n",
-                sat, gray_image_max(&out), (unsigned)go.shift);
+                sat, gray_image_max(&out), shift);
     }
-    if (strcmp(a.pos[1], "-") != 0) {
-        printf("wrote %s: %u x %u, %u-bit, E' %s %u (input maximum %u)%s\n", a.pos[1],
+    if (!cli_is_stdout(o.out_path)) {
+        printf("wrote %s: %u x %u, %u-bit, E' %s %u (input maximum %u)%s\n", o.out_path,
                out.width, out.height, bits, up ? "x" : ">>", up ? 1u << up : shift, in_max,
-               crop ? " (cropped)" : ", 1-pixel border 0");
+               o.crop ? " (cropped)" : ", 1-pixel border 0");
     }
-    rc = CLI_OK;
 done:
     gray_image_free(&in);
     gray_image_free(&out);

@@ -1,5 +1,6 @@
 /* cmd_match.c - `ssda match SEARCH.png WINDOW.png`: one SSDA template search. */
 #include "cli.h"
+#include "json_out.h"
 #include "progress.h"
 
 #include <stdlib.h>
@@ -35,156 +36,221 @@ static const char help[] =
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
 
-int cmd_match(int argc, char **argv)
+/* The options as parsed. */
+typedef struct {
+    ssda_match_config_t cfg;
+    const char *search_path, *window_path;
+    int json, have_predict, scan_given;
+    int32_t px, py;
+} match_opts_t;
+
+/* A search as run: the images, the result, its cost. */
+typedef struct {
+    gray_image_t s_img, w_img;
+    ssda_match_result_t res;
+    double secs;
+} match_job_t;
+
+/* The current option into o: 1 taken (a->bad set on a bad value, said), 0
+   unknown. */
+static int take_option(cli_args_t *a, match_opts_t *o)
+{
+    const char *v;
+    uint32_t u;
+    if (cli_flag(a, "--json")) {
+        o->json = 1;
+    } else if (cli_flag(a, "--bounds")) {
+        o->cfg.flags |= SSDA_MATCH_BOUNDS;
+    } else if (cli_flag(a, "--no-bounds")) {
+        o->cfg.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
+    } else if (cli_flag(a, "--quiet")) {
+        /* one search: nothing to silence */
+    } else if (cli_opt(a, "--threshold", &v)) {
+        if (v != NULL && cli_parse_threshold(v, &o->cfg) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --threshold '%s' (auto, none, fixed:T, "
+                                     "ramp:LAMBDA[:K], auto-ramp[:K])", v);
+        }
+    } else if (cli_opt(a, "--scan", &v)) {
+        if (v != NULL && cli_parse_scan(v, &o->cfg) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --scan '%s' (raster, predict, coarse)", v);
+        }
+        o->scan_given = 1;
+    } else if (cli_opt(a, "--order", &v)) {
+        if (v != NULL && cli_parse_order(v, &o->cfg) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
+        }
+    } else if (cli_opt(a, "--predict", &v)) {
+        if (v != NULL && cli_parse_pair(v, -65535, 65535, &o->px, &o->py) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --predict '%s' (want X,Y)", v);
+        }
+        o->have_predict = 1;
+    } else if (cli_opt(a, "--coarse-step", &v)) {
+        if (v != NULL && cli_parse_u32(v, 1, 65535, &u) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --coarse-step '%s' (1..65535)", v);
+        }
+        o->cfg.coarse_step = v != NULL && !a->bad ? (uint16_t)u : o->cfg.coarse_step;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* After the loop: the two files, and --predict with --scan. */
+static int check_args(const cli_args_t *a, match_opts_t *o)
+{
+    if (a->npos > 2 && o->json && a->pos[2][0] != '-') {
+        /* often "--json FILE" as track and compare take it */
+        return cli_usage_error(a->cmd, "unexpected argument '%s' (match --json prints to "
+                               "stdout; redirect it: --json > FILE)", a->pos[2]);
+    }
+    if (cli_positionals(a, 2, "need SEARCH.png and WINDOW.png") != CLI_OK) {
+        return CLI_USAGE;
+    }
+    o->search_path = a->pos[0];
+    o->window_path = a->pos[1];
+    if (o->have_predict) {
+        if (o->scan_given && o->cfg.scan != SSDA_SCAN_PREDICT) {
+            return cli_usage_error(a->cmd, "--predict needs --scan predict");
+        }
+        o->cfg.scan = SSDA_SCAN_PREDICT;
+        o->cfg.predict_x = o->px;
+        o->cfg.predict_y = o->py;
+    } else if (o->cfg.scan == SSDA_SCAN_PREDICT) {
+        return cli_usage_error(a->cmd, "--scan predict needs --predict X,Y");
+    }
+    return CLI_OK;
+}
+
+/* Parse argv. Returns CLI_OK, CLI_USAGE, or -1 after --help. */
+static int parse_args(int argc, char **argv, match_opts_t *o)
 {
     cli_args_t a;
-    ssda_match_config_t cfg;
-    ssda_match_result_t res;
-    ssda_view_t area, win;
-    gray_image_t s_img = {0}, w_img = {0};
-    const char *v;
-    int json = 0, have_predict = 0, scan_given = 0, rc;
-    int32_t px = 0, py = 0;
-    uint32_t u;
-    double t0, secs;
-    void *work = NULL;
-    char tname[64];
-    uint64_t npos, brute;
-
-    memset(&cfg, 0, sizeof cfg);
-    cfg.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
+    memset(o, 0, sizeof *o);
+    o->cfg.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
     cli_args_begin(&a, "match", argc, argv);
     while (cli_next(&a)) {
         if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
             fputs(help, stdout);
-            return CLI_OK;
-        } else if (cli_flag(&a, "--json")) {
-            json = 1;
-        } else if (cli_flag(&a, "--bounds")) {
-            cfg.flags |= SSDA_MATCH_BOUNDS;
-        } else if (cli_flag(&a, "--no-bounds")) {
-            cfg.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
-        } else if (cli_flag(&a, "--quiet")) {
-            /* one search: nothing to silence */
-        } else if (cli_opt(&a, "--threshold", &v)) {
-            if (v != NULL && cli_parse_threshold(v, &cfg) != 0) {
-                return cli_usage_error(a.cmd, "bad --threshold '%s' (auto, none, fixed:T, "
-                                       "ramp:LAMBDA[:K], auto-ramp[:K])", v);
-            }
-        } else if (cli_opt(&a, "--scan", &v)) {
-            if (v != NULL && cli_parse_scan(v, &cfg) != 0) {
-                return cli_usage_error(a.cmd, "bad --scan '%s' (raster, predict, coarse)", v);
-            }
-            scan_given = 1;
-        } else if (cli_opt(&a, "--order", &v)) {
-            if (v != NULL && cli_parse_order(v, &cfg) != 0) {
-                return cli_usage_error(a.cmd, "bad --order '%s' (rows, spread)", v);
-            }
-        } else if (cli_opt(&a, "--predict", &v)) {
-            if (v != NULL && cli_parse_pair(v, -65535, 65535, &px, &py) != 0) {
-                return cli_usage_error(a.cmd, "bad --predict '%s' (want X,Y)", v);
-            }
-            have_predict = 1;
-        } else if (cli_opt(&a, "--coarse-step", &v)) {
-            if (v != NULL && cli_parse_u32(v, 1, 65535, &u) != 0) {
-                return cli_usage_error(a.cmd, "bad --coarse-step '%s' (1..65535)", v);
-            }
-            cfg.coarse_step = (uint16_t)u;
-        } else {
+            return -1;
+        }
+        if (!take_option(&a, o)) {
             return cli_unknown(&a);
         }
         if (a.bad) {
             return CLI_USAGE;
         }
     }
-    if (a.bad) {
-        return CLI_USAGE;
-    }
-    if (a.npos > 2) {
-        /* often "--json FILE" as track and compare take it */
-        return cli_usage_error(a.cmd, "unexpected argument '%s'%s", a.pos[2],
-                               json ? " (match --json prints to stdout; redirect it: "
-                                      "--json > FILE)"
-                                    : "");
-    }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need SEARCH.png and WINDOW.png");
-    }
-    if (have_predict) {
-        if (scan_given && cfg.scan != SSDA_SCAN_PREDICT) {
-            return cli_usage_error(a.cmd, "--predict needs --scan predict");
-        }
-        cfg.scan = SSDA_SCAN_PREDICT;
-        cfg.predict_x = px;
-        cfg.predict_y = py;
-    } else if (cfg.scan == SSDA_SCAN_PREDICT) {
-        return cli_usage_error(a.cmd, "--scan predict needs --predict X,Y");
-    }
+    return a.bad ? CLI_USAGE : check_args(&a, o);
+}
 
-    if (cli_load_png_pair(a.cmd, a.pos[0], a.pos[1], &s_img, &w_img) != 0) {
+/* Load both images and search. */
+static int run_match(match_opts_t *o, match_job_t *j)
+{
+    ssda_view_t area, win;
+    void *work = NULL;
+    double t0;
+    int e;
+    if (cli_load_png_pair("match", o->search_path, o->window_path, &j->s_img, &j->w_img) != 0) {
         return CLI_INPUT;
     }
-    rc = CLI_INPUT;
-    if (w_img.width > s_img.width || w_img.height > s_img.height) {
-        cli_input_error(a.cmd, "window '%s' (%u x %u) is larger than search image '%s' (%u x %u)",
-                        a.pos[1], w_img.width, w_img.height, a.pos[0], s_img.width,
-                        s_img.height);
-        goto done;
+    if (j->w_img.width > j->s_img.width || j->w_img.height > j->s_img.height) {
+        return cli_input_error("match", "window '%s' (%u x %u) is larger than search image '%s' "
+                               "(%u x %u)", o->window_path, j->w_img.width, j->w_img.height,
+                               o->search_path, j->s_img.width, j->s_img.height);
     }
-    if (gray_image_view(&s_img, &area) != SSDA_OK || gray_image_view(&w_img, &win) != SSDA_OK) {
-        cli_input_error(a.cmd, "internal error: bad image view");
-        goto done;
+    if (gray_image_view(&j->s_img, &area) != SSDA_OK ||
+        gray_image_view(&j->w_img, &win) != SSDA_OK) {
+        return cli_input_error("match", "internal error: bad image view");
     }
-    if (cfg.flags & SSDA_MATCH_BOUNDS) {
-        cfg.work_size = SSDA_MATCH_WORK_SIZE(s_img.width, s_img.height, w_img.width,
-                                             w_img.height);
-        work = malloc(cfg.work_size);
-        if (work == NULL) {
-            cli_input_error(a.cmd, "out of memory for the bounds buffer (%zu bytes)",
-                            cfg.work_size);
-            goto done;
+    if (o->cfg.flags & SSDA_MATCH_BOUNDS) {
+        o->cfg.work_size = SSDA_MATCH_WORK_SIZE(j->s_img.width, j->s_img.height, j->w_img.width,
+                                                j->w_img.height);
+        if ((work = malloc(o->cfg.work_size)) == NULL) {
+            return cli_input_error("match", "out of memory for the bounds buffer (%zu bytes)",
+                                   o->cfg.work_size);
         }
-        cfg.work = work;
+        o->cfg.work = work;
     }
     t0 = progress_now();
-    rc = ssda_match(&area, &win, &cfg, &res);
-    secs = progress_now() - t0;
-    if (rc != SSDA_OK) {
-        cli_input_error(a.cmd, "search failed: %s", ssda_strerror(rc));
-        rc = CLI_INPUT;
-        goto done;
-    }
-    rc = CLI_OK;
-    cli_threshold_name(&cfg, tname, sizeof tname);
-    npos = (uint64_t)(s_img.width - w_img.width + 1) * (s_img.height - w_img.height + 1);
-    brute = npos * w_img.width * w_img.height;
-    if (json) {
-        printf("{\"x\":%u,\"y\":%u,\"sad\":%llu,\"exact\":%s,\"positions\":%u,"
-               "\"completed\":%u,\"pixel_ops\":%llu,\"brute_force_ops\":%llu,"
-               "\"search_w\":%u,\"search_h\":%u,\"window_w\":%u,\"window_h\":%u,"
-               "\"bits\":%u,\"threshold\":\"%s\",\"scan\":\"%s\",\"time_s\":%.6f}\n",
-               res.x, res.y, (unsigned long long)res.sad, res.exact ? "true" : "false",
-               res.positions, res.completed, (unsigned long long)res.pixel_ops,
-               (unsigned long long)brute, s_img.width, s_img.height, w_img.width,
-               w_img.height, s_img.bits, tname, cli_scan_name(&cfg), secs);
-    } else {
-        printf("best match: x=%u y=%u  (top-left of %s in %s)\n", res.x, res.y, a.pos[1],
-               a.pos[0]);
-        printf("SAD:        %llu  (%s)\n", (unsigned long long)res.sad,
-               res.exact ? "exact: the true minimum"
-                         : "not guaranteed to be the true minimum with this mode");
-        printf("work:       %llu pixel ops = %.2f %% of brute force (%llu); %u of %llu "
-               "positions visited, %u summed in full\n",
-               (unsigned long long)res.pixel_ops,
-               brute > 0 ? 100.0 * (double)res.pixel_ops / (double)brute : 0.0,
-               (unsigned long long)brute, res.positions, (unsigned long long)npos,
-               res.completed);
-        printf("mode:       threshold %s, scan %s, %u-bit, %.3f ms\n", tname,
-               cli_scan_name(&cfg), s_img.bits, secs * 1e3);
-    }
-done:
+    e = ssda_match(&area, &win, &o->cfg, &j->res);
+    j->secs = progress_now() - t0;
     free(work);
-    gray_image_free(&s_img);
-    gray_image_free(&w_img);
+    o->cfg.work = NULL;
+    if (e != SSDA_OK) {
+        return cli_input_error("match", "search failed: %s", ssda_strerror(e));
+    }
+    return CLI_OK;
+}
+
+/* The --json object, one line on stdout (docs/cli.md). */
+static int print_json(const match_opts_t *o, const match_job_t *j, uint64_t brute,
+                      const char *tname)
+{
+    cJSON *doc = json_out_object();
+    int rc;
+    cJSON_AddNumberToObject(doc, "x", j->res.x);
+    cJSON_AddNumberToObject(doc, "y", j->res.y);
+    json_out_add_u64(doc, "sad", j->res.sad);
+    cJSON_AddBoolToObject(doc, "exact", j->res.exact);
+    json_out_add_u64(doc, "positions", j->res.positions);
+    json_out_add_u64(doc, "completed", j->res.completed);
+    json_out_add_u64(doc, "pixel_ops", j->res.pixel_ops);
+    json_out_add_u64(doc, "brute_force_ops", brute);
+    cJSON_AddNumberToObject(doc, "search_w", j->s_img.width);
+    cJSON_AddNumberToObject(doc, "search_h", j->s_img.height);
+    cJSON_AddNumberToObject(doc, "window_w", j->w_img.width);
+    cJSON_AddNumberToObject(doc, "window_h", j->w_img.height);
+    cJSON_AddNumberToObject(doc, "bits", j->s_img.bits);
+    cJSON_AddStringToObject(doc, "threshold", tname);
+    cJSON_AddStringToObject(doc, "scan", cli_scan_name(&o->cfg));
+    json_out_add_fixed(doc, "time_s", j->secs, 6);
+    rc = json_out_print(stdout, doc, NULL);
+    cJSON_Delete(doc);
+    return rc == 0 ? CLI_OK : cli_input_error("match", "out of memory for the JSON");
+}
+
+static void print_text(const match_opts_t *o, const match_job_t *j, uint64_t npos,
+                       uint64_t brute, const char *tname)
+{
+    const ssda_match_result_t *res = &j->res;
+    printf("best match: x=%u y=%u  (top-left of %s in %s)\n", res->x, res->y, o->window_path,
+           o->search_path);
+    printf("SAD:        %llu  (%s)\n", (unsigned long long)res->sad,
+           res->exact ? "exact: the true minimum"
+                      : "not guaranteed to be the true minimum with this mode");
+    printf("work:       %llu pixel ops = %.2f %% of brute force (%llu); %u of %llu "
+           "positions visited, %u summed in full\n",
+           (unsigned long long)res->pixel_ops,
+           brute > 0 ? 100.0 * (double)res->pixel_ops / (double)brute : 0.0,
+           (unsigned long long)brute, res->positions, (unsigned long long)npos, res->completed);
+    printf("mode:       threshold %s, scan %s, %u-bit, %.3f ms\n", tname, cli_scan_name(&o->cfg),
+           j->s_img.bits, j->secs * 1e3);
+}
+
+int cmd_match(int argc, char **argv)
+{
+    match_opts_t o;
+    match_job_t j;
+    char tname[64];
+    uint64_t npos, brute;
+    int rc = parse_args(argc, argv, &o);
+    if (rc != CLI_OK) {
+        return rc < 0 ? CLI_OK : rc; /* -1: --help */
+    }
+    memset(&j, 0, sizeof j);
+    rc = run_match(&o, &j);
+    if (rc == CLI_OK) {
+        cli_threshold_name(&o.cfg, tname, sizeof tname);
+        npos = (uint64_t)(j.s_img.width - j.w_img.width + 1) *
+               (j.s_img.height - j.w_img.height + 1);
+        brute = npos * j.w_img.width * j.w_img.height;
+        if (o.json) {
+            rc = print_json(&o, &j, brute, tname);
+        } else {
+            print_text(&o, &j, npos, brute, tname);
+        }
+    }
+    gray_image_free(&j.s_img);
+    gray_image_free(&j.w_img);
     return rc;
 }

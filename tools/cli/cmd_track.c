@@ -52,109 +52,93 @@ static int32_t median_component(const track_result_t *r, int axis)
     return m;
 }
 
-int cmd_track(int argc, char **argv)
+/* --json and --overlay, all or nothing. */
+static int write_outputs(const track_opts_t *o, const char *first, const char *second,
+                         const track_result_t *r)
 {
-    cli_args_t a;
     cli_outputs_t out;
     FILE *f;
-    track_opts_t o;
-    track_result_t r;
-    int rc, json_stdout;
-    uint64_t brute;
     char title[256], sub[256], tname[64];
-
-    track_opts_init(&o);
-    cli_args_begin(&a, "track", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            help();
-            return CLI_OK;
-        }
-        if (!track_opts_take(&a, &o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
+    uint64_t brute = track_brute_ops(r);
+    int rc = CLI_OK;
+    cli_outputs_begin(&out, "track");
+    if (o->json_path != NULL && ((f = cli_outputs_open(&out, o->json_path)) == NULL ||
+                                 track_write_json("track", f, r, o, NULL, NULL) != 0)) {
+        rc = CLI_INPUT;
     }
-    if (a.bad) {
-        return CLI_USAGE;
-    }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need FIRST.png and SECOND.png");
-    }
-    if (o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0 && o.json_path != NULL &&
-        strcmp(o.json_path, "-") == 0) {
-        return cli_usage_error(a.cmd, "--json and --overlay cannot both go to stdout");
-    }
-    cli_warn_png_name(a.cmd, "--overlay", o.overlay_path);
-    rc = track_run(a.cmd, a.pos[0], a.pos[1], &o, &r);
-    if (rc != CLI_OK) {
-        return rc;
-    }
-    json_stdout = o.json_path != NULL && strcmp(o.json_path, "-") == 0;
-    brute = track_brute_ops(&r);
-    cli_threshold_name(&r.cfg.match, tname, sizeof tname);
-    cli_outputs_begin(&out, a.cmd);
-    if (o.json_path != NULL) {
-        if ((f = cli_outputs_open(&out, o.json_path)) == NULL) {
-            rc = CLI_INPUT;
-            goto done;
-        }
-        track_write_json(f, &r, &o, NULL, NULL);
-    }
-    if (o.overlay_path != NULL) {
-        snprintf(title, sizeof title, "ssda track  %s -> %s", cli_basename(a.pos[0]),
-                 cli_basename(a.pos[1]));
+    if (rc == CLI_OK && o->overlay_path != NULL) {
+        cli_threshold_name(&r->cfg.match, tname, sizeof tname);
+        snprintf(title, sizeof title, "ssda track  %s -> %s", cli_basename(first),
+                 cli_basename(second));
         snprintf(sub, sizeof sub,
                  "window %ux%u, search %ux%u, step %u, threshold %s%s:  %u ok, "
                  "median motion (%+d, %+d) px,  work %.1f %% of brute force",
-                 r.grid.win_w, r.grid.win_h, r.grid.search_w, r.grid.search_h, r.grid.step_x,
-                 tname, o.grad ? ", grad" : "", r.stats.ok, (int)median_component(&r, 0),
-                 (int)median_component(&r, 1),
-                 brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0);
-        if ((f = cli_outputs_open(&out, o.overlay_path)) == NULL ||
-            track_write_overlay(a.cmd, f, o.overlay_path, &r, &o, NULL, NULL, title, sub) != 0) {
+                 r->grid.win_w, r->grid.win_h, r->grid.search_w, r->grid.search_h,
+                 r->grid.step_x, tname, o->grad ? ", grad" : "", r->stats.ok,
+                 (int)median_component(r, 0), (int)median_component(r, 1),
+                 brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0);
+        if ((f = cli_outputs_open(&out, o->overlay_path)) == NULL ||
+            track_write_overlay("track", f, o->overlay_path, r, o, NULL, NULL, title, sub) != 0) {
             rc = CLI_INPUT;
-            goto done;
         }
     }
-    if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
-        goto done;
-    }
-    if (!json_stdout && !(o.overlay_path != NULL && strcmp(o.overlay_path, "-") == 0)) {
-        printf("%u windows (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n",
-               r.grid.count, r.grid.cols, r.grid.rows, r.grid.win_w, r.grid.win_h,
-               r.grid.search_w, r.grid.search_h, r.grid.step_x, r.grid.step_y);
-        printf("status:  %u ok, %u excluded, %u masked, %u edge\n", r.stats.ok,
-               r.stats.excluded, r.stats.masked, r.stats.edge);
-        if (r.stats.ok > 0) {
-            printf("motion:  median dx=%+d dy=%+d px (FIRST -> SECOND)\n",
-                   (int)median_component(&r, 0), (int)median_component(&r, 1));
-            printf("work:    %llu pixel ops = %.2f %% of brute force (%llu); threshold %s, "
-                   "%.2f ms\n",
-                   (unsigned long long)r.stats.pixel_ops,
-                   brute ? 100.0 * (double)r.stats.pixel_ops / (double)brute : 0.0,
-                   (unsigned long long)brute, tname, 1e3 * r.secs);
-        }
-        if (o.have_mem) {
-            uint64_t images = (uint64_t)r.first.stride * r.first.height +
-                              (uint64_t)r.second.stride * r.second.height;
-            printf("memory:  plates of %zu + %zu bytes (--mem %llu); read %llu bytes in %llu "
-                   "reads = %.2f x the two images\n",
-                   r.arena_first, r.arena_second, (unsigned long long)o.mem,
-                   (unsigned long long)r.bytes_read, (unsigned long long)r.reads,
-                   images ? (double)r.bytes_read / (double)images : 0.0);
-        }
-        if (o.json_path != NULL) {
-            printf("wrote:   %s\n", o.json_path);
-        }
-        if (o.overlay_path != NULL) {
-            printf("wrote:   %s\n", o.overlay_path);
-        }
-    }
-done:
+    rc = rc == CLI_OK ? cli_outputs_commit(&out) : rc;
     cli_outputs_abort(&out);
+    return rc;
+}
+
+static void print_summary(const track_opts_t *o, const track_result_t *r)
+{
+    uint64_t brute = track_brute_ops(r);
+    char tname[64];
+    cli_threshold_name(&r->cfg.match, tname, sizeof tname);
+    printf("%u window%s (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n", r->grid.count,
+           r->grid.count == 1 ? "" : "s", r->grid.cols, r->grid.rows, r->grid.win_w,
+           r->grid.win_h, r->grid.search_w, r->grid.search_h, r->grid.step_x, r->grid.step_y);
+    printf("status:  %u ok, %u excluded, %u masked, %u edge\n", r->stats.ok, r->stats.excluded,
+           r->stats.masked, r->stats.edge);
+    if (r->stats.ok > 0) {
+        printf("motion:  median dx=%+d dy=%+d px (FIRST -> SECOND)\n",
+               (int)median_component(r, 0), (int)median_component(r, 1));
+        printf("work:    %llu pixel ops = %.2f %% of brute force (%llu); threshold %s, "
+               "scan %s, %.2f ms\n",
+               (unsigned long long)r->stats.pixel_ops,
+               brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0,
+               (unsigned long long)brute, tname, cli_scan_name(&r->cfg.match), 1e3 * r->secs);
+    }
+    if (o->have_mem) {
+        uint64_t images = (uint64_t)r->first.stride * r->first.height +
+                          (uint64_t)r->second.stride * r->second.height;
+        printf("memory:  plates of %zu + %zu bytes (--mem %llu); read %llu bytes in %llu "
+               "reads = %.2f x the two images\n",
+               r->arena_first, r->arena_second, (unsigned long long)o->mem,
+               (unsigned long long)r->bytes_read, (unsigned long long)r->reads,
+               images ? (double)r->bytes_read / (double)images : 0.0);
+    }
+    if (o->json_path != NULL) {
+        printf("wrote:   %s\n", o->json_path);
+    }
+    if (o->overlay_path != NULL) {
+        printf("wrote:   %s\n", o->overlay_path);
+    }
+}
+
+int cmd_track(int argc, char **argv)
+{
+    track_opts_t o;
+    track_result_t r;
+    const char *first, *second;
+    int rc = track_parse_args("track", argc, argv, help, &o, &first, &second);
+    if (rc != CLI_OK) {
+        return rc < 0 ? CLI_OK : rc; /* -1: --help */
+    }
+    if ((rc = track_run("track", first, second, &o, &r)) != CLI_OK) {
+        return rc;
+    }
+    rc = write_outputs(&o, first, second, &r);
+    if (rc == CLI_OK && !cli_is_stdout(o.json_path) && !cli_is_stdout(o.overlay_path)) {
+        print_summary(&o, &r);
+    }
     track_result_free(&r);
     return rc;
 }

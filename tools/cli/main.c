@@ -16,6 +16,8 @@ static const struct {
     {"compare", cmd_compare, "SSDA vectors vs exhaustive normalised cross-correlation"},
     {"grad", cmd_grad, "the seed's Fig. 8 differential operator on an image"},
     {"pitch", cmd_pitch, "f0 track of a WAV (or any libsndfile format) by AMDF"},
+    {"symreg", cmd_symreg, "register two images by their closed loops (rotation, scale, gain)"},
+    {"shape", cmd_shape, "Fourier-descriptor match of two silhouettes: scale, rotation, E2"},
 };
 #define NCOMMANDS (sizeof commands / sizeof commands[0])
 
@@ -39,6 +41,7 @@ int main(int argc, char **argv)
        closed pipe fail with EPIPE instead, which the output code treats as
        the quiet end of standard output. */
     signal(SIGPIPE, SIG_IGN);
+    cli_guard_std_fds();
     if (argc < 2) {
         usage(stderr);
         return CLI_USAGE;
@@ -49,21 +52,22 @@ int main(int argc, char **argv)
             for (i = 0; i < NCOMMANDS; i++) {
                 if (strcmp(argv[2], commands[i].name) == 0) {
                     char *sub[] = {argv[2], (char *)"--help", NULL};
-                    return commands[i].run(2, sub);
+                    return cli_finish_stdout(commands[i].name, commands[i].run(2, sub));
                 }
             }
         }
         usage(stdout);
-        return CLI_OK;
+        return cli_finish_stdout("--help", CLI_OK);
     }
     if (strcmp(argv[1], "--version") == 0) {
         printf("ssda %u.%u.%u\n", (unsigned)SSDA_VERSION_MAJOR, (unsigned)SSDA_VERSION_MINOR,
                (unsigned)SSDA_VERSION_PATCH);
-        return CLI_OK;
+        return cli_finish_stdout("--version", CLI_OK);
     }
     for (i = 0; i < NCOMMANDS; i++) {
         if (strcmp(argv[1], commands[i].name) == 0) {
-            return commands[i].run(argc - 1, argv + 1);
+            /* every command: output lost on stdout is a failure */
+            return cli_finish_stdout(commands[i].name, commands[i].run(argc - 1, argv + 1));
         }
     }
     fprintf(stderr, "ssda: unknown command '%s'\n\n", argv[1]);

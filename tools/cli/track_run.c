@@ -1,5 +1,6 @@
 /* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
 #include "track_run.h"
+#include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
 #include "ssda/stream.h"
@@ -131,47 +132,58 @@ static int parse_bytes(const char *s, uint64_t *out)
     return 0;
 }
 
-int track_opts_take(cli_args_t *a, track_opts_t *o)
+/* Report a bad value of the current option (a->bad set). */
+static void bad_value(cli_args_t *a, const char *fmt, const char *v)
+{
+    cli_usage_error(a->cmd, fmt, v);
+    a->bad = 1;
+}
+
+/* --window, --search, --step, --roi. */
+static int take_grid(cli_args_t *a, track_opts_t *o)
 {
     const char *v;
-    uint32_t u = 0; /* read below only after a parsed value */
     if (cli_opt(a, "--window", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.win_w, &o->cfg.win_h) != 0) {
-            cli_usage_error(a->cmd, "bad --window '%s' (N or WxH, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --window '%s' (N or WxH, 1..65535)", v);
         }
     } else if (cli_opt(a, "--search", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.search_w, &o->cfg.search_h) != 0) {
-            cli_usage_error(a->cmd, "bad --search '%s' (N or WxH, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --search '%s' (N or WxH, 1..65535)", v);
         }
     } else if (cli_opt(a, "--step", &v)) {
         if (v != NULL && parse_size(v, &o->cfg.step_x, &o->cfg.step_y) != 0) {
-            cli_usage_error(a->cmd, "bad --step '%s' (N or XxY, 1..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --step '%s' (N or XxY, 1..65535)", v);
         }
     } else if (cli_opt(a, "--roi", &v)) {
         if (v != NULL && (cli_parse_list_u32(v, 0, 65535, o->roi, 4) != 0 || o->roi[2] == 0 ||
                           o->roi[3] == 0)) {
-            cli_usage_error(a->cmd, "bad --roi '%s' (X,Y,W,H with W, H >= 1)", v);
-            a->bad = 1;
+            bad_value(a, "bad --roi '%s' (X,Y,W,H with W, H >= 1)", v);
         }
         o->have_roi = 1;
-    } else if (cli_opt(a, "--threshold", &v)) {
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --threshold, --scan, --order, --bounds, --no-bounds, --predict. */
+static int take_search(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    if (cli_opt(a, "--threshold", &v)) {
         if (v != NULL && cli_parse_threshold(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --threshold '%s' (auto, none, fixed:T, "
-                            "ramp:LAMBDA[:K], auto-ramp[:K])", v);
-            a->bad = 1;
+            bad_value(a, "bad --threshold '%s' (auto, none, fixed:T, ramp:LAMBDA[:K], "
+                         "auto-ramp[:K])", v);
         }
     } else if (cli_opt(a, "--scan", &v)) {
         if (v != NULL && cli_parse_scan(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --scan '%s' (raster, predict, coarse)", v);
-            a->bad = 1;
+            bad_value(a, "bad --scan '%s' (raster, predict, coarse)", v);
         }
+        o->scan_given = 1;
     } else if (cli_opt(a, "--order", &v)) {
         if (v != NULL && cli_parse_order(v, &o->cfg.match) != 0) {
-            cli_usage_error(a->cmd, "bad --order '%s' (rows, spread)", v);
-            a->bad = 1;
+            bad_value(a, "bad --order '%s' (rows, spread)", v);
         }
     } else if (cli_flag(a, "--bounds")) {
         o->cfg.match.flags |= SSDA_MATCH_BOUNDS;
@@ -189,33 +201,49 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         } else if (strcmp(v, "none") == 0) {
             o->cfg.predict = SSDA_TRACK_PREDICT_NONE;
         } else {
-            cli_usage_error(a->cmd, "bad --predict '%s' (neighbour, left, none)", v);
-            a->bad = 1;
+            bad_value(a, "bad --predict '%s' (neighbour, left, none)", v);
         }
-    } else if (a->name_len == 9 && strncmp(a->name, "--exclude", 9) == 0) {
-        /* optional value: "--exclude=SPEC", or a following argument that parses as one */
-        uint32_t level = 0, count = 0;
-        int given = 0;
-        o->exclude = 1;
-        v = a->inline_value;
-        if (v == NULL && a->i < a->argc &&
-            parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
-            v = a->argv[a->i++];
-        }
-        if (v != NULL) {
-            if (parse_exclude(v, &level, &given, &count) != 0) {
-                cli_usage_error(a->cmd, "bad --exclude '%s' (LEVEL[:COUNT] or mean[:COUNT])", v);
-                a->bad = 1;
-                return 1;
-            }
-            o->exclude_level_given = given;
-            o->exclude_level = level;
-            o->exclude_count = count;
-        }
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --exclude [LEVEL[:COUNT]]: an optional value, "--exclude=SPEC" or a
+   following argument that parses as one. */
+static void take_exclude(cli_args_t *a, track_opts_t *o)
+{
+    uint32_t level = 0, count = 0;
+    int given = 0;
+    const char *v = a->inline_value;
+    o->exclude = 1;
+    o->exclude_argi = a->i - 1;
+    if (v == NULL && a->i < a->argc &&
+        parse_exclude(a->argv[a->i], &level, &given, &count) == 0) {
+        v = a->argv[a->i++];
+    }
+    if (v == NULL) {
+        return;
+    }
+    if (parse_exclude(v, &level, &given, &count) != 0) {
+        bad_value(a, "bad --exclude '%s' (LEVEL[:COUNT] or mean[:COUNT])", v);
+        return;
+    }
+    o->exclude_level_given = given;
+    o->exclude_level = level;
+    o->exclude_count = count;
+}
+
+/* --exclude, --mask-value, --grad, --mem. */
+static int take_skip(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    uint32_t u = 0; /* read below only after a parsed value */
+    if (a->name_len == 9 && strncmp(a->name, "--exclude", 9) == 0) {
+        take_exclude(a, o);
     } else if (cli_opt(a, "--mask-value", &v)) {
         if (v != NULL && cli_parse_u32(v, 0, 65535, &u) != 0) {
-            cli_usage_error(a->cmd, "bad --mask-value '%s' (0..65535)", v);
-            a->bad = 1;
+            bad_value(a, "bad --mask-value '%s' (0..65535)", v);
         }
         o->cfg.flags |= SSDA_TRACK_MASK;
         o->cfg.mask_value = (uint16_t)u;
@@ -223,18 +251,26 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         o->grad = 1;
     } else if (cli_opt(a, "--mem", &v)) {
         if (v != NULL && parse_bytes(v, &o->mem) != 0) {
-            cli_usage_error(a->cmd, "bad --mem '%s' (bytes, optional K/M/G suffix)", v);
-            a->bad = 1;
+            bad_value(a, "bad --mem '%s' (bytes, optional K/M/G suffix)", v);
         }
         o->have_mem = 1;
-    } else if (cli_opt(a, "--json", &v)) {
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
+/* --json, --overlay, --arrow-scale, --quiet. */
+static int take_output(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    if (cli_opt(a, "--json", &v)) {
         o->json_path = v;
     } else if (cli_opt(a, "--overlay", &v)) {
         o->overlay_path = v;
     } else if (cli_opt(a, "--arrow-scale", &v)) {
         if (v != NULL && cli_parse_double(v, 0.01, 1000.0, &o->arrow_scale) != 0) {
-            cli_usage_error(a->cmd, "bad --arrow-scale '%s' (0.01..1000)", v);
-            a->bad = 1;
+            bad_value(a, "bad --arrow-scale '%s' (0.01..1000)", v);
         }
     } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
         o->quiet = 1;
@@ -242,6 +278,57 @@ int track_opts_take(cli_args_t *a, track_opts_t *o)
         return 0;
     }
     return 1;
+}
+
+int track_opts_take(cli_args_t *a, track_opts_t *o)
+{
+    return take_grid(a, o) || take_search(a, o) || take_skip(a, o) || take_output(a, o);
+}
+
+int track_check_positionals(const cli_args_t *a, const track_opts_t *o)
+{
+    if (a->npos > 2 && o->exclude && a->pos_argi[2] == o->exclude_argi + 1) {
+        return cli_usage_error(a->cmd, "unexpected argument '%s': not a value of --exclude "
+                               "(LEVEL[:COUNT] or mean[:COUNT]; --exclude=VALUE)", a->pos[2]);
+    }
+    return cli_positionals(a, 2, "need FIRST.png and SECOND.png");
+}
+
+int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
+                     track_opts_t *o, const char **first, const char **second)
+{
+    cli_args_t a;
+    int rc;
+    track_opts_init(o);
+    cli_args_begin(&a, cmd, argc, argv);
+    while (cli_next(&a)) {
+        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
+            help();
+            return -1;
+        }
+        if (!track_opts_take(&a, o)) {
+            return cli_unknown(&a);
+        }
+        if (a.bad) {
+            return CLI_USAGE;
+        }
+    }
+    if (a.bad) {
+        return CLI_USAGE;
+    }
+    if ((rc = track_check_positionals(&a, o)) != CLI_OK) {
+        return rc;
+    }
+    *first = a.pos[0];
+    *second = a.pos[1];
+    if (cli_is_stdout(o->overlay_path) && cli_is_stdout(o->json_path)) {
+        return cli_usage_error(cmd, "--json and --overlay cannot both go to stdout");
+    }
+    cli_warn_png_name(cmd, "--overlay", o->overlay_path);
+    if (cli_output_check(cmd, o->json_path) != 0 || cli_output_check(cmd, o->overlay_path) != 0) {
+        return CLI_INPUT;
+    }
+    return CLI_OK;
 }
 
 const char *track_status_name(int status)
@@ -489,23 +576,33 @@ static void stats_add(ssda_track_stats_t *t, const ssda_track_stats_t *s)
     t->edge += s->edge;
 }
 
-int track_run(const char *cmd, const char *first_path, const char *second_path,
-              const track_opts_t *o, track_result_t *r)
+static const char *predict_name(uint8_t predict)
 {
-    ssda_view_t vf, vs;
-    void *work = NULL;
-    int e, masked = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
-    uint32_t maxval;
-    progress_t prog;
-    double t0;
+    static const char *names[] = {"none", "left", "neighbour"};
+    return names[predict % 3u];
+}
 
-    memset(r, 0, sizeof *r);
-    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
-    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
-        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
-                               "every window is searched outward from its predicted vector)");
+/* What the library runs: with a prediction a raster scan is run as a
+   PREDICT scan (track.h). The config then says so, and the JSON and the
+   summary report what ran; an explicit --scan raster is warned about. */
+static void resolve_scan(const char *cmd, const track_opts_t *o, ssda_track_config_t *cfg)
+{
+    if (cfg->predict == SSDA_TRACK_PREDICT_NONE || cfg->match.scan != SSDA_SCAN_RASTER) {
+        return;
     }
-    r->cfg = o->cfg;
+    if (o->scan_given) {
+        fprintf(stderr, "ssda %s: warning: --scan raster is run as --scan predict with "
+                "--predict %s (each search starts at the predicted vector); --predict none "
+                "for a raster scan\n", cmd, predict_name(cfg->predict));
+    }
+    cfg->match.scan = SSDA_SCAN_PREDICT;
+}
+
+/* Read FIRST and SECOND; keep SECOND as read for the overlay. */
+static int load_inputs(const char *cmd, const char *first_path, const char *second_path,
+                       const track_opts_t *o, track_result_t *r)
+{
+    uint32_t maxval;
     if (cli_load_png_pair(cmd, first_path, second_path, &r->first, &r->second) != 0) {
         return CLI_INPUT;
     }
@@ -517,59 +614,63 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
                 cmd, r->first.width, r->first.height, r->second.width, r->second.height);
     }
     maxval = gray_image_max(&r->second);
-    if (masked && o->cfg.mask_value > maxval) {
-        track_result_free(r);
-        return cli_usage_error(cmd, "--mask-value %u is beyond these %u-bit images", 
+    if ((o->cfg.flags & SSDA_TRACK_MASK) && o->cfg.mask_value > maxval) {
+        return cli_usage_error(cmd, "--mask-value %u is beyond these %u-bit images",
                                o->cfg.mask_value, maxval == 255 ? 8 : 16);
     }
     if (o->overlay_path != NULL) {
         /* the overlay shows SECOND as read, also when tracking on gradients */
-        r->second_orig = r->second;
-        r->second.pixels = NULL;
-        if (gray_image_alloc(&r->second, r->second_orig.width, r->second_orig.height,
-                             r->second_orig.bits) != 0) {
-            track_result_free(r);
+        if (gray_image_alloc(&r->second_orig, r->second.width, r->second.height,
+                             r->second.bits) != 0) {
             return cli_input_error(cmd, "out of memory");
         }
-        memcpy(r->second.pixels, r->second_orig.pixels,
+        memcpy(r->second_orig.pixels, r->second.pixels,
                (size_t)r->second.stride * r->second.height);
     }
-    if (o->grad) {
-        gray_image_t gf, gs;
-        /* smallest shift that keeps 4 * max below 65535 (the fill value) */
-        uint32_t m = image_max(&r->first, masked, o->cfg.mask_value);
-        unsigned shift = 0;
-        uint32_t m2 = image_max(&r->second, masked, o->cfg.mask_value);
-        if (m2 > m) {
-            m = m2;
-        }
-        while ((4u * m) >> shift >= 65535u) {
-            shift++;
-        }
-        if (grad_image(cmd, &r->first, masked, o->cfg.mask_value, shift, &gf) != 0) {
-            track_result_free(r);
-            return CLI_INPUT;
-        }
-        if (grad_image(cmd, &r->second, masked, o->cfg.mask_value, shift, &gs) != 0) {
-            gray_image_free(&gf);
-            track_result_free(r);
-            return CLI_INPUT;
-        }
-        gray_image_free(&r->first);
-        gray_image_free(&r->second);
-        r->first = gf;
-        r->second = gs;
-        if (masked) {
-            r->cfg.mask_value = 65535u;
-        }
+    return CLI_OK;
+}
+
+/* --grad: both images replaced by their Fig. 8 gradients (16-bit; with a
+   mask, 65535 becomes the fill value). */
+static int apply_grad(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    gray_image_t gf, gs;
+    int masked = (o->cfg.flags & SSDA_TRACK_MASK) != 0;
+    /* smallest shift that keeps 4 * max below 65535 (the fill value) */
+    uint32_t m = image_max(&r->first, masked, o->cfg.mask_value);
+    uint32_t m2 = image_max(&r->second, masked, o->cfg.mask_value);
+    unsigned shift = 0;
+    m = m2 > m ? m2 : m;
+    while ((4u * m) >> shift >= 65535u) {
+        shift++;
     }
+    if (grad_image(cmd, &r->first, masked, o->cfg.mask_value, shift, &gf) != 0) {
+        return CLI_INPUT;
+    }
+    if (grad_image(cmd, &r->second, masked, o->cfg.mask_value, shift, &gs) != 0) {
+        gray_image_free(&gf);
+        return CLI_INPUT;
+    }
+    gray_image_free(&r->first);
+    gray_image_free(&r->second);
+    r->first = gf;
+    r->second = gs;
+    if (masked) {
+        r->cfg.mask_value = 65535u;
+    }
+    return CLI_OK;
+}
+
+/* --exclude's level and --roi into the config. */
+static int resolve_region(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
     if (o->exclude) {
         r->cfg.flags |= SSDA_TRACK_EXCLUDE;
         r->texture_level = o->exclude_level_given
                                ? o->exclude_level
-                               : image_mean(&r->second, masked, r->cfg.mask_value);
+                               : image_mean(&r->second, (o->cfg.flags & SSDA_TRACK_MASK) != 0,
+                                            r->cfg.mask_value);
         if (r->texture_level >= gray_image_max(&r->second)) {
-            track_result_free(r);
             return cli_usage_error(cmd, "--exclude level %u is not below the images' maximum",
                                    o->exclude_level);
         }
@@ -578,59 +679,81 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     }
     if (o->have_roi) {
         if (o->roi[0] + o->roi[2] > r->second.width || o->roi[1] + o->roi[3] > r->second.height) {
-            cli_usage_error(cmd, "--roi %u,%u,%u,%u is not inside SECOND (%u x %u)", o->roi[0],
-                            o->roi[1], o->roi[2], o->roi[3], r->second.width, r->second.height);
-            track_result_free(r);
-            return CLI_USAGE;
+            return cli_usage_error(cmd, "--roi %u,%u,%u,%u is not inside SECOND (%u x %u)",
+                                   o->roi[0], o->roi[1], o->roi[2], o->roi[3], r->second.width,
+                                   r->second.height);
         }
         r->cfg.roi_x = (uint16_t)o->roi[0];
         r->cfg.roi_y = (uint16_t)o->roi[1];
         r->cfg.roi_w = (uint16_t)o->roi[2];
         r->cfg.roi_h = (uint16_t)o->roi[3];
     }
-    e = ssda_track_grid(&r->cfg, (uint16_t)r->second.width, (uint16_t)r->second.height,
-                        &r->grid);
-    if (e != SSDA_OK) {
-        /* the sizes as resolved: 0 in the config means the library's default */
-        const ssda_track_config_t *c = &r->cfg;
-        uint32_t ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
-        uint32_t wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
-        uint32_t sw = c->search_w ? c->search_w : 2u * ww;
-        uint32_t sh = c->search_h ? c->search_h : 2u * wh;
-        sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
-        sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
-        cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
-                        "(the search area must be at least the window, the window inside "
-                        "the region)",
-                        ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
-                        c->roi_h ? c->roi_h : r->second.height);
-        track_result_free(r);
-        return CLI_USAGE;
-    }
-    if (r->grid.search_w == r->grid.win_w || r->grid.search_h == r->grid.win_h) {
-        int both = r->grid.search_w == r->grid.win_w && r->grid.search_h == r->grid.win_h;
-        const char *what = both ? "dx and dy" : r->grid.search_w == r->grid.win_w ? "dx" : "dy";
+    return CLI_OK;
+}
+
+/* Warnings on a grid that runs but not as a user would expect: a search
+   area with no room (every vector 0), an odd margin (a one-sided range). */
+static void warn_grid(const char *cmd, const ssda_track_grid_t *g)
+{
+    uint32_t mx = (uint32_t)g->search_w - g->win_w, my = (uint32_t)g->search_h - g->win_h;
+    if (mx == 0 || my == 0) {
+        const char *what = mx == 0 && my == 0 ? "dx and dy" : mx == 0 ? "dx" : "dy";
         fprintf(stderr, "ssda %s: warning: search area %ux%u leaves the %ux%u window no room "
                 "to move: every %s is 0 (vectors range over +-(search - window) / 2; "
                 "e.g. --search %ux%u)\n",
-                cmd, r->grid.search_w, r->grid.search_h, r->grid.win_w, r->grid.win_h, what,
-                2u * r->grid.win_w, 2u * r->grid.win_h);
+                cmd, g->search_w, g->search_h, g->win_w, g->win_h, what, 2u * g->win_w,
+                2u * g->win_h);
     }
+    if (mx % 2u != 0 || my % 2u != 0) {
+        /* the area starts (search - window) / 2 px before the window, rounded down */
+        fprintf(stderr, "ssda %s: warning: search %ux%u and window %ux%u leave an odd margin: "
+                "dx ranges over -%u..+%u, dy over -%u..+%u (one px more left or up than right "
+                "or down); an even search - window gives a symmetric range\n",
+                cmd, g->search_w, g->search_h, g->win_w, g->win_h, mx - mx / 2u, mx / 2u,
+                my - my / 2u, my / 2u);
+    }
+}
+
+/* The grid of the config on SECOND (sizes resolved as the library does). */
+static int resolve_grid(const char *cmd, track_result_t *r)
+{
+    const ssda_track_config_t *c = &r->cfg;
+    uint32_t ww, wh, sw, sh;
+    if (ssda_track_grid(c, (uint16_t)r->second.width, (uint16_t)r->second.height,
+                        &r->grid) == SSDA_OK) {
+        warn_grid(cmd, &r->grid);
+        return CLI_OK;
+    }
+    /* the sizes as resolved: 0 in the config means the library's default */
+    ww = c->win_w ? c->win_w : SSDA_TRACK_DEFAULT_WIN;
+    wh = c->win_h ? c->win_h : SSDA_TRACK_DEFAULT_WIN;
+    sw = c->search_w ? c->search_w : 2u * ww;
+    sh = c->search_h ? c->search_h : 2u * wh;
+    sw = sw < SSDA_MAX_DIM ? sw : SSDA_MAX_DIM;
+    sh = sh < SSDA_MAX_DIM ? sh : SSDA_MAX_DIM;
+    return cli_usage_error(cmd, "no grid fits: window %ux%u, search %ux%u in a %ux%u region "
+                           "(the search area must be at least the window, the window inside "
+                           "the region)",
+                           ww, wh, sw, sh, c->roi_w ? c->roi_w : r->second.width,
+                           c->roi_h ? c->roi_h : r->second.height);
+}
+
+/* --exclude's count (default: window pixels / 16, at least 1), the vector
+   array and the bounds buffer (*work, malloc'ed; NULL without bounds). */
+static int alloc_run(const char *cmd, const track_opts_t *o, track_result_t *r, void **work)
+{
+    uint64_t pixels = (uint64_t)r->grid.win_w * r->grid.win_h;
     if (o->exclude) {
-        r->texture_min_count = o->exclude_count != 0
-                                   ? o->exclude_count
-                                   : ((uint32_t)r->grid.win_w * r->grid.win_h / 16u > 0
-                                          ? (uint32_t)r->grid.win_w * r->grid.win_h / 16u
-                                          : 1u);
-        if (2u * (uint64_t)r->texture_min_count > (uint64_t)r->grid.win_w * r->grid.win_h) {
-            track_result_free(r);
+        r->texture_min_count = o->exclude_count != 0 ? o->exclude_count
+                               : pixels / 16u > 0    ? (uint32_t)(pixels / 16u)
+                                                     : 1u;
+        if (2u * (uint64_t)r->texture_min_count > pixels) {
             return cli_usage_error(cmd, "--exclude count %u is more than half the window's "
                                    "pixels", o->exclude_count);
         }
     }
     r->vec = calloc(r->grid.count, sizeof *r->vec);
     if (r->vec == NULL) {
-        track_result_free(r);
         return cli_input_error(cmd, "out of memory for %u windows", r->grid.count);
     }
     /* A search area larger than FIRST leaves every window EDGE: nothing is
@@ -639,69 +762,124 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     if (r->grid.search_w > r->first.width || r->grid.search_h > r->first.height) {
         r->cfg.match.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
     }
+    *work = NULL;
     if (r->cfg.match.flags & SSDA_MATCH_BOUNDS) {
         r->cfg.match.work_size = SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
                                                       r->grid.win_w, r->grid.win_h);
-        work = malloc(r->cfg.match.work_size);
-        if (work == NULL) {
-            track_result_free(r);
+        if ((*work = malloc(r->cfg.match.work_size)) == NULL) {
             return cli_input_error(cmd, "out of memory");
         }
-        r->cfg.match.work = work;
+        r->cfg.match.work = *work;
     }
+    return CLI_OK;
+}
+
+/* Track from the images in memory. Without prediction and with a progress
+   bar, the grid runs in bands of rows (every window is independent):
+   vectors and counts equal those of one call. Returns an ssda error code. */
+static int run_in_ram(const track_opts_t *o, track_result_t *r)
+{
+    ssda_view_t vf, vs;
+    progress_t prog;
+    uint32_t row = 0, band = r->grid.rows / 50u + 1u;
+    int e = SSDA_OK;
     gray_image_view(&r->first, &vf);
     gray_image_view(&r->second, &vs);
-
-    if (o->have_mem) {
-        t0 = progress_now();
-        e = track_streamed(cmd, o, r);
-        r->secs = progress_now() - t0;
-        free(work);
-        r->cfg.match.work = NULL;
-        if (e != CLI_OK) {
-            track_result_free(r);
-        }
-        return e;
-    }
     progress_begin(&prog, "tracking", r->grid.rows, o->quiet);
-    t0 = progress_now();
-    if (prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1) {
-        /* Without prediction every window is independent: run the grid in bands of
-           rows to show progress; vectors and counts equal those of one call. */
-        uint32_t row = 0, band = r->grid.rows / 50u + 1u;
-        e = SSDA_OK;
-        while (row < r->grid.rows && e == SSDA_OK) {
-            ssda_track_config_t c = r->cfg;
-            ssda_track_stats_t s;
-            uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
-            c.roi_x = r->grid.roi_x;
-            c.roi_w = r->grid.roi_w;
-            c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
-            c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
-            e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
-                           (size_t)n * r->grid.cols, &s);
-            if (e == SSDA_OK) {
-                stats_add(&r->stats, &s);
-            }
-            row += n;
-            progress_update(&prog, row);
-        }
-    } else {
+    if (!(prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1)) {
         e = ssda_track(&vf, &vs, &r->cfg, r->vec, r->grid.count, &r->stats);
+        row = r->grid.rows;
     }
-    r->secs = progress_now() - t0;
+    while (row < r->grid.rows && e == SSDA_OK) {
+        ssda_track_config_t c = r->cfg;
+        ssda_track_stats_t s;
+        uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
+        c.roi_x = r->grid.roi_x;
+        c.roi_w = r->grid.roi_w;
+        c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
+        c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
+        e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
+                       (size_t)n * r->grid.cols, &s);
+        if (e == SSDA_OK) {
+            stats_add(&r->stats, &s);
+        }
+        row += n;
+        progress_update(&prog, row);
+    }
     progress_end(&prog);
-    free(work);
-    r->cfg.match.work = NULL;
-    if (e != SSDA_OK) {
-        cli_usage_error(cmd, "tracking refused these options: %s", ssda_strerror(e));
-        track_result_free(r);
-        return CLI_USAGE;
-    }
     /* RAM sources: every pixel of both images was loaded once. */
     r->bytes_read = (uint64_t)r->first.stride * r->first.height +
                     (uint64_t)r->second.stride * r->second.height;
-    return CLI_OK;
+    return e;
+}
+
+/* No window could be searched: say why (the run itself is valid). */
+static void warn_nothing_tracked(const char *cmd, const track_result_t *r)
+{
+    const ssda_track_stats_t *s = &r->stats;
+    if (s->ok > 0 || s->windows == 0) {
+        return;
+    }
+    if (s->edge == s->windows) {
+        fprintf(stderr, "ssda %s: warning: nothing to track: every one of the %u windows is "
+                "'edge' (its %ux%u search area leaves FIRST, %u x %u); a smaller --search or "
+                "larger images\n",
+                cmd, s->windows, r->grid.search_w, r->grid.search_h, r->first.width,
+                r->first.height);
+    } else {
+        fprintf(stderr, "ssda %s: warning: nothing to track: of %u windows %u excluded (no "
+                "texture), %u masked (fill value), %u edge (search area leaves FIRST)\n",
+                cmd, s->windows, s->excluded, s->masked, s->edge);
+    }
+}
+
+/* Every step of track_run but the loading; 0 or a CLI code (printed). */
+static int prepare_and_track(const char *cmd, const track_opts_t *o, track_result_t *r)
+{
+    void *work = NULL;
+    double t0;
+    int rc;
+    if ((o->grad && (rc = apply_grad(cmd, o, r)) != CLI_OK) ||
+        (rc = resolve_region(cmd, o, r)) != CLI_OK || (rc = resolve_grid(cmd, r)) != CLI_OK ||
+        (rc = alloc_run(cmd, o, r, &work)) != CLI_OK) {
+        free(work);
+        return rc;
+    }
+    t0 = progress_now();
+    if (o->have_mem) {
+        rc = track_streamed(cmd, o, r);
+    } else if ((rc = run_in_ram(o, r)) != SSDA_OK) {
+        rc = cli_usage_error(cmd, "tracking refused these options: %s", ssda_strerror(rc));
+    }
+    r->secs = progress_now() - t0;
+    free(work);
+    r->cfg.match.work = NULL;
+    if (rc == CLI_OK) {
+        warn_nothing_tracked(cmd, r);
+    }
+    return rc;
+}
+
+int track_run(const char *cmd, const char *first_path, const char *second_path,
+              const track_opts_t *o, track_result_t *r)
+{
+    int rc;
+    memset(r, 0, sizeof *r);
+    /* The library refuses this with a bare SSDA_ERR_ARG; say which rule. */
+    if (o->cfg.match.scan == SSDA_SCAN_COARSE && o->cfg.predict != SSDA_TRACK_PREDICT_NONE) {
+        return cli_usage_error(cmd, "--scan coarse needs --predict none (with a prediction "
+                               "every window is searched outward from its predicted vector)");
+    }
+    r->cfg = o->cfg;
+    resolve_scan(cmd, o, &r->cfg);
+    rc = load_inputs(cmd, first_path, second_path, o, r);
+    if (rc == CLI_OK) {
+        rc = prepare_and_track(cmd, o, r);
+    }
+    if (rc != CLI_OK) {
+        track_result_free(r);
+    }
+    return rc;
 }
 
 uint64_t track_brute_ops(const track_result_t *r)
@@ -718,69 +896,153 @@ uint64_t track_brute_ops(const track_result_t *r)
    arrowheads and marks run together. */
 #define OVERLAY_MIN_SPACING 22.0
 
-void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
-                      const int32_t (*ref)[2], const char *extra_top)
-{
-    uint32_t k;
-    char tname[64];
-    const ssda_track_grid_t *g = &r->grid;
-    static const char *pnames[] = {"none", "left", "neighbour"};
+/* ---- JSON (docs/cli.md) ---- */
 
+static cJSON *json_grid(const ssda_track_grid_t *g)
+{
+    cJSON *grid = cJSON_CreateObject();
+    cJSON *roi = cJSON_CreateArray();
+    cJSON_AddNumberToObject(grid, "cols", g->cols);
+    cJSON_AddNumberToObject(grid, "rows", g->rows);
+    cJSON_AddNumberToObject(grid, "window_w", g->win_w);
+    cJSON_AddNumberToObject(grid, "window_h", g->win_h);
+    cJSON_AddNumberToObject(grid, "search_w", g->search_w);
+    cJSON_AddNumberToObject(grid, "search_h", g->search_h);
+    cJSON_AddNumberToObject(grid, "step_x", g->step_x);
+    cJSON_AddNumberToObject(grid, "step_y", g->step_y);
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_x));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_y));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_w));
+    cJSON_AddItemToArray(roi, cJSON_CreateNumber(g->roi_h));
+    cJSON_AddItemToObject(grid, "roi", roi);
+    return grid;
+}
+
+static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
+{
+    cJSON *opt = cJSON_CreateObject();
+    char tname[64];
     cli_threshold_name(&r->cfg.match, tname, sizeof tname);
-    fprintf(f, "{\"width\":%u,\"height\":%u,\"bits\":%u,\n", r->second.width, r->second.height,
-            r->second.bits);
-    fprintf(f, " \"grid\":{\"cols\":%u,\"rows\":%u,\"window_w\":%u,\"window_h\":%u,"
-               "\"search_w\":%u,\"search_h\":%u,\"step_x\":%u,\"step_y\":%u,"
-               "\"roi\":[%u,%u,%u,%u]},\n",
-            g->cols, g->rows, g->win_w, g->win_h, g->search_w, g->search_h, g->step_x,
-            g->step_y, g->roi_x, g->roi_y, g->roi_w, g->roi_h);
-    fprintf(f, " \"options\":{\"threshold\":\"%s\",\"scan\":\"%s\",\"predict\":\"%s\","
-               "\"bounds\":%s,\"grad\":%s,",
-            tname, cli_scan_name(&r->cfg.match), pnames[r->cfg.predict % 3u],
-            (r->cfg.match.flags & SSDA_MATCH_BOUNDS) ? "true" : "false",
-            o->grad ? "true" : "false");
+    cJSON_AddStringToObject(opt, "threshold", tname);
+    cJSON_AddStringToObject(opt, "scan", cli_scan_name(&r->cfg.match));
+    cJSON_AddStringToObject(opt, "predict", predict_name(r->cfg.predict));
+    cJSON_AddBoolToObject(opt, "bounds", (r->cfg.match.flags & SSDA_MATCH_BOUNDS) != 0);
+    cJSON_AddBoolToObject(opt, "grad", o->grad);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
-        fprintf(f, "\"exclude\":{\"level\":%u,\"min_count\":%u},", r->texture_level,
-                r->texture_min_count);
+        cJSON *ex = cJSON_AddObjectToObject(opt, "exclude");
+        cJSON_AddNumberToObject(ex, "level", r->texture_level);
+        cJSON_AddNumberToObject(ex, "min_count", r->texture_min_count);
     } else {
-        fprintf(f, "\"exclude\":null,");
+        cJSON_AddNullToObject(opt, "exclude");
     }
     if (o->cfg.flags & SSDA_TRACK_MASK) {
-        fprintf(f, "\"mask_value\":%u},\n", o->cfg.mask_value);
+        cJSON_AddNumberToObject(opt, "mask_value", o->cfg.mask_value);
     } else {
-        fprintf(f, "\"mask_value\":null},\n");
+        cJSON_AddNullToObject(opt, "mask_value");
     }
-    if (extra_top != NULL) {
-        fprintf(f, " %s,\n", extra_top);
-    }
-    fprintf(f, " \"windows\":[");
-    for (k = 0; k < g->count && !ferror(f); k++) { /* stop at a closed pipe */
-        const ssda_track_vector_t *v = &r->vec[k];
-        fprintf(f, "%s\n  {\"x\":%u,\"y\":%u,\"dx\":%d,\"dy\":%d,\"sad\":%llu,"
-                   "\"status\":\"%s\",\"exact\":%s",
-                k ? "," : "", v->x, v->y, (int)v->dx, (int)v->dy, (unsigned long long)v->sad,
-                track_status_name(v->status), v->exact ? "true" : "false");
-        if (ref != NULL && v->status == SSDA_TRACK_OK) {
-            fprintf(f, ",\"ref_dx\":%d,\"ref_dy\":%d", (int)ref[k][0], (int)ref[k][1]);
-        }
-        fputc('}', f);
-    }
-    fprintf(f, "],\n \"stats\":{\"pixel_ops\":%llu,\"bytes_read\":%llu,"
-               "\"brute_force_ops\":%llu,\"positions\":%llu,\"completed\":%llu,"
-               "\"check_pixels\":%llu,\"windows\":%u,\"ok\":%u,\"excluded\":%u,"
-               "\"masked\":%u,\"edge\":%u,\"time_s\":%.6f",
-            (unsigned long long)r->stats.pixel_ops, (unsigned long long)r->bytes_read,
-            (unsigned long long)track_brute_ops(r), (unsigned long long)r->stats.positions,
-            (unsigned long long)r->stats.completed, (unsigned long long)r->stats.check_pixels,
-            r->stats.windows, r->stats.ok, r->stats.excluded, r->stats.masked, r->stats.edge,
-            r->secs);
+    return opt;
+}
+
+static cJSON *json_stats(const track_result_t *r, const track_opts_t *o)
+{
+    cJSON *st = cJSON_CreateObject();
+    json_out_add_u64(st, "pixel_ops", r->stats.pixel_ops);
+    json_out_add_u64(st, "bytes_read", r->bytes_read);
+    json_out_add_u64(st, "brute_force_ops", track_brute_ops(r));
+    json_out_add_u64(st, "positions", r->stats.positions);
+    json_out_add_u64(st, "completed", r->stats.completed);
+    json_out_add_u64(st, "check_pixels", r->stats.check_pixels);
+    cJSON_AddNumberToObject(st, "windows", r->stats.windows);
+    cJSON_AddNumberToObject(st, "ok", r->stats.ok);
+    cJSON_AddNumberToObject(st, "excluded", r->stats.excluded);
+    cJSON_AddNumberToObject(st, "masked", r->stats.masked);
+    cJSON_AddNumberToObject(st, "edge", r->stats.edge);
+    json_out_add_fixed(st, "time_s", r->secs, 6);
     if (o->have_mem) {
-        fprintf(f, ",\"mem_bytes\":%llu,\"plate_bytes_first\":%zu,\"plate_bytes_second\":%zu,"
-                   "\"reads\":%llu",
-                (unsigned long long)o->mem, r->arena_first, r->arena_second,
-                (unsigned long long)r->reads);
+        json_out_add_u64(st, "mem_bytes", o->mem);
+        json_out_add_u64(st, "plate_bytes_first", r->arena_first);
+        json_out_add_u64(st, "plate_bytes_second", r->arena_second);
+        json_out_add_u64(st, "reads", r->reads);
     }
-    fprintf(f, "}}\n");
+    return st;
+}
+
+typedef struct {
+    const track_result_t *r;
+    const int32_t (*ref)[2];
+} window_items_t;
+
+/* Window k of the "windows" array (made while printing: json_out_lazy_t). */
+static cJSON *json_window(void *ctx, size_t k)
+{
+    const window_items_t *w = ctx;
+    const ssda_track_vector_t *v = &w->r->vec[k];
+    cJSON *item = cJSON_CreateObject();
+    cJSON_AddNumberToObject(item, "x", v->x);
+    cJSON_AddNumberToObject(item, "y", v->y);
+    cJSON_AddNumberToObject(item, "dx", v->dx);
+    cJSON_AddNumberToObject(item, "dy", v->dy);
+    json_out_add_u64(item, "sad", v->sad);
+    cJSON_AddStringToObject(item, "status", track_status_name(v->status));
+    cJSON_AddBoolToObject(item, "exact", v->exact);
+    if (w->ref != NULL && v->status == SSDA_TRACK_OK) {
+        cJSON_AddNumberToObject(item, "ref_dx", w->ref[k][0]);
+        cJSON_AddNumberToObject(item, "ref_dy", w->ref[k][1]);
+    }
+    return item;
+}
+
+int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const track_opts_t *o,
+                     const int32_t (*ref)[2], cJSON *extra)
+{
+    cJSON *doc = json_out_object(), *m;
+    window_items_t items;
+    json_out_lazy_t lazy;
+    int rc;
+    cJSON_AddNumberToObject(doc, "width", r->second.width);
+    cJSON_AddNumberToObject(doc, "height", r->second.height);
+    cJSON_AddNumberToObject(doc, "bits", r->second.bits);
+    cJSON_AddItemToObject(doc, "grid", json_grid(&r->grid));
+    cJSON_AddItemToObject(doc, "options", json_options(r, o));
+    while (extra != NULL && (m = extra->child) != NULL) { /* moved, in order */
+        cJSON_AddItemToObject(doc, m->string, cJSON_DetachItemViaPointer(extra, m));
+    }
+    cJSON_Delete(extra);
+    cJSON_AddArrayToObject(doc, "windows"); /* placeholder: made while printing */
+    cJSON_AddItemToObject(doc, "stats", json_stats(r, o));
+    items.r = r;
+    items.ref = ref;
+    lazy.name = "windows";
+    lazy.count = r->grid.count;
+    lazy.item = json_window;
+    lazy.ctx = &items;
+    rc = json_out_print(f, doc, &lazy);
+    cJSON_Delete(doc);
+    return rc == 0 ? 0 : (cli_input_error(cmd, "out of memory for the JSON"), -1);
+}
+
+/* The part of SECOND (as read) the grid covers, plus the search margin, so
+   a small --roi is drawn large instead of lost in a reduced whole image;
+   *x0, *y0: its top-left in SECOND. Returns 0 or -1 (out of memory). */
+static int overlay_background(const gray_image_t *src, const ssda_track_grid_t *g,
+                              gray_image_t *bg, uint32_t *x0, uint32_t *y0)
+{
+    uint32_t mx = (g->search_w - g->win_w) / 2u, my = (g->search_h - g->win_h) / 2u;
+    uint32_t x1 = (uint32_t)g->roi_x + g->roi_w + mx, y1 = (uint32_t)g->roi_y + g->roi_h + my, y;
+    *x0 = g->roi_x > mx ? g->roi_x - mx : 0u;
+    *y0 = g->roi_y > my ? g->roi_y - my : 0u;
+    x1 = x1 < src->width ? x1 : src->width;
+    y1 = y1 < src->height ? y1 : src->height;
+    if (gray_image_alloc(bg, x1 - *x0, y1 - *y0, src->bits) != 0) {
+        return -1;
+    }
+    for (y = *y0; y < y1; y++) {
+        memcpy((uint8_t *)bg->pixels + (size_t)(y - *y0) * bg->stride,
+               (const uint8_t *)src->pixels + (size_t)y * src->stride +
+                   (size_t)*x0 * (src->bits / 8u),
+               bg->stride);
+    }
+    return 0;
 }
 
 int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_result_t *r,
@@ -790,36 +1052,23 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     draw_vector_t *dv = calloc(r->grid.count + 1u, sizeof *dv);
     draw_vectors_opts_t dopt;
     gray_image_t bg = {0};
-    const gray_image_t *src = &r->second_orig;
     const ssda_track_grid_t *g = &r->grid;
     char err[512];
-    uint32_t k, x0, y0, x1, y1, y, step, every = 1, off_c, off_r, n = 0;
+    uint32_t k, x0, y0, step, every = 1, off_c, off_r, n = 0;
     double zstep;
     int rc;
-    /* Show the part of SECOND the grid covers, plus the search margin: a
-       small --roi is drawn large instead of lost in a reduced whole image. */
-    x0 = g->roi_x > (g->search_w - g->win_w) / 2u ? g->roi_x - (g->search_w - g->win_w) / 2u : 0u;
-    y0 = g->roi_y > (g->search_h - g->win_h) / 2u ? g->roi_y - (g->search_h - g->win_h) / 2u : 0u;
-    x1 = (uint32_t)g->roi_x + g->roi_w + (g->search_w - g->win_w) / 2u;
-    y1 = (uint32_t)g->roi_y + g->roi_h + (g->search_h - g->win_h) / 2u;
-    x1 = x1 < src->width ? x1 : src->width;
-    y1 = y1 < src->height ? y1 : src->height;
-    if (dv == NULL || gray_image_alloc(&bg, x1 - x0, y1 - y0, src->bits) != 0) {
+    if (dv == NULL || overlay_background(&r->second_orig, g, &bg, &x0, &y0) != 0) {
         free(dv);
         cli_input_error(cmd, "out of memory");
         return -1;
     }
-    for (y = y0; y < y1; y++) {
-        memcpy((uint8_t *)bg.pixels + (size_t)(y - y0) * bg.stride,
-               (const uint8_t *)src->pixels + (size_t)y * src->stride + (size_t)x0 * (src->bits / 8u),
-               bg.stride);
-    }
     /* A dense grid on a reduced picture is a carpet of arrowheads: draw only
        every k-th column and row (centred), so drawn windows are at least
        OVERLAY_MIN_SPACING output px apart. The JSON keeps every window. */
-    step = g->step_x < g->step_y ? g->step_x : g->step_y;
+    /* only along an axis with more than one window (one window: nothing to thin) */
+    step = g->cols > 1u && (g->rows == 1u || g->step_x < g->step_y) ? g->step_x : g->step_y;
     zstep = step * draw_vectors_zoom(bg.width, bg.height);
-    while (zstep * every < OVERLAY_MIN_SPACING) {
+    while ((g->cols > 1u || g->rows > 1u) && zstep * every < OVERLAY_MIN_SPACING) {
         every++;
     }
     off_c = ((g->cols - 1u) % every) / 2u;

@@ -8,12 +8,15 @@
 
 #include "cli.h"
 #include "draw.h"
+#include "json_out.h"
 #include "ssda/track.h"
 
 typedef struct {
     ssda_track_config_t cfg;  /* library options as parsed */
     int grad;                 /* --grad: Fig. 8 operator on both images first */
     int exclude;              /* --exclude given */
+    int exclude_argi;         /* argv index of --exclude (its value is optional) */
+    int scan_given;           /* --scan given */
     int exclude_level_given;  /* LEVEL given (else the mean of SECOND) */
     uint32_t exclude_level;
     uint32_t exclude_count;   /* COUNT, 0 = window pixels / 16 */
@@ -34,6 +37,18 @@ void track_opts_init(track_opts_t *o);
 /* If the current option of a is a track option, take it and return 1
    (a->bad set on a usage error, already reported); else return 0. */
 int track_opts_take(cli_args_t *a, track_opts_t *o);
+
+/* After the loop: FIRST.png and SECOND.png, and nothing more (an extra
+   argument is named; right after --exclude, its value syntax is said).
+   Returns CLI_OK or CLI_USAGE (printed). */
+int track_check_positionals(const cli_args_t *a, const track_opts_t *o);
+
+/* Everything track and compare do with argv: the options, FIRST and
+   SECOND (*first, *second), --json and --overlay not both on stdout, the
+   outputs writable. Returns CLI_OK, CLI_USAGE or CLI_INPUT (said), or -1
+   after help() for --help. */
+int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
+                     track_opts_t *o, const char **first, const char **second);
 
 /* The help text lines of the track options (for --help). */
 extern const char track_opts_help[];
@@ -70,12 +85,14 @@ const char *track_status_name(int status);
 /* Brute-force pixel operations for the OK windows (each area searched in full). */
 uint64_t track_brute_ops(const track_result_t *r);
 
-/* Write the JSON document (see docs/cli.md). ref (grid.count entries, may be
-   NULL) adds "ref_dx", "ref_dy" to each OK window; extra_top (may be NULL)
-   is inserted as more top-level members, e.g. "\"compare\":{...}".
-   Written to f (an output of the command's cli_outputs_t). */
-void track_write_json(FILE *f, const track_result_t *r, const track_opts_t *o,
-                      const int32_t (*ref)[2], const char *extra_top);
+/* Write the JSON document (see docs/cli.md) to f (an output of the
+   command's cli_outputs_t). ref (grid.count entries, may be NULL) adds
+   "ref_dx", "ref_dy" to each OK window; extra (may be NULL; taken over and
+   deleted) is an object whose members are added to the top level before
+   "windows", e.g. {"compare":{...}}. Returns 0, or -1 (out of memory; said
+   on stderr for cmd). */
+int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const track_opts_t *o,
+                     const int32_t (*ref)[2], cJSON *extra);
 
 /* Draw the vectors over SECOND into f (name for messages). truth
    (grid.count entries, may be NULL) is drawn as the reference arrows.

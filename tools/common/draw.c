@@ -1,11 +1,11 @@
 /* draw.c - vector overlays and pitch plots with cairo. */
 #include "draw.h"
+#include "tool_err.h"
 #include "atomic_file.h"
 
 #include <cairo.h>
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,21 +13,20 @@
 #define FONT "DejaVu Sans"
 #define PI 3.14159265358979323846
 
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
+typedef struct {
+    FILE *fp;
+    int write_errno; /* errno of a failed write (ENOSPC, EFBIG), else 0 */
+} png_sink_t;
 
 static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int len)
 {
-    return fwrite(data, 1, len, (FILE *)closure) == len ? CAIRO_STATUS_SUCCESS
-                                                        : CAIRO_STATUS_WRITE_ERROR;
+    png_sink_t *sink = closure;
+    errno = 0;
+    if (fwrite(data, 1, len, sink->fp) == len) {
+        return CAIRO_STATUS_SUCCESS;
+    }
+    sink->write_errno = errno != 0 ? errno : EIO;
+    return CAIRO_STATUS_WRITE_ERROR;
 }
 
 /* Write a finished surface as PNG to fp. */
@@ -35,15 +34,19 @@ static int surface_to_stream(cairo_surface_t *s, FILE *fp, const char *name, cha
                              size_t errlen)
 {
     cairo_status_t st;
+    png_sink_t sink;
+    sink.fp = fp;
+    sink.write_errno = 0;
     if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot draw '%s': %s", name,
+        tool_set_err(err, errlen, "cannot draw '%s': %s", name,
                 cairo_status_to_string(cairo_surface_status(s)));
         return -1;
     }
     cairo_surface_flush(s);
-    st = cairo_surface_write_to_png_stream(s, write_to_file, fp);
+    st = cairo_surface_write_to_png_stream(s, write_to_file, &sink);
     if (st != CAIRO_STATUS_SUCCESS) {
-        set_err(err, errlen, "cannot write '%s': %s", name, cairo_status_to_string(st));
+        tool_set_err(err, errlen, "cannot write '%s': %s", name,
+                sink.write_errno != 0 ? strerror(sink.write_errno) : cairo_status_to_string(st));
         return -1;
     }
     return 0;
@@ -57,7 +60,7 @@ static int to_path(const char *path, char *err, size_t errlen,
 {
     atomic_file_t af;
     if (atomic_file_open(&af, path) != 0) {
-        set_err(err, errlen, "cannot create '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot create '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     if (draw(af.fp, path, ctx, err, errlen) != 0) {
@@ -65,7 +68,7 @@ static int to_path(const char *path, char *err, size_t errlen,
         return -1;
     }
     if (atomic_file_commit(&af) != 0) {
-        set_err(err, errlen, "cannot write '%s': %s", path, strerror(errno));
+        tool_set_err(err, errlen, "cannot write '%s': %s", path, atomic_file_strerror(errno));
         return -1;
     }
     return 0;
@@ -423,122 +426,154 @@ double draw_vectors_zoom(uint32_t w, uint32_t h)
     return z > 12.0 ? 12.0 : z;
 }
 
+/* The overlay's layout: zoom, arrow scale, margins, what the legend lists. */
+typedef struct {
+    double z, scale;        /* output px per image px; arrow length / motion */
+    double top, bottom;     /* margins above (titles) and below (legend), px */
+    double W, H, ox;        /* picture size; image's left edge */
+    double dot_below;       /* motions drawn as dots (0: none moving) */
+    size_t counts[DRAW_STATUS_COUNT], truths, dots;
+} vectors_layout_t;
+
+static int status_of(const draw_vector_t *v)
+{
+    return v->status >= 0 && v->status < DRAW_STATUS_COUNT ? v->status : DRAW_EDGE;
+}
+
+static void vectors_layout(const gray_image_t *bg, const draw_vector_t *v, size_t n,
+                           const draw_vectors_opts_t *o, vectors_layout_t *l)
+{
+    size_t i, moving_dots = 0;
+    cairo_surface_t *scratch;
+    cairo_t *m_cr;
+    memset(l, 0, sizeof *l);
+    l->z = draw_vectors_zoom(bg->width, bg->height);
+    l->scale = o->arrow_scale > 0.0 ? o->arrow_scale : auto_arrow_scale(v, n, o->grid_step);
+    l->top = (o->title != NULL ? 26.0 : 0.0) + (o->subtitle != NULL ? 20.0 : 0.0) + 8.0;
+    l->W = fmax(ceil(bg->width * l->z), 720.0);
+    l->dot_below = 1.5 / (l->scale * l->z); /* arrow() draws a dot under 1.5 output px */
+    for (i = 0; i < n; i++) {
+        int st = status_of(&v[i]), dot = st == DRAW_OK && hypot(v[i].dx, v[i].dy) < l->dot_below;
+        l->counts[st]++;
+        l->truths += v[i].has_truth != 0;
+        l->dots += dot;
+        moving_dots += dot && (v[i].dx != 0.0 || v[i].dy != 0.0);
+    }
+    if (moving_dots == 0) { /* the legend then says "no motion" */
+        l->dot_below = 0.0;
+    }
+    /* wide enough for the title lines; tall enough for the legend */
+    scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
+    m_cr = cairo_create(scratch);
+    if (o->title != NULL) {
+        l->W = fmax(l->W, ceil(text_width(m_cr, 16, 1, o->title)) + 20.0);
+    }
+    if (o->subtitle != NULL) {
+        l->W = fmax(l->W, ceil(text_width(m_cr, 13, 0, o->subtitle)) + 20.0);
+    }
+    l->bottom = 48.0 + 26.0 * legend_items(m_cr, o, l->counts, l->dots, l->dot_below, l->truths,
+                                           l->W, 0.0, 0);
+    cairo_destroy(m_cr);
+    cairo_surface_destroy(scratch);
+    l->H = ceil(bg->height * l->z) + l->top + l->bottom;
+    l->ox = floor((l->W - ceil(bg->width * l->z)) / 2.0);
+}
+
+/* The dark page and the image, scaled. */
+static void vectors_background(cairo_t *cr, const gray_image_t *bg, const draw_vectors_opts_t *o,
+                               const vectors_layout_t *l)
+{
+    cairo_surface_t *img_s = background_surface(bg, o);
+    cairo_set_source_rgb(cr, 0.11, 0.11, 0.13);
+    cairo_paint(cr);
+    cairo_save(cr);
+    cairo_translate(cr, l->ox, l->top);
+    cairo_scale(cr, l->z, l->z);
+    cairo_set_source_surface(cr, img_s, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr),
+                             l->z >= 2.0 ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_GOOD);
+    cairo_rectangle(cr, 0, 0, bg->width, bg->height);
+    cairo_fill(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(img_s);
+}
+
+/* Marks and arrows, in output pixels. */
+static void vectors_marks(cairo_t *cr, const draw_vector_t *v, size_t n,
+                          const draw_vectors_opts_t *o, const vectors_layout_t *l)
+{
+    double lw = fmin(3.0, fmax(1.5, o->grid_step * l->z / 14.0)), k = l->scale * l->z;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        int st = status_of(&v[i]);
+        double tx = l->ox + (v[i].x + 0.5) * l->z, ty = l->top + (v[i].y + 0.5) * l->z;
+        if (has_arrow(st)) {
+            arrow(cr, tx, ty, tx + v[i].dx * k, ty + v[i].dy * k, status_rgb[st], lw);
+        } else {
+            status_mark(cr, tx, ty, st, fmax(3.5, lw * 1.8));
+        }
+        if (v[i].has_truth) { /* on top and thinner: a cyan core where both agree */
+            arrow(cr, tx, ty, tx + v[i].tdx * k, ty + v[i].tdy * k, truth_rgb,
+                  fmax(1.0, lw * 0.45));
+        }
+    }
+}
+
+/* Title lines, the legend, then the scale arrow on the last line: a
+   reference arrow of a round motion drawn 60..150 px long. */
+static void vectors_text(cairo_t *cr, const draw_vectors_opts_t *o, const vectors_layout_t *l)
+{
+    double y = 0.0, ref, k = l->scale * l->z;
+    char buf[256];
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    if (o->title != NULL) {
+        text_at(cr, 10, y + 20, 16, 1, o->title);
+        y += 26.0;
+    }
+    if (o->subtitle != NULL) {
+        cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
+        text_at(cr, 10, y + 15, 13, 0, o->subtitle);
+    }
+    y = l->H - l->bottom + 24.0;
+    y += 26.0 * (legend_items(cr, o, l->counts, l->dots, l->dot_below, l->truths, l->W, y, 1) - 1);
+    ref = nice_floor(120.0 / k);
+    y += 28.0;
+    arrow(cr, 12, y - 4, 12 + ref * k, y - 4, status_rgb[DRAW_OK], 2.5);
+    if (l->z != 1.0) {
+        snprintf(buf, sizeof buf, "= %g px of motion   (arrows drawn %g x longer than the "
+                 "motion; image shown at %.3g x)", ref, l->scale, l->z);
+    } else {
+        snprintf(buf, sizeof buf, "= %g px of motion   (arrows drawn %g x longer than the "
+                 "motion)", ref, l->scale);
+    }
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    text_at(cr, 12 + ref * k + 10, y, 13, 0, buf);
+}
+
 int draw_vectors_to(FILE *fp, const char *name, const gray_image_t *bg, const draw_vector_t *v,
                     size_t n, const draw_vectors_opts_t *opts, double *scale_used, char *err,
                     size_t errlen)
 {
     draw_vectors_opts_t o;
-    cairo_surface_t *img_s, *out;
+    vectors_layout_t l;
+    cairo_surface_t *out;
     cairo_t *cr;
-    double z, scale, top, bottom, W, H, ox, lw, ref, y;
-    size_t counts[DRAW_STATUS_COUNT] = {0}, i, truths = 0, dots = 0, moving_dots = 0;
-    double dot_below;
-    char buf[256];
     int rc;
-
     if (opts != NULL) {
         o = *opts;
     } else {
         memset(&o, 0, sizeof o);
     }
-    z = draw_vectors_zoom(bg->width, bg->height);
-    scale = o.arrow_scale > 0.0 ? o.arrow_scale : auto_arrow_scale(v, n, o.grid_step);
+    vectors_layout(bg, v, n, &o, &l);
     if (scale_used != NULL) {
-        *scale_used = scale;
+        *scale_used = l.scale;
     }
-    top = (o.title != NULL ? 26.0 : 0.0) + (o.subtitle != NULL ? 20.0 : 0.0) + 8.0;
-    W = fmax(ceil(bg->width * z), 720.0);
-    dot_below = 1.5 / (scale * z); /* arrow() draws a dot under 1.5 output px */
-    for (i = 0; i < n; i++) {
-        int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
-        counts[st]++;
-        truths += v[i].has_truth != 0;
-        dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below;
-        moving_dots += st == DRAW_OK && hypot(v[i].dx, v[i].dy) < dot_below &&
-                       (v[i].dx != 0.0 || v[i].dy != 0.0);
-    }
-    if (moving_dots == 0) { /* the legend then says "no motion" */
-        dot_below = 0.0;
-    }
-    { /* wide enough for the title lines; tall enough for the legend */
-        cairo_surface_t *scratch = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 8, 8);
-        cairo_t *m_cr = cairo_create(scratch);
-        if (o.title != NULL) {
-            W = fmax(W, ceil(text_width(m_cr, 16, 1, o.title)) + 20.0);
-        }
-        if (o.subtitle != NULL) {
-            W = fmax(W, ceil(text_width(m_cr, 13, 0, o.subtitle)) + 20.0);
-        }
-        bottom = 48.0 + 26.0 * legend_items(m_cr, &o, counts, dots, dot_below, truths, W, 0.0, 0);
-        cairo_destroy(m_cr);
-        cairo_surface_destroy(scratch);
-    }
-    H = ceil(bg->height * z) + top + bottom;
-    ox = floor((W - ceil(bg->width * z)) / 2.0);
-
-    img_s = background_surface(bg, &o);
-    out = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)W, (int)H);
+    out = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)l.W, (int)l.H);
     cr = cairo_create(out);
-    cairo_set_source_rgb(cr, 0.11, 0.11, 0.13);
-    cairo_paint(cr);
-
-    cairo_save(cr);
-    cairo_translate(cr, ox, top);
-    cairo_scale(cr, z, z);
-    cairo_set_source_surface(cr, img_s, 0, 0);
-    cairo_pattern_set_filter(cairo_get_source(cr),
-                             z >= 2.0 ? CAIRO_FILTER_NEAREST : CAIRO_FILTER_GOOD);
-    cairo_rectangle(cr, 0, 0, bg->width, bg->height);
-    cairo_fill(cr);
-    cairo_restore(cr);
-
-    /* Marks and arrows, in output pixels. */
-    lw = fmin(3.0, fmax(1.5, o.grid_step * z / 14.0));
-    for (i = 0; i < n; i++) {
-        int st = v[i].status >= 0 && v[i].status < DRAW_STATUS_COUNT ? v[i].status : DRAW_EDGE;
-        double tx = ox + (v[i].x + 0.5) * z, ty = top + (v[i].y + 0.5) * z;
-        if (has_arrow(st)) {
-            arrow(cr, tx, ty, tx + v[i].dx * scale * z, ty + v[i].dy * scale * z,
-                  status_rgb[st], lw);
-        } else {
-            status_mark(cr, tx, ty, st, fmax(3.5, lw * 1.8));
-        }
-        if (v[i].has_truth) { /* on top and thinner: a cyan core where both agree */
-            arrow(cr, tx, ty, tx + v[i].tdx * scale * z, ty + v[i].tdy * scale * z, truth_rgb,
-                  fmax(1.0, lw * 0.45));
-        }
-    }
-
-    /* Title lines. */
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    y = 0.0;
-    if (o.title != NULL) {
-        text_at(cr, 10, y + 20, 16, 1, o.title);
-        y += 26.0;
-    }
-    if (o.subtitle != NULL) {
-        cairo_set_source_rgb(cr, 0.85, 0.85, 0.85);
-        text_at(cr, 10, y + 15, 13, 0, o.subtitle);
-    }
-
-    /* Legend, then the scale arrow on the last line. */
-    y = H - bottom + 24.0;
-    y += 26.0 * (legend_items(cr, &o, counts, dots, dot_below, truths, W, y, 1) - 1);
-    /* Scale: a reference arrow of a round motion drawn 60..150 px long. */
-    ref = nice_floor(120.0 / (scale * z));
-    y += 28.0;
-    arrow(cr, 12, y - 4, 12 + ref * scale * z, y - 4, status_rgb[DRAW_OK], 2.5);
-    if (z != 1.0) {
-        snprintf(buf, sizeof buf, "= %g px of motion   (arrows drawn %g x longer than the "
-                 "motion; image shown at %.3g x)", ref, scale, z);
-    } else {
-        snprintf(buf, sizeof buf, "= %g px of motion   (arrows drawn %g x longer than the "
-                 "motion)", ref, scale);
-    }
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    text_at(cr, 12 + ref * scale * z + 10, y, 13, 0, buf);
+    vectors_background(cr, bg, &o, &l);
+    vectors_marks(cr, v, n, &o, &l);
+    vectors_text(cr, &o, &l);
     cairo_destroy(cr);
-    cairo_surface_destroy(img_s);
     rc = surface_to_stream(out, fp, name, err, errlen);
     cairo_surface_destroy(out);
     return rc;
@@ -602,243 +637,294 @@ static void pitch_triangle(cairo_t *cr, double x, double y, int up)
     cairo_fill(cr);
 }
 
-int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *err,
-                  size_t errlen)
-{
-    const double W = 1100.0, H = 560.0, L = 78.0, R = 24.0, T = 62.0, PH = 330.0,
-                 WT = T + PH + 16.0, WH = 80.0;
-    const double PW = W - L - R;
-    double tmax = 0.0, f_lo = o->fmin, f_hi = o->fmax, step, v;
-    cairo_surface_t *s;
-    cairo_t *cr;
-    size_t i, beyond = 0;
-    int pass, rc;
-    char buf[64];
+/* The pitch plot's geometry (output px) and ranges. */
+typedef struct {
+    double W, H;   /* picture */
+    double L, PW;  /* plot left edge and width */
+    double T, PH;  /* plot top edge and height */
+    double WT, WH; /* waveform strip top and height */
+    double tmax;   /* time axis 0..tmax, s */
+    double f_lo, f_hi;
+} pitch_plot_t;
 
-    /* Axes ranges from the data unless given: the 2nd..98th percentile of the
-       voiced values, so a few wild frames do not squash the plot (frames
-       beyond the range are marked on its edge). */
-    {
-        double lo = 0.0, hi = 0.0, *vals;
-        size_t nv = 0;
-        const draw_track_t *tr[2] = {&o->estimate, &o->reference};
-        vals = malloc((o->estimate.n + o->reference.n + 1u) * sizeof *vals);
-        for (pass = 0; pass < 2; pass++) {
-            for (i = 0; i < tr[pass]->n; i++) {
-                if (tr[pass]->t[i] > tmax) {
-                    tmax = tr[pass]->t[i];
-                }
-                if (tr[pass]->f0[i] > 0.0 && vals != NULL) {
-                    vals[nv++] = tr[pass]->f0[i];
-                }
+static double plot_x(const pitch_plot_t *p, double t)
+{
+    return p->L + t / p->tmax * p->PW;
+}
+
+static double plot_y(const pitch_plot_t *p, double f)
+{
+    return p->T + p->PH - (f - p->f_lo) / (p->f_hi - p->f_lo) * p->PH;
+}
+
+/* Axes ranges from the data unless given: the 2nd..98th percentile of the
+   voiced values, so a few wild frames do not squash the plot (frames beyond
+   the range are marked on its edge). */
+static void pitch_ranges(const draw_pitch_opts_t *o, pitch_plot_t *p)
+{
+    double lo = 0.0, hi = 0.0, *vals;
+    size_t nv = 0, i;
+    int pass;
+    const draw_track_t *tr[2] = {&o->estimate, &o->reference};
+    p->tmax = 0.0;
+    vals = malloc((o->estimate.n + o->reference.n + 1u) * sizeof *vals);
+    for (pass = 0; pass < 2; pass++) {
+        for (i = 0; i < tr[pass]->n; i++) {
+            p->tmax = tr[pass]->t[i] > p->tmax ? tr[pass]->t[i] : p->tmax;
+            if (tr[pass]->f0[i] > 0.0 && vals != NULL) {
+                vals[nv++] = tr[pass]->f0[i];
             }
         }
-        if (nv > 0) {
-            qsort(vals, nv, sizeof *vals, cmp_double);
-            lo = vals[(nv * 2u) / 100u];
-            hi = vals[nv - 1u - (nv * 2u) / 100u];
-        }
-        free(vals);
-        if (o->samples != NULL && o->sample_rate > 0) {
-            tmax = fmax(tmax, (double)o->sample_count / o->sample_rate);
-        }
-        if (hi <= 0.0) {
-            lo = 50.0;
-            hi = 500.0;
-        }
-        if (f_lo <= 0.0) {
-            f_lo = fmax(0.0, lo - 0.15 * (hi - lo) - 5.0);
-        }
-        if (f_hi <= 0.0) {
-            f_hi = hi + 0.15 * (hi - lo) + 5.0;
-        }
-        if (f_hi <= f_lo) {
-            f_hi = f_lo + 1.0;
-        }
-        if (tmax <= 0.0) {
-            tmax = 1.0;
-        }
     }
-#define PX(t) (L + (t) / tmax * PW)
-#define PY(f) (T + PH - ((f) - f_lo) / (f_hi - f_lo) * PH)
+    if (nv > 0) {
+        qsort(vals, nv, sizeof *vals, cmp_double);
+        lo = vals[(nv * 2u) / 100u];
+        hi = vals[nv - 1u - (nv * 2u) / 100u];
+    }
+    free(vals);
+    if (o->samples != NULL && o->sample_rate > 0) {
+        p->tmax = fmax(p->tmax, (double)o->sample_count / o->sample_rate);
+    }
+    if (hi <= 0.0) {
+        lo = 50.0;
+        hi = 500.0;
+    }
+    p->f_lo = o->fmin > 0.0 ? o->fmin : fmax(0.0, lo - 0.15 * (hi - lo) - 5.0);
+    p->f_hi = o->fmax > 0.0 ? o->fmax : hi + 0.15 * (hi - lo) + 5.0;
+    if (p->f_hi <= p->f_lo) {
+        p->f_hi = p->f_lo + 1.0;
+    }
+    if (p->tmax <= 0.0) {
+        p->tmax = 1.0;
+    }
+}
 
-    s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)W, (int)H);
-    cr = cairo_create(s);
+/* Background, title and subtitle. */
+static void pitch_background(cairo_t *cr, const draw_pitch_opts_t *o, const pitch_plot_t *p)
+{
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0.97, 0.97, 0.98);
-    cairo_rectangle(cr, L, T, PW, PH);
+    cairo_rectangle(cr, p->L, p->T, p->PW, p->PH);
     cairo_fill(cr);
-
     cairo_set_source_rgb(cr, 0, 0, 0);
     if (o->title != NULL) {
-        text_at(cr, L, 24, 17, 1, o->title);
+        text_at(cr, p->L, 24, 17, 1, o->title);
     }
     if (o->subtitle != NULL) {
         cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-        text_at(cr, L, 46, 13, 0, o->subtitle);
+        text_at(cr, p->L, 46, 13, 0, o->subtitle);
     }
+}
 
-    /* Grid and tick labels. */
+/* Grid lines, tick labels and axis titles. */
+static void pitch_axes(cairo_t *cr, const pitch_plot_t *p)
+{
+    char buf[64];
+    double step = tick_step(p->f_hi - p->f_lo, 6), v;
     cairo_set_line_width(cr, 1.0);
-    step = tick_step(f_hi - f_lo, 6);
-    for (v = ceil(f_lo / step) * step; v <= f_hi + 1e-9; v += step) {
+    for (v = ceil(p->f_lo / step) * step; v <= p->f_hi + 1e-9; v += step) {
         cairo_set_source_rgb(cr, 0.85, 0.85, 0.88);
-        cairo_move_to(cr, L, floor(PY(v)) + 0.5);
-        cairo_line_to(cr, L + PW, floor(PY(v)) + 0.5);
+        cairo_move_to(cr, p->L, floor(plot_y(p, v)) + 0.5);
+        cairo_line_to(cr, p->L + p->PW, floor(plot_y(p, v)) + 0.5);
         cairo_stroke(cr);
         snprintf(buf, sizeof buf, "%g", v);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text_at(cr, L - 8 - text_width(cr, 12, 0, buf), PY(v) + 4, 12, 0, buf);
+        text_at(cr, p->L - 8 - text_width(cr, 12, 0, buf), plot_y(p, v) + 4, 12, 0, buf);
     }
-    step = tick_step(tmax, 10);
-    for (v = 0.0; v <= tmax + 1e-9; v += step) {
+    step = tick_step(p->tmax, 10);
+    for (v = 0.0; v <= p->tmax + 1e-9; v += step) {
         cairo_set_source_rgb(cr, 0.85, 0.85, 0.88);
-        cairo_move_to(cr, floor(PX(v)) + 0.5, T);
-        cairo_line_to(cr, floor(PX(v)) + 0.5, WT + WH);
+        cairo_move_to(cr, floor(plot_x(p, v)) + 0.5, p->T);
+        cairo_line_to(cr, floor(plot_x(p, v)) + 0.5, p->WT + p->WH);
         cairo_stroke(cr);
         snprintf(buf, sizeof buf, "%g", v);
         cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text_at(cr, PX(v) - text_width(cr, 12, 0, buf) / 2, WT + WH + 18, 12, 0, buf);
+        text_at(cr, plot_x(p, v) - text_width(cr, 12, 0, buf) / 2, p->WT + p->WH + 18, 12, 0,
+                buf);
     }
-    text_at(cr, L + PW / 2 - 24, WT + WH + 38, 13, 0, "time (s)");
+    text_at(cr, p->L + p->PW / 2 - 24, p->WT + p->WH + 38, 13, 0, "time (s)");
     cairo_save(cr);
-    cairo_move_to(cr, 22, T + PH / 2 + 24);
+    cairo_move_to(cr, 22, p->T + p->PH / 2 + 24);
     cairo_rotate(cr, -PI / 2);
     cairo_select_font_face(cr, FONT, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, 13);
     cairo_show_text(cr, "f0 (Hz)");
     cairo_restore(cr);
+}
 
-    /* Waveform strip: min/max per column. */
-    if (o->samples != NULL && o->sample_count > 0 && o->sample_rate > 0) {
-        int col, peak = 1;
-        size_t k;
-        for (k = 0; k < o->sample_count; k++) { /* scale the loudest sample to the strip */
-            int a = o->samples[k] < 0 ? -o->samples[k] : o->samples[k];
-            peak = a > peak ? a : peak;
-        }
-        cairo_set_source_rgb(cr, 0.97, 0.97, 0.98);
-        cairo_rectangle(cr, L, WT, PW, WH);
-        cairo_fill(cr);
-        cairo_set_source_rgb(cr, 0.45, 0.45, 0.5);
-        cairo_set_line_width(cr, 1.0);
-        for (col = 0; col < (int)PW; col++) {
-            size_t a = (size_t)((double)col / PW * tmax * o->sample_rate);
-            size_t b = (size_t)((double)(col + 1) / PW * tmax * o->sample_rate);
-            int lo = 0, hi = 0;
-            if (a >= o->sample_count) {
-                break;
-            }
-            if (b > o->sample_count) {
-                b = o->sample_count;
-            }
-            for (k = a; k < b; k++) {
-                lo = o->samples[k] < lo ? o->samples[k] : lo;
-                hi = o->samples[k] > hi ? o->samples[k] : hi;
-            }
-            cairo_move_to(cr, L + col + 0.5, WT + WH / 2 - 0.95 * hi / peak * WH / 2);
-            cairo_line_to(cr, L + col + 0.5, WT + WH / 2 - 0.95 * lo / peak * WH / 2 + 0.5);
-            cairo_stroke(cr);
-        }
-        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text_at(cr, L - 8 - text_width(cr, 11, 0, "waveform"), WT + WH / 2 + 4, 11, 0,
-                "waveform");
+/* Waveform strip: min/max per column, the loudest sample filling it. */
+static void pitch_waveform(cairo_t *cr, const draw_pitch_opts_t *o, const pitch_plot_t *p)
+{
+    int col, peak = 1;
+    size_t k;
+    if (o->samples == NULL || o->sample_count == 0 || o->sample_rate == 0) {
+        return;
     }
-
-    /* Tracks, clipped to the plot. */
-    cairo_save(cr);
-    cairo_rectangle(cr, L, T, PW, PH);
-    cairo_clip(cr);
-    for (pass = 0; pass < 2; pass++) {
-        const draw_track_t *tr = pass == 0 ? &o->reference : &o->estimate;
-        double gap = 2.5 * frame_spacing(tr);
-        int open = 0;
-        if (pass == 0) {
-            cairo_set_source_rgba(cr, 0.25, 0.55, 1.0, 0.45);
-            cairo_set_line_width(cr, 7.0);
-        } else {
-            cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
-            cairo_set_line_width(cr, 1.6);
+    for (k = 0; k < o->sample_count; k++) {
+        int a = o->samples[k] < 0 ? -o->samples[k] : o->samples[k];
+        peak = a > peak ? a : peak;
+    }
+    cairo_set_source_rgb(cr, 0.97, 0.97, 0.98);
+    cairo_rectangle(cr, p->L, p->WT, p->PW, p->WH);
+    cairo_fill(cr);
+    cairo_set_source_rgb(cr, 0.45, 0.45, 0.5);
+    cairo_set_line_width(cr, 1.0);
+    for (col = 0; col < (int)p->PW; col++) {
+        size_t a = (size_t)((double)col / p->PW * p->tmax * o->sample_rate);
+        size_t b = (size_t)((double)(col + 1) / p->PW * p->tmax * o->sample_rate);
+        int lo = 0, hi = 0;
+        if (a >= o->sample_count) {
+            break;
         }
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-        cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-        for (i = 0; i < tr->n; i++) {
-            if (tr->f0[i] <= 0.0) {
-                open = 0;
-                continue;
-            }
-            if (open && tr->t[i] - tr->t[i - 1] <= gap) {
-                cairo_line_to(cr, PX(tr->t[i]), PY(tr->f0[i]));
-            } else {
-                cairo_move_to(cr, PX(tr->t[i]), PY(tr->f0[i]));
-                cairo_line_to(cr, PX(tr->t[i]) + 0.01, PY(tr->f0[i]));
-            }
-            open = 1;
+        b = b > o->sample_count ? o->sample_count : b;
+        for (k = a; k < b; k++) {
+            lo = o->samples[k] < lo ? o->samples[k] : lo;
+            hi = o->samples[k] > hi ? o->samples[k] : hi;
         }
+        cairo_move_to(cr, p->L + col + 0.5, p->WT + p->WH / 2 - 0.95 * hi / peak * p->WH / 2);
+        cairo_line_to(cr, p->L + col + 0.5,
+                      p->WT + p->WH / 2 - 0.95 * lo / peak * p->WH / 2 + 0.5);
         cairo_stroke(cr);
-        if (pass == 1 && tr->n <= (size_t)PW) { /* dots when frames are sparse enough */
-            for (i = 0; i < tr->n; i++) {
-                if (tr->f0[i] > 0.0) {
-                    cairo_new_sub_path(cr);
-                    cairo_arc(cr, PX(tr->t[i]), PY(tr->f0[i]), 2.2, 0, 2 * PI);
-                }
-            }
-            cairo_fill(cr);
-        }
     }
-    cairo_restore(cr);
-    /* Estimates beyond the y range: small triangles on the edge they pass. */
+    cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+    text_at(cr, p->L - 8 - text_width(cr, 11, 0, "waveform"), p->WT + p->WH / 2 + 4, 11, 0,
+            "waveform");
+}
+
+/* One track: lines through voiced frames, broken at gaps; the estimate
+   (estimate = 1) also as dots when its frames are sparse enough. */
+static void pitch_track_line(cairo_t *cr, const draw_track_t *tr, int estimate,
+                             const pitch_plot_t *p)
+{
+    double gap = 2.5 * frame_spacing(tr);
+    int open = 0;
+    size_t i;
+    if (!estimate) {
+        cairo_set_source_rgba(cr, 0.25, 0.55, 1.0, 0.45);
+        cairo_set_line_width(cr, 7.0);
+    } else {
+        cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
+        cairo_set_line_width(cr, 1.6);
+    }
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    for (i = 0; i < tr->n; i++) {
+        double x = plot_x(p, tr->t[i]), y = plot_y(p, tr->f0[i]);
+        if (tr->f0[i] <= 0.0) {
+            open = 0;
+            continue;
+        }
+        if (open && tr->t[i] - tr->t[i - 1] <= gap) {
+            cairo_line_to(cr, x, y);
+        } else {
+            cairo_move_to(cr, x, y);
+            cairo_line_to(cr, x + 0.01, y);
+        }
+        open = 1;
+    }
+    cairo_stroke(cr);
+    if (estimate && tr->n <= (size_t)p->PW) {
+        for (i = 0; i < tr->n; i++) {
+            if (tr->f0[i] > 0.0) {
+                cairo_new_sub_path(cr);
+                cairo_arc(cr, plot_x(p, tr->t[i]), plot_y(p, tr->f0[i]), 2.2, 0, 2 * PI);
+            }
+        }
+        cairo_fill(cr);
+    }
+}
+
+/* Estimates beyond the y range: small triangles on the edge they pass, and
+   their legend at the bottom right, clear of the data and the axis title. */
+static void pitch_beyond(cairo_t *cr, const draw_pitch_opts_t *o, const pitch_plot_t *p)
+{
+    size_t i, beyond = 0;
+    char buf[64];
+    double v;
     cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
     for (i = 0; i < o->estimate.n; i++) {
-        double f = o->estimate.f0[i], x = PX(o->estimate.t[i]);
-        if (f <= 0.0 || (f >= f_lo && f <= f_hi)) {
+        double f = o->estimate.f0[i];
+        if (f <= 0.0 || (f >= p->f_lo && f <= p->f_hi)) {
             continue;
         }
         beyond++;
-        pitch_triangle(cr, x, f > f_hi ? T - 1 : T + PH + 1, f > f_hi);
+        pitch_triangle(cr, plot_x(p, o->estimate.t[i]), f > p->f_hi ? p->T - 1 : p->T + p->PH + 1,
+                       f > p->f_hi);
     }
-    if (beyond > 0) { /* their legend: bottom right, clear of the data and the axis title */
-        snprintf(buf, sizeof buf, "f0 beyond the axis range: %zu frame%s", beyond,
-                 beyond == 1 ? "" : "s");
-        v = L + PW - text_width(cr, 12, 0, buf);
-        cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
-        pitch_triangle(cr, v - 24, WT + WH + 38 - 10, 1);
-        pitch_triangle(cr, v - 12, WT + WH + 38 - 10, 0);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        text_at(cr, v, WT + WH + 38, 12, 0, buf);
+    if (beyond == 0) {
+        return;
     }
+    snprintf(buf, sizeof buf, "f0 beyond the axis range: %zu frame%s", beyond,
+             beyond == 1 ? "" : "s");
+    v = p->L + p->PW - text_width(cr, 12, 0, buf);
+    cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
+    pitch_triangle(cr, v - 24, p->WT + p->WH + 38 - 10, 1);
+    pitch_triangle(cr, v - 12, p->WT + p->WH + 38 - 10, 0);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    text_at(cr, v, p->WT + p->WH + 38, 12, 0, buf);
+}
 
-    /* Frame and legend. */
+/* The plot's frame, and the legend top right, above the plot. */
+static void pitch_legend(cairo_t *cr, const draw_pitch_opts_t *o, const pitch_plot_t *p)
+{
+    const char *est_label = "estimate (unvoiced frames not drawn)";
+    double tw, lx, ly;
     cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
     cairo_set_line_width(cr, 1.0);
-    cairo_rectangle(cr, L + 0.5, T + 0.5, PW - 1, PH - 1);
+    cairo_rectangle(cr, p->L + 0.5, p->T + 0.5, p->PW - 1, p->PH - 1);
     cairo_stroke(cr);
-    {
-        const char *est_label = "estimate (unvoiced frames not drawn)";
-        double tw = text_width(cr, 12, 0, est_label);
-        /* top right, above the plot, clear of the data */
-        double lx = L + PW - tw - 40, ly = o->reference.n > 0 ? 22 : 44;
-        cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
-        cairo_set_line_width(cr, 2.0);
-        cairo_move_to(cr, lx, ly - 4);
-        cairo_line_to(cr, lx + 28, ly - 4);
+    tw = text_width(cr, 12, 0, est_label);
+    lx = p->L + p->PW - tw - 40;
+    ly = o->reference.n > 0 ? 22 : 44;
+    cairo_set_source_rgb(cr, 0.85, 0.15, 0.1);
+    cairo_set_line_width(cr, 2.0);
+    cairo_move_to(cr, lx, ly - 4);
+    cairo_line_to(cr, lx + 28, ly - 4);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    text_at(cr, lx + 36, ly, 12, 0, est_label);
+    if (o->reference.n > 0) {
+        cairo_set_source_rgba(cr, 0.25, 0.55, 1.0, 0.45);
+        cairo_set_line_width(cr, 7.0);
+        cairo_move_to(cr, lx, ly + 18);
+        cairo_line_to(cr, lx + 28, ly + 18);
         cairo_stroke(cr);
         cairo_set_source_rgb(cr, 0, 0, 0);
-        text_at(cr, lx + 36, ly, 12, 0, est_label);
-        if (o->reference.n > 0) {
-            cairo_set_source_rgba(cr, 0.25, 0.55, 1.0, 0.45);
-            cairo_set_line_width(cr, 7.0);
-            cairo_move_to(cr, lx, ly + 18);
-            cairo_line_to(cr, lx + 28, ly + 18);
-            cairo_stroke(cr);
-            cairo_set_source_rgb(cr, 0, 0, 0);
-            text_at(cr, lx + 36, ly + 22, 12, 0,
-                    o->reference_label != NULL ? o->reference_label : "reference");
-        }
+        text_at(cr, lx + 36, ly + 22, 12, 0,
+                o->reference_label != NULL ? o->reference_label : "reference");
     }
-#undef PX
-#undef PY
+}
+
+int draw_pitch_to(FILE *fp, const char *name, const draw_pitch_opts_t *o, char *err,
+                  size_t errlen)
+{
+    pitch_plot_t p;
+    cairo_surface_t *s;
+    cairo_t *cr;
+    int rc;
+    p.W = 1100.0;
+    p.H = 560.0;
+    p.L = 78.0;
+    p.PW = p.W - p.L - 24.0;
+    p.T = 62.0;
+    p.PH = 330.0;
+    p.WT = p.T + p.PH + 16.0;
+    p.WH = 80.0;
+    pitch_ranges(o, &p);
+    s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)p.W, (int)p.H);
+    cr = cairo_create(s);
+    pitch_background(cr, o, &p);
+    pitch_axes(cr, &p);
+    pitch_waveform(cr, o, &p);
+    cairo_save(cr); /* tracks clipped to the plot */
+    cairo_rectangle(cr, p.L, p.T, p.PW, p.PH);
+    cairo_clip(cr);
+    pitch_track_line(cr, &o->reference, 0, &p);
+    pitch_track_line(cr, &o->estimate, 1, &p);
+    cairo_restore(cr);
+    pitch_beyond(cr, o, &p);
+    pitch_legend(cr, o, &p);
     cairo_destroy(cr);
     rc = surface_to_stream(s, fp, name, err, errlen);
     cairo_surface_destroy(s);

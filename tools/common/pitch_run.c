@@ -1,24 +1,11 @@
 /* pitch_run.c - whole-signal f0 tracks through ssda_pitch, reference CSVs, scores. */
 #include "pitch_run.h"
+#include "tool_err.h"
 
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static void set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-    va_list ap;
-    if (err == NULL || errlen == 0) {
-        return;
-    }
-    va_start(ap, fmt);
-    vsnprintf(err, errlen, fmt, ap);
-    va_end(ap);
-}
 
 void pitch_track_free(pitch_track_t *tr)
 {
@@ -61,102 +48,137 @@ static int track_grow(pitch_track_t *tr, size_t cap)
                                                                                      : -1;
 }
 
+/* Rates above 48 kHz: groups of factor samples averaged (rounded half away
+   from zero) into *out (malloc'ed, n / factor samples). Returns 0 or -1. */
+static int decimate(const int16_t *x, size_t n, uint32_t factor, int16_t **out, size_t *len)
+{
+    size_t i, k;
+    int16_t *dec;
+    *len = n / factor;
+    dec = malloc((*len + 1u) * sizeof *dec);
+    if (dec == NULL) {
+        return -1;
+    }
+    for (i = 0; i < *len; i++) {
+        long s = 0;
+        for (k = 0; k < factor; k++) {
+            s += x[i * factor + k];
+        }
+        dec[i] = (int16_t)(s >= 0 ? (s + (long)factor / 2) / (long)factor
+                                  : -((-s + (long)factor / 2) / (long)factor));
+    }
+    *out = dec;
+    return 0;
+}
+
+/* One estimate appended to tr (grown as needed). Returns 0 or -1. */
+static int append_estimate(pitch_track_t *tr, size_t *cap, const ssda_pitch_estimate_t *est,
+                           uint32_t arate)
+{
+    size_t i = tr->n;
+    if (i == *cap) {
+        *cap *= 2u;
+        if (track_grow(tr, *cap) != 0) {
+            return -1;
+        }
+    }
+    /* est.center is frame * hop + (its offset) mod 2^32: keep the offset
+       exact and add the frame start in double (long files) */
+    tr->t[i] = ((double)est->frame * tr->info.hop +
+                (double)(uint32_t)(est->center - est->frame * tr->info.hop)) /
+               arate;
+    tr->t_frame[i] = ((double)est->frame * tr->info.hop + tr->info.span / 2.0) / arate;
+    tr->f0_raw[i] = est->f0_q16 / 65536.0;
+    tr->f0[i] = est->voiced ? tr->f0_raw[i] : 0.0;
+    tr->voiced[i] = est->voiced ? 1u : 0u;
+    tr->confidence_q15[i] = est->confidence_q15;
+    tr->diffs += est->diffs;
+    tr->analysed += est->silent ? 0u : 1u;
+    tr->n++;
+    return 0;
+}
+
+/* Push sig[0..len-1] through an initialised job into tr. Returns 0 or -1. */
+static int push_all(ssda_pitch_t *p, const int16_t *sig, size_t len, uint32_t arate,
+                    progress_t *prog, pitch_track_t *tr, char *err, size_t errlen)
+{
+    ssda_pitch_estimate_t est;
+    size_t pos = 0, used, cap = (len - tr->info.span) / tr->info.hop + 2u;
+    int e;
+    if (track_grow(tr, cap) != 0) {
+        tool_set_err(err, errlen, "out of memory");
+        return -1;
+    }
+    while (pos < len) {
+        e = ssda_pitch_push(p, sig + pos, len - pos, &used, &est);
+        if (e < 0) {
+            tool_set_err(err, errlen, "pitch search failed: %s", ssda_strerror(e));
+            return -1;
+        }
+        pos += used;
+        if (e == 1 && append_estimate(tr, &cap, &est, arate) != 0) {
+            tool_set_err(err, errlen, "out of memory");
+            return -1;
+        }
+        if (e == 1 && prog != NULL) {
+            progress_update(prog, pos);
+        }
+    }
+    return 0;
+}
+
 int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config_t *cfg,
               progress_t *prog, pitch_track_t *out, char *err, size_t errlen)
 {
     pitch_track_t tr;
     ssda_pitch_config_t c = *cfg;
     ssda_pitch_t p;
-    ssda_pitch_estimate_t est;
     int16_t *dec = NULL;
     const int16_t *sig = x;
     void *buf = NULL;
-    size_t bytes, pos = 0, cap, used, len = n;
+    size_t bytes, len = n;
     uint32_t factor = 1, arate = rate;
     int e, rc = -1;
 
     memset(&tr, 0, sizeof tr);
     if (rate < SSDA_PITCH_RATE_MIN) {
-        set_err(err, errlen, "sample rate %u Hz is below the %u Hz the pitch search needs", rate,
-                SSDA_PITCH_RATE_MIN);
+        tool_set_err(err, errlen, "sample rate %u Hz is below the %u Hz the pitch search needs",
+                     rate, SSDA_PITCH_RATE_MIN);
         return -1;
     }
     if (rate > SSDA_PITCH_RATE_MAX) { /* average groups of samples down to <= 48 kHz */
-        size_t i, k;
         factor = (rate + SSDA_PITCH_RATE_MAX - 1u) / SSDA_PITCH_RATE_MAX;
         arate = (uint32_t)((rate + factor / 2u) / factor);
-        len = n / factor;
-        dec = malloc((len + 1u) * sizeof *dec);
-        if (dec == NULL) {
-            set_err(err, errlen, "out of memory");
+        if (decimate(x, n, factor, &dec, &len) != 0) {
+            tool_set_err(err, errlen, "out of memory");
             return -1;
-        }
-        for (i = 0; i < len; i++) {
-            long s = 0;
-            for (k = 0; k < factor; k++) {
-                s += x[i * factor + k];
-            }
-            dec[i] = (int16_t)(s >= 0 ? (s + (long)factor / 2) / (long)factor
-                                      : -((-s + (long)factor / 2) / (long)factor));
         }
         sig = dec;
     }
     c.sample_rate_hz = arate;
     e = ssda_pitch_buffer_size(&c, &bytes);
     if (e != SSDA_OK) {
-        set_err(err, errlen, "pitch settings refused at %u Hz: %s (f0 range must satisfy "
-                "10 <= fmin < fmax <= rate/4)", arate, ssda_strerror(e));
+        tool_set_err(err, errlen, "pitch settings refused at %u Hz: %s (f0 range must satisfy "
+                     "10 <= fmin < fmax <= rate/4)", arate, ssda_strerror(e));
         goto done;
     }
     buf = malloc(bytes);
     if (buf == NULL || ssda_pitch_init(&p, &c, buf, bytes) != SSDA_OK ||
         ssda_pitch_get_info(&p, &tr.info) != SSDA_OK) {
-        set_err(err, errlen, buf == NULL ? "out of memory" : "pitch settings refused");
+        tool_set_err(err, errlen, buf == NULL ? "out of memory" : "pitch settings refused");
         goto done;
     }
     if (len < tr.info.span) {
-        set_err(err, errlen, "signal too short: %.3f s, one analysis needs %.3f s (lower "
-                "--fmin to shorten it)", (double)len / arate, (double)tr.info.span / arate);
+        tool_set_err(err, errlen, "signal too short: %.3f s, one analysis needs %.3f s (lower "
+                     "--fmin to shorten it)", (double)len / arate, (double)tr.info.span / arate);
         goto done;
     }
-    cap = (len - tr.info.span) / tr.info.hop + 2u;
-    if (track_grow(&tr, cap) != 0) {
-        set_err(err, errlen, "out of memory");
+    if (push_all(&p, sig, len, arate, prog, &tr, err, errlen) != 0) {
         goto done;
     }
-    while (pos < len) {
-        e = ssda_pitch_push(&p, sig + pos, len - pos, &used, &est);
-        if (e < 0) {
-            set_err(err, errlen, "pitch search failed: %s", ssda_strerror(e));
-            goto done;
-        }
-        pos += used;
-        if (e == 1) {
-            if (tr.n == cap) {
-                cap *= 2u;
-                if (track_grow(&tr, cap) != 0) {
-                    set_err(err, errlen, "out of memory");
-                    goto done;
-                }
-            }
-            /* est.center is frame * hop + (its offset) mod 2^32: keep the offset
-               exact and add the frame start in double (long files) */
-            tr.t[tr.n] = ((double)est.frame * tr.info.hop +
-                          (double)(uint32_t)(est.center - est.frame * tr.info.hop)) /
-                         arate;
-            tr.t_frame[tr.n] = ((double)est.frame * tr.info.hop + tr.info.span / 2.0) / arate;
-            tr.f0_raw[tr.n] = est.f0_q16 / 65536.0;
-            tr.f0[tr.n] = est.voiced ? tr.f0_raw[tr.n] : 0.0;
-            tr.voiced[tr.n] = est.voiced ? 1u : 0u;
-            tr.confidence_q15[tr.n] = est.confidence_q15;
-            tr.diffs += est.diffs;
-            tr.n++;
-            if (prog != NULL) {
-                progress_update(prog, pos);
-            }
-        }
-    }
-    tr.full_diffs = (uint64_t)tr.n * tr.info.full_diffs;
+    /* the full search on the frames analysed (silent ones are never searched) */
+    tr.full_diffs = (uint64_t)tr.analysed * (tr.info.lag_max - tr.info.lag_min + 3u) *
+                    tr.info.frame_len;
     tr.decimation = factor;
     tr.input_rate = rate;
     *out = tr;
@@ -167,84 +189,6 @@ done:
     free(buf);
     free(dec);
     return rc;
-}
-
-/* ---- reference CSV ---- */
-
-int f0_csv_read(const char *path, double **t_out, double **f_out, size_t *n_out, char *err,
-                size_t errlen)
-{
-    FILE *f = fopen(path, "r");
-    char line[512];
-    double *t = NULL, *fv = NULL;
-    size_t n = 0, cap = 0, lineno = 0;
-    if (f == NULL) {
-        set_err(err, errlen, "cannot open '%s': %s", path, strerror(errno));
-        return -1;
-    }
-    while (fgets(line, sizeof line, f) != NULL) {
-        char *p = line, *end;
-        double a, b;
-        lineno++;
-        while (isspace((unsigned char)*p)) {
-            p++;
-        }
-        if (*p == '\0' || *p == '#') {
-            continue;
-        }
-        a = strtod(p, &end);
-        if (end == p) {
-            if (n == 0 && lineno == 1) {
-                continue; /* header */
-            }
-            set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
-            goto fail;
-        }
-        p = end;
-        while (*p == ',' || *p == ';' || *p == ' ' || *p == '\t') {
-            p++;
-        }
-        b = strtod(p, &end);
-        if (end == p || !isfinite(a) || !isfinite(b) || b < 0.0) {
-            set_err(err, errlen, "'%s' line %zu: expected time_s,f0_hz", path, lineno);
-            goto fail;
-        }
-        if (n == cap) {
-            double *t2, *f2;
-            cap = cap ? 2u * cap : 1024u;
-            t2 = realloc(t, cap * sizeof *t);
-            if (t2 != NULL) {
-                t = t2;
-            }
-            f2 = realloc(fv, cap * sizeof *fv);
-            if (f2 != NULL) {
-                fv = f2;
-            }
-            if (t2 == NULL || f2 == NULL) {
-                set_err(err, errlen, "out of memory reading '%s'", path);
-                goto fail;
-            }
-        }
-        t[n] = a;
-        fv[n] = b;
-        n++;
-    }
-    fclose(f);
-    if (n == 0) {
-        set_err(err, errlen, "'%s' holds no time_s,f0_hz rows", path);
-        free(t);
-        free(fv);
-        return -1;
-    }
-    *t_out = t;
-    *f_out = fv;
-    *n_out = n;
-    return 0;
-fail:
-    fclose(f);
-    free(t);
-    free(fv);
-    return -1;
 }
 
 /* ---- scoring ---- */

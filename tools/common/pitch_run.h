@@ -1,13 +1,14 @@
 /*
  * pitch_run.h - a whole f0 track of an in-memory signal through the
- * library's streaming AMDF pitch (ssda_pitch_*), for the CLI and the demo;
- * reading reference f0 CSV files and scoring a track against one.
+ * library's streaming AMDF pitch (ssda_pitch_*), for the CLI and the demo,
+ * and scoring a track against a reference (read by f0_ref.h).
  */
 #ifndef SSDA_PITCH_RUN_H
 #define SSDA_PITCH_RUN_H
 
 #include <stddef.h>
 #include <stdint.h>
+#include "f0_ref.h" /* reference tracks (f0_ref_read, f0_csv_read) */
 #include "progress.h"
 #include "ssda/pitch.h"
 
@@ -27,7 +28,13 @@ typedef struct {
     uint8_t *voiced;      /* 1 voiced, 0 not */
     size_t n;
     uint64_t diffs;       /* absolute differences computed (all frames) */
-    uint64_t full_diffs;  /* what a plain full-search AMDF computes (n * info.full_diffs) */
+    size_t analysed;      /* frames searched: not silent (a silent frame costs nothing) */
+    uint64_t full_diffs;  /* the full search on those frames: every lag the definition
+                             reads, lag_min - 1 .. lag_max + 1, summed over K samples:
+                             analysed * (lag_max - lag_min + 3) * K. SSDA_PITCH_FULL
+                             computes this, and K more on a frame whose half-period
+                             lag its dip rule reads (at most 1 / (lag_max - lag_min
+                             + 3) more: 0.3 % at the defaults) */
     ssda_pitch_info_t info;
     uint32_t decimation;  /* input samples averaged per analysed sample (1 = none) */
     uint32_t input_rate;  /* Hz of the signal given */
@@ -43,14 +50,6 @@ typedef struct {
 int pitch_run(const int16_t *x, size_t n, uint32_t rate, const ssda_pitch_config_t *cfg,
               progress_t *prog, pitch_track_t *out, char *err, size_t errlen);
 void pitch_track_free(pitch_track_t *tr);
-
-/*
- * Read a reference f0 CSV: a header line, then "time_s,f0_hz[,...]" rows
- * (f0 0 = unvoiced; comma, semicolon, tab or space separated). Returns 0
- * (arrays malloc'ed) or -1 with a message naming the file and line.
- */
-int f0_csv_read(const char *path, double **t, double **f0, size_t *n, char *err,
-                size_t errlen);
 
 /* A track scored against a reference (interpolated linearly to the track's
    frame times; a reference frame next to an unvoiced one counts as unvoiced). */

@@ -22,6 +22,7 @@
 #define SSDA_PNG_IO_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 #include "ssda/view.h"
 
@@ -67,6 +68,11 @@ int png_read_gray(const char *path, png_gray_depth_t depth, gray_image_t *img,
  * is stdout). Returns 0, or -1 with a message in err and no file left behind.
  */
 int png_write_gray(const char *path, const gray_image_t *img, char *err, size_t errlen);
+
+/* The same into an open stream (e.g. a cli_outputs_t file committed with
+   other outputs); name is for messages. Returns 0 or -1 with err. */
+int png_write_gray_to(FILE *fp, const char *name, const gray_image_t *img, char *err,
+                      size_t errlen);
 
 /* Allocate a zeroed width x height image of 8 or 16 bits. Returns 0 or -1. */
 int gray_image_alloc(gray_image_t *img, uint32_t width, uint32_t height, int bits);

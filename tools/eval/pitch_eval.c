@@ -226,40 +226,117 @@ static int find_ref(const char *audio, char *out, size_t outlen)
     return -1;
 }
 
+/* Options into o, audio arguments into files. Returns the count of files,
+   or -1 after usage(). */
+static int parse_args(int argc, char **argv, options_t *o, char **files)
+{
+    int i, nfiles = 0;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--no-synth")) o->synth = 0;
+        else if (!strcmp(a, "--no-full-check")) o->full_check = 0;
+        else if (!strcmp(a, "--per-file")) o->per_file = 1;
+        else if (!strcmp(a, "--dump") && i + 1 < argc) g_dump = atoi(argv[++i]);
+        else if (!strcmp(a, "--synth-notes") && i + 1 < argc) o->synth_notes = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--synth-rate") && i + 1 < argc) o->synth_rate = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--hop-ms") && i + 1 < argc) o->hop_ms = atof(argv[++i]);
+        else if (!strcmp(a, "--f0-min") && i + 1 < argc) o->f0_min = (uint16_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--f0-max") && i + 1 < argc) o->f0_max = (uint16_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--frame") && i + 1 < argc) o->frame_len = (uint16_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--chunk") && i + 1 < argc) o->chunk = (uint16_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--threshold") && i + 1 < argc) o->threshold = atof(argv[++i]);
+        else if (!strcmp(a, "--voicing") && i + 1 < argc) o->voicing = atof(argv[++i]);
+        else if (!strcmp(a, "--lowpass") && i + 1 < argc) o->lowpass = (uint16_t)atoi(argv[++i]);
+        else if (!strcmp(a, "--no-filter")) o->no_filter = 1;
+        else if (!strcmp(a, "--parabolic")) o->parabolic = 1;
+        else if (a[0] == '-') { usage(); return -1; }
+        else files[nfiles++] = argv[i];
+    }
+    return nfiles;
+}
+
+/* The synthetic set: vowel songs at several SNRs, bright pulse songs; each
+   set's row, then all. Returns 0, 1 (a method failed) or -1 (no memory). */
+static int run_synthetic(const options_t *o, group_t *synth_all)
+{
+    static const struct { int bright; double snr; } sets[] = {
+        {0, 200.0}, {0, 30.0}, {0, 20.0}, {0, 10.0}, {1, 200.0}, {1, 20.0}};
+    int status = 0;
+    for (size_t k = 0; k < sizeof sets / sizeof sets[0]; k++) {
+        synth_song_t s;
+        group_t g;
+        group_t *gs[2] = {&g, synth_all};
+        char name[64];
+        memset(&g, 0, sizeof g);
+        if (synth_song(&s, o->synth_rate, o->synth_notes, sets[k].snr, sets[k].bright,
+                       1234u + (uint32_t)k) != 0) {
+            fprintf(stderr, "ssda-eval-pitch: out of memory\n");
+            return -1;
+        }
+        if (sets[k].snr >= 100.0) {
+            snprintf(name, sizeof name, "synthetic %s, clean", sets[k].bright ? "bright" : "vowels");
+        } else {
+            snprintf(name, sizeof name, "synthetic %s, %.0f dB SNR",
+                     sets[k].bright ? "bright" : "vowels", sets[k].snr);
+        }
+        if (g_dump >= 0) {
+            fprintf(stderr, "== %s\n", name);
+        }
+        if (eval_signal(o, s.x, s.n, s.rate, ref_synth, &s, gs, 2) != 0) {
+            status = 1;
+        }
+        print_group(name, &g);
+        synth_song_free(&s);
+    }
+    print_group("**synthetic, all**", synth_all);
+    return status;
+}
+
+/* One recording (audio or audio=ref.csv) into g and real_all. Returns 0,
+   1 (a method failed) or 2 (not read: nothing analysed). */
+static int run_file(const options_t *o, char *arg, group_t *g, group_t *real_all)
+{
+    char refpath[4096], err[512];
+    char *eq = strchr(arg, '=');
+    f0_track_t tr;
+    int16_t *x;
+    size_t n;
+    uint32_t rate;
+    group_t *gs[2] = {g, real_all};
+    int status = 0;
+    if (eq != NULL) {
+        *eq = '\0';
+        snprintf(refpath, sizeof refpath, "%s", eq + 1);
+    } else if (find_ref(arg, refpath, sizeof refpath) != 0) {
+        fprintf(stderr, "ssda-eval-pitch: no reference CSV found for '%s' (give audio=ref.csv)\n", arg);
+        return 2;
+    }
+    if (wav_read_mono_i16(arg, &x, &n, &rate, err, sizeof err) != 0 ||
+        f0_track_read(refpath, &tr, err, sizeof err) != 0) {
+        fprintf(stderr, "ssda-eval-pitch: %s\n", err);
+        return 2;
+    }
+    memset(g, 0, sizeof *g);
+    if (eval_signal(o, x, n, rate, ref_csv, &tr, gs, 2) != 0) {
+        status = 1;
+    }
+    free(x);
+    f0_track_free(&tr);
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     options_t o = {5.8, 50, 1000, 0, 0, 0.0, 0.0, 1, 1, 0, 0, 0, 0, 40, 16000};
-    /* the synthetic set: vowel songs at several SNRs, bright pulse songs */
-    static const struct { int bright; double snr; } sets[] = {
-        {0, 200.0}, {0, 30.0}, {0, 20.0}, {0, 10.0}, {1, 200.0}, {1, 20.0}};
     group_t synth_all, real_all;
-    int i, nfiles = 0, status = 0;
+    int i, nfiles, status = 0, r;
     char **files = calloc((size_t)argc, sizeof *files);
 
     memset(&synth_all, 0, sizeof synth_all);
     memset(&real_all, 0, sizeof real_all);
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--no-synth")) o.synth = 0;
-        else if (!strcmp(a, "--no-full-check")) o.full_check = 0;
-        else if (!strcmp(a, "--per-file")) o.per_file = 1;
-        else if (!strcmp(a, "--dump") && i + 1 < argc) g_dump = atoi(argv[++i]);
-        else if (!strcmp(a, "--synth-notes") && i + 1 < argc) o.synth_notes = (uint32_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--synth-rate") && i + 1 < argc) o.synth_rate = (uint32_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--hop-ms") && i + 1 < argc) o.hop_ms = atof(argv[++i]);
-        else if (!strcmp(a, "--f0-min") && i + 1 < argc) o.f0_min = (uint16_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--f0-max") && i + 1 < argc) o.f0_max = (uint16_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--frame") && i + 1 < argc) o.frame_len = (uint16_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--chunk") && i + 1 < argc) o.chunk = (uint16_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--threshold") && i + 1 < argc) o.threshold = atof(argv[++i]);
-        else if (!strcmp(a, "--voicing") && i + 1 < argc) o.voicing = atof(argv[++i]);
-        else if (!strcmp(a, "--lowpass") && i + 1 < argc) o.lowpass = (uint16_t)atoi(argv[++i]);
-        else if (!strcmp(a, "--no-filter")) o.no_filter = 1;
-        else if (!strcmp(a, "--parabolic")) o.parabolic = 1;
-        else if (a[0] == '-') { usage(); return 2; }
-        else files[nfiles++] = argv[i];
+    if ((nfiles = parse_args(argc, argv, &o, files)) < 0) {
+        return 2;
     }
-
     printf("ssda pitch evaluation: f0 %u-%u Hz, hop %.1f ms, threshold %.2f, low-pass %s, "
            "%s fit, kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
            o.threshold > 0 ? o.threshold : SSDA_PITCH_DEFAULT_THRESHOLD_Q15 / 32768.0,
@@ -267,75 +344,22 @@ int main(int argc, char **argv)
            o.parabolic ? "parabolic" : "V", ssda__kernel_name(),
            have_aubio() ? "" : " (aubio not found: YIN rows missing)");
     print_header();
-
-    if (o.synth) {
-        size_t k;
-        for (k = 0; k < sizeof sets / sizeof sets[0]; k++) {
-            synth_song_t s;
-            group_t g;
-            group_t *gs[2];
-            char name[64];
-            memset(&g, 0, sizeof g);
-            gs[0] = &g;
-            gs[1] = &synth_all;
-            if (synth_song(&s, o.synth_rate, o.synth_notes, sets[k].snr, sets[k].bright,
-                           1234u + (uint32_t)k) != 0) {
-                fprintf(stderr, "ssda-eval-pitch: out of memory\n");
-                return 1;
-            }
-            if (sets[k].snr >= 100.0) {
-                snprintf(name, sizeof name, "synthetic %s, clean", sets[k].bright ? "bright" : "vowels");
-            } else {
-                snprintf(name, sizeof name, "synthetic %s, %.0f dB SNR",
-                         sets[k].bright ? "bright" : "vowels", sets[k].snr);
-            }
-            if (g_dump >= 0) {
-                fprintf(stderr, "== %s\n", name);
-            }
-            if (eval_signal(&o, s.x, s.n, s.rate, ref_synth, &s, gs, 2) != 0) {
-                status = 1;
-            }
-            print_group(name, &g);
-            synth_song_free(&s);
+    if (o.synth && (r = run_synthetic(&o, &synth_all)) != 0) {
+        if (r < 0) {
+            return 1;
         }
-        print_group("**synthetic, all**", &synth_all);
+        status = 1;
     }
-
     for (i = 0; i < nfiles; i++) {
-        char refpath[4096], err[512];
-        char *audio = files[i], *eq = strchr(files[i], '=');
-        f0_track_t tr;
-        int16_t *x;
-        size_t n;
-        uint32_t rate;
         group_t g;
-        group_t *gs[2];
-        if (eq != NULL) {
-            *eq = '\0';
-            snprintf(refpath, sizeof refpath, "%s", eq + 1);
-        } else if (find_ref(audio, refpath, sizeof refpath) != 0) {
-            fprintf(stderr, "ssda-eval-pitch: no reference CSV found for '%s' (give audio=ref.csv)\n", audio);
-            status = 1;
-            continue;
-        }
-        if (wav_read_mono_i16(audio, &x, &n, &rate, err, sizeof err) != 0 ||
-            f0_track_read(refpath, &tr, err, sizeof err) != 0) {
-            fprintf(stderr, "ssda-eval-pitch: %s\n", err);
-            status = 1;
-            continue;
-        }
+        char *audio = files[i];
         memset(&g, 0, sizeof g);
-        gs[0] = &g;
-        gs[1] = &real_all;
-        if (eval_signal(&o, x, n, rate, ref_csv, &tr, gs, 2) != 0) {
-            status = 1;
-        }
-        if (o.per_file || nfiles == 1) {
+        r = run_file(&o, audio, &g, &real_all);
+        status = r != 0 ? 1 : status;
+        if (r != 2 && (o.per_file || nfiles == 1)) {
             const char *base = strrchr(audio, '/');
             print_group(base ? base + 1 : audio, &g);
         }
-        free(x);
-        f0_track_free(&tr);
     }
     if (nfiles > 1) {
         print_group("**files, all**", &real_all);

@@ -130,7 +130,8 @@ static const opt_t k_pitch_opts[] = {
     {"--fmin", V_FLOAT},     {"--fmax", V_FLOAT},    {"--hop-ms", V_FLOAT},
     {"--frame-ms", V_FLOAT}, {"--threshold", V_FLOAT}, {"--voicing", V_FLOAT},
     {"--full", V_NONE},      {"--csv", V_OUT_CSV},   {"--plot", V_OUT_PNG},
-    {"--ref", V_REF},        {"--quiet", V_NONE}};
+    {"--ref", V_REF},        {"--quiet", V_NONE},    {"--silence", V_FLOAT},
+    {"--ref-hop", V_FLOAT}};
 
 /* ---- files ---- */
 
@@ -210,98 +211,117 @@ static int write_input(const char *name, fuzz_in_t *in, uint32_t *seed, int wav)
     return 0;
 }
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+/* Up to 12 option tokens of the subcommand's into g_argbuf from argc on
+   (valid, bad, "=VALUE", a value missing, unknown, "--"). Returns argc. */
+static int add_options(fuzz_in_t *in, const opt_t *opts, size_t nopts, int argc)
 {
-    static char *argv[MAX_ARGS + 1];
-    fuzz_in_t in = {data, size};
-    uint32_t cmd = fuzz_u8(&in) % 5u, ntok, i, shape, seed;
-    const opt_t *opts;
-    size_t nopts;
-    int argc = 0, rc;
-    char path[4200];
-    int (*run)(int, char **);
-    static const char *const names[] = {"match", "track", "compare", "grad", "pitch"};
-
-    switch (cmd) {
-    case 0: opts = k_match_opts; nopts = sizeof k_match_opts / sizeof k_match_opts[0]; run = cmd_match; break;
-    case 1: opts = k_track_opts; nopts = sizeof k_track_opts / sizeof k_track_opts[0]; run = cmd_track; break;
-    case 2: opts = k_track_opts; nopts = sizeof k_track_opts / sizeof k_track_opts[0]; run = cmd_compare; break;
-    case 3: opts = k_grad_opts; nopts = sizeof k_grad_opts / sizeof k_grad_opts[0]; run = cmd_grad; break;
-    default: opts = k_pitch_opts; nopts = sizeof k_pitch_opts / sizeof k_pitch_opts[0]; run = cmd_pitch; break;
-    }
-    snprintf(g_argbuf[argc], sizeof g_argbuf[0], "%s", names[cmd]);
-    argc++;
-    ntok = fuzz_range(&in, 0, 12);
+    uint32_t ntok = fuzz_range(in, 0, 12), i;
     for (i = 0; i < ntok && argc + 2 < MAX_ARGS - 4; i++) {
-        uint32_t which = fuzz_u8(&in);
+        uint32_t which = fuzz_u8(in);
+        const opt_t *o;
         char v[4200];
         if (which >= 250u) { /* an unknown option, or a bare "--" */
             snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", which == 255u ? "--" : "--bogus");
             continue;
         }
-        {
-            const opt_t *o = &opts[which % nopts];
-            value(&in, o->type, v, sizeof v);
-            if (o->type == V_NONE) {
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
-            } else if (fuzz_u8(&in) % 4u == 0u) {
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s=%s", o->name, v);
-            } else if (fuzz_one_in(&in, 16)) { /* missing value at the end */
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
-            } else {
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", v);
-            }
-        }
-    }
-    /* positionals: usually what the subcommand wants, sometimes not */
-    shape = fuzz_u8(&in) % 16u;
-    {
-        const char *want[3];
-        uint32_t n = 0, k;
-        if (cmd <= 2u) {
-            want[n++] = "a.png";
-            want[n++] = "b.png";
-        } else if (cmd == 3u) {
-            want[n++] = "a.png";
-            want[n++] = "o2.png";
+        o = &opts[which % nopts];
+        value(in, o->type, v, sizeof v);
+        if (o->type == V_NONE) {
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
+        } else if (fuzz_u8(in) % 4u == 0u) {
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s=%s", o->name, v);
+        } else if (fuzz_one_in(in, 16)) { /* missing value at the end */
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
         } else {
-            want[n++] = "in.wav";
-        }
-        if (shape == 1u && n > 0u) n--;                /* one missing */
-        if (shape == 2u) want[n++] = "a.png";          /* one too many */
-        for (k = 0; k < n; k++) {
-            const char *name = want[k];
-            if (shape == 3u && k == 0u) name = "missing.png"; /* does not exist */
-            if (shape == 4u && k == 0u) {                      /* a folder */
-                snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", fuzz_dir());
-                continue;
-            }
-            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", fuzz_path(name, path, sizeof path));
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", o->name);
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", v);
         }
     }
+    return argc;
+}
+
+/* Positionals: usually what subcommand cmd wants, sometimes not (one
+   missing, one too many, a file that does not exist, a folder). */
+static int add_positionals(fuzz_in_t *in, uint32_t cmd, int argc)
+{
+    uint32_t shape = fuzz_u8(in) % 16u, n = 0, k;
+    const char *want[3];
+    char path[4200];
+    if (cmd <= 2u) {
+        want[n++] = "a.png";
+        want[n++] = "b.png";
+    } else if (cmd == 3u) {
+        want[n++] = "a.png";
+        want[n++] = "o2.png";
+    } else {
+        want[n++] = "in.wav";
+    }
+    if (shape == 1u && n > 0u) n--;                /* one missing */
+    if (shape == 2u) want[n++] = "a.png";          /* one too many */
+    for (k = 0; k < n; k++) {
+        const char *name = want[k];
+        if (shape == 3u && k == 0u) name = "missing.png"; /* does not exist */
+        if (shape == 4u && k == 0u) {                      /* a folder */
+            snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", fuzz_dir());
+            continue;
+        }
+        snprintf(g_argbuf[argc++], sizeof g_argbuf[0], "%s", fuzz_path(name, path, sizeof path));
+    }
+    return argc;
+}
+
+/* The subcommand's input files. Returns 0, or -1 when the input is skipped. */
+static int write_inputs(fuzz_in_t *in, uint32_t cmd)
+{
+    uint32_t seed = fuzz_u32(in) | 1u;
+    char path[4200];
+    if (cmd == 4u) {
+        size_t n;
+        const uint8_t *p;
+        if (write_input("in.wav", in, &seed, 1) != 0) {
+            return -1;
+        }
+        p = fuzz_bytes(in, fuzz_u16(in) % 1024u, &n);
+        fuzz_write("ref.csv", p, n, path, sizeof path);
+        return 0;
+    }
+    if (write_input("a.png", in, &seed, 0) != 0 ||
+        (cmd != 3u && write_input("b.png", in, &seed, 0) != 0)) {
+        fuzz_clean(NULL);
+        return -1;
+    }
+    return 0;
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    static char *argv[MAX_ARGS + 1];
+    static const char *const names[] = {"match", "track", "compare", "grad", "pitch"};
+    static const struct {
+        const opt_t *opts;
+        size_t n;
+        int (*run)(int, char **);
+    } cmds[] = {
+        {k_match_opts, sizeof k_match_opts / sizeof k_match_opts[0], cmd_match},
+        {k_track_opts, sizeof k_track_opts / sizeof k_track_opts[0], cmd_track},
+        {k_track_opts, sizeof k_track_opts / sizeof k_track_opts[0], cmd_compare},
+        {k_grad_opts, sizeof k_grad_opts / sizeof k_grad_opts[0], cmd_grad},
+        {k_pitch_opts, sizeof k_pitch_opts / sizeof k_pitch_opts[0], cmd_pitch}};
+    fuzz_in_t in = {data, size};
+    uint32_t cmd = fuzz_u8(&in) % 5u, i;
+    int argc = 1, rc;
+
+    snprintf(g_argbuf[0], sizeof g_argbuf[0], "%s", names[cmd]);
+    argc = add_options(&in, cmds[cmd].opts, cmds[cmd].n, argc);
+    argc = add_positionals(&in, cmd, argc);
     for (i = 0; i < (uint32_t)argc; i++) {
         argv[i] = g_argbuf[i];
     }
     argv[argc] = NULL;
-
-    /* the input files */
-    seed = fuzz_u32(&in) | 1u;
-    if (cmd == 4u) {
-        size_t n;
-        const uint8_t *p;
-        if (write_input("in.wav", &in, &seed, 1) != 0) {
-            return 0;
-        }
-        p = fuzz_bytes(&in, fuzz_u16(&in) % 1024u, &n);
-        fuzz_write("ref.csv", p, n, path, sizeof path);
-    } else if (write_input("a.png", &in, &seed, 0) != 0 ||
-               (cmd != 3u && write_input("b.png", &in, &seed, 0) != 0)) {
-        fuzz_clean(NULL);
+    if (write_inputs(&in, cmd) != 0) {
         return 0;
     }
-
-    rc = run(argc, argv); /* its messages: -close_fd_mask=2 (tools/fuzz.sh) */
+    rc = cmds[cmd].run(argc, argv); /* its messages: -close_fd_mask=2 (tools/fuzz.sh) */
     fflush(stdout);
     clearerr(stdout);
 

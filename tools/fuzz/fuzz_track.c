@@ -107,122 +107,259 @@ static int holds(const img_t *im, uint32_t x0, uint32_t y0, uint32_t w, uint32_t
     return 0;
 }
 
+/* One input: its images, options and the geometry resolved here. */
+typedef struct {
+    ssda_track_config_t cfg;
+    img_t f, s;
+    ssda_view_t fv, sv;
+    uint32_t bpp, maxv, out_count, check_every;
+    axis_t axx, axy;
+    ssda_track_grid_t grid;
+    int grc;
+    uint32_t pixels, thr, minc; /* window pixels; the texture rule's level and count */
+} case_t;
+
+/* The options from the fuzzer's bytes, valid or not. */
+static void read_config(fuzz_in_t *in, case_t *c)
+{
+    ssda_track_config_t *cfg = &c->cfg;
+    memset(cfg, 0, sizeof *cfg);
+    cfg->win_w = (uint16_t)fuzz_range(in, 0, 24);
+    cfg->win_h = (uint16_t)fuzz_range(in, 0, 24);
+    cfg->search_w = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, 48));
+    cfg->search_h = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, 48));
+    cfg->step_x = (uint16_t)fuzz_range(in, 0, 20);
+    cfg->step_y = (uint16_t)fuzz_range(in, 0, 20);
+    cfg->roi_x = (uint16_t)fuzz_range(in, 0, MAX_IMG);
+    cfg->roi_y = (uint16_t)fuzz_range(in, 0, MAX_IMG);
+    cfg->roi_w = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, MAX_IMG + 1u));
+    cfg->roi_h = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, MAX_IMG + 1u));
+    cfg->predict = (uint8_t)fuzz_range(in, 0, 3);       /* 3: invalid */
+    cfg->flags = (uint8_t)(fuzz_u8(in) & (fuzz_one_in(in, 16) ? 0xFFu : 3u));
+    cfg->mask_value = (uint16_t)(fuzz_u8(in) & 1u ? fuzz_range(in, 0, 3) * (c->maxv / 3u)
+                                                  : fuzz_u16(in));
+    cfg->texture_threshold = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_u16(in) % (c->maxv + 2u));
+    cfg->texture_min_count = fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, 300);
+    cfg->match.threshold = (uint8_t)fuzz_range(in, 0, 5); /* 5: invalid */
+    cfg->match.scan = (uint8_t)fuzz_range(in, 0, 2);
+    cfg->match.order = (uint8_t)fuzz_range(in, 0, 1);
+    cfg->match.flags = (uint8_t)(fuzz_u8(in) & SSDA_MATCH_BOUNDS);
+    cfg->match.k_q8 = (uint16_t)fuzz_u16(in);
+    cfg->match.coarse_step = (uint16_t)fuzz_range(in, 0, 10);
+    cfg->match.lambda_q8 = fuzz_range(in, 0, 5000);
+    cfg->match.fixed_threshold = fuzz_u32(in) % 100000u;
+    if (cfg->match.flags) {
+        cfg->match.work = fuzz_one_in(in, 32) ? NULL : g_work;
+        cfg->match.work_size = sizeof g_work - (fuzz_one_in(in, 32) ? sizeof g_work : 0u);
+    }
+}
+
+/* Sizes, options and pixels from the fuzzer's bytes. */
+static void read_case(fuzz_in_t *in, case_t *c)
+{
+    uint32_t levels, seed;
+    c->bpp = fuzz_u8(in) & 1u ? 2u : 1u;
+    c->maxv = c->bpp == 2u ? 65535u : 255u;
+    c->f.bpp = c->s.bpp = c->bpp;
+    c->f.w = fuzz_range(in, 1, MAX_IMG);
+    c->f.h = fuzz_range(in, 1, MAX_IMG);
+    if (fuzz_u8(in) & 1u) { /* mostly the same size, as in practice */
+        c->s.w = c->f.w;
+        c->s.h = c->f.h;
+    } else {
+        c->s.w = fuzz_range(in, 1, MAX_IMG);
+        c->s.h = fuzz_range(in, 1, MAX_IMG);
+    }
+    read_config(in, c);
+    levels = fuzz_range(in, 1, 256);
+    seed = fuzz_u32(in) | 1u;
+    c->out_count = fuzz_one_in(in, 16) ? fuzz_range(in, 0, 8) : MAX_OUT;
+    c->check_every = fuzz_range(in, 1, 8);
+    fill(&c->f, g_first, in, &seed, levels, c->maxv);
+    fill(&c->s, g_second, in, &seed, levels, c->maxv);
+    FUZZ_CHECK(ssda_view_init(&c->fv, g_first, (uint16_t)c->f.w, (uint16_t)c->f.h,
+                              c->f.w * c->bpp, (ssda_pixfmt_t)c->bpp) == SSDA_OK);
+    FUZZ_CHECK(ssda_view_init(&c->sv, g_second, (uint16_t)c->s.w, (uint16_t)c->s.h,
+                              c->s.w * c->bpp, (ssda_pixfmt_t)c->bpp) == SSDA_OK);
+}
+
+/* The geometry, and ssda_track_grid's view of it. */
+static void check_grid(case_t *c)
+{
+    const ssda_track_config_t *cfg = &c->cfg;
+    const axis_t *axx = &c->axx, *axy = &c->axy;
+    c->axx = axis(cfg->win_w, cfg->search_w, cfg->step_x, cfg->roi_x, cfg->roi_w, c->s.w);
+    c->axy = axis(cfg->win_h, cfg->search_h, cfg->step_y, cfg->roi_y, cfg->roi_h, c->s.h);
+    memset(&c->grid, 0x77, sizeof c->grid);
+    c->grc = ssda_track_grid(cfg, (uint16_t)c->s.w, (uint16_t)c->s.h, &c->grid);
+    FUZZ_CHECK((c->grc == SSDA_OK) == (axx->ok && axy->ok));
+    if (c->grc != SSDA_OK) {
+        FUZZ_CHECK(c->grc == SSDA_ERR_SIZE);
+        return;
+    }
+    FUZZ_CHECK(c->grid.cols == axx->count && c->grid.rows == axy->count &&
+               c->grid.count == axx->count * axy->count);
+    FUZZ_CHECK(c->grid.win_w == axx->win && c->grid.search_w == axx->search &&
+               c->grid.step_x == axx->step && c->grid.roi_w == axx->len);
+    FUZZ_CHECK(c->grid.win_h == axy->win && c->grid.search_h == axy->search &&
+               c->grid.step_y == axy->step && c->grid.roi_h == axy->len);
+    FUZZ_CHECK(c->grid.count == SSDA_TRACK_GRID_COUNT(axx->len, axy->len, axx->win, axy->win,
+                                                      axx->step, axy->step));
+}
+
+/* Is the whole input valid, by the header? */
+static int input_valid(case_t *c)
+{
+    const ssda_track_config_t *cfg = &c->cfg;
+    c->pixels = c->axx.win * c->axy.win;
+    c->thr = cfg->texture_threshold ? cfg->texture_threshold : (c->maxv + 1u) / 2u;
+    c->minc = cfg->texture_min_count ? cfg->texture_min_count
+                                     : (c->pixels / 16u > 0u ? c->pixels / 16u : 1u);
+    return c->grc == SSDA_OK && c->grid.count <= c->out_count && cfg->predict <= 2u &&
+           (cfg->flags & ~3u) == 0u &&
+           (!(cfg->flags & SSDA_TRACK_MASK) || cfg->mask_value <= c->maxv) &&
+           (!(cfg->flags & SSDA_TRACK_EXCLUDE) || (c->thr < c->maxv && 2u * c->minc <= c->pixels)) &&
+           !(cfg->predict != 0u && cfg->match.scan == SSDA_SCAN_COARSE) &&
+           cfg->match.threshold <= 4u &&
+           !(cfg->match.threshold == SSDA_THRESHOLD_RAMP && cfg->match.lambda_q8 == 0u) &&
+           !(cfg->match.flags &&
+             (cfg->match.work == NULL ||
+              cfg->match.work_size <
+                  SSDA_TRACK_WORK_SIZE(c->axx.search, c->axy.search, c->axx.win, c->axy.win)));
+}
+
+/* The status the header gives the window at (wx, wy), area at (ax, ay). */
+static uint32_t expected_status(const case_t *c, uint32_t wx, uint32_t wy, int64_t ax, int64_t ay)
+{
+    const ssda_track_config_t *cfg = &c->cfg;
+    uint32_t want = SSDA_TRACK_OK;
+    if (ax < 0 || ay < 0 || ax + c->axx.search > c->f.w || ay + c->axy.search > c->f.h) {
+        return SSDA_TRACK_EDGE;
+    }
+    if ((cfg->flags & SSDA_TRACK_MASK) &&
+        holds(&c->s, wx, wy, c->axx.win, c->axy.win, cfg->mask_value)) {
+        return SSDA_TRACK_MASKED;
+    }
+    if (cfg->flags & SSDA_TRACK_EXCLUDE) {
+        uint32_t bright = 0, x, y;
+        for (y = 0; y < c->axy.win; y++) {
+            for (x = 0; x < c->axx.win; x++) {
+                bright += px(&c->s, wx + x, wy + y) > c->thr;
+            }
+        }
+        want = bright < c->minc || c->pixels - bright < c->minc ? SSDA_TRACK_EXCLUDED
+                                                                : SSDA_TRACK_OK;
+    }
+    if (want == SSDA_TRACK_OK && (cfg->flags & SSDA_TRACK_MASK) &&
+        holds(&c->f, (uint32_t)ax, (uint32_t)ay, c->axx.search, c->axy.search,
+              cfg->mask_value)) {
+        want = SSDA_TRACK_MASKED;
+    }
+    return want;
+}
+
+/* A brute-force search of the area at (ax, ay) for the window at (wx, wy). */
+static void check_brute(const case_t *c, const ssda_track_vector_t *v, uint32_t wx, uint32_t wy,
+                        int64_t ax, int64_t ay)
+{
+    uint32_t hx = (c->axx.search - c->axx.win) / 2u, hy = (c->axy.search - c->axy.win) / 2u;
+    uint64_t best = UINT64_MAX;
+    uint32_t bx = 0, by = 0, x, y;
+    for (y = 0; y + c->axy.win <= c->axy.search; y++) {
+        for (x = 0; x + c->axx.win <= c->axx.search; x++) {
+            uint64_t t = sad_at(&c->f, &c->s, (uint32_t)ax + x, (uint32_t)ay + y, wx, wy,
+                                c->axx.win, c->axy.win);
+            if (t < best) {
+                best = t;
+                bx = x;
+                by = y;
+            }
+        }
+    }
+    FUZZ_CHECK(v->sad == best);
+    FUZZ_CHECK(v->dx == (int32_t)hx - (int32_t)bx && v->dy == (int32_t)hy - (int32_t)by);
+}
+
+/* Window k: position, status, a vector inside its area, and in the exact
+   modes the brute-force answer (every window while cheap, else a sample). */
+static void check_window(const case_t *c, uint32_t k, int exact_mode, uint32_t counts[4])
+{
+    const ssda_track_vector_t *v = &g_out[k];
+    uint32_t wx = c->axx.start + (k % c->grid.cols) * c->axx.step;
+    uint32_t wy = c->axy.start + (k / c->grid.cols) * c->axy.step;
+    uint32_t hx = (c->axx.search - c->axx.win) / 2u, hy = (c->axy.search - c->axy.win) / 2u;
+    int64_t ax = (int64_t)wx - hx, ay = (int64_t)wy - hy;
+    uint64_t brute_cost = (uint64_t)(c->axx.search - c->axx.win + 1u) *
+                          (c->axy.search - c->axy.win + 1u) * c->pixels;
+    FUZZ_CHECK(v->x == wx && v->y == wy);
+    FUZZ_CHECK(v->status <= SSDA_TRACK_EDGE);
+    counts[v->status]++;
+    FUZZ_CHECK(v->status == expected_status(c, wx, wy, ax, ay));
+    if (v->status != SSDA_TRACK_OK) {
+        FUZZ_CHECK(v->sad == 0 && v->dx == 0 && v->dy == 0 && !v->exact);
+        return;
+    }
+    /* the vector stays inside the area; its SAD is the one there when exact */
+    FUZZ_CHECK(v->dx <= (int32_t)hx &&
+               v->dx >= (int32_t)hx - (int32_t)(c->axx.search - c->axx.win));
+    FUZZ_CHECK(v->dy <= (int32_t)hy &&
+               v->dy >= (int32_t)hy - (int32_t)(c->axy.search - c->axy.win));
+    if (exact_mode) {
+        FUZZ_CHECK(v->exact);
+    }
+    if (exact_mode && (brute_cost * c->grid.count <= BRUTE_BUDGET || k % c->check_every == 0u) &&
+        brute_cost <= BRUTE_BUDGET) {
+        check_brute(c, v, wx, wy, ax, ay);
+    }
+}
+
+/* Stats count the statuses; a second call gives the same output. */
+static void check_repeat(const case_t *c, const ssda_track_stats_t *st, const uint32_t counts[4])
+{
+    ssda_track_stats_t st2;
+    uint32_t k;
+    FUZZ_CHECK(st->windows == c->grid.count);
+    FUZZ_CHECK(st->ok == counts[0] && st->excluded == counts[1] && st->masked == counts[2] &&
+               st->edge == counts[3]);
+    FUZZ_CHECK(st->completed <= st->positions);
+    memset(&st2, 0x4D, sizeof st2);
+    FUZZ_CHECK(ssda_track(&c->fv, &c->sv, &c->cfg, g_out2, c->out_count, &st2) == SSDA_OK);
+    FUZZ_CHECK(st->pixel_ops == st2.pixel_ops && st->positions == st2.positions &&
+               st->completed == st2.completed && st->check_pixels == st2.check_pixels &&
+               st->windows == st2.windows && st->ok == st2.ok && st->edge == st2.edge);
+    for (k = 0; k < c->grid.count; k++) { /* field by field: padding may differ */
+        const ssda_track_vector_t *a = &g_out[k], *b = &g_out2[k];
+        FUZZ_CHECK(a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
+                   a->y == b->y && a->status == b->status && a->exact == b->exact);
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_in_t in = {data, size};
-    ssda_track_config_t cfg;
-    ssda_track_grid_t grid;
-    ssda_track_stats_t st, st2, poison_st;
+    case_t c;
+    ssda_track_stats_t st, poison_st;
     ssda_track_vector_t poison_v;
-    ssda_view_t fv, sv;
-    img_t f, s;
-    axis_t axx, axy;
-    uint32_t bpp = fuzz_u8(&in) & 1u ? 2u : 1u, maxv = bpp == 2u ? 65535u : 255u;
-    uint32_t levels, seed, thr, minc, pixels, k, counts[4] = {0, 0, 0, 0};
-    uint32_t exact_mode, valid, out_count, stride_f, stride_s, check_every;
-    uint64_t brute_cost;
-    int rc, grc;
+    uint32_t k, counts[4] = {0, 0, 0, 0};
+    int rc, valid, exact_mode;
 
-    f.bpp = s.bpp = bpp;
-    f.w = fuzz_range(&in, 1, MAX_IMG);
-    f.h = fuzz_range(&in, 1, MAX_IMG);
-    if (fuzz_u8(&in) & 1u) { /* mostly the same size, as in practice */
-        s.w = f.w;
-        s.h = f.h;
-    } else {
-        s.w = fuzz_range(&in, 1, MAX_IMG);
-        s.h = fuzz_range(&in, 1, MAX_IMG);
-    }
-    memset(&cfg, 0, sizeof cfg);
-    cfg.win_w = (uint16_t)fuzz_range(&in, 0, 24);
-    cfg.win_h = (uint16_t)fuzz_range(&in, 0, 24);
-    cfg.search_w = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 48));
-    cfg.search_h = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 48));
-    cfg.step_x = (uint16_t)fuzz_range(&in, 0, 20);
-    cfg.step_y = (uint16_t)fuzz_range(&in, 0, 20);
-    cfg.roi_x = (uint16_t)fuzz_range(&in, 0, MAX_IMG);
-    cfg.roi_y = (uint16_t)fuzz_range(&in, 0, MAX_IMG);
-    cfg.roi_w = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, MAX_IMG + 1u));
-    cfg.roi_h = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, MAX_IMG + 1u));
-    cfg.predict = (uint8_t)fuzz_range(&in, 0, 3);       /* 3: invalid */
-    cfg.flags = (uint8_t)(fuzz_u8(&in) & (fuzz_one_in(&in, 16) ? 0xFFu : 3u));
-    cfg.mask_value = (uint16_t)(fuzz_u8(&in) & 1u ? fuzz_range(&in, 0, 3) * (maxv / 3u)
-                                                  : fuzz_u16(&in));
-    cfg.texture_threshold = (uint16_t)(fuzz_u8(&in) & 1u ? 0u : fuzz_u16(&in) % (maxv + 2u));
-    cfg.texture_min_count = fuzz_u8(&in) & 1u ? 0u : fuzz_range(&in, 0, 300);
-    cfg.match.threshold = (uint8_t)fuzz_range(&in, 0, 5); /* 5: invalid */
-    cfg.match.scan = (uint8_t)fuzz_range(&in, 0, 2);
-    cfg.match.order = (uint8_t)fuzz_range(&in, 0, 1);
-    cfg.match.flags = (uint8_t)(fuzz_u8(&in) & SSDA_MATCH_BOUNDS);
-    cfg.match.k_q8 = (uint16_t)fuzz_u16(&in);
-    cfg.match.coarse_step = (uint16_t)fuzz_range(&in, 0, 10);
-    cfg.match.lambda_q8 = fuzz_range(&in, 0, 5000);
-    cfg.match.fixed_threshold = fuzz_u32(&in) % 100000u;
-    if (cfg.match.flags) {
-        cfg.match.work = fuzz_one_in(&in, 32) ? NULL : g_work;
-        cfg.match.work_size = sizeof g_work - (fuzz_one_in(&in, 32) ? sizeof g_work : 0u);
-    }
-    levels = fuzz_range(&in, 1, 256);
-    seed = fuzz_u32(&in) | 1u;
-    out_count = fuzz_one_in(&in, 16) ? fuzz_range(&in, 0, 8) : MAX_OUT;
-    check_every = fuzz_range(&in, 1, 8);
-    fill(&f, g_first, &in, &seed, levels, maxv);
-    fill(&s, g_second, &in, &seed, levels, maxv);
-    stride_f = f.w * bpp;
-    stride_s = s.w * bpp;
-    FUZZ_CHECK(ssda_view_init(&fv, g_first, (uint16_t)f.w, (uint16_t)f.h, stride_f,
-                              (ssda_pixfmt_t)bpp) == SSDA_OK);
-    FUZZ_CHECK(ssda_view_init(&sv, g_second, (uint16_t)s.w, (uint16_t)s.h, stride_s,
-                              (ssda_pixfmt_t)bpp) == SSDA_OK);
-
-    /* the geometry, and ssda_track_grid's view of it */
-    axx = axis(cfg.win_w, cfg.search_w, cfg.step_x, cfg.roi_x, cfg.roi_w, s.w);
-    axy = axis(cfg.win_h, cfg.search_h, cfg.step_y, cfg.roi_y, cfg.roi_h, s.h);
-    memset(&grid, 0x77, sizeof grid);
-    grc = ssda_track_grid(&cfg, (uint16_t)s.w, (uint16_t)s.h, &grid);
-    FUZZ_CHECK((grc == SSDA_OK) == (axx.ok && axy.ok));
-    if (grc != SSDA_OK) {
-        FUZZ_CHECK(grc == SSDA_ERR_SIZE);
-    } else {
-        FUZZ_CHECK(grid.cols == axx.count && grid.rows == axy.count &&
-                   grid.count == axx.count * axy.count);
-        FUZZ_CHECK(grid.win_w == axx.win && grid.search_w == axx.search &&
-                   grid.step_x == axx.step && grid.roi_w == axx.len);
-        FUZZ_CHECK(grid.win_h == axy.win && grid.search_h == axy.search &&
-                   grid.step_y == axy.step && grid.roi_h == axy.len);
-        FUZZ_CHECK(grid.count == SSDA_TRACK_GRID_COUNT(axx.len, axy.len, axx.win, axy.win,
-                                                       axx.step, axy.step));
-    }
-
-    /* is the whole input valid, by the header? */
-    pixels = axx.win * axy.win;
-    thr = cfg.texture_threshold ? cfg.texture_threshold : (maxv + 1u) / 2u;
-    minc = cfg.texture_min_count ? cfg.texture_min_count
-                                 : (pixels / 16u > 0u ? pixels / 16u : 1u);
-    valid = grc == SSDA_OK && grid.count <= out_count && cfg.predict <= 2u &&
-            (cfg.flags & ~3u) == 0u &&
-            (!(cfg.flags & SSDA_TRACK_MASK) || cfg.mask_value <= maxv) &&
-            (!(cfg.flags & SSDA_TRACK_EXCLUDE) || (thr < maxv && 2u * minc <= pixels)) &&
-            !(cfg.predict != 0u && cfg.match.scan == SSDA_SCAN_COARSE) &&
-            cfg.match.threshold <= 4u &&
-            !(cfg.match.threshold == SSDA_THRESHOLD_RAMP && cfg.match.lambda_q8 == 0u) &&
-            !(cfg.match.flags && (cfg.match.work == NULL ||
-                                  cfg.match.work_size < SSDA_TRACK_WORK_SIZE(axx.search,
-                                      axy.search, axx.win, axy.win)));
-    exact_mode = (cfg.match.threshold == SSDA_THRESHOLD_AUTO ||
-                  cfg.match.threshold == SSDA_THRESHOLD_NONE) &&
-                 cfg.match.scan != SSDA_SCAN_COARSE;
-
+    memset(&c, 0, sizeof c);
+    read_case(&in, &c);
+    check_grid(&c);
+    valid = input_valid(&c);
+    exact_mode = (c.cfg.match.threshold == SSDA_THRESHOLD_AUTO ||
+                  c.cfg.match.threshold == SSDA_THRESHOLD_NONE) &&
+                 c.cfg.match.scan != SSDA_SCAN_COARSE;
     memset(&poison_v, 0x4D, sizeof poison_v);
     memset(&poison_st, 0x4D, sizeof poison_st);
     for (k = 0; k <= MAX_OUT; k++) {
         g_out[k] = poison_v;
     }
     st = poison_st;
-    rc = ssda_track(&fv, &sv, &cfg, g_out, out_count, &st);
-    if (!valid) {
+    rc = ssda_track(&c.fv, &c.sv, &c.cfg, g_out, c.out_count, &st);
+    if (!valid) { /* refused, out and stats untouched */
         FUZZ_CHECK(rc < 0);
         FUZZ_CHECK(memcmp(&st, &poison_st, sizeof st) == 0);
         for (k = 0; k <= MAX_OUT; k++) {
@@ -231,84 +368,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     FUZZ_CHECK(rc == SSDA_OK);
-    for (k = grid.count; k <= MAX_OUT; k++) {
+    for (k = c.grid.count; k <= MAX_OUT; k++) {
         FUZZ_CHECK(memcmp(&g_out[k], &poison_v, sizeof poison_v) == 0);
     }
-    brute_cost = (uint64_t)(axx.search - axx.win + 1u) * (axy.search - axy.win + 1u) * pixels;
-    for (k = 0; k < grid.count; k++) {
-        const ssda_track_vector_t *v = &g_out[k];
-        uint32_t col = k % grid.cols, row = k / grid.cols;
-        uint32_t wx = axx.start + col * axx.step, wy = axy.start + row * axy.step;
-        uint32_t hx = (axx.search - axx.win) / 2u, hy = (axy.search - axy.win) / 2u;
-        int64_t ax = (int64_t)wx - hx, ay = (int64_t)wy - hy;
-        uint32_t want;
-        FUZZ_CHECK(v->x == wx && v->y == wy);
-        FUZZ_CHECK(v->status <= SSDA_TRACK_EDGE);
-        counts[v->status]++;
-        /* the expected status, in the header's order */
-        if (ax < 0 || ay < 0 || ax + axx.search > f.w || ay + axy.search > f.h) {
-            want = SSDA_TRACK_EDGE;
-        } else if ((cfg.flags & SSDA_TRACK_MASK) &&
-                   holds(&s, wx, wy, axx.win, axy.win, cfg.mask_value)) {
-            want = SSDA_TRACK_MASKED;
-        } else if (cfg.flags & SSDA_TRACK_EXCLUDE) {
-            uint32_t bright = 0, x, y;
-            for (y = 0; y < axy.win; y++) {
-                for (x = 0; x < axx.win; x++) {
-                    bright += px(&s, wx + x, wy + y) > thr;
-                }
-            }
-            want = bright < minc || pixels - bright < minc ? SSDA_TRACK_EXCLUDED : SSDA_TRACK_OK;
-        } else {
-            want = SSDA_TRACK_OK;
-        }
-        if (want == SSDA_TRACK_OK && (cfg.flags & SSDA_TRACK_MASK) &&
-            holds(&f, (uint32_t)ax, (uint32_t)ay, axx.search, axy.search, cfg.mask_value)) {
-            want = SSDA_TRACK_MASKED;
-        }
-        FUZZ_CHECK(v->status == want);
-        if (v->status != SSDA_TRACK_OK) {
-            FUZZ_CHECK(v->sad == 0 && v->dx == 0 && v->dy == 0 && !v->exact);
-            continue;
-        }
-        /* the vector stays inside the area; its SAD is the one there when exact */
-        FUZZ_CHECK(v->dx <= (int32_t)hx && v->dx >= (int32_t)hx - (int32_t)(axx.search - axx.win));
-        FUZZ_CHECK(v->dy <= (int32_t)hy && v->dy >= (int32_t)hy - (int32_t)(axy.search - axy.win));
-        if (exact_mode) {
-            FUZZ_CHECK(v->exact);
-        }
-        if (exact_mode && (brute_cost * grid.count <= BRUTE_BUDGET || k % check_every == 0u) &&
-            brute_cost <= BRUTE_BUDGET) {
-            uint64_t best = UINT64_MAX;
-            uint32_t bx = 0, by = 0, x, y;
-            for (y = 0; y + axy.win <= axy.search; y++) {
-                for (x = 0; x + axx.win <= axx.search; x++) {
-                    uint64_t t = sad_at(&f, &s, (uint32_t)ax + x, (uint32_t)ay + y, wx, wy,
-                                        axx.win, axy.win);
-                    if (t < best) {
-                        best = t;
-                        bx = x;
-                        by = y;
-                    }
-                }
-            }
-            FUZZ_CHECK(v->sad == best);
-            FUZZ_CHECK(v->dx == (int32_t)hx - (int32_t)bx && v->dy == (int32_t)hy - (int32_t)by);
-        }
+    for (k = 0; k < c.grid.count; k++) {
+        check_window(&c, k, exact_mode, counts);
     }
-    FUZZ_CHECK(st.windows == grid.count);
-    FUZZ_CHECK(st.ok == counts[0] && st.excluded == counts[1] && st.masked == counts[2] &&
-               st.edge == counts[3]);
-    FUZZ_CHECK(st.completed <= st.positions);
-    st2 = poison_st;
-    FUZZ_CHECK(ssda_track(&fv, &sv, &cfg, g_out2, out_count, &st2) == SSDA_OK);
-    FUZZ_CHECK(st.pixel_ops == st2.pixel_ops && st.positions == st2.positions &&
-               st.completed == st2.completed && st.check_pixels == st2.check_pixels &&
-               st.windows == st2.windows && st.ok == st2.ok && st.edge == st2.edge);
-    for (k = 0; k < grid.count; k++) { /* field by field: padding may differ */
-        const ssda_track_vector_t *a = &g_out[k], *b = &g_out2[k];
-        FUZZ_CHECK(a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
-                   a->y == b->y && a->status == b->status && a->exact == b->exact);
-    }
+    check_repeat(&c, &st, counts);
     return 0;
 }

@@ -110,17 +110,104 @@ static void text(cairo_t *cr, double x, double y, const char *s, double size, in
     cairo_show_text(cr, s);
 }
 
+/* The chart's geometry: the value axis runs log10 from lo to hi. */
+typedef struct {
+    double width, left, right, row_h, group_h, top, height, lo, hi;
+} chart_t;
+
+static double xpos(const chart_t *c, double v)
+{
+    return c->left + (c->right - c->left) * (log10(v) - log10(c->lo)) /
+                         (log10(c->hi) - log10(c->lo));
+}
+
+/* Decade grid lines and labels, and the issue's target for tracking: 10x
+   faster than TM_SQDIFF (dashed). */
+static void draw_grid(cairo_t *cr, const chart_t *c)
+{
+    static const double dash[] = {5.0, 4.0};
+    char buf[64];
+    double x;
+    for (double d = c->lo; d <= c->hi * 1.001; d *= 10.0) {
+        double grey = d > 0.99 && d < 1.01 ? 0.0 : 0.8;
+        x = xpos(c, d);
+        cairo_set_source_rgb(cr, grey, grey, grey);
+        cairo_set_line_width(cr, d > 0.99 && d < 1.01 ? 1.5 : 1.0);
+        cairo_move_to(cr, x, c->top - 10);
+        cairo_line_to(cr, x, c->height - 40);
+        cairo_stroke(cr);
+        snprintf(buf, sizeof buf, "%gx", d);
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        text(cr, x - 10, c->height - 24, buf, 11, 0, 0);
+    }
+    x = xpos(c, 10.0);
+    cairo_set_source_rgb(cr, 0.1, 0.6, 0.2);
+    cairo_set_dash(cr, dash, 2, 0);
+    cairo_move_to(cr, x, c->top - 10);
+    cairo_line_to(cr, x, c->height - 40);
+    cairo_stroke(cr);
+    cairo_set_dash(cr, NULL, 0, 0);
+    text(cr, x + 4, c->top - 12, "tracking target: 10x TM_SQDIFF", 10, 0, 0);
+}
+
+/* One bar per row from 1x to its value, under its group's heading. */
+static void draw_rows(cairo_t *cr, const chart_t *c, const row_t *rows, size_t n)
+{
+    char buf[64];
+    double y = c->top;
+    for (size_t i = 0; i < n; i++) {
+        double r, g, b, x1 = xpos(c, 1.0), xv = xpos(c, rows[i].value);
+        if (i == 0 || strcmp(rows[i].group, rows[i - 1].group) != 0) {
+            cairo_set_source_rgb(cr, 0, 0, 0);
+            text(cr, 20, y + 20, rows[i].group, 13, 1, 0);
+            y += c->group_h;
+        }
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        text(cr, c->left - 8, y + 14, rows[i].label, 11, 0, 1);
+        colour_of(rows[i].label, &r, &g, &b);
+        cairo_set_source_rgb(cr, r, g, b);
+        cairo_rectangle(cr, xv < x1 ? xv : x1, y + 3, fabs(xv - x1), c->row_h - 6);
+        cairo_fill(cr);
+        snprintf(buf, sizeof buf, rows[i].value >= 1.0 ? "%.1fx" : "%.2fx", rows[i].value);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        if (xv >= x1) {
+            text(cr, xv + 4, y + 14, buf, 10, 0, 0);
+        } else {
+            text(cr, xv - 4, y + 14, buf, 10, 0, 1);
+        }
+        y += c->row_h;
+    }
+}
+
+/* The surface as a PNG, written atomically. Returns 0 or 1. */
+static int write_png(cairo_surface_t *surf, const char *out)
+{
+    atomic_file_t af;
+    if (atomic_file_open(&af, out) != 0) {
+        perror(out);
+        return 1;
+    }
+    if (cairo_surface_write_to_png_stream(surf, write_fp, af.fp) != CAIRO_STATUS_SUCCESS) {
+        fprintf(stderr, "%s: cannot write the PNG\n", out);
+        atomic_file_abort(&af);
+        return 1;
+    }
+    if (atomic_file_commit(&af) != 0) {
+        perror(out);
+        return 1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     static row_t rows[MAX_ROWS];
     size_t n = 0, groups = 0;
     const char *out = NULL, *subtitle = NULL;
-    const double width = 1100, left = 420, right = 1040, row_h = 20, group_h = 30, top = 80;
-    double lo = 0.1, hi = 100.0, height, y;
+    chart_t c = {1100, 420, 1040, 20, 30, 80, 0, 0.1, 100.0};
     cairo_surface_t *surf;
     cairo_t *cr;
-    atomic_file_t af;
-    char buf[64];
+    int rc;
 
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--subtitle") && i + 1 < argc) {
@@ -138,12 +225,11 @@ int main(int argc, char **argv)
     group_rows(rows, n);
     for (size_t i = 0; i < n; i++) {
         groups += i == 0 || strcmp(rows[i].group, rows[i - 1].group) != 0;
-        while (rows[i].value < lo * 1.5) lo /= 10.0;
-        while (rows[i].value > hi / 1.5) hi *= 10.0;
+        while (rows[i].value < c.lo * 1.5) c.lo /= 10.0;
+        while (rows[i].value > c.hi / 1.5) c.hi *= 10.0;
     }
-    height = top + (double)groups * group_h + (double)n * row_h + 50;
-
-    surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)width, (int)height);
+    c.height = c.top + (double)groups * c.group_h + (double)n * c.row_h + 50;
+    surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)c.width, (int)c.height);
     cr = cairo_create(surf);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -152,74 +238,10 @@ int main(int argc, char **argv)
          17, 1, 0);
     text(cr, 20, 50, subtitle ? subtitle : "right of 1: ssda faster; left of 1: the peer is faster (log scale)",
          12, 0, 0);
-
-#define XPOS(v) (left + (right - left) * (log10(v) - log10(lo)) / (log10(hi) - log10(lo)))
-    /* decade grid and its labels */
-    for (double d = lo; d <= hi * 1.001; d *= 10.0) {
-        double x = XPOS(d);
-        cairo_set_source_rgb(cr, d > 0.99 && d < 1.01 ? 0.0 : 0.8, d > 0.99 && d < 1.01 ? 0.0 : 0.8,
-                             d > 0.99 && d < 1.01 ? 0.0 : 0.8);
-        cairo_set_line_width(cr, d > 0.99 && d < 1.01 ? 1.5 : 1.0);
-        cairo_move_to(cr, x, top - 10);
-        cairo_line_to(cr, x, height - 40);
-        cairo_stroke(cr);
-        snprintf(buf, sizeof buf, "%gx", d);
-        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
-        text(cr, x - 10, height - 24, buf, 11, 0, 0);
-    }
-    /* the target for tracking: 10x faster than TM_SQDIFF */
-    {
-        static const double dash[] = {5.0, 4.0};
-        double x = XPOS(10.0);
-        cairo_set_source_rgb(cr, 0.1, 0.6, 0.2);
-        cairo_set_dash(cr, dash, 2, 0);
-        cairo_move_to(cr, x, top - 10);
-        cairo_line_to(cr, x, height - 40);
-        cairo_stroke(cr);
-        cairo_set_dash(cr, NULL, 0, 0);
-        text(cr, x + 4, top - 12, "tracking target: 10x TM_SQDIFF", 10, 0, 0);
-    }
-
-    y = top;
-    for (size_t i = 0; i < n; i++) {
-        double r, g, b, x1 = XPOS(1.0), xv = XPOS(rows[i].value);
-        if (i == 0 || strcmp(rows[i].group, rows[i - 1].group) != 0) {
-            cairo_set_source_rgb(cr, 0, 0, 0);
-            text(cr, 20, y + 20, rows[i].group, 13, 1, 0);
-            y += group_h;
-        }
-        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        text(cr, left - 8, y + 14, rows[i].label, 11, 0, 1);
-        colour_of(rows[i].label, &r, &g, &b);
-        cairo_set_source_rgb(cr, r, g, b);
-        cairo_rectangle(cr, xv < x1 ? xv : x1, y + 3, fabs(xv - x1), row_h - 6);
-        cairo_fill(cr);
-        snprintf(buf, sizeof buf, rows[i].value >= 1.0 ? "%.1fx" : "%.2fx", rows[i].value);
-        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        if (xv >= x1) {
-            text(cr, xv + 4, y + 14, buf, 10, 0, 0);
-        } else {
-            text(cr, xv - 4, y + 14, buf, 10, 0, 1);
-        }
-        y += row_h;
-    }
+    draw_grid(cr, &c);
+    draw_rows(cr, &c, rows, n);
     cairo_destroy(cr);
-
-    if (atomic_file_open(&af, out) != 0) {
-        perror(out);
-        cairo_surface_destroy(surf);
-        return 1;
-    }
-    if (cairo_surface_write_to_png_stream(surf, write_fp, af.fp) != CAIRO_STATUS_SUCCESS) {
-        fprintf(stderr, "%s: cannot write the PNG\n", out);
-        atomic_file_abort(&af);
-        cairo_surface_destroy(surf);
-        return 1;
-    }
+    rc = write_png(surf, out);
     cairo_surface_destroy(surf);
-    if (atomic_file_commit(&af) != 0) {
-        perror(out);
-        return 1;
-    }
-    return 0;
+    return rc;
 }

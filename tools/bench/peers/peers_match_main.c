@@ -105,33 +105,194 @@ static int holds_value(const gray_image_t *img, uint32_t x, uint32_t y, uint32_t
     return 0;
 }
 
+/* Returns 0, or 2 after a message. */
+static int parse_options(int argc, char **argv, options_t *o)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--reps") && i + 1 < argc) o->reps = atoi(argv[++i]);
+        else if (!strcmp(a, "--search-reps") && i + 1 < argc) o->search_reps = atoi(argv[++i]);
+        else if (!strcmp(a, "--ratios") && i + 1 < argc) o->ratios = argv[++i];
+        else if (!strcmp(a, "--pair") && i + 2 < argc) { o->pair[0] = argv[++i]; o->pair[1] = argv[++i]; }
+        else if (!strcmp(a, "--pair-name") && i + 1 < argc) o->pair_name = argv[++i];
+        else if (!strcmp(a, "--mask") && i + 1 < argc) { o->use_mask = 1; o->mask = (uint16_t)atoi(argv[++i]); }
+        else if (!strcmp(a, "--image") && i + 1 < argc) o->image = argv[++i];
+        else if (!strcmp(a, "--size") && i + 1 < argc) o->size = atoi(argv[++i]);
+        else if (!strcmp(a, "--quick")) o->quick = 1;
+        else return usage();
+    }
+    if (o->quick) {
+        o->reps = o->reps > 3 ? 3 : o->reps;
+        o->search_reps = o->search_reps > 3 ? 3 : o->search_reps;
+    }
+    if (o->reps < 1 || o->search_reps < 1 || o->size < 128 || o->size > 8192) {
+        fprintf(stderr, "ssda-peers-match: --reps and --search-reps >= 1, 128 <= --size <= 8192\n");
+        return 2;
+    }
+    return 0;
+}
+
+/* Single searches in a 640 x 480 crop of the real pair's centre, if it
+   holds no fill value. */
+static int search_pair_centre(const options_t *o, const gray_image_t *a, const peers_pair_t *p,
+                              FILE *ratios)
+{
+    peers_scene_t s;
+    char sdesc[512];
+    uint32_t x0 = (a->width - 640) / 2, y0 = (a->height - 480) / 2;
+    memset(&s, 0, sizeof s);
+    s.name = o->pair_name;
+    snprintf(sdesc, sizeof sdesc,
+             "The 640x480 centre (from %u, %u) of the pair, %d-bit: templates from "
+             "`%s`, searched in `%s`%s",
+             x0, y0, a->bits, base_name(o->pair[1]), base_name(o->pair[0]),
+             a->bits == 16 ? " (float32 for OpenCV, converted once)" : "");
+    s.description = sdesc;
+    ssda_view_roi(&s.image, &p->first, (uint16_t)x0, (uint16_t)y0, 640, 480);
+    ssda_view_roi(&s.moved, &p->second, (uint16_t)x0, (uint16_t)y0, 640, 480);
+    return search_scene(&s, o, ratios);
+}
+
+/* Grid tracking on the real pair (--pair), then single searches in its
+   centre. Returns 0, 1 (a peer failed) or -1 (unreadable input). */
+static int run_real_pair(const options_t *o, FILE *ratios, int *fatal)
+{
+    gray_image_t a, b;
+    peers_pair_t p;
+    char err[512], desc[512];
+    int rc = 0;
+    if (png_read_gray(o->pair[0], PNG_GRAY_NATIVE, &a, NULL, err, sizeof err) != 0 ||
+        png_read_gray(o->pair[1], PNG_GRAY_NATIVE, &b, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "ssda-peers-match: %s\n", err);
+        *fatal = 1;
+        return 1;
+    }
+    if (a.bits != b.bits) {
+        fprintf(stderr, "ssda-peers-match: the pair's images differ in depth\n");
+        *fatal = 1;
+        return 1;
+    }
+    memset(&p, 0, sizeof p);
+    p.name = o->pair_name;
+    snprintf(desc, sizeof desc,
+             "`%s` -> `%s`, %ux%u, %d-bit%s%s", base_name(o->pair[0]), base_name(o->pair[1]),
+             b.width, b.height, b.bits, b.bits == 16 ? " (converted to float32 once for "
+             "OpenCV, outside the timed region: matchTemplate takes 8-bit or float32 only)" : "",
+             o->use_mask ? "; windows whose window or area holds the fill value are left "
+             "out for every method" : "");
+    p.description = desc;
+    gray_image_view(&a, &p.first);
+    gray_image_view(&b, &p.second);
+    p.use_mask = o->use_mask;
+    p.mask_value = o->mask;
+    rc |= track_both(&p, o, ratios);
+    if (a.width >= 640 && a.height >= 480 &&
+        (!o->use_mask ||
+         (!holds_value(&a, (a.width - 640) / 2, (a.height - 480) / 2, 640, 480, o->mask) &&
+          !holds_value(&b, (a.width - 640) / 2, (a.height - 480) / 2, 640, 480, o->mask)))) {
+        rc |= search_pair_centre(o, &a, &p, ratios);
+    }
+    gray_image_free(&a);
+    gray_image_free(&b);
+    return rc;
+}
+
+/* Grid tracking on the synthetic pair (--size). */
+static int run_synthetic_pair(const options_t *o, FILE *ratios, int *fatal)
+{
+    uint8_t *a, *b;
+    peers_pair_t p;
+    char desc[512];
+    int rc;
+    if (make_pair(o->size, o->size, 1u, &a, &b) != 0) {
+        fprintf(stderr, "ssda-peers-match: out of memory\n");
+        *fatal = 1;
+        return 1;
+    }
+    memset(&p, 0, sizeof p);
+    p.name = "synthetic";
+    snprintf(desc, sizeof desc,
+             "Synthetic %dx%d 8-bit value-noise texture and a copy moved by a smooth known "
+             "field of up to 5 px plus noise +-2 (the pair of `ssda-bench-track`)",
+             o->size, o->size);
+    p.description = desc;
+    ssda_view_init(&p.first, a, (uint16_t)o->size, (uint16_t)o->size, (uint32_t)o->size, SSDA_PIX_U8);
+    ssda_view_init(&p.second, b, (uint16_t)o->size, (uint16_t)o->size, (uint32_t)o->size, SSDA_PIX_U8);
+    p.synthetic_truth = 1;
+    rc = track_both(&p, o, ratios);
+    free(a);
+    free(b);
+    return rc;
+}
+
+/* Single searches in synthetic 640 x 480 value noise. */
+static int run_synthetic_scene(const options_t *o, FILE *ratios, int *fatal)
+{
+    uint8_t *a, *b;
+    peers_scene_t s;
+    int rc;
+    if (make_pair(640, 480, 5u, &a, &b) != 0) {
+        fprintf(stderr, "ssda-peers-match: out of memory\n");
+        *fatal = 1;
+        return 1;
+    }
+    memset(&s, 0, sizeof s);
+    s.name = "synthetic";
+    s.description = "Synthetic 640x480 8-bit value noise; templates from its copy moved by "
+                    "the smooth known field plus noise +-2";
+    ssda_view_init(&s.image, a, 640, 480, 640, SSDA_PIX_U8);
+    ssda_view_init(&s.moved, b, 640, 480, 640, SSDA_PIX_U8);
+    s.synthetic_truth = 1;
+    rc = search_scene(&s, o, ratios);
+    free(a);
+    free(b);
+    return rc;
+}
+
+/* Single searches in the given image (--image), against its moved copy. */
+static int run_image_scene(const options_t *o, FILE *ratios, int *fatal)
+{
+    gray_image_t img;
+    peers_scene_t s;
+    uint8_t *b;
+    char err[512], desc[512];
+    int rc;
+    if (png_read_gray(o->image, PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "ssda-peers-match: %s\n", err);
+        *fatal = 1;
+        return 1;
+    }
+    b = malloc((size_t)img.width * img.height);
+    if (b == NULL || img.stride != img.width) {
+        fprintf(stderr, "ssda-peers-match: out of memory\n");
+        *fatal = 1;
+        return 1;
+    }
+    synth_moved(img.pixels, b, (int)img.width, (int)img.height, 7u);
+    memset(&s, 0, sizeof s);
+    s.name = base_name(o->image);
+    snprintf(desc, sizeof desc,
+             "`%s`, %ux%u 8-bit; templates from its copy moved by the smooth known field "
+             "of the synthetic pair plus noise +-2",
+             base_name(o->image), img.width, img.height);
+    s.description = desc;
+    gray_image_view(&img, &s.image);
+    ssda_view_init(&s.moved, b, (uint16_t)img.width, (uint16_t)img.height, img.width, SSDA_PIX_U8);
+    s.synthetic_truth = 1;
+    rc = search_scene(&s, o, ratios);
+    free(b);
+    gray_image_free(&img);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     options_t o = {7, 5, 1024, 0, 0, 0, NULL, {NULL, NULL}, "real pair", NULL};
     FILE *ratios = NULL;
-    char info[256], desc[512];
-    int rc = 0;
-
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--reps") && i + 1 < argc) o.reps = atoi(argv[++i]);
-        else if (!strcmp(a, "--search-reps") && i + 1 < argc) o.search_reps = atoi(argv[++i]);
-        else if (!strcmp(a, "--ratios") && i + 1 < argc) o.ratios = argv[++i];
-        else if (!strcmp(a, "--pair") && i + 2 < argc) { o.pair[0] = argv[++i]; o.pair[1] = argv[++i]; }
-        else if (!strcmp(a, "--pair-name") && i + 1 < argc) o.pair_name = argv[++i];
-        else if (!strcmp(a, "--mask") && i + 1 < argc) { o.use_mask = 1; o.mask = (uint16_t)atoi(argv[++i]); }
-        else if (!strcmp(a, "--image") && i + 1 < argc) o.image = argv[++i];
-        else if (!strcmp(a, "--size") && i + 1 < argc) o.size = atoi(argv[++i]);
-        else if (!strcmp(a, "--quick")) o.quick = 1;
-        else return usage();
-    }
-    if (o.quick) {
-        o.reps = o.reps > 3 ? 3 : o.reps;
-        o.search_reps = o.search_reps > 3 ? 3 : o.search_reps;
-    }
-    if (o.reps < 1 || o.search_reps < 1 || o.size < 128 || o.size > 8192) {
-        fprintf(stderr, "ssda-peers-match: --reps and --search-reps >= 1, 128 <= --size <= 8192\n");
-        return 2;
+    char info[256];
+    int rc = parse_options(argc, argv, &o), fatal = 0;
+    if (rc != 0) {
+        return rc;
     }
     if (o.ratios != NULL && (ratios = fopen(o.ratios, "w")) == NULL) {
         perror(o.ratios);
@@ -140,129 +301,18 @@ int main(int argc, char **argv)
     cv_peer_init(info, sizeof info);
     printf("## Template matching: ssda %d.%d.%d vs %s\n", SSDA_VERSION_MAJOR, SSDA_VERSION_MINOR,
            SSDA_VERSION_PATCH, info);
-
-    /* Grid tracking: the real pair, then the synthetic one. */
+    /* Grid tracking: the real pair, then the synthetic one; single searches:
+       synthetic 640 x 480, then the given image. */
     if (o.pair[0] != NULL) {
-        gray_image_t a, b;
-        peers_pair_t p;
-        char err[512];
-        if (png_read_gray(o.pair[0], PNG_GRAY_NATIVE, &a, NULL, err, sizeof err) != 0 ||
-            png_read_gray(o.pair[1], PNG_GRAY_NATIVE, &b, NULL, err, sizeof err) != 0) {
-            fprintf(stderr, "ssda-peers-match: %s\n", err);
-            return 1;
-        }
-        if (a.bits != b.bits) {
-            fprintf(stderr, "ssda-peers-match: the pair's images differ in depth\n");
-            return 1;
-        }
-        memset(&p, 0, sizeof p);
-        p.name = o.pair_name;
-        snprintf(desc, sizeof desc,
-                 "`%s` -> `%s`, %ux%u, %d-bit%s%s", base_name(o.pair[0]), base_name(o.pair[1]),
-                 b.width, b.height, b.bits, b.bits == 16 ? " (converted to float32 once for "
-                 "OpenCV, outside the timed region: matchTemplate takes 8-bit or float32 only)" : "",
-                 o.use_mask ? "; windows whose window or area holds the fill value are left "
-                 "out for every method" : "");
-        p.description = desc;
-        gray_image_view(&a, &p.first);
-        gray_image_view(&b, &p.second);
-        p.use_mask = o.use_mask;
-        p.mask_value = o.mask;
-        rc |= track_both(&p, &o, ratios);
-
-        /* A 640 x 480 crop of the pair's centre for single searches, if it
-           holds no fill value. */
-        if (a.width >= 640 && a.height >= 480) {
-            peers_scene_t s;
-            char sdesc[512];
-            uint32_t x0 = (a.width - 640) / 2, y0 = (a.height - 480) / 2;
-            if (!o.use_mask || (!holds_value(&a, x0, y0, 640, 480, o.mask) &&
-                                !holds_value(&b, x0, y0, 640, 480, o.mask))) {
-                memset(&s, 0, sizeof s);
-                s.name = o.pair_name;
-                snprintf(sdesc, sizeof sdesc,
-                         "The 640x480 centre (from %u, %u) of the pair, %d-bit: templates from "
-                         "`%s`, searched in `%s`%s",
-                         x0, y0, a.bits, base_name(o.pair[1]), base_name(o.pair[0]),
-                         a.bits == 16 ? " (float32 for OpenCV, converted once)" : "");
-                s.description = sdesc;
-                ssda_view_roi(&s.image, &p.first, (uint16_t)x0, (uint16_t)y0, 640, 480);
-                ssda_view_roi(&s.moved, &p.second, (uint16_t)x0, (uint16_t)y0, 640, 480);
-                rc |= search_scene(&s, &o, ratios);
-            }
-        }
-        gray_image_free(&a);
-        gray_image_free(&b);
+        rc |= run_real_pair(&o, ratios, &fatal);
     }
-    {
-        uint8_t *a, *b;
-        peers_pair_t p;
-        if (make_pair(o.size, o.size, 1u, &a, &b) != 0) {
-            fprintf(stderr, "ssda-peers-match: out of memory\n");
-            return 1;
-        }
-        memset(&p, 0, sizeof p);
-        p.name = "synthetic";
-        snprintf(desc, sizeof desc,
-                 "Synthetic %dx%d 8-bit value-noise texture and a copy moved by a smooth known "
-                 "field of up to 5 px plus noise +-2 (the pair of `ssda-bench-track`)",
-                 o.size, o.size);
-        p.description = desc;
-        ssda_view_init(&p.first, a, (uint16_t)o.size, (uint16_t)o.size, (uint32_t)o.size, SSDA_PIX_U8);
-        ssda_view_init(&p.second, b, (uint16_t)o.size, (uint16_t)o.size, (uint32_t)o.size, SSDA_PIX_U8);
-        p.synthetic_truth = 1;
-        rc |= track_both(&p, &o, ratios);
-        free(a);
-        free(b);
+    rc |= fatal ? 0 : run_synthetic_pair(&o, ratios, &fatal);
+    rc |= fatal ? 0 : run_synthetic_scene(&o, ratios, &fatal);
+    if (o.image != NULL && !fatal) {
+        rc |= run_image_scene(&o, ratios, &fatal);
     }
-
-    /* Single searches: synthetic 640 x 480, then the given image. */
-    {
-        uint8_t *a, *b;
-        peers_scene_t s;
-        if (make_pair(640, 480, 5u, &a, &b) != 0) {
-            fprintf(stderr, "ssda-peers-match: out of memory\n");
-            return 1;
-        }
-        memset(&s, 0, sizeof s);
-        s.name = "synthetic";
-        s.description = "Synthetic 640x480 8-bit value noise; templates from its copy moved by "
-                        "the smooth known field plus noise +-2";
-        ssda_view_init(&s.image, a, 640, 480, 640, SSDA_PIX_U8);
-        ssda_view_init(&s.moved, b, 640, 480, 640, SSDA_PIX_U8);
-        s.synthetic_truth = 1;
-        rc |= search_scene(&s, &o, ratios);
-        free(a);
-        free(b);
-    }
-    if (o.image != NULL) {
-        gray_image_t img;
-        peers_scene_t s;
-        uint8_t *b;
-        char err[512];
-        if (png_read_gray(o.image, PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
-            fprintf(stderr, "ssda-peers-match: %s\n", err);
-            return 1;
-        }
-        b = malloc((size_t)img.width * img.height);
-        if (b == NULL || img.stride != img.width) {
-            fprintf(stderr, "ssda-peers-match: out of memory\n");
-            return 1;
-        }
-        synth_moved(img.pixels, b, (int)img.width, (int)img.height, 7u);
-        memset(&s, 0, sizeof s);
-        s.name = base_name(o.image);
-        snprintf(desc, sizeof desc,
-                 "`%s`, %ux%u 8-bit; templates from its copy moved by the smooth known field "
-                 "of the synthetic pair plus noise +-2",
-                 base_name(o.image), img.width, img.height);
-        s.description = desc;
-        gray_image_view(&img, &s.image);
-        ssda_view_init(&s.moved, b, (uint16_t)img.width, (uint16_t)img.height, img.width, SSDA_PIX_U8);
-        s.synthetic_truth = 1;
-        rc |= search_scene(&s, &o, ratios);
-        free(b);
-        gray_image_free(&img);
+    if (fatal) {
+        return 1;
     }
     if (ratios != NULL && fclose(ratios) != 0) {
         perror(o.ratios);

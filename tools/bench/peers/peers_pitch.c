@@ -167,15 +167,98 @@ static void print_group(const group_t *g, FILE *ratios)
     }
 }
 
-int main(int argc, char **argv)
+static void print_intro(int reps)
+{
+    printf("## Pitch: ssda %d.%d.%d vs aubio yin and yinfast\n\n", SSDA_VERSION_MAJOR,
+           SSDA_VERSION_MINOR, SSDA_VERSION_PATCH);
+    printf("f0 50..1000 Hz, hop 5.8 ms, library defaults otherwise (ssda-eval-pitch's "
+           "configuration); aubio with the same hop, a buffer of 2 K samples (K = ssda's "
+           "frame, one period of 50 Hz), its default tolerance 0.15; frames aligned by their "
+           "centre times and scored against the reference as in tools/eval. Processor time of "
+           "the estimator alone, median of %d interleaved runs per signal, summed over the "
+           "signals of a row. GPE: share of frames voiced in both with f0 off by > 20 %%; FPE: "
+           "mean |error| in cents of the others; VDE: share of frames whose voicing differs.\n\n",
+           reps);
+    printf("| data | method | CPU ms per s of audio | time relative to ssda default | GPE %% | FPE (cents) | VDE %% |\n");
+    printf("|---|---|---:|---:|---:|---:|---:|\n");
+}
+
+/* The synthetic songs (clean to 10 dB SNR, dark and bright). Returns 0, 1
+   (a method failed) or -1 (out of memory). */
+static int run_synthetic(int quick, int reps, FILE *ratios, size_t *mismatch)
 {
     static const struct { int bright; double snr; } sets[] = {
         {0, 200.0}, {0, 30.0}, {0, 20.0}, {0, 10.0}, {1, 200.0}, {1, 20.0}};
-    int reps = 5, quick = 0, nfiles = 0, rc = 0;
+    group_t synth;
+    int rc = 0;
+    memset(&synth, 0, sizeof synth);
+    synth.name = "synthetic songs (6 x 40 notes, 16 kHz, clean to 10 dB SNR)";
+    synth.label = "synthetic songs";
+    for (size_t k = 0; k < (quick ? 2u : sizeof sets / sizeof sets[0]); k++) {
+        synth_song_t s;
+        group_t *gs[1] = {&synth};
+        if (synth_song(&s, 16000, quick ? 10 : 40, sets[k].snr, sets[k].bright, 1234u + (uint32_t)k) != 0) {
+            fprintf(stderr, "ssda-peers-pitch: out of memory\n");
+            return -1;
+        }
+        if (eval_signal(gs, 1, s.x, s.n, s.rate, ref_synth, &s, reps, mismatch) != 0) {
+            rc = 1;
+        }
+        synth_song_free(&s);
+    }
+    if (quick) {
+        synth.name = "synthetic songs (quick: 2 x 10 notes)";
+    }
+    print_group(&synth, ratios);
+    return rc;
+}
+
+/* Each audio=ref.csv recording, then all of them together. Returns 0 or 1. */
+static int run_files(char **files, int nfiles, int reps, FILE *ratios, size_t *mismatch)
+{
+    group_t files_all;
+    int rc = 0;
+    memset(&files_all, 0, sizeof files_all);
+    files_all.name = "**recordings, all**";
+    files_all.label = "recordings";
+    for (int i = 0; i < nfiles; i++) {
+        char *eq = strchr(files[i], '='), err[512];
+        const char *base;
+        f0_track_t tr;
+        int16_t *x;
+        size_t n;
+        uint32_t rate;
+        group_t g;
+        group_t *gs[2] = {&g, &files_all};
+        *eq = '\0';
+        if (wav_read_mono_i16(files[i], &x, &n, &rate, err, sizeof err) != 0 ||
+            f0_track_read(eq + 1, &tr, err, sizeof err) != 0) {
+            fprintf(stderr, "ssda-peers-pitch: %s\n", err);
+            rc = 1;
+            continue;
+        }
+        base = strrchr(files[i], '/') ? strrchr(files[i], '/') + 1 : files[i];
+        memset(&g, 0, sizeof g);
+        g.name = g.label = base;
+        if (eval_signal(gs, 2, x, n, rate, ref_csv, &tr, reps, mismatch) != 0) {
+            rc = 1;
+        }
+        print_group(&g, nfiles == 1 ? ratios : NULL);
+        free(x);
+        f0_track_free(&tr);
+    }
+    if (nfiles > 1) {
+        print_group(&files_all, ratios);
+    }
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    int reps = 5, quick = 0, nfiles = 0, rc = 0, r;
     const char *ratios_path = NULL;
     FILE *ratios = NULL;
     size_t mismatch = 0;
-    group_t synth, files_all;
     char **files = calloc((size_t)argc, sizeof *files);
 
     for (int i = 1; i < argc; i++) {
@@ -200,71 +283,12 @@ int main(int argc, char **argv)
         perror(ratios_path);
         return 1;
     }
-    printf("## Pitch: ssda %d.%d.%d vs aubio yin and yinfast\n\n", SSDA_VERSION_MAJOR,
-           SSDA_VERSION_MINOR, SSDA_VERSION_PATCH);
-    printf("f0 50..1000 Hz, hop 5.8 ms, library defaults otherwise (ssda-eval-pitch's "
-           "configuration); aubio with the same hop, a buffer of 2 K samples (K = ssda's "
-           "frame, one period of 50 Hz), its default tolerance 0.15; frames aligned by their "
-           "centre times and scored against the reference as in tools/eval. Processor time of "
-           "the estimator alone, median of %d interleaved runs per signal, summed over the "
-           "signals of a row. GPE: share of frames voiced in both with f0 off by > 20 %%; FPE: "
-           "mean |error| in cents of the others; VDE: share of frames whose voicing differs.\n\n",
-           reps);
-    printf("| data | method | CPU ms per s of audio | time relative to ssda default | GPE %% | FPE (cents) | VDE %% |\n");
-    printf("|---|---|---:|---:|---:|---:|---:|\n");
-
-    memset(&synth, 0, sizeof synth);
-    synth.name = "synthetic songs (6 x 40 notes, 16 kHz, clean to 10 dB SNR)";
-    synth.label = "synthetic songs";
-    for (size_t k = 0; k < (quick ? 2u : sizeof sets / sizeof sets[0]); k++) {
-        synth_song_t s;
-        if (synth_song(&s, 16000, quick ? 10 : 40, sets[k].snr, sets[k].bright, 1234u + (uint32_t)k) != 0) {
-            fprintf(stderr, "ssda-peers-pitch: out of memory\n");
-            return 1;
-        }
-        group_t *gs[1] = {&synth};
-        if (eval_signal(gs, 1, s.x, s.n, s.rate, ref_synth, &s, reps, &mismatch) != 0) {
-            rc = 1;
-        }
-        synth_song_free(&s);
+    print_intro(reps);
+    if ((r = run_synthetic(quick, reps, ratios, &mismatch)) < 0) {
+        return 1;
     }
-    if (quick) {
-        synth.name = "synthetic songs (quick: 2 x 10 notes)";
-    }
-    print_group(&synth, ratios);
-
-    memset(&files_all, 0, sizeof files_all);
-    files_all.name = "**recordings, all**";
-    files_all.label = "recordings";
-    for (int i = 0; i < nfiles; i++) {
-        char *eq = strchr(files[i], '='), err[512];
-        const char *base;
-        f0_track_t tr;
-        int16_t *x;
-        size_t n;
-        uint32_t rate;
-        group_t g;
-        group_t *gs[2] = {&g, &files_all};
-        *eq = '\0';
-        if (wav_read_mono_i16(files[i], &x, &n, &rate, err, sizeof err) != 0 ||
-            f0_track_read(eq + 1, &tr, err, sizeof err) != 0) {
-            fprintf(stderr, "ssda-peers-pitch: %s\n", err);
-            rc = 1;
-            continue;
-        }
-        base = strrchr(files[i], '/') ? strrchr(files[i], '/') + 1 : files[i];
-        memset(&g, 0, sizeof g);
-        g.name = g.label = base;
-        if (eval_signal(gs, 2, x, n, rate, ref_csv, &tr, reps, &mismatch) != 0) {
-            rc = 1;
-        }
-        print_group(&g, nfiles == 1 ? ratios : NULL);
-        free(x);
-        f0_track_free(&tr);
-    }
-    if (nfiles > 1) {
-        print_group(&files_all, ratios);
-    }
+    rc |= r;
+    rc |= run_files(files, nfiles, reps, ratios, &mismatch);
     printf("\nEarly exit and tracking vs no early exit: %zu frames differ%s.\n", mismatch,
            mismatch == 0 ? " (bit-identical estimates, as the library promises)" : " (**BUG**)");
     if (ratios != NULL && fclose(ratios) != 0) {

@@ -104,22 +104,13 @@ static double run_method(const peers_pair_t *p, track_run_t *r, int m, unsigned 
     return t;
 }
 
-int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
+/* The configs (brute force, and auto + prediction + bounds with work) and
+   the buffers for a win x win grid in 2win x 2win areas. Returns 0 or -1. */
+static int setup_run(const peers_pair_t *p, unsigned win, void *work, size_t work_size,
+                     ssda_track_grid_t *grid, track_run_t *r)
 {
     ssda_track_config_t base;
-    ssda_track_grid_t grid;
-    ssda_track_stats_t st[M_COUNT], st_ref;
-    track_run_t r;
-    size_t work_size = SSDA_TRACK_WORK_SIZE(2 * win, 2 * win, win, win);
-    void *work = malloc(work_size);
-    double *times = calloc((size_t)reps * M_COUNT * 2u, sizeof *times), med[M_COUNT];
-    double *cpu_times = times + (size_t)reps * M_COUNT, med_cpu[M_COUNT], cpu;
-    peers_agree_t vs_ref[M_COUNT], vs_truth[M_COUNT];
-    uint32_t identical = 0;
-    int e, m, rc = -1;
-    char buf[96], group[96];
-
-    memset(&r, 0, sizeof r);
+    int e;
     memset(&base, 0, sizeof base);
     base.win_w = base.win_h = (uint16_t)win;
     base.search_w = base.search_h = (uint16_t)(2 * win);
@@ -128,60 +119,82 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
         base.flags = SSDA_TRACK_MASK;
         base.mask_value = p->mask_value;
     }
-    e = ssda_track_grid(&base, p->second.width, p->second.height, &grid);
-    if (e != SSDA_OK || work == NULL || times == NULL) {
+    e = ssda_track_grid(&base, p->second.width, p->second.height, grid);
+    if (e != SSDA_OK || work == NULL) {
         fprintf(stderr, "peers: grid %ux%u: %s\n", win, 2 * win,
                 e != SSDA_OK ? ssda_strerror(e) : "out of memory");
-        goto done;
+        return -1;
     }
-    r.count = grid.count;
-    r.cfg_none = base;
-    r.cfg_none.match.threshold = SSDA_THRESHOLD_NONE;
-    r.cfg_auto = base;
-    r.cfg_auto.match.threshold = SSDA_THRESHOLD_AUTO;
-    r.cfg_auto.match.scan = SSDA_SCAN_PREDICT;
-    r.cfg_auto.predict = SSDA_TRACK_PREDICT_MEDIAN;
-    r.cfg_auto.match.flags = SSDA_MATCH_BOUNDS;
-    r.cfg_auto.match.work = work;
-    r.cfg_auto.match.work_size = work_size;
-    r.out = calloc(r.count * M_COUNT, sizeof *r.out);
-    r.jobs = calloc(r.count, sizeof *r.jobs);
-    r.job_window = calloc(r.count, sizeof *r.job_window);
-    r.bx = calloc(r.count, sizeof *r.bx);
-    r.by = calloc(r.count, sizeof *r.by);
-    if (r.out == NULL || r.jobs == NULL || r.job_window == NULL || r.bx == NULL || r.by == NULL) {
+    r->count = grid->count;
+    r->cfg_none = base;
+    r->cfg_none.match.threshold = SSDA_THRESHOLD_NONE;
+    r->cfg_auto = base;
+    r->cfg_auto.match.threshold = SSDA_THRESHOLD_AUTO;
+    r->cfg_auto.match.scan = SSDA_SCAN_PREDICT;
+    r->cfg_auto.predict = SSDA_TRACK_PREDICT_MEDIAN;
+    r->cfg_auto.match.flags = SSDA_MATCH_BOUNDS;
+    r->cfg_auto.match.work = work;
+    r->cfg_auto.match.work_size = work_size;
+    r->out = calloc(r->count * M_COUNT, sizeof *r->out);
+    r->jobs = calloc(r->count, sizeof *r->jobs);
+    r->job_window = calloc(r->count, sizeof *r->job_window);
+    r->bx = calloc(r->count, sizeof *r->bx);
+    r->by = calloc(r->count, sizeof *r->by);
+    if (r->out == NULL || r->jobs == NULL || r->job_window == NULL || r->bx == NULL ||
+        r->by == NULL) {
         fprintf(stderr, "peers: out of memory\n");
-        goto done;
+        return -1;
     }
+    return 0;
+}
 
-    /* The windows every method searches: those brute force finds OK (not at
-       the edge, not touching the fill value). Untimed. */
-    if (run_method(p, &r, M_NONE, win, &st_ref, &cpu) < 0) {
-        goto done;
+/* The windows every method searches: those brute force finds OK (not at
+   the edge, not touching the fill value). Untimed. Returns 0 or -1. */
+static int make_jobs(const peers_pair_t *p, track_run_t *r, unsigned win,
+                     ssda_track_stats_t *st_ref)
+{
+    double cpu;
+    if (run_method(p, r, M_NONE, win, st_ref, &cpu) < 0) {
+        return -1;
     }
-    for (size_t k = 0; k < r.count; k++) {
-        const ssda_track_vector_t *v = &r.out[(size_t)M_NONE * r.count + k];
+    for (size_t k = 0; k < r->count; k++) {
+        const ssda_track_vector_t *v = &r->out[(size_t)M_NONE * r->count + k];
         if (v->status == SSDA_TRACK_OK) {
-            cv_peer_job_t *j = &r.jobs[r.njobs];
+            cv_peer_job_t *j = &r->jobs[r->njobs];
             j->wx = v->x;
             j->wy = v->y;
             j->ax = (uint16_t)(v->x - win / 2);
             j->ay = (uint16_t)(v->y - win / 2);
-            r.job_window[r.njobs++] = (uint32_t)k;
+            r->job_window[r->njobs++] = (uint32_t)k;
         }
     }
-    if (r.njobs == 0) {
+    if (r->njobs == 0) {
         fprintf(stderr, "peers: no window to search in %s\n", p->name);
-        goto done;
+        return -1;
     }
+    return 0;
+}
 
-    /* Interleaved repetitions: a burst of load from elsewhere hits every
-       method alike; the median of each method is kept. */
+/* Interleaved repetitions: a burst of load from elsewhere hits every
+   method alike; the median wall and processor time of each method is kept.
+   Returns 0 or -1. */
+static int time_methods(const peers_pair_t *p, track_run_t *r, unsigned win, int reps,
+                        ssda_track_stats_t st[M_COUNT], double med[M_COUNT],
+                        double med_cpu[M_COUNT])
+{
+    double *times = calloc((size_t)reps * M_COUNT * 2u, sizeof *times);
+    double *cpu_times = times + (size_t)reps * M_COUNT, cpu;
+    int m;
+    if (times == NULL) {
+        fprintf(stderr, "peers: out of memory\n");
+        return -1;
+    }
     for (int k = 0; k < reps; k++) {
         for (m = 0; m < M_COUNT; m++) {
-            double t = run_method(p, &r, m, win, &st[m], &cpu);
+            double t = run_method(p, r, m, win, &st[m], &cpu);
             if (t < 0) {
-                goto done;
+                free(times);
+                return -1;
             }
             times[(size_t)m * reps + k] = t;
             cpu_times[(size_t)m * reps + k] = cpu;
@@ -191,13 +204,22 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
         med[m] = peers_median(times + (size_t)m * reps, (size_t)reps);
         med_cpu[m] = peers_median(cpu_times + (size_t)m * reps, (size_t)reps);
     }
+    free(times);
+    return 0;
+}
 
-    memset(vs_ref, 0, sizeof vs_ref);
-    memset(vs_truth, 0, sizeof vs_truth);
-    for (size_t j = 0; j < r.njobs; j++) {
-        size_t k = r.job_window[j];
-        const ssda_track_vector_t *ref = &r.out[(size_t)M_NONE * r.count + k];
-        const ssda_track_vector_t *au = &r.out[(size_t)M_AUTO * r.count + k];
+/* Every method's vectors against brute force's and, for a synthetic pair,
+   the known motion. Returns how many of auto's equal brute force's. */
+static uint32_t compare_vectors(const peers_pair_t *p, const track_run_t *r, unsigned win,
+                                peers_agree_t vs_ref[M_COUNT], peers_agree_t vs_truth[M_COUNT])
+{
+    uint32_t identical = 0;
+    memset(vs_ref, 0, M_COUNT * sizeof *vs_ref);
+    memset(vs_truth, 0, M_COUNT * sizeof *vs_truth);
+    for (size_t j = 0; j < r->njobs; j++) {
+        size_t k = r->job_window[j];
+        const ssda_track_vector_t *ref = &r->out[(size_t)M_NONE * r->count + k];
+        const ssda_track_vector_t *au = &r->out[(size_t)M_AUTO * r->count + k];
         int tu = 0, tv = 0;
         identical += au->status == SSDA_TRACK_OK && au->dx == ref->dx && au->dy == ref->dy &&
                      au->sad == ref->sad;
@@ -205,29 +227,27 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
             synth_moved_field(ref->x + (int)win / 2, ref->y + (int)win / 2, p->second.width,
                               p->second.height, &tu, &tv);
         }
-        for (m = 0; m < M_COUNT; m++) {
-            const ssda_track_vector_t *v = &r.out[(size_t)m * r.count + k];
+        for (int m = 0; m < M_COUNT; m++) {
+            const ssda_track_vector_t *v = &r->out[(size_t)m * r->count + k];
             peers_agree_add(&vs_ref[m], ref->dx, ref->dy, v->dx, v->dy);
             if (p->synthetic_truth) {
                 peers_agree_add(&vs_truth[m], tu, tv, v->dx, v->dy);
             }
         }
     }
+    return identical;
+}
 
-    printf("\n### Grid tracking, %ux%u windows in %ux%u areas (step %u): %s\n\n", win, win, 2 * win,
-           2 * win, win, p->name);
-    printf("%s. %zu windows searched by every method (of %u: %u at the edge, %u touching the "
-           "fill value). Time per searched window, median of %d interleaved runs of the whole "
-           "grid: wall time, and the thread's processor time (which leaves out waits for a "
-           "core on a loaded machine).\n\n",
-           p->description, r.njobs, grid.count, st_ref.edge, st_ref.masked, reps);
-    printf("| method | us / window | ssda `auto` faster by | CPU us / window | faster by (CPU) "
-           "| pixel ops / window | vectors vs brute force (equal / within 1 / within 2 px) |%s\n",
-           p->synthetic_truth ? " vs known motion (equal / within 1 / within 2 px) |" : "");
-    printf("|---|---:|---:|---:|---:|---:|---:|%s\n", p->synthetic_truth ? "---:|" : "");
-    for (m = 0; m < M_COUNT; m++) {
-        printf("| %s | %.2f | %.1fx | %.2f | %.1fx | ", k_names[m], 1e6 * med[m] / (double)r.njobs,
-               med[m] / med[M_AUTO], 1e6 * med_cpu[m] / (double)r.njobs, med_cpu[m] / med_cpu[M_AUTO]);
+/* The table's rows, one per method. */
+static void print_rows(const peers_pair_t *p, const track_run_t *r, unsigned win,
+                       const ssda_track_stats_t st[M_COUNT], const double med[M_COUNT],
+                       const double med_cpu[M_COUNT], const peers_agree_t vs_ref[M_COUNT],
+                       const peers_agree_t vs_truth[M_COUNT])
+{
+    char buf[96];
+    for (int m = 0; m < M_COUNT; m++) {
+        printf("| %s | %.2f | %.1fx | %.2f | %.1fx | ", k_names[m], 1e6 * med[m] / (double)r->njobs,
+               med[m] / med[M_AUTO], 1e6 * med_cpu[m] / (double)r->njobs, med_cpu[m] / med_cpu[M_AUTO]);
         if (m == M_AUTO || m == M_NONE) {
             printf("%.0f | ", (double)st[m].pixel_ops / (double)st[m].ok);
         } else if (m == M_BARE) {
@@ -241,12 +261,44 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
         }
         printf("\n");
     }
+}
+
+int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
+{
+    ssda_track_grid_t grid;
+    ssda_track_stats_t st[M_COUNT], st_ref;
+    track_run_t r;
+    size_t work_size = SSDA_TRACK_WORK_SIZE(2 * win, 2 * win, win, win);
+    void *work = malloc(work_size);
+    double med[M_COUNT], med_cpu[M_COUNT];
+    peers_agree_t vs_ref[M_COUNT], vs_truth[M_COUNT];
+    uint32_t identical;
+    int m, rc = -1;
+    char buf[96], group[96];
+
+    memset(&r, 0, sizeof r);
+    if (setup_run(p, win, work, work_size, &grid, &r) != 0 || make_jobs(p, &r, win, &st_ref) != 0 ||
+        time_methods(p, &r, win, reps, st, med, med_cpu) != 0) {
+        goto done;
+    }
+    identical = compare_vectors(p, &r, win, vs_ref, vs_truth);
+    printf("\n### Grid tracking, %ux%u windows in %ux%u areas (step %u): %s\n\n", win, win, 2 * win,
+           2 * win, win, p->name);
+    printf("%s. %zu windows searched by every method (of %u: %u at the edge, %u touching the "
+           "fill value). Time per searched window, median of %d interleaved runs of the whole "
+           "grid: wall time, and the thread's processor time (which leaves out waits for a "
+           "core on a loaded machine).\n\n",
+           p->description, r.njobs, grid.count, st_ref.edge, st_ref.masked, reps);
+    printf("| method | us / window | ssda `auto` faster by | CPU us / window | faster by (CPU) "
+           "| pixel ops / window | vectors vs brute force (equal / within 1 / within 2 px) |%s\n",
+           p->synthetic_truth ? " vs known motion (equal / within 1 / within 2 px) |" : "");
+    printf("|---|---:|---:|---:|---:|---:|---:|%s\n", p->synthetic_truth ? "---:|" : "");
+    print_rows(p, &r, win, st, med, med_cpu, vs_ref, vs_truth);
     printf("\nssda `auto` vectors identical to brute force in (dx, dy, SAD): %u of %zu%s. "
            "Pixel ops: absolute differences plus bound work (`none`: %u per window). "
            "OpenCV correlates by DFT, so it has no comparable count.\n",
            identical, r.njobs, identical == r.njobs ? "" : " (**NOT EXACT: bug**)",
            (win + 1) * (win + 1) * win * win);
-
     snprintf(group, sizeof group, "Grid tracking, %ux%u in %ux%u (ssda auto + prediction + bounds)", win,
              win, 2 * win, 2 * win);
     for (m = M_NONE; m < M_BARE; m++) {
@@ -260,7 +312,6 @@ done:
     free(r.job_window);
     free(r.bx);
     free(r.by);
-    free(times);
     free(work);
     return rc;
 }

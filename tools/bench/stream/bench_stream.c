@@ -350,57 +350,76 @@ static size_t parse_list(const char *s, size_t *v, size_t max)
     return n;
 }
 
-int main(int argc, char **argv)
-{
-    const char *paths[2] = {NULL, NULL};
-    const char *tmpdir = getenv("TMPDIR") != NULL ? getenv("TMPDIR") : "/tmp";
-    size_t arenas[MAX_ARENAS] = {4096, 16384, 65536};
-    size_t n_arenas = 3;
-    int reps = 5, use_mask = 0, bounds = 1, npaths = 0;
-    uint16_t mask = 0;
-    uint8_t predict = SSDA_TRACK_PREDICT_MEDIAN;
-    layout_opt_t lay = {0, 0, 1};
+/* The benchmark's options. */
+typedef struct {
+    const char *paths[2];
+    const char *tmpdir;
+    size_t arenas[MAX_ARENAS];
+    size_t n_arenas;
+    int reps, use_mask, bounds;
+    uint16_t mask;
+    uint8_t predict;
+    layout_opt_t lay;
+} bench_opts_t;
+
+/* Everything the runs share. */
+typedef struct {
+    bench_opts_t o;
     gray_image_t img[2];
     raw_file_t file[2];
     uint8_t *ram[2];
-    char err[256];
     ssda_view_t v[2];
     ssda_track_config_t cfg;
     ssda_track_grid_t grid;
     ssda_track_vector_t *ref, *out;
     ssda_track_stats_t ref_st;
-    uint32_t *work = NULL;
-    size_t work_size = 0, base_stack, ram_stack;
+    uint32_t *work;
+    size_t work_size, base_stack, ram_stack;
     uint64_t union_bytes;
-    double t_ram = 1e30, c_ram = 1e30;
+    double t_ram, c_ram; /* best in-RAM wall and CPU time over every arena's runs */
+} bench_t;
 
+/* Returns 0, or 2 after a usage message. */
+static int parse_options(int argc, char **argv, bench_opts_t *o)
+{
+    int npaths = 0;
+    memset(o, 0, sizeof *o);
+    o->tmpdir = getenv("TMPDIR") != NULL ? getenv("TMPDIR") : "/tmp";
+    o->arenas[0] = 4096;
+    o->arenas[1] = 16384;
+    o->arenas[2] = 65536;
+    o->n_arenas = 3;
+    o->reps = 5;
+    o->bounds = 1;
+    o->predict = SSDA_TRACK_PREDICT_MEDIAN;
+    o->lay.read_size = 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
-            reps = atoi(argv[++i]);
+            o->reps = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--mask") && i + 1 < argc) {
-            use_mask = 1;
-            mask = (uint16_t)atoi(argv[++i]);
+            o->use_mask = 1;
+            o->mask = (uint16_t)atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--arenas") && i + 1 < argc) {
-            n_arenas = parse_list(argv[++i], arenas, MAX_ARENAS);
+            o->n_arenas = parse_list(argv[++i], o->arenas, MAX_ARENAS);
         } else if (!strcmp(argv[i], "--tile") && i + 1 < argc) {
-            if (sscanf(argv[++i], "%ux%u", &lay.tile_w, &lay.tile_h) != 2 || !lay.tile_w ||
-                !lay.tile_h) {
+            if (sscanf(argv[++i], "%ux%u", &o->lay.tile_w, &o->lay.tile_h) != 2 ||
+                !o->lay.tile_w || !o->lay.tile_h) {
                 fprintf(stderr, "bench-stream: --tile WxH\n");
                 return 2;
             }
         } else if (!strcmp(argv[i], "--read-size") && i + 1 < argc) {
-            lay.read_size = (uint32_t)atoi(argv[++i]);
+            o->lay.read_size = (uint32_t)atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--predict") && i + 1 < argc) {
             i++;
-            predict = !strcmp(argv[i], "none")   ? SSDA_TRACK_PREDICT_NONE
-                      : !strcmp(argv[i], "left") ? SSDA_TRACK_PREDICT_LEFT
-                                                 : SSDA_TRACK_PREDICT_MEDIAN;
+            o->predict = !strcmp(argv[i], "none")   ? SSDA_TRACK_PREDICT_NONE
+                         : !strcmp(argv[i], "left") ? SSDA_TRACK_PREDICT_LEFT
+                                                    : SSDA_TRACK_PREDICT_MEDIAN;
         } else if (!strcmp(argv[i], "--no-bounds")) {
-            bounds = 0;
+            o->bounds = 0;
         } else if (!strcmp(argv[i], "--tmpdir") && i + 1 < argc) {
-            tmpdir = argv[++i];
+            o->tmpdir = argv[++i];
         } else if (argv[i][0] != '-' && npaths < 2) {
-            paths[npaths++] = argv[i];
+            o->paths[npaths++] = argv[i];
         } else {
             fprintf(stderr,
                     "usage: %s [--reps N] [--mask V] [--arenas A,B,..] [--tile WxH] [--read-size N]\n"
@@ -413,167 +432,210 @@ int main(int argc, char **argv)
         fprintf(stderr, "bench-stream: two PNG files needed (FIRST SECOND)\n");
         return 2;
     }
+    return 0;
+}
+
+/* Read both images, write their raw files, set up the grid, the reference
+   vectors (in RAM) and the in-RAM job's stack. Returns 0 or 1. */
+static int setup(bench_t *b)
+{
+    char err[256];
     for (int i = 0; i < 2; i++) {
-        if (png_read_gray(paths[i], PNG_GRAY_NATIVE, &img[i], NULL, err, sizeof err) != 0) {
+        if (png_read_gray(b->o.paths[i], PNG_GRAY_NATIVE, &b->img[i], NULL, err, sizeof err) != 0) {
             fprintf(stderr, "bench-stream: %s\n", err);
             return 1;
         }
-        if (gray_image_view(&img[i], &v[i]) != SSDA_OK ||
-            write_raw(&img[i], &lay, tmpdir, &file[i], &ram[i]) != 0) {
+        if (gray_image_view(&b->img[i], &b->v[i]) != SSDA_OK ||
+            write_raw(&b->img[i], &b->o.lay, b->o.tmpdir, &b->file[i], &b->ram[i]) != 0) {
             return 1;
         }
     }
-    if (img[0].bits != img[1].bits) {
+    if (b->img[0].bits != b->img[1].bits) {
         fprintf(stderr, "bench-stream: images of different depths\n");
         return 1;
     }
-
-    memset(&cfg, 0, sizeof cfg); /* 16 x 16 windows, 32 x 32 areas, step 16 */
-    cfg.predict = predict;
-    cfg.match.threshold = SSDA_THRESHOLD_AUTO;
-    cfg.match.scan = SSDA_SCAN_PREDICT;
-    if (use_mask) {
-        cfg.flags = SSDA_TRACK_MASK;
-        cfg.mask_value = mask;
+    memset(&b->cfg, 0, sizeof b->cfg); /* 16 x 16 windows, 32 x 32 areas, step 16 */
+    b->cfg.predict = b->o.predict;
+    b->cfg.match.threshold = SSDA_THRESHOLD_AUTO;
+    b->cfg.match.scan = SSDA_SCAN_PREDICT;
+    if (b->o.use_mask) {
+        b->cfg.flags = SSDA_TRACK_MASK;
+        b->cfg.mask_value = b->o.mask;
     }
-    if (bounds) {
-        work_size = SSDA_TRACK_WORK_SIZE(32, 32, 16, 16);
-        work = malloc(work_size);
-        cfg.match.flags = SSDA_MATCH_BOUNDS;
-        cfg.match.work = work;
-        cfg.match.work_size = work_size;
+    if (b->o.bounds) {
+        b->work_size = SSDA_TRACK_WORK_SIZE(32, 32, 16, 16);
+        b->work = malloc(b->work_size);
+        b->cfg.match.flags = SSDA_MATCH_BOUNDS;
+        b->cfg.match.work = b->work;
+        b->cfg.match.work_size = b->work_size;
     }
-    if (ssda_track_grid(&cfg, (uint16_t)img[1].width, (uint16_t)img[1].height, &grid) != SSDA_OK) {
+    if (ssda_track_grid(&b->cfg, (uint16_t)b->img[1].width, (uint16_t)b->img[1].height,
+                        &b->grid) != SSDA_OK) {
         fprintf(stderr, "bench-stream: images too small for the grid\n");
         return 1;
     }
-    ref = calloc(grid.count, sizeof *ref);
-    out = calloc(grid.count, sizeof *out);
-    union_bytes = footprint(&grid, img[0].width, img[0].height, img[0].bits / 8u);
-
+    b->ref = calloc(b->grid.count, sizeof *b->ref);
+    b->out = calloc(b->grid.count, sizeof *b->out);
+    b->union_bytes = footprint(&b->grid, b->img[0].width, b->img[0].height, b->img[0].bits / 8u);
     /* in RAM: the reference vectors; timed below, interleaved with the
        streamed runs so that both see the same machine load */
-    if (ssda_track(&v[0], &v[1], &cfg, ref, grid.count, &ref_st) != SSDA_OK) {
+    if (ssda_track(&b->v[0], &b->v[1], &b->cfg, b->ref, b->grid.count, &b->ref_st) != SSDA_OK) {
         fprintf(stderr, "bench-stream: ssda_track failed\n");
         return 1;
     }
-    base_stack = stack_baseline();
+    b->base_stack = stack_baseline();
     {
         job_t j;
         memset(&j, 0, sizeof j);
-        j.cfg = &cfg;
-        j.views = v;
-        j.out = out;
-        j.count = grid.count;
-        ram_stack = stack_used(&j);
-        ram_stack = ram_stack > base_stack ? ram_stack - base_stack : 0u;
+        j.cfg = &b->cfg;
+        j.views = b->v;
+        j.out = b->out;
+        j.count = b->grid.count;
+        b->ram_stack = stack_used(&j);
+        b->ram_stack = b->ram_stack > b->base_stack ? b->ram_stack - b->base_stack : 0u;
     }
+    return 0;
+}
 
-    printf("## Streamed grid tracking: %s -> %s\n\n", paths[0], paths[1]);
+static void print_header(const bench_t *b)
+{
+    const bench_opts_t *o = &b->o;
+    const ssda_track_grid_t *g = &b->grid;
+    printf("## Streamed grid tracking: %s -> %s\n\n", o->paths[0], o->paths[1]);
     printf("%ux%u, %u-bit, %s layout%s, read granularity %u B; grid %ux%u windows of %ux%u in "
            "%ux%u areas, step %u; `auto` + %s prediction%s%s. %u windows searched.\n"
            "Union of the areas and windows of windows whose area lies inside FIRST: %.2f MB. "
            "Times: best of %d runs of each, alternating with the in-RAM job (ssda_track); ratios to "
            "the in-RAM runs of the same loop.\n\n",
-           img[0].width, img[0].height, img[0].bits, lay.tile_w ? "tiled" : "raster",
-           lay.tile_w ? " (tiles below)" : "", lay.read_size, grid.cols, grid.rows, grid.win_w,
-           grid.win_h, grid.search_w, grid.search_h, grid.step_x,
-           predict == SSDA_TRACK_PREDICT_NONE ? "no" : (predict == SSDA_TRACK_PREDICT_LEFT ? "left" : "median"),
-           bounds ? " + bounds" : "", use_mask ? ", fill value masked" : "", ref_st.ok,
-           union_bytes / 1e6, reps);
-    if (lay.tile_w) {
-        printf("Tiles: %ux%u.\n\n", lay.tile_w, lay.tile_h);
+           b->img[0].width, b->img[0].height, b->img[0].bits, o->lay.tile_w ? "tiled" : "raster",
+           o->lay.tile_w ? " (tiles below)" : "", o->lay.read_size, g->cols, g->rows, g->win_w,
+           g->win_h, g->search_w, g->search_h, g->step_x,
+           o->predict == SSDA_TRACK_PREDICT_NONE
+               ? "no"
+               : (o->predict == SSDA_TRACK_PREDICT_LEFT ? "left" : "median"),
+           o->bounds ? " + bounds" : "", o->use_mask ? ", fill value masked" : "", b->ref_st.ok,
+           b->union_bytes / 1e6, o->reps);
+    if (o->lay.tile_w) {
+        printf("Tiles: %ux%u.\n\n", o->lay.tile_w, o->lay.tile_h);
     }
     printf("| arena (FIRST + SECOND) | strip | work buffer | stack | peak library RAM | bytes read | "
            "read() calls | amplification | wall time | vs RAM | CPU time vs RAM | "
            "vs RAM, memcpy device | vectors equal |\n");
     printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+}
 
-    for (size_t a = 0; a < n_arenas; a++) {
-        job_t j;
-        size_t stack;
-        uint32_t k;
-        double best = 1e30, best_cpu = 1e30, best_mem = 1e30, ram_a = 1e30, cram_a = 1e30;
-        uint64_t bytes, calls;
-        size_t equal = 0;
-        memset(&j, 0, sizeof j);
-        j.cfg = &cfg;
-        j.img[0] = &img[0];
-        j.img[1] = &img[1];
-        j.file[0] = &file[0];
-        j.file[1] = &file[1];
-        j.lay = &lay;
-        j.out = out;
-        j.count = grid.count;
-        k = split_arena(arenas[a], &grid, &lay, img[0].width, (uint8_t)(img[0].bits / 8u),
-                        &j.arena_size[0], &j.arena_size[1]);
-        j.arena[0] = alloc_aligned(64, (j.arena_size[0] + 63u) & ~(size_t)63u);
-        j.arena[1] = alloc_aligned(64, (j.arena_size[1] + 63u) & ~(size_t)63u);
-        /* warm the page cache, then time */
-        run_stream(&j);
-        if (j.err != SSDA_OK) {
-            printf("| %zu | - | - | - | - | - | - | - | error: %s | - | - | - | - |\n", arenas[a],
-                   ssda_strerror(j.err));
-            continue;
-        }
-        /* best of reps, the in-RAM job and the streamed one (pread, then
-           a memcpy device: the library without the system calls)
-           alternating, so that all see the same machine load */
-        for (int r = 0; r < reps; r++) {
-            double t0 = now_s(), c0 = cpu_s();
-            (void)ssda_track(&v[0], &v[1], &cfg, ref, grid.count, NULL);
-            t0 = now_s() - t0;
-            c0 = cpu_s() - c0;
-            ram_a = t0 < ram_a ? t0 : ram_a;
-            cram_a = c0 < cram_a ? c0 : cram_a;
-            t0 = now_s();
-            c0 = cpu_s();
-            run_stream(&j);
-            t0 = now_s() - t0;
-            c0 = cpu_s() - c0;
-            best = t0 < best ? t0 : best;
-            best_cpu = c0 < best_cpu ? c0 : best_cpu;
-            j.from_ram = true;
-            t0 = now_s();
-            run_stream(&j);
-            t0 = now_s() - t0;
-            best_mem = t0 < best_mem ? t0 : best_mem;
-            j.from_ram = false;
-        }
-        t_ram = ram_a < t_ram ? ram_a : t_ram;
-        c_ram = cram_a < c_ram ? cram_a : c_ram;
-        bytes = j.st[0].bytes_read + j.st[1].bytes_read;
-        calls = j.st[0].reads + j.st[1].reads;
-        for (size_t i = 0; i < grid.count; i++) {
-            equal += ref[i].status == out[i].status && ref[i].dx == out[i].dx &&
-                     ref[i].dy == out[i].dy && ref[i].sad == out[i].sad &&
-                     ref[i].exact == out[i].exact;
-        }
-        j.from_ram = true;
-        stack = stack_used(&j);
-        stack = stack > base_stack ? stack - base_stack : 0u;
-        printf("| %zu B (%zu + %zu) | %u cols | %zu B | %zu B | %zu B | %.2f MB | %llu | %.3f | "
-               "%.1f ms | %.2fx | %.2fx | %.2fx | %zu / %u |\n",
-               arenas[a], j.arena_size[0], j.arena_size[1], k, work_size, stack,
-               arenas[a] + work_size + stack, bytes / 1e6, (unsigned long long)calls,
-               (double)bytes / (double)union_bytes, best * 1e3, best / ram_a, best_cpu / cram_a,
-               best_mem / ram_a, equal, grid.count);
-        fflush(stdout);
+/* Best times of reps runs: the in-RAM job and the streamed one (pread,
+   then a memcpy device: the library without the system calls) alternating,
+   so that all see the same machine load. t[]: RAM wall, RAM CPU, streamed
+   wall, streamed CPU, memcpy-device wall. */
+static void time_runs(bench_t *b, job_t *j, double t[5])
+{
+    for (int k = 0; k < 5; k++) {
+        t[k] = 1e30;
+    }
+    for (int r = 0; r < b->o.reps; r++) {
+        double t0 = now_s(), c0 = cpu_s();
+        (void)ssda_track(&b->v[0], &b->v[1], &b->cfg, b->ref, b->grid.count, NULL);
+        t0 = now_s() - t0;
+        c0 = cpu_s() - c0;
+        t[0] = t0 < t[0] ? t0 : t[0];
+        t[1] = c0 < t[1] ? c0 : t[1];
+        t0 = now_s();
+        c0 = cpu_s();
+        run_stream(j);
+        t0 = now_s() - t0;
+        c0 = cpu_s() - c0;
+        t[2] = t0 < t[2] ? t0 : t[2];
+        t[3] = c0 < t[3] ? c0 : t[3];
+        j->from_ram = true;
+        t0 = now_s();
+        run_stream(j);
+        t0 = now_s() - t0;
+        t[4] = t0 < t[4] ? t0 : t[4];
+        j->from_ram = false;
+    }
+}
+
+/* One arena's row of the table. */
+static void bench_arena(bench_t *b, size_t arena)
+{
+    job_t j;
+    size_t stack, equal = 0;
+    uint32_t k;
+    double t[5];
+    uint64_t bytes, calls;
+    memset(&j, 0, sizeof j);
+    j.cfg = &b->cfg;
+    j.img[0] = &b->img[0];
+    j.img[1] = &b->img[1];
+    j.file[0] = &b->file[0];
+    j.file[1] = &b->file[1];
+    j.lay = &b->o.lay;
+    j.out = b->out;
+    j.count = b->grid.count;
+    k = split_arena(arena, &b->grid, &b->o.lay, b->img[0].width, (uint8_t)(b->img[0].bits / 8u),
+                    &j.arena_size[0], &j.arena_size[1]);
+    j.arena[0] = alloc_aligned(64, (j.arena_size[0] + 63u) & ~(size_t)63u);
+    j.arena[1] = alloc_aligned(64, (j.arena_size[1] + 63u) & ~(size_t)63u);
+    run_stream(&j); /* warm the page cache, then time */
+    if (j.err != SSDA_OK) {
+        printf("| %zu | - | - | - | - | - | - | - | error: %s | - | - | - | - |\n", arena,
+               ssda_strerror(j.err));
         free(j.arena[0]);
         free(j.arena[1]);
+        return;
+    }
+    time_runs(b, &j, t);
+    b->t_ram = t[0] < b->t_ram ? t[0] : b->t_ram;
+    b->c_ram = t[1] < b->c_ram ? t[1] : b->c_ram;
+    bytes = j.st[0].bytes_read + j.st[1].bytes_read;
+    calls = j.st[0].reads + j.st[1].reads;
+    for (size_t i = 0; i < b->grid.count; i++) {
+        equal += b->ref[i].status == b->out[i].status && b->ref[i].dx == b->out[i].dx &&
+                 b->ref[i].dy == b->out[i].dy && b->ref[i].sad == b->out[i].sad &&
+                 b->ref[i].exact == b->out[i].exact;
+    }
+    j.from_ram = true;
+    stack = stack_used(&j);
+    stack = stack > b->base_stack ? stack - b->base_stack : 0u;
+    printf("| %zu B (%zu + %zu) | %u cols | %zu B | %zu B | %zu B | %.2f MB | %llu | %.3f | "
+           "%.1f ms | %.2fx | %.2fx | %.2fx | %zu / %u |\n",
+           arena, j.arena_size[0], j.arena_size[1], k, b->work_size, stack,
+           arena + b->work_size + stack, bytes / 1e6, (unsigned long long)calls,
+           (double)bytes / (double)b->union_bytes, t[2] * 1e3, t[2] / t[0], t[3] / t[1],
+           t[4] / t[0], equal, b->grid.count);
+    fflush(stdout);
+    free(j.arena[0]);
+    free(j.arena[1]);
+}
+
+int main(int argc, char **argv)
+{
+    static bench_t b;
+    int rc = parse_options(argc, argv, &b.o);
+    if (rc != 0) {
+        return rc;
+    }
+    if (setup(&b) != 0) {
+        return 1;
+    }
+    b.t_ram = b.c_ram = 1e30;
+    print_header(&b);
+    for (size_t a = 0; a < b.o.n_arenas; a++) {
+        bench_arena(&b, b.o.arenas[a]);
     }
     printf("\nIn RAM (ssda_track on the decoded images): %.1f ms wall, %.1f ms CPU, %zu B of work "
-           "buffer, %zu B of stack.\n", t_ram * 1e3, c_ram * 1e3, work_size, ram_stack);
+           "buffer, %zu B of stack.\n", b.t_ram * 1e3, b.c_ram * 1e3, b.work_size, b.ram_stack);
     printf("Stack: host x86-64, measured on a painted thread stack with a memcpy read "
            "callback (the library's frames plus a trivial callback).\n");
     for (int i = 0; i < 2; i++) {
-        close(file[i].fd);
-        unlink(file[i].path);
-        free(ram[i]);
-        gray_image_free(&img[i]);
+        close(b.file[i].fd);
+        unlink(b.file[i].path);
+        free(b.ram[i]);
+        gray_image_free(&b.img[i]);
     }
-    free(ref);
-    free(out);
-    free(work);
+    free(b.ref);
+    free(b.out);
+    free(b.work);
     return 0;
 }

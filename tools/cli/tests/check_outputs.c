@@ -16,7 +16,7 @@
  *   grad-same IN.png OUT.png SHIFT   OUT is the Fig. 8 operator of IN (same
  *       size, border 0), recomputed here in plain C
  */
-#include "json_mini.h"
+#include <jansson.h>
 #include "png_io.h"
 
 #include <math.h>
@@ -56,43 +56,40 @@ static char *slurp(const char *path)
     return buf;
 }
 
-static json_value_t *load_json(const char *path)
+/* The tools write JSON with cJSON; it is read back here with a different
+   library (jansson, strict: one value, valid UTF-8, no duplicate keys). */
+static json_t *load_json(const char *path)
 {
-    char *s = slurp(path);
-    size_t at = 0;
-    json_value_t *v;
-    if (s == NULL) {
-        fail("cannot read %s", path);
-        return NULL;
+    json_error_t e;
+    json_t *v = json_load_file(path, JSON_REJECT_DUPLICATES, &e);
+    if (v == NULL) {
+        fail("%s is not valid JSON (line %d, column %d: %s)", path, e.line, e.column, e.text);
     }
-    v = json_parse(s, &at);
-    if (v == NULL) fail("%s is not valid JSON (error at byte %zu)", path, at);
-    free(s);
     return v;
 }
 
-static int num(const json_value_t *o, const char *key, double *out)
+static int num(const json_t *o, const char *key, double *out)
 {
-    const json_value_t *v = json_get(o, key);
-    if (v == NULL || v->type != JSON_NUMBER) return -1;
-    *out = v->number;
+    const json_t *v = json_object_get(o, key);
+    if (!json_is_number(v)) return -1;
+    *out = json_number_value(v);
     return 0;
 }
 
 static int check_match(int argc, char **argv)
 {
-    json_value_t *j;
+    json_t *j;
     double x, y, sad, pos, comp, ops, brute;
-    const json_value_t *ex;
+    const json_t *ex;
     int rc = 0;
     if (argc != 5) return 2;
     j = load_json(argv[0]);
     if (j == NULL) return 1;
-    ex = json_get(j, "exact");
+    ex = json_object_get(j, "exact");
     if (num(j, "x", &x) || num(j, "y", &y) || num(j, "sad", &sad) || num(j, "positions", &pos) ||
         num(j, "completed", &comp) || num(j, "pixel_ops", &ops) ||
         num(j, "brute_force_ops", &brute) || ex == NULL ||
-        (ex->type != JSON_TRUE && ex->type != JSON_FALSE)) {
+        !json_is_boolean(ex)) {
         rc = fail("match JSON lacks a field");
     } else if ((strcmp(argv[1], "-") != 0 && x != atof(argv[1])) ||
                (strcmp(argv[2], "-") != 0 && y != atof(argv[2]))) {
@@ -100,34 +97,61 @@ static int check_match(int argc, char **argv)
     } else if (strcmp(argv[3], "-") != 0 && sad != atof(argv[3])) {
         rc = fail("sad %g, expected %s", sad, argv[3]);
     } else if (strcmp(argv[4], "-") != 0 &&
-               (ex->type == JSON_TRUE) != (strcmp(argv[4], "true") == 0)) {
-        rc = fail("exact is %s, expected %s", ex->type == JSON_TRUE ? "true" : "false", argv[4]);
+               json_is_true(ex) != (strcmp(argv[4], "true") == 0)) {
+        rc = fail("exact is %s, expected %s", json_is_true(ex) ? "true" : "false", argv[4]);
     } else if (comp < 1 || comp > pos || ops <= 0) {
         rc = fail("implausible work counts: positions %g completed %g pixel_ops %g", pos, comp,
                   ops);
     }
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 
 static const char *status_names[] = {"ok", "excluded", "masked", "edge"};
 
-static int check_track(int argc, char **argv)
+/* One window of a track JSON: its fields, a known status, a vector inside
+   the search range for ok (others none). Counts the status; *agree when
+   its vector is (dx, dy). Returns 0 or 1 (said). */
+static int check_window(const json_t *w, size_t i, const double geo[4], double dx, double dy,
+                        size_t counts[4], size_t *agree)
 {
-    json_value_t *j;
-    const json_value_t *wins, *stats, *grid;
-    double dx = atof(argv[1]), dy = atof(argv[2]), minfrac = atof(argv[3]);
-    double cols, rows, sw, sh, ww, wh, v, counts_json[4];
-    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
-    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
-    int a, rc = 0;
-    if (argc < 4) return 2;
+    const json_t *st = json_object_get(w, "status");
+    double wx, wy, wdx, wdy, sad, sw = geo[0], sh = geo[1], ww = geo[2], wh = geo[3];
+    int k, s = -1;
+    if (!json_is_string(st) || num(w, "x", &wx) || num(w, "y", &wy) || num(w, "dx", &wdx) ||
+        num(w, "dy", &wdy) || num(w, "sad", &sad)) {
+        return fail("window %zu lacks x, y, dx, dy, sad or status", i);
+    }
+    for (k = 0; k < 4; k++) {
+        if (strcmp(json_string_value(st), status_names[k]) == 0) s = k;
+    }
+    if (s < 0) {
+        return fail("window %zu has unknown status '%s'", i, json_string_value(st));
+    }
+    counts[s]++;
+    if (s == 0) {
+        /* dx ranges over hx - (sw - ww) .. hx */
+        double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
+        if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
+            return fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
+        }
+        *agree += wdx == dx && wdy == dy;
+    } else if (wdx != 0 || wdy != 0) {
+        return fail("window %zu is %s but has a vector", i, json_string_value(st));
+    }
+    return 0;
+}
+
+/* Options after FILE DX DY MINFRAC: --min-ok N, --no-ok, --count STATUS N.
+   Returns 0 or 2 (bad command line). */
+static int track_options(int argc, char **argv, long *min_ok, long want_count[4])
+{
+    int a;
     for (a = 4; a < argc; a++) {
         if (strcmp(argv[a], "--min-ok") == 0 && a + 1 < argc) {
-            min_ok = atol(argv[++a]);
+            *min_ok = atol(argv[++a]);
         } else if (strcmp(argv[a], "--no-ok") == 0) {
-            min_ok = 0;
+            *min_ok = 0;
         } else if (strcmp(argv[a], "--count") == 0 && a + 2 < argc) {
             int k, found = 0;
             for (k = 0; k < 4; k++) {
@@ -142,96 +166,87 @@ static int check_track(int argc, char **argv)
             return 2;
         }
     }
-    j = load_json(argv[0]);
-    if (j == NULL) return 1;
-    wins = json_get(j, "windows");
-    stats = json_get(j, "stats");
-    grid = json_get(j, "grid");
-    if (wins == NULL || wins->type != JSON_ARRAY || stats == NULL || grid == NULL ||
-        num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &sw) ||
-        num(grid, "search_h", &sh) || num(grid, "window_w", &ww) || num(grid, "window_h", &wh) ||
-        num(stats, "pixel_ops", &v) || num(stats, "bytes_read", &v)) {
-        rc = fail("track JSON lacks windows, grid or stats fields");
-        goto done;
-    }
-    if ((double)wins->count != cols * rows) {
-        rc = fail("%zu windows, grid says %g x %g", wins->count, cols, rows);
-        goto done;
-    }
-    for (i = 0; i < wins->count; i++) {
-        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
-        double wx, wy, wdx, wdy, sad;
-        int k, s = -1;
-        if (st == NULL || st->type != JSON_STRING || num(w, "x", &wx) || num(w, "y", &wy) ||
-            num(w, "dx", &wdx) || num(w, "dy", &wdy) || num(w, "sad", &sad)) {
-            rc = fail("window %zu lacks x, y, dx, dy, sad or status", i);
-            goto done;
-        }
-        for (k = 0; k < 4; k++) {
-            if (strcmp(st->string, status_names[k]) == 0) s = k;
-        }
-        if (s < 0) {
-            rc = fail("window %zu has unknown status '%s'", i, st->string);
-            goto done;
-        }
-        counts[s]++;
-        if (s == 0) {
-            /* dx ranges over hx - (sw - ww) .. hx */
-            double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
-            if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
-                rc = fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
-                goto done;
-            }
-            if (wdx == dx && wdy == dy) agree++;
-        } else if (wdx != 0 || wdy != 0) {
-            rc = fail("window %zu is %s but has a vector", i, st->string);
-            goto done;
-        }
-    }
+    return 0;
+}
+
+/* Status counts: stats agree with the windows, and with --count. */
+static int check_counts(const json_t *stats, const size_t counts[4], const long want_count[4])
+{
+    double counts_json;
+    int a;
     for (a = 0; a < 4; a++) {
-        if (num(stats, status_names[a], &counts_json[a]) || counts_json[a] != (double)counts[a]) {
-            rc = fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
-            goto done;
+        if (num(stats, status_names[a], &counts_json) || counts_json != (double)counts[a]) {
+            return fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
         }
         if (want_count[a] >= 0 && (long)counts[a] != want_count[a]) {
-            rc = fail("%zu %s windows, expected %ld", counts[a], status_names[a], want_count[a]);
-            goto done;
+            return fail("%zu %s windows, expected %ld", counts[a], status_names[a], want_count[a]);
         }
     }
-    if ((long)counts[0] < min_ok) {
+    return 0;
+}
+
+static int check_track(int argc, char **argv)
+{
+    json_t *j;
+    const json_t *wins, *stats, *grid;
+    double dx, dy, minfrac, cols, rows, geo[4], v;
+    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
+    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
+    int rc = 0;
+    if (argc < 4 || track_options(argc, argv, &min_ok, want_count) != 0) return 2;
+    dx = atof(argv[1]);
+    dy = atof(argv[2]);
+    minfrac = atof(argv[3]);
+    j = load_json(argv[0]);
+    if (j == NULL) return 1;
+    wins = json_object_get(j, "windows");
+    stats = json_object_get(j, "stats");
+    grid = json_object_get(j, "grid");
+    if (wins == NULL || !json_is_array(wins) || stats == NULL || grid == NULL ||
+        num(grid, "cols", &cols) || num(grid, "rows", &rows) || num(grid, "search_w", &geo[0]) ||
+        num(grid, "search_h", &geo[1]) || num(grid, "window_w", &geo[2]) ||
+        num(grid, "window_h", &geo[3]) || num(stats, "pixel_ops", &v) ||
+        num(stats, "bytes_read", &v)) {
+        rc = fail("track JSON lacks windows, grid or stats fields");
+    } else if ((double)json_array_size(wins) != cols * rows) {
+        rc = fail("%zu windows, grid says %g x %g", json_array_size(wins), cols, rows);
+    }
+    for (i = 0; rc == 0 && i < json_array_size(wins); i++) {
+        rc = check_window(json_array_get(wins, i), i, geo, dx, dy, counts, &agree);
+    }
+    rc = rc == 0 ? check_counts(stats, counts, want_count) : rc;
+    if (rc == 0 && (long)counts[0] < min_ok) {
         rc = fail("only %zu ok windows, expected at least %ld", counts[0], min_ok);
-    } else if (counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
+    } else if (rc == 0 && counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
         rc = fail("%zu of %zu ok windows found (%g, %g); wanted %.0f %%", agree, counts[0], dx,
                   dy, 100 * minfrac);
     }
-done:
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 
 static int check_compare(int argc, char **argv)
 {
-    json_value_t *j;
-    const json_value_t *cmp, *wins;
+    json_t *j;
+    const json_t *cmp, *wins;
     double w0, w1, w2, n, p1;
     size_t i, mine[3] = {0, 0, 0}, ok = 0;
     int rc = 0;
     if (argc != 2) return 2;
     j = load_json(argv[0]);
     if (j == NULL) return 1;
-    cmp = json_get(j, "compare");
-    wins = json_get(j, "windows");
+    cmp = json_object_get(j, "compare");
+    wins = json_object_get(j, "windows");
     if (cmp == NULL || wins == NULL || num(cmp, "within_0", &w0) || num(cmp, "within_1", &w1) ||
         num(cmp, "within_2", &w2) || num(cmp, "windows", &n) || num(cmp, "within_1_pct", &p1) ||
         num(cmp, "ncc_time_s", &n) || num(cmp, "windows", &n)) {
         rc = fail("compare JSON lacks fields");
         goto done;
     }
-    for (i = 0; i < wins->count; i++) {
-        const json_value_t *w = &wins->items[i], *st = json_get(w, "status");
+    for (i = 0; i < json_array_size(wins); i++) {
+        const json_t *w = json_array_get(wins, i), *st = json_object_get(w, "status");
         double dx, dy, rx, ry, d;
-        if (strcmp(st->string, "ok") != 0) continue;
+        if (strcmp(json_string_value(st), "ok") != 0) continue;
         if (num(w, "dx", &dx) || num(w, "dy", &dy) || num(w, "ref_dx", &rx) ||
             num(w, "ref_dy", &ry)) {
             rc = fail("ok window %zu lacks ref_dx/ref_dy", i);
@@ -251,8 +266,7 @@ static int check_compare(int argc, char **argv)
         rc = fail("within 1 px %.1f %%, expected at least %s %%", p1, argv[1]);
     }
 done:
-    json_free(j);
-    free(j);
+    json_decref(j);
     return rc;
 }
 

@@ -4,37 +4,7 @@
 # GEN (gen_inputs.c) makes inputs with known motion and f0, CHECK
 # (check_outputs.c) checks JSON/CSV/PNG outputs against the known answers.
 # Every case states its expected exit code; failed runs must leave no output.
-set -u
-group=$1 ssda=$2 gen=$3 check=$4 work=$5
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
-
-# run EXPECTED_EXIT ARGS...: run ssda, keep stdout/stderr in out.txt/err.txt
-run() {
-  local want=$1; shift
-  "$ssda" "$@" >out.txt 2>err.txt
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
-    return 1
-  fi
-  return 0
-}
-
-# chk ARGS...: run the output checker
-chk() { "$check" "$@" || { fail "check $*"; return 1; }; }
-
-# absent FILES...: none of the files, nor any temp file, may exist
-absent() {
-  local f
-  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
-  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left: $(ls ./*.tmp.*)"; fi
-}
-
-# stderr_has TEXT: the last run's stderr mentions TEXT
-stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+. "$(dirname "$0")/cli_lib.sh" "$@"
 
 case $group in
 usage)
@@ -360,9 +330,4 @@ errors)
 *)
   echo "unknown group $group" >&2; exit 2 ;;
 esac
-
-if [ "$failures" -ne 0 ]; then
-  echo "$failures failure(s) in group $group" >&2
-  exit 1
-fi
-echo "group $group: ok"
+finish

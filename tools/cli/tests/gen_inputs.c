@@ -14,9 +14,10 @@
  *       conversion must give, computed here independently.
  *   crop IN.png OUT.png X,Y,W,H: a gray8/16 crop.
  *   wav OUT.wav [--f0 HZ | --glide HZ0:HZ1] [--rate R] [--secs S] [--silence S]
- *       [--channels C] [--format pcm16|pcm24|float] [--jump HZ:S]: a voiced
- *       harmonic signal; with --silence S, that many seconds of silence first;
- *       with --jump, its last S seconds at HZ (frames off the plot's range).
+ *       [--channels C] [--format pcm16|pcm24|float] [--jump HZ:S] [--gain G]: a
+ *       voiced harmonic signal (peak about 0.6 x G of full scale); with
+ *       --silence S, that many seconds of silence first; with --jump, its last
+ *       S seconds at HZ (frames off the plot's range).
  *   bad KIND OUT: malformed inputs: empty, text, truncated (a PNG cut inside
  *       its data), crc (IDAT checksum wrong), huge (IHDR 70000 x 8),
  *       toomuch (IHDR 40000 x 40000 16-bit RGBA), wav-empty, wav-text,
@@ -233,86 +234,112 @@ static void write_expect(const char *dir, const char *name, uint32_t w, uint32_t
     free_rows(rows, h);
 }
 
-static int cmd_kinds(int argc, char **argv)
-{
-    const uint32_t w = 23, h = 17;
-    const char *dir;
-    char path[1024];
-    uint32_t *expect = calloc(w * h, sizeof *expect), x, y;
-    png_bytep *rows;
-    png_color pal[16];
-    png_byte trans[16];
-    int i, bits;
-    if (argc != 1) die("kinds: need DIR", NULL);
-    dir = argv[0];
+/* kinds: every image is W_K x H_K; expect receives the gray each pixel
+   must read as, computed here independently. */
+#define W_K 23u
+#define H_K 17u
 #define PIX(x, y, k) (hash3((int32_t)(x), (int32_t)(y), 77u + (uint32_t)(k)))
 
-    /* gray at 1, 2, 4, 8 bits: scaled to 0..255 (v * 255 / (2^bits - 1)), and 16 */
+/* gray at 1, 2, 4, 8 bits: scaled to 0..255 (v * 255 / (2^bits - 1)), and 16 */
+static void kinds_gray(const char *dir, uint32_t *expect)
+{
+    char path[1024];
+    uint32_t x, y;
+    int bits;
     for (bits = 1; bits <= 16; bits *= 2) {
         uint32_t maxv = (1u << bits) - 1u;
-        rows = alloc_rows(w, h, 2);
-        for (y = 0; y < h; y++) {
-            for (x = 0; x < w; x++) {
+        png_bytep *rows = alloc_rows(W_K, H_K, 2);
+        for (y = 0; y < H_K; y++) {
+            for (x = 0; x < W_K; x++) {
                 uint32_t v = PIX(x, y, bits) & maxv;
                 if (bits == 16) {
                     put16(rows[y] + 2 * x, v);
-                    expect[y * w + x] = v;
+                    expect[y * W_K + x] = v;
                 } else {
                     uint32_t per = 8u / (uint32_t)bits, slot = x % per;
                     rows[y][x / per] |= (png_byte)(v << (8u - (uint32_t)bits * (slot + 1u)));
-                    expect[y * w + x] = v * 255u / maxv;
+                    expect[y * W_K + x] = v * 255u / maxv;
                 }
             }
         }
         snprintf(path, sizeof path, "%s/gray%d.png", dir, bits);
-        write_png(path, w, h, bits, PNG_COLOR_TYPE_GRAY, 0, rows, NULL, 0, NULL, 0);
+        write_png(path, W_K, H_K, bits, PNG_COLOR_TYPE_GRAY, 0, rows, NULL, 0, NULL, 0);
         snprintf(path, sizeof path, "gray%d", bits);
-        write_expect(dir, path, w, h, bits == 16 ? 16 : 8, expect);
-        free_rows(rows, h);
+        write_expect(dir, path, W_K, H_K, bits == 16 ? 16 : 8, expect);
+        free_rows(rows, H_K);
     }
-    /* gray + alpha, 8-bit: alpha ignored */
-    rows = alloc_rows(w, h, 2);
-    for (y = 0; y < h; y++) for (x = 0; x < w; x++) {
+}
+
+/* gray + alpha, 8-bit: alpha ignored */
+static void kinds_gray_alpha(const char *dir, uint32_t *expect)
+{
+    char path[1024];
+    uint32_t x, y;
+    png_bytep *rows = alloc_rows(W_K, H_K, 2);
+    for (y = 0; y < H_K; y++) for (x = 0; x < W_K; x++) {
         rows[y][2 * x] = (png_byte)PIX(x, y, 20);
         rows[y][2 * x + 1] = (png_byte)(PIX(x, y, 21) & 0x0f); /* nearly transparent */
-        expect[y * w + x] = rows[y][2 * x];
+        expect[y * W_K + x] = rows[y][2 * x];
     }
     snprintf(path, sizeof path, "%s/ga8.png", dir);
-    write_png(path, w, h, 8, PNG_COLOR_TYPE_GRAY_ALPHA, 0, rows, NULL, 0, NULL, 0);
-    write_expect(dir, "ga8", w, h, 8, expect);
-    free_rows(rows, h);
-    /* RGB 8 and RGBA 8 */
-    for (i = 0; i < 2; i++) {
-        int ch = i ? 4 : 3;
-        rows = alloc_rows(w, h, ch);
-        for (y = 0; y < h; y++) for (x = 0; x < w; x++) {
+    write_png(path, W_K, H_K, 8, PNG_COLOR_TYPE_GRAY_ALPHA, 0, rows, NULL, 0, NULL, 0);
+    write_expect(dir, "ga8", W_K, H_K, 8, expect);
+    free_rows(rows, H_K);
+}
+
+/* RGB 8 and RGBA 8 (alpha ignored), and interlaced RGB 8: luma */
+static void kinds_rgb8(const char *dir, uint32_t *expect)
+{
+    static const char *names[3] = {"rgb8", "rgba8", "interlaced"};
+    char path[1024];
+    uint32_t x, y;
+    int i;
+    for (i = 0; i < 3; i++) {
+        int ch = i == 1 ? 4 : 3, k0 = i == 2 ? 60 : 30;
+        png_bytep *rows = alloc_rows(W_K, H_K, ch);
+        for (y = 0; y < H_K; y++) for (x = 0; x < W_K; x++) {
             png_bytep p = rows[y] + (size_t)x * (size_t)ch;
-            p[0] = (png_byte)PIX(x, y, 30);
-            p[1] = (png_byte)PIX(x, y, 31);
-            p[2] = (png_byte)PIX(x, y, 32);
+            p[0] = (png_byte)PIX(x, y, k0);
+            p[1] = (png_byte)PIX(x, y, k0 + 1);
+            p[2] = (png_byte)PIX(x, y, k0 + 2);
             if (ch == 4) p[3] = (png_byte)PIX(x, y, 33);
-            expect[y * w + x] = luma(p[0], p[1], p[2]);
+            expect[y * W_K + x] = luma(p[0], p[1], p[2]);
         }
-        snprintf(path, sizeof path, "%s/%s.png", dir, i ? "rgba8" : "rgb8");
-        write_png(path, w, h, 8, i ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, 0, rows, NULL, 0,
-                  NULL, 0);
-        write_expect(dir, i ? "rgba8" : "rgb8", w, h, 8, expect);
-        free_rows(rows, h);
+        snprintf(path, sizeof path, "%s/%s.png", dir, names[i]);
+        write_png(path, W_K, H_K, 8, i == 1 ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, i == 2,
+                  rows, NULL, 0, NULL, 0);
+        write_expect(dir, names[i], W_K, H_K, 8, expect);
+        free_rows(rows, H_K);
     }
-    /* RGB 16 */
-    rows = alloc_rows(w, h, 6);
-    for (y = 0; y < h; y++) for (x = 0; x < w; x++) {
+}
+
+/* RGB 16: luma in 16 bits */
+static void kinds_rgb16(const char *dir, uint32_t *expect)
+{
+    char path[1024];
+    uint32_t x, y;
+    png_bytep *rows = alloc_rows(W_K, H_K, 6);
+    for (y = 0; y < H_K; y++) for (x = 0; x < W_K; x++) {
         uint32_t r = PIX(x, y, 40) & 0xffffu, g = PIX(x, y, 41) & 0xffffu, b = PIX(x, y, 42) & 0xffffu;
         put16(rows[y] + 6 * x, r);
         put16(rows[y] + 6 * x + 2, g);
         put16(rows[y] + 6 * x + 4, b);
-        expect[y * w + x] = luma(r, g, b);
+        expect[y * W_K + x] = luma(r, g, b);
     }
     snprintf(path, sizeof path, "%s/rgb16.png", dir);
-    write_png(path, w, h, 16, PNG_COLOR_TYPE_RGB, 0, rows, NULL, 0, NULL, 0);
-    write_expect(dir, "rgb16", w, h, 16, expect);
-    free_rows(rows, h);
-    /* palette, 4-bit indices, with and without tRNS */
+    write_png(path, W_K, H_K, 16, PNG_COLOR_TYPE_RGB, 0, rows, NULL, 0, NULL, 0);
+    write_expect(dir, "rgb16", W_K, H_K, 16, expect);
+    free_rows(rows, H_K);
+}
+
+/* palette, 4-bit indices, with and without tRNS: the entries' luma */
+static void kinds_palette(const char *dir, uint32_t *expect)
+{
+    char path[1024];
+    png_color pal[16];
+    png_byte trans[16];
+    uint32_t x, y;
+    int i;
     for (i = 0; i < 16; i++) {
         pal[i].red = (png_byte)(i * 17);
         pal[i].green = (png_byte)(255 - i * 13);
@@ -320,30 +347,28 @@ static int cmd_kinds(int argc, char **argv)
         trans[i] = (png_byte)(i * 16);
     }
     for (i = 0; i < 2; i++) {
-        rows = alloc_rows(w, h, 1);
-        for (y = 0; y < h; y++) for (x = 0; x < w; x++) {
+        png_bytep *rows = alloc_rows(W_K, H_K, 1);
+        for (y = 0; y < H_K; y++) for (x = 0; x < W_K; x++) {
             uint32_t k = PIX(x, y, 50) & 15u;
             rows[y][x / 2] |= (png_byte)(k << (x % 2 ? 0 : 4));
-            expect[y * w + x] = luma(pal[k].red, pal[k].green, pal[k].blue);
+            expect[y * W_K + x] = luma(pal[k].red, pal[k].green, pal[k].blue);
         }
         snprintf(path, sizeof path, "%s/%s.png", dir, i ? "palette_trns" : "palette");
-        write_png(path, w, h, 4, PNG_COLOR_TYPE_PALETTE, 0, rows, pal, 16, i ? trans : NULL, 16);
-        write_expect(dir, i ? "palette_trns" : "palette", w, h, 8, expect);
-        free_rows(rows, h);
+        write_png(path, W_K, H_K, 4, PNG_COLOR_TYPE_PALETTE, 0, rows, pal, 16, i ? trans : NULL, 16);
+        write_expect(dir, i ? "palette_trns" : "palette", W_K, H_K, 8, expect);
+        free_rows(rows, H_K);
     }
-    /* interlaced RGB 8 */
-    rows = alloc_rows(w, h, 3);
-    for (y = 0; y < h; y++) for (x = 0; x < w; x++) {
-        png_bytep p = rows[y] + 3 * x;
-        p[0] = (png_byte)PIX(x, y, 60);
-        p[1] = (png_byte)PIX(x, y, 61);
-        p[2] = (png_byte)PIX(x, y, 62);
-        expect[y * w + x] = luma(p[0], p[1], p[2]);
-    }
-    snprintf(path, sizeof path, "%s/interlaced.png", dir);
-    write_png(path, w, h, 8, PNG_COLOR_TYPE_RGB, 1, rows, NULL, 0, NULL, 0);
-    write_expect(dir, "interlaced", w, h, 8, expect);
-    free_rows(rows, h);
+}
+
+static int cmd_kinds(int argc, char **argv)
+{
+    uint32_t *expect = calloc(W_K * H_K, sizeof *expect);
+    if (argc != 1) die("kinds: need DIR", NULL);
+    kinds_gray(argv[0], expect);
+    kinds_gray_alpha(argv[0], expect);
+    kinds_rgb8(argv[0], expect);
+    kinds_rgb16(argv[0], expect);
+    kinds_palette(argv[0], expect);
     free(expect);
     return 0;
 }
@@ -393,6 +418,7 @@ static int cmd_wav(int argc, char **argv)
     const char *out = NULL, *format = "pcm16";
     double f0a = 200.0, f0b = 200.0, secs = 1.0, silence = 0.0, phase = 0.0;
     double jf = 0.0, jsecs = 0.0; /* --jump F:SECS: the last SECS at f0 F (an outlier) */
+    double gain = 1.0;            /* --gain G: amplitude factor (peak about 0.6 x G) */
     int rate = 16000, channels = 1, i, c;
     SF_INFO info;
     SNDFILE *sf;
@@ -413,6 +439,8 @@ static int cmd_wav(int argc, char **argv)
             silence = atof(argv[++i]);
         } else if (strcmp(argv[i], "--channels") == 0 && i + 1 < argc) {
             channels = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--gain") == 0 && i + 1 < argc) {
+            gain = atof(argv[++i]);
         } else if (strcmp(argv[i], "--format") == 0 && i + 1 < argc) {
             format = argv[++i];
         } else if (out == NULL && argv[i][0] != '-') {
@@ -439,7 +467,7 @@ static int cmd_wav(int argc, char **argv)
         for (hmn = 1; hmn <= 6; hmn++) { /* a voiced source: harmonics falling 1/h */
             v += sin(hmn * phase) / hmn;
         }
-        for (c = 0; c < channels; c++) buf[k * channels + c] = (float)(0.35 * v);
+        for (c = 0; c < channels; c++) buf[k * channels + c] = (float)(0.35 * gain * v);
     }
     sf = sf_open(out, SFM_WRITE, &info);
     if (sf == NULL) die("cannot create", out);

@@ -442,6 +442,48 @@ int ssdapy_enum(PyObject *o, const char *what, const ssdapy_name_t *table, int *
     return -1;
 }
 
+int ssdapy_fields(PyObject *kw, void *base, const ssdapy_field_t *f)
+{
+    for (; f->name != NULL; f++) {
+        PyObject *v = ssdapy_kw_take(kw, f->name);
+        long long x;
+        int rc;
+        char *p = (char *)base + f->offset;
+        if (v == NULL) {
+            continue;
+        }
+        rc = ssdapy_int(v, f->name, f->lo, f->hi, &x);
+        Py_DECREF(v);
+        if (rc != 0) {
+            return -1;
+        }
+        if (f->bytes == 1) {
+            *(uint8_t *)p = (uint8_t)x;
+        } else if (f->bytes == 2) {
+            *(uint16_t *)p = (uint16_t)x; /* int16_t fields share the bits */
+        } else {
+            *(uint32_t *)p = (uint32_t)x;
+        }
+    }
+    return 0;
+}
+
+int ssdapy_flag(PyObject *kw, const char *name, uint8_t *flags, uint8_t bit)
+{
+    PyObject *v = ssdapy_kw_take(kw, name);
+    int b;
+    if (v == NULL) {
+        return 0;
+    }
+    b = PyObject_IsTrue(v);
+    Py_DECREF(v);
+    if (b < 0) {
+        return -1;
+    }
+    *flags = (uint8_t)(b ? (*flags | bit) : (*flags & ~bit));
+    return 0;
+}
+
 PyObject *ssdapy_kw_copy(PyObject *kw)
 {
     return kw != NULL ? PyDict_Copy(kw) : PyDict_New();
@@ -496,11 +538,18 @@ int ssdapy_args(PyObject *args, const char *func, Py_ssize_t n, Py_ssize_t max,
 
 PyObject *ssdapy_np_empty(int ndim, const Py_ssize_t *shape, PyObject *dtype)
 {
-    PyObject *shp = ndim == 1 ? Py_BuildValue("(n)", shape[0])
-                              : Py_BuildValue("(nn)", shape[0], shape[1]);
-    PyObject *a;
+    PyObject *shp = PyTuple_New(ndim), *a;
+    int i;
     if (shp == NULL) {
         return NULL;
+    }
+    for (i = 0; i < ndim; i++) {
+        PyObject *n = PyLong_FromSsize_t(shape[i]);
+        if (n == NULL) {
+            Py_DECREF(shp);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(shp, i, n);
     }
     a = PyObject_CallFunctionObjArgs(ssdapy.np_empty, shp, dtype, NULL);
     Py_DECREF(shp);
@@ -553,6 +602,37 @@ void *ssdapy_np_data(PyObject *array)
     p = b.buf;
     PyBuffer_Release(&b);
     return p;
+}
+
+int ssdapy_records(PyObject *obj, const char *what, PyObject *dtype, Py_buffer *b,
+                   Py_ssize_t *count)
+{
+    PyObject *d = PyObject_GetAttrString(obj, "dtype");
+    int same = d != NULL ? PyObject_RichCompareBool(d, dtype, Py_EQ) : 0;
+    Py_XDECREF(d);
+    PyErr_Clear();
+    if (same != 1) {
+        PyErr_Format(PyExc_TypeError, "%s must be an array of dtype %R (as this module "
+                     "returns it), got %s", what, dtype, Py_TYPE(obj)->tp_name);
+        return -1;
+    }
+    if (PyObject_GetBuffer(obj, b, PyBUF_C_CONTIGUOUS) != 0) {
+        PyErr_Clear();
+        PyErr_Format(PyExc_ValueError, "%s must be C-contiguous (numpy.ascontiguousarray)",
+                     what);
+        return -1;
+    }
+    {
+        PyObject *isz = PyObject_GetAttrString(dtype, "itemsize");
+        Py_ssize_t itemsize = isz != NULL ? PyLong_AsSsize_t(isz) : -1;
+        Py_XDECREF(isz);
+        if (itemsize <= 0) {
+            PyBuffer_Release(b);
+            return -1;
+        }
+        *count = b->len / itemsize;
+    }
+    return 0;
 }
 
 PyTypeObject *ssdapy_struct_type(PyObject *module, const char *name, const char *doc,

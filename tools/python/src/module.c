@@ -14,6 +14,8 @@ static int (*const feature_inits[])(PyObject *) = {
     ssdapy_init_pitch,
     ssdapy_init_stream,
     ssdapy_init_ncc,
+    ssdapy_init_shape,  /* before symreg: FD_DTYPE */
+    ssdapy_init_symreg,
 };
 
 static const char error_doc[] =

@@ -108,6 +108,19 @@ typedef struct {
 } ssdapy_name_t;
 int ssdapy_enum(PyObject *o, const char *what, const ssdapy_name_t *table, int *out);
 
+/* Integer fields of a C config struct taken from keyword arguments by
+   name: each in lo..hi, stored in `bytes` bytes (1, 2 or 4; signed when
+   lo < 0). A table ends with {NULL}. Returns 0 or -1 with an exception. */
+typedef struct {
+    const char *name;
+    size_t offset;
+    int bytes;
+    long long lo, hi;
+} ssdapy_field_t;
+int ssdapy_fields(PyObject *kw, void *base, const ssdapy_field_t *fields);
+/* A boolean keyword setting or clearing bit in *flags (absent: unchanged). */
+int ssdapy_flag(PyObject *kw, const char *name, uint8_t *flags, uint8_t bit);
+
 /* Keyword arguments are taken one by one from a private copy of the call's
    kwargs, so that option groups (match options inside track options) are
    parsed by one function each; ssdapy_kw_done then rejects any left over. */
@@ -121,7 +134,7 @@ int ssdapy_args(PyObject *args, const char *func, Py_ssize_t n, Py_ssize_t max,
 
 /* ---- results ---- */
 
-/* numpy.empty(shape, dtype) as a new reference; ndim 1 or 2. */
+/* numpy.empty(shape, dtype) as a new reference; ndim 0 or more. */
 PyObject *ssdapy_np_empty(int ndim, const Py_ssize_t *shape, PyObject *dtype);
 /* A structured numpy dtype from names, formats and offsets (n fields) and
    the C struct's size, so that the library writes straight into it. */
@@ -131,6 +144,13 @@ PyObject *ssdapy_np_struct_dtype(Py_ssize_t n, const char *const *names,
 /* Pointer to a C-contiguous writable array's data (the array made by
    ssdapy_np_empty); NULL with an exception set otherwise. */
 void *ssdapy_np_data(PyObject *array);
+
+/* A C-contiguous numpy array of records of `dtype` (one of the binding's
+   structured dtypes): *b holds its buffer (release it), *count its records.
+   Returns 0, or -1 with TypeError (another dtype) or ValueError (not
+   contiguous) naming what. */
+int ssdapy_records(PyObject *obj, const char *what, PyObject *dtype, Py_buffer *b,
+                   Py_ssize_t *count);
 
 /* A struct-sequence type (a named tuple in C) added to the module. */
 PyTypeObject *ssdapy_struct_type(PyObject *module, const char *name, const char *doc,
@@ -144,6 +164,11 @@ int ssdapy_init_grad(PyObject *m);
 int ssdapy_init_pitch(PyObject *m);
 int ssdapy_init_stream(PyObject *m);
 int ssdapy_init_ncc(PyObject *m);
+int ssdapy_init_shape(PyObject *m);
+int ssdapy_init_symreg(PyObject *m);
+
+/* numpy dtype of ssda_fd_t (bind_shape.c), shared with bind_symreg.c. */
+extern PyObject *ssdapy_fd_dtype;
 
 /* Shared by the search and tracking features (bind_match.c): take the
    search options (threshold, scan, order, bounds, k_q8, lambda_q8,
