@@ -137,7 +137,7 @@ static bool try_i(const ssda__edge_end_t *p, const ssda__edge_end_t *q,
     }
     {
         const int64_t d2 = vx * vx + vy * vy; /* <= 2 * 64^2 */
-        len_q8 = ssda_isqrt64((uint64_t)d2 * 65536u);
+        len_q8 = ssda__isqrt64((uint64_t)d2 * 65536u);
     }
     area = len_q8 * (ssda__abs64(e_p) + ssda__abs64(e_q)) / 4u; /* < 2^15 * 2^22 */
     if (area > ((uint64_t)(uint32_t)cfg->i_area << 22)) {
@@ -180,7 +180,7 @@ static bool try_v(const ssda__edge_end_t *p, const ssda__edge_end_t *q,
     }
     mx = ssda__abs64(2 * xq8 - ((int64_t)p->x + q->x) * 256); /* 2 (corner - midpoint) */
     my = ssda__abs64(2 * yq8 - ((int64_t)p->y + q->y) * 256);
-    *cost = ssda_isqrt64(mx * mx + my * my) / 2u;
+    *cost = ssda__isqrt64(mx * mx + my * my) / 2u;
     return true;
 }
 

@@ -3,6 +3,8 @@
 #ifndef SSDA_EDGE_INTERNAL_H
 #define SSDA_EDGE_INTERNAL_H
 
+#include "compiler.h"
+
 #include "ssda/edge.h"
 
 /* Private map bits (11-15): zero between public calls. */
@@ -18,7 +20,7 @@ extern const int8_t ssda__ring_dy[8];
 
 /* 8-bit ring code of (x, y): bit k set when the neighbour at k is ON
    (outside the map: OFF). (x, y) must be inside the map. */
-uint32_t ssda__edge_ring(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y);
+SSDA_INTERNAL uint32_t ssda__edge_ring(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y);
 
 /* Facts about a ring code. */
 typedef struct {
@@ -29,21 +31,21 @@ typedef struct {
     uint32_t bg4;        /* 4-neighbours not set, 0..4 */
 } ssda__ring_info_t;
 
-void ssda__ring_info(uint32_t ring, ssda__ring_info_t *info);
+SSDA_INTERNAL void ssda__ring_info(uint32_t ring, ssda__ring_info_t *info);
 
 /* The seed's class of a ring code (ssda_edge_class_t). */
-uint32_t ssda__ring_class(uint32_t ring);
+SSDA_INTERNAL uint32_t ssda__ring_class(uint32_t ring);
 
 /* The position the chain leaves (x, y) by, coming from ring position
    `back` (the neighbour it came from): the other run must be the only
    one; its 4-neighbour position if it has one, else its middle.
    Returns 0..7, or 8 when (x, y) is an end or a branch. */
-uint32_t ssda__chain_next(uint32_t ring, uint32_t back);
+SSDA_INTERNAL uint32_t ssda__chain_next(uint32_t ring, uint32_t back);
 
 /* Position of an end's single run to leave it by: its 4-neighbour if it
    has one, else its middle (seed appendix: 4-connection first). ring must
    have exactly one run. */
-uint32_t ssda__end_exit(uint32_t ring);
+SSDA_INTERNAL uint32_t ssda__end_exit(uint32_t ring);
 
 /* A walk along a chain from an end. */
 #define SSDA__WALK_MAX 16u
@@ -54,15 +56,15 @@ typedef struct {
 } ssda__walk_t;
 
 /* Walk from the end (x, y) for up to limit (1..SSDA__WALK_MAX) pixels. */
-void ssda__edge_walk(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
+SSDA_INTERNAL void ssda__edge_walk(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y,
                      uint32_t limit, ssda__walk_t *wk);
 
 /* (c): thinning stages until no deletion; returns pixels deleted. */
-uint32_t ssda__edge_thin(uint16_t *map, uint32_t w, uint32_t h);
+SSDA_INTERNAL uint32_t ssda__edge_thin(uint16_t *map, uint32_t w, uint32_t h);
 
 /* Draw an 8-connected straight line of ON pixels from (x0, y0) to (x1, y1)
    (both inside the map). Returns pixels newly set. */
-uint32_t ssda__edge_line(uint16_t *map, uint32_t w, int32_t x0, int32_t y0, int32_t x1,
+SSDA_INTERNAL uint32_t ssda__edge_line(uint16_t *map, uint32_t w, int32_t x0, int32_t y0, int32_t x1,
                          int32_t y1);
 
 /* An end for (d) and (e): pixel index and its fitted direction. */
@@ -74,11 +76,11 @@ typedef struct {
 /* Collect ends (raster order) that have a branch of at least spur_min
    pixels, with their directions fitted over fit_len pixels; at most cap.
    Returns the number found (may exceed cap: only cap are stored). */
-uint32_t ssda__edge_ends(const uint16_t *map, uint32_t w, uint32_t h, uint32_t spur_min,
+SSDA_INTERNAL uint32_t ssda__edge_ends(const uint16_t *map, uint32_t w, uint32_t h, uint32_t spur_min,
                          uint32_t fit_len, ssda__edge_end_t *ends, uint32_t cap);
 
 /* (d): extend each end along the strength. Adds to *extended, *joined. */
-void ssda__edge_extend(uint16_t *map, uint32_t w, uint32_t h, const ssda__edge_end_t *ends,
+SSDA_INTERNAL void ssda__edge_extend(uint16_t *map, uint32_t w, uint32_t h, const ssda__edge_end_t *ends,
                        uint32_t n, uint32_t extend_min, uint32_t extend_max,
                        uint32_t *extended, uint32_t *joined);
 
@@ -93,7 +95,7 @@ typedef struct {
 } ssda__edge_gap_cfg_t;
 
 /* (e): T, I, V closing. Counts by type into t, i, v. */
-void ssda__edge_close(uint16_t *map, uint32_t w, uint32_t h, ssda__edge_end_t *ends,
+SSDA_INTERNAL void ssda__edge_close(uint16_t *map, uint32_t w, uint32_t h, ssda__edge_end_t *ends,
                       uint32_t n, const ssda__edge_gap_cfg_t *cfg, uint32_t *t, uint32_t *i,
                       uint32_t *v);
 

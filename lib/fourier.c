@@ -112,7 +112,7 @@ uint32_t ssda__mulshr_sat(uint32_t a, uint32_t b, uint32_t s)
 
 uint32_t ssda__fd_abs(const ssda_fd_coef_t *c)
 {
-    return ssda_isqrt64(norm2(c));
+    return ssda__isqrt64(norm2(c));
 }
 
 uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b)

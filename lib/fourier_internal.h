@@ -2,20 +2,22 @@
 #ifndef SSDA_FOURIER_INTERNAL_H
 #define SSDA_FOURIER_INTERNAL_H
 
+#include "compiler.h"
+
 #include "ssda/fourier.h"
 
 /* floor(num 2^exp2 2^16 / den) saturated at UINT32_MAX; den > 0, exp2 in
    -64..64. Relative error < 2^-31 from narrowing den to 32 bits. */
-uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den);
+SSDA_INTERNAL uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den);
 
 /* floor(a * b / 2^s) saturated at UINT32_MAX. */
-uint32_t ssda__mulshr_sat(uint32_t a, uint32_t b, uint32_t s);
+SSDA_INTERNAL uint32_t ssda__mulshr_sat(uint32_t a, uint32_t b, uint32_t s);
 
 /* A lower bound of the free match's E^2 (Q16) without the search:
    |Z(alpha)| <= sum |a_n| |b_n| (Cauchy-Schwarz per term). Same orders. */
-uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b);
+SSDA_INTERNAL uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b);
 
 /* |a| for a complex coefficient, Q8 px (isqrt, floor). */
-uint32_t ssda__fd_abs(const ssda_fd_coef_t *c);
+SSDA_INTERNAL uint32_t ssda__fd_abs(const ssda_fd_coef_t *c);
 
 #endif /* SSDA_FOURIER_INTERNAL_H */

@@ -202,7 +202,7 @@ static uint64_t magnitude(const zval_t *v, int32_t *exp2)
     const int64_t r = ssda__asr64(v->zr, t), i = ssda__asr64(v->zi, t);
     *exp2 = (int32_t)t;
     const int64_t r2 = r * r, i2 = i * i; /* < 2^62 each */
-    return ssda_isqrt64((uint64_t)r2 + (uint64_t)i2);
+    return ssda__isqrt64((uint64_t)r2 + (uint64_t)i2);
 }
 
 static int check(const ssda_fd_t *a, const ssda_fd_t *b, const ssda_fd_match_t *m)

@@ -2,6 +2,8 @@
 #ifndef SSDA_LOOPS_INTERNAL_H
 #define SSDA_LOOPS_INTERNAL_H
 
+#include "compiler.h"
+
 #include "ssda/loops.h"
 
 /* Membership of a pixel in the traced set: a map entry with `bit` set
@@ -24,19 +26,19 @@ typedef struct {
     uint32_t steps;
 } ssda__tracer_t;
 
-void ssda__trace_begin(ssda__tracer_t *t, const ssda__member_t *set, uint32_t sx, uint32_t sy);
+SSDA_INTERNAL void ssda__trace_begin(ssda__tracer_t *t, const ssda__member_t *set, uint32_t sx, uint32_t sy);
 /* The next move (ring position 0..7; the tracer moves), or 8 at the end. */
-uint32_t ssda__trace_step(ssda__tracer_t *t);
+SSDA_INTERNAL uint32_t ssda__trace_step(ssda__tracer_t *t);
 
 /* Boundary length in Q16 px (steps of 1 = 65536 and sqrt 2 = 92682). */
-uint64_t ssda__trace_length(const ssda__member_t *set, uint32_t sx, uint32_t sy);
+SSDA_INTERNAL uint64_t ssda__trace_length(const ssda__member_t *set, uint32_t sx, uint32_t sy);
 
 /* n (power of two, 2^log2n) samples equally spaced along the boundary of
    length len_q16 (from ssda__trace_length), from the start pixel. */
-void ssda__trace_sample(const ssda__member_t *set, uint32_t sx, uint32_t sy, uint64_t len_q16,
+SSDA_INTERNAL void ssda__trace_sample(const ssda__member_t *set, uint32_t sx, uint32_t sy, uint64_t len_q16,
                         uint32_t log2n, ssda_point_q8_t *out);
 
 /* log2 of a power of two 8..SSDA_LOOPS_MAX_SAMPLES, or 0 if v is not one. */
-uint32_t ssda__samples_log2(uint32_t v);
+SSDA_INTERNAL uint32_t ssda__samples_log2(uint32_t v);
 
 #endif /* SSDA_LOOPS_INTERNAL_H */

@@ -141,7 +141,7 @@ int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
     push->ready_at = (uint16_t)(area.y + area.height); /* inside the image */
     if (cfg->other->view == NULL) {
         /* the window's whole rectangle, read once (checked: a row fits) */
-        (void)ssda__stream_plate_plan(cfg->other, &wr, wr.width, wr.height, 0u, 0u,
+        (void)ssda__stream_plate_plan(push->other, &wr, wr.width, wr.height, 0u, 0u,
                                       &push->other_plate);
     }
     return SSDA_OK;
@@ -255,7 +255,7 @@ int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
     if (lo <= hi && cfg->other->view == NULL) {
         /* the other image's bands, sliding down one grid step at a time */
         const uint32_t oband = first ? plan.grid.win_h : plan.grid.search_h;
-        (void)ssda__stream_plate_plan(cfg->other, &oreg,
+        (void)ssda__stream_plate_plan(push->other, &oreg,
                                       first ? plan.grid.win_w : plan.grid.search_w, oband,
                                       plan.grid.step_y,
                                       ssda__stream_run_extra(cfg->other, plan.grid.step_y),

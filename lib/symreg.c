@@ -149,7 +149,7 @@ static uint32_t grow(const plan_t *p, const nucleus_t *nu, const ssda_symreg_aff
         set[i].mov = SSDA__NONE;
         ssda__symreg_map(t, p->ref[i].cx_q8, p->ref[i].cy_q8, &x, &y);
         /* radius reach_min + reach * distance from the nucleus, Q8 */
-        r = p->reach_min + (((uint64_t)ssda_isqrt64(dist2(x, y, nx, ny)) * p->reach_q16) >> 16);
+        r = p->reach_min + (((uint64_t)ssda__isqrt64(dist2(x, y, nx, ny)) * p->reach_q16) >> 16);
         for (j = 0u; j < p->n_mov; j++) {
             ssda_fd_match_t m;
             const bool forced = i == nu->ref && j == nu->mov;
@@ -276,7 +276,7 @@ static bool settle(const plan_t *p, const nucleus_t *nu, ssda__partner_t *set, u
         } else {
             drop = shape_check(p, set, t);                                   /* [2.5] */
             if (drop == SSDA__NONE) {
-                *rms = ssda_isqrt64(SSDA_DIV64_32(sum2, count) > 0xFFFFFFFFu
+                *rms = ssda__isqrt64(SSDA_DIV64_32(sum2, count) > 0xFFFFFFFFu
                                         ? 0xFFFFFFFFu
                                         : (uint64_t)SSDA_DIV64_32(sum2, count));
                 return true;

@@ -46,7 +46,7 @@ void ssda__symreg_scale_rot(const ssda_symreg_affine_t *t, uint32_t *s_q16, uint
     const uint32_t th1 = ssda__atan2(t->d_q16, t->a_q16);               /* x axis */
     const uint32_t th2 = ssda__atan2(t->e_q16, t->b_q16) - 0x40000000u; /* y axis - 90 deg */
     const uint32_t diff = th2 - th1;                                    /* signed, wrapped */
-    *s_q16 = ssda_isqrt64(ssda__abs64(det));
+    *s_q16 = ssda__isqrt64(ssda__abs64(det));
     /* eq. 15: the mean of the two angles, halfway along the shorter way */
     *phi = diff < 0x80000000u ? th1 + diff / 2u : th1 - ((0u - diff) / 2u);
 }
@@ -184,7 +184,7 @@ uint32_t ssda__symreg_resid(const ssda_symreg_affine_t *t, const ssda_loop_t *r,
     if (du >= 0x80000000u || dv >= 0x80000000u) {
         return 0xFFFFFFFFu;
     }
-    return ssda_isqrt64(du * du + dv * dv);
+    return ssda__isqrt64(du * du + dv * dv);
 }
 
 int ssda_symreg_apply(const ssda_symreg_affine_t *t, int32_t x_q8, int32_t y_q8, int32_t *u_q8,

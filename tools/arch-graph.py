@@ -27,13 +27,17 @@ LAYERS = [
      [r"^include/ssda/"]),
     ("streaming: sources, plates, push mode (stream.h)", "#e6f4ea", 1, [r"^lib/stream_"]),
     ("jobs: grid tracking (track.h)", "#fff4e0", 2, [r"^lib/track"]),
+    ("correlation search (ncc.h)", "#e0f7fa", 2, [r"^lib/ncc"]),
+    ("seed 001: edges, closed loops, Fourier descriptors, registration "
+     "(edge.h, loops.h, fourier.h, symreg.h)", "#e8f5e9", 2,
+     [r"^lib/(edge|loops|fourier|symreg)"]),
     ("search engine and row sources (match.h, view.h)", "#fef7e0", 3,
      [r"^lib/match", r"^lib/view\."]),
     ("pitch: AMDF stream (pitch.h)", "#fce8f3", 3, [r"^lib/pitch"]),
     ("image operator: Fig. 8 gradient (grad.h)", "#f1f3f4", 3, [r"^lib/grad\."]),
     ("kernels: SAD / AMDF inner loops, one set linked", "#f3e8fd", 4, [r"^lib/kernel/"]),
     ("foundation: seal, validity, slide, integer maths, errors", "#eeeeee", 4,
-     [r"^lib/(compiler|state|slide|fixmath|error)\."]),
+     [r"^lib/(compiler|state|slide|fixmath|fixtrig|wide|error)\."]),
 ]
 NEW_MODULE_TIER = 2
 NEW_MODULE_COLOUR = "#e0f7fa"
