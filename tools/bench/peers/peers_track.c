@@ -41,8 +41,8 @@ static void bare_search(const ssda_view_t *first, const ssda_view_t *second,
             for (unsigned r = 0; r < win; r++) {
                 const uint8_t *a = ssda_view_row(first, j->ay + py + r) + (size_t)(j->ax + px) * bpp;
                 const uint8_t *w = ssda_view_row(second, j->wy + r) + (size_t)j->wx * bpp;
-                sad += bpp == 1 ? ssda_sad_row_u8(a, w, win)
-                                : ssda_sad_row_u16((const uint16_t *)(const void *)a,
+                sad += bpp == 1 ? ssda__sad_row_u8(a, w, win)
+                                : ssda__sad_row_u16((const uint16_t *)(const void *)a,
                                                    (const uint16_t *)(const void *)w, win);
             }
             if (sad < best) {
