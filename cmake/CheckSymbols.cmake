@@ -50,6 +50,12 @@ foreach(_l IN LISTS _lines)
   # instrumentation's companions of a variable (ASan's ODR indicator,
   # gcov's counters) are judged by the variable's name
   string(REGEX REPLACE "^(__odr_asan[._]|__gcov[0-9]*[._])" "" _name "${_name}")
+  # the compiler's own helpers, emitted as hidden COMDAT copies in every
+  # object that needs them (i386 PIC: __x86.get_pc_thunk.<reg>): not ours,
+  # and the linker merges them
+  if(_name MATCHES "^__x86\\.get_pc_thunk\\.")
+    continue()
+  endif()
   if(_name MATCHES "^ssda__")
     math(EXPR _internal "${_internal} + 1")
   elseif(_name IN_LIST _public)
