@@ -62,7 +62,8 @@ typedef struct {
 #endif
     cand_t best, second; /* best two completed, by the tie rule */
 #ifdef ENGINE_FALLBACK
-    cand_t fb;           /* all-cut fallback: most pixels before its cut */
+    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
+                            sad is the lower bound known at the cut */
     uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
 #endif
     uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
@@ -186,16 +187,20 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
 }
 
 #ifdef ENGINE_FALLBACK
-/* A position cut after `pixels` pixels with partial SAD `partial`: keep it
-   if it is the fallback so far (most pixels, then the tie rule). */
-static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint32_t pixels)
+/* A position cut after `pixels` pixels, with `low` the lower bound of its
+   SAD known at the cut (partial SAD plus the bound of the rows not summed;
+   the bound alone for a position rejected before any pixel): keep it if it
+   is the fallback so far (most pixels, then the smallest lower bound, then
+   the tie rule). A position rejected by its bound counts 0 pixels, so it
+   wins only when every position was rejected so (issue 14). */
+static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t low, uint32_t pixels)
 {
     if (!e->need_fb) {
         return; /* a mode whose first placement always completes */
     }
     if (e->have_fb && pixels == e->fb_pixels) {
         cand_t c;
-        c.sad = partial;
+        c.sad = low;
         c.x = x;
         c.y = y;
         if (!cand_less(e, &c, &e->fb)) {
@@ -206,15 +211,15 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
     } else {
         /* the first cut, or one that went further: it becomes the fallback */
     }
-    e->fb.sad = partial;
+    e->fb.sad = low;
     e->fb.x = x;
     e->fb.y = y;
     e->fb_pixels = pixels;
     e->have_fb = true;
 }
-#define NOTE_CUT(e, x, y, partial, pixels) note_cut(e, x, y, partial, pixels)
+#define NOTE_CUT(e, x, y, low, pixels) note_cut(e, x, y, low, pixels)
 #else
-#define NOTE_CUT(e, x, y, partial, pixels) ((void)0)
+#define NOTE_CUT(e, x, y, low, pixels) ((void)0)
 #endif
 
 #ifndef SSDA_CFG_NO_BOUNDS
@@ -290,7 +295,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
-            NOTE_CUT(e, x, y, 0u, 0u);
+            NOTE_CUT(e, x, y, rest, 0u);
             return 0;
         }
         if (e->row_step != 1u) {
@@ -329,7 +334,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
                 e->ops += n;
                 done += n;
                 if (done < e->L && partial + rest >= cut_at) {
-                    NOTE_CUT(e, x, y, partial, done);
+                    NOTE_CUT(e, x, y, partial + rest, done);
                     return 0;
                 }
             }
@@ -343,12 +348,12 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         }
         v = partial + rest;
         if (v >= cut_at) {
-            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
+            NOTE_CUT(e, x, y, v, (k + 1u) * e->L);
             return 0;
         }
 #ifndef SSDA_CFG_NO_RAMP
         if (ramp && ramp_cuts(e, v, (k + 1u) * e->L)) {
-            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
+            NOTE_CUT(e, x, y, v, (k + 1u) * e->L);
             return 0;
         }
 #endif
@@ -735,6 +740,15 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     const ssda_match_plan_t *plan = e->plan;
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+#ifdef ENGINE_FALLBACK
+    uint64_t fb_sad = 0u; /* the fallback's full SAD: <= 65535^3 */
+    if (e->n_best == 0u) { /* FIXED/RAMP, every position cut: have_fb */
+        int err = ssda__sad_full(e->area, e->win, e->fb.x, e->fb.y, &e->ops, &fb_sad);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+#endif
 #ifndef SSDA_CFG_NO_SUBPIXEL
     if ((plan->flags & SSDA_MATCH_SUBPIXEL) != 0u) { /* exact modes: some position completed */
 #ifndef SSDA_CFG_NO_UNIQUE
@@ -760,8 +774,9 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     result->unique_q8 = uq;
 #ifdef ENGINE_FALLBACK
     if (e->n_best == 0u) {
-        /* every position cut (FIXED/RAMP): the paper's fallback */
-        result->sad = e->fb.sad;
+        /* every position cut (FIXED/RAMP): the paper's fallback, reported
+           with its full SAD (summed here; fb.sad is only a lower bound) */
+        result->sad = fb_sad;
         result->x = (uint16_t)e->fb.x;
         result->y = (uint16_t)e->fb.y;
         result->exact = false;

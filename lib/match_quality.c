@@ -71,20 +71,11 @@ uint16_t ssda__unique_q8(const ssda__cand_t *list, uint32_t n, const ssda__cand_
 }
 #endif
 
-#ifndef SSDA_CFG_NO_SUBPIXEL
-/* SAD of position (x, y): from the list when the search summed it in full,
-   else summed now (L x M pixels added to *ops). */
-static int sad_of(const ssda__rows_t *area, const ssda__rows_t *win, const ssda__cand_t *list,
-                  uint32_t n, uint32_t x, uint32_t y, uint64_t *ops, uint64_t *sad)
+int ssda__sad_full(const ssda__rows_t *area, const ssda__rows_t *win, uint32_t x, uint32_t y,
+                   uint64_t *ops, uint64_t *sad)
 {
     uint64_t total = 0u; /* <= 65535^3 */
     uint32_t i;
-    for (i = 0u; i < n; i++) {
-        if (list[i].x == x && list[i].y == y) {
-            *sad = list[i].sad;
-            return SSDA_OK;
-        }
-    }
     for (i = 0u; i < win->height; i++) {
         const uint8_t *ap;
         const uint8_t *wp;
@@ -107,6 +98,22 @@ static int sad_of(const ssda__rows_t *area, const ssda__rows_t *win, const ssda_
     *ops += (uint32_t)win->width * win->height; /* < 2^32 */
     *sad = total;
     return SSDA_OK;
+}
+
+#ifndef SSDA_CFG_NO_SUBPIXEL
+/* SAD of position (x, y): from the list when the search summed it in full,
+   else summed now (L x M pixels added to *ops). */
+static int sad_of(const ssda__rows_t *area, const ssda__rows_t *win, const ssda__cand_t *list,
+                  uint32_t n, uint32_t x, uint32_t y, uint64_t *ops, uint64_t *sad)
+{
+    uint32_t i;
+    for (i = 0u; i < n; i++) {
+        if (list[i].x == x && list[i].y == y) {
+            *sad = list[i].sad;
+            return SSDA_OK;
+        }
+    }
+    return ssda__sad_full(area, win, x, y, ops, sad);
 }
 
 /* The fit along one axis: neighbours (x0, y0) and (x1, y1) of best. */

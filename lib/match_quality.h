@@ -3,7 +3,7 @@
  * position (match.h: SSDA_MATCH_UNIQUE, SSDA_MATCH_SUBPIXEL): uniqueness
  * from the list of the smallest completed positions the engine keeps, and
  * the equiangular sub-pixel fit. Integers only; every range is written
- * beside its value.
+ * beside its value. Also the full SAD at one position (ssda__sad_full).
  */
 #ifndef SSDA_MATCH_QUALITY_H
 #define SSDA_MATCH_QUALITY_H
@@ -40,6 +40,12 @@ SSDA_INTERNAL int16_t ssda__vfit_q8(uint64_t l, uint64_t c, uint64_t r);
    SSDA_MATCH_UNIQUE_NONE. */
 SSDA_INTERNAL uint16_t ssda__unique_q8(const ssda__cand_t *list, uint32_t n,
                                        const ssda__cand_t *best, uint16_t q8, uint32_t rad);
+
+/* Full SAD of the window at (x, y) of the area (L x M pixels, added to
+   *ops; no early exit): the all-cut fallback's reported SAD and the fit's
+   missing neighbours. Returns SSDA_OK or a fetch error (*sad unchanged). */
+SSDA_INTERNAL int ssda__sad_full(const ssda__rows_t *area, const ssda__rows_t *win,
+                                 uint32_t x, uint32_t y, uint64_t *ops, uint64_t *sad);
 
 /* The sub-pixel offsets (Q8.8) of best, nx x ny positions: the SADs of its
    neighbours from list (n entries, any order; NULL when n == 0) or summed

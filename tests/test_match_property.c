@@ -163,8 +163,9 @@ static void test_fixed_exact_when_any_position_completes(void)
     }
 }
 
-/* Every mode, whatever it returns, returns a real placement and its true SAD
-   (or, for the all-cut fallback, a partial SAD no larger than the true one). */
+/* Every mode, whatever it returns, returns a real placement and its true
+   SAD, the all-cut fallback included (issue 14: it reported a partial SAD),
+   with or without bounds. */
 static void test_inexact_modes_report_consistent_results(void)
 {
     test_rng_t r;
@@ -184,20 +185,104 @@ static void test_inexact_modes_report_consistent_results(void)
         cfg.fixed_threshold = test_rng_range(&r, 0, 5000);
         cfg.k_q8 = (uint16_t)test_rng_range(&r, 0, 1024);
         cfg.coarse_step = (uint16_t)test_rng_range(&r, 0, 9);
+        if (test_rng_range(&r, 0, 1)) {
+            cfg.flags = SSDA_MATCH_BOUNDS;
+            cfg.work = g_work;
+            cfg.work_size = sizeof g_work;
+        }
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
         TEST_ASSERT_TRUE(res.x + g.ww <= g.aw);
         TEST_ASSERT_TRUE(res.y + g.wh <= g.ah);
         truth = test_sad(&area, &win, res.x, res.y);
-        if (res.completed > 0u) {
-            TEST_ASSERT_EQUAL_UINT64(truth, res.sad);
-        } else {
+        TEST_ASSERT_EQUAL_UINT64(truth, res.sad);
+        if (res.completed == 0u) {
             TEST_ASSERT_FALSE(res.exact);
-            TEST_ASSERT_TRUE(res.sad <= truth);
         }
         if (cfg.threshold != SSDA_THRESHOLD_FIXED || cfg.scan == SSDA_SCAN_COARSE) {
             TEST_ASSERT_FALSE(res.exact);
         }
     }
+}
+
+/* The bound of match.h's SSDA_MATCH_BOUNDS at (x, y), computed here:
+   groups of G = 4 window rows (all rows when fewer), a last partial group
+   left out, sum over groups of |area group sum - window group sum|. */
+static uint64_t bound_ref(const ssda_view_t *area, const ssda_view_t *win, uint32_t x, uint32_t y)
+{
+    const uint32_t group = win->height < 4u ? win->height : 4u;
+    uint64_t total = 0u;
+    uint32_t k, yy, xx;
+    for (k = 0u; (k + 1u) * group <= win->height; k++) {
+        uint64_t a = 0u, w = 0u;
+        for (yy = k * group; yy < (k + 1u) * group; yy++) {
+            for (xx = 0u; xx < win->width; xx++) {
+                a += test_px(area, x + xx, y + yy);
+                w += test_px(win, xx, yy);
+            }
+        }
+        total += a > w ? a - w : w - a;
+    }
+    return total;
+}
+
+/* Issue 14: FIXED with bounds, every position cut. A position rejected by
+   its bound before any pixel was summed (bound > T) must not be the
+   fallback while another summed pixels (bound <= T); when every position
+   was rejected so, the fallback is the smallest bound (then smallest y,
+   then x). Its SAD is the full one. (Before: the first position by the tie
+   rule, (0, 0), with "SAD 0".) */
+static void test_all_cut_fallback_is_no_bound_reject(void)
+{
+    test_rng_t r;
+    uint32_t n, some_summed = 0u, none_summed = 0u;
+    test_rng_seed(&r, 1414u);
+    for (n = 0; n < SSDA_TEST_CASES / 2u; n++) {
+        ssda_view_t area, win;
+        geom_t g;
+        ssda_match_config_t cfg;
+        ssda_match_result_t res;
+        uint32_t bx = 0, by = 0, x, y, mx = 0u, my = 0u;
+        uint64_t bsad = 0, minb = UINT64_MAX;
+        make_case(&r, &g, &area, &win);
+        test_best(&area, &win, &bx, &by, &bsad);
+        if (bsad == 0u) {
+            continue; /* a threshold below every SAD needs a minimum above 0 */
+        }
+        memset(&cfg, 0, sizeof cfg);
+        cfg.threshold = SSDA_THRESHOLD_FIXED;
+        cfg.fixed_threshold = test_rng_range(&r, 0, bsad - 1u); /* every position cut */
+        cfg.scan = (uint8_t)test_rng_range(&r, 0, 1);
+        cfg.order = (uint8_t)test_rng_range(&r, 0, 1);
+        cfg.predict_x = (int32_t)test_rng_range(&r, 0, 40);
+        cfg.predict_y = (int32_t)test_rng_range(&r, 0, 40);
+        cfg.flags = SSDA_MATCH_BOUNDS;
+        cfg.work = g_work;
+        cfg.work_size = sizeof g_work;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_EQUAL_UINT32(0u, res.completed);
+        TEST_ASSERT_FALSE(res.exact);
+        TEST_ASSERT_EQUAL_UINT64(test_sad(&area, &win, res.x, res.y), res.sad);
+        for (y = 0u; y + g.wh <= g.ah; y++) {
+            for (x = 0u; x + g.ww <= g.aw; x++) {
+                uint64_t b = bound_ref(&area, &win, x, y);
+                if (b < minb) {
+                    minb = b;
+                    mx = x;
+                    my = y;
+                }
+            }
+        }
+        if (minb <= cfg.fixed_threshold) {
+            TEST_ASSERT_TRUE(bound_ref(&area, &win, res.x, res.y) <= cfg.fixed_threshold);
+            some_summed++;
+        } else {
+            TEST_ASSERT_EQUAL_UINT32(mx, res.x);
+            TEST_ASSERT_EQUAL_UINT32(my, res.y);
+            none_summed++;
+        }
+    }
+    TEST_ASSERT_TRUE(some_summed > 0u); /* both cases exercised */
+    TEST_ASSERT_TRUE(none_summed > 0u);
 }
 
 /* The quality flags against the definitions of match.h, from the full SAD
@@ -324,6 +409,7 @@ int main(void)
     RUN_TEST(test_exact_modes_equal_brute_force);
     RUN_TEST(test_fixed_exact_when_any_position_completes);
     RUN_TEST(test_inexact_modes_report_consistent_results);
+    RUN_TEST(test_all_cut_fallback_is_no_bound_reject);
     RUN_TEST(test_quality_flags_equal_brute_force);
     return UNITY_END();
 }

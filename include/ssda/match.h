@@ -41,8 +41,14 @@ typedef enum {
     /* Constant threshold T = fixed_threshold: a position is cut once its
        partial SAD exceeds T. If any position completes, the best completed
        one is the true minimum (exact). If every position is cut, the result
-       is the position that summed the most pixels before its cut (ties by the
-       tie rule on the partial sum), flagged not exact (the paper's fallback). */
+       is the position that summed the most pixels before its cut (the
+       paper's fallback), ties by the smallest lower bound of its SAD known
+       at the cut (partial SAD plus, with bounds, the bound of the rows not
+       summed), then by the tie rule; flagged not exact, completed 0, and
+       reported with its full SAD (summed once more: L x M pixel ops). A
+       position rejected by its bound before any pixel was summed counts 0
+       pixels: it is the fallback only when every position was rejected so,
+       and then the one with the smallest bound. */
     SSDA_THRESHOLD_FIXED = 2,
     /* Barnea-Silverman increasing threshold, eq. 3:
        T(r) = lambda * (r + K * sqrt(r)), r = pixels summed so far.
@@ -85,8 +91,8 @@ typedef enum {
 /*
  * Flag: successive-elimination bounds (Li & Salari's SEA in the multilevel
  * form of Gao et al.). The window's rows are taken in groups of G = 4
- * (G = 1 for 16-bit windows wider than 16384 px; a last partial group is left
- * out). With A_k(x, y) the sum of the area pixels under group k and W_k the
+ * (G = 1 for 16-bit windows wider than 16384 px, G = M for windows of fewer
+ * than 4 rows; a last partial group is left out). With A_k(x, y) the sum of the area pixels under group k and W_k the
  * window's, the triangle inequality gives, at every position,
  *     sum_k |A_k(x, y) - W_k| <= SAD(x, y),
  * so a position is rejected from G-row sums alone, at one operation per group,
@@ -226,9 +232,10 @@ typedef struct {
 
 /* Outcome of one search. */
 typedef struct {
-    uint64_t sad;        /* SAD at (x, y); for an all-cut fallback the partial
-                            SAD at its cut */
-    uint64_t pixel_ops;  /* absolute differences computed, plus bound work */
+    uint64_t sad;        /* full SAD at (x, y), in every mode (an all-cut
+                            fallback's too: completed == 0, exact false) */
+    uint64_t pixel_ops;  /* absolute differences computed, plus bound work
+                            (and the fallback's full SAD) */
     uint32_t positions;  /* position evaluations (raster and predict scans visit
                             each position once; coarse may revisit) */
     uint32_t completed;  /* positions whose SAD was summed over all pixels */

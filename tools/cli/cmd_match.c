@@ -18,7 +18,8 @@ static const char help[] =
     "                      auto           automatic constant threshold: exact, fast\n"
     "                      none           every position summed in full (reference)\n"
     "                      fixed:T        constant threshold T (SAD units); exact if\n"
-    "                                     any position completes\n"
+    "                                     any position completes, else the position\n"
+    "                                     that summed the most pixels (the fallback)\n"
     "                      ramp:LAMBDA[:K]  Barnea-Silverman T(r) = LAMBDA (r + K sqrt r),\n"
     "                                     LAMBDA in SAD units per pixel, K default 2\n"
     "                      auto-ramp[:K]  automatic increasing threshold (eq. 4)\n"
@@ -31,7 +32,9 @@ static const char help[] =
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
     "  --json            print one JSON object instead of text (stdout; no FILE:\n"
     "                    redirect it):\n"
-    "                    {\"x\",\"y\",\"sad\",\"exact\",\"positions\",\"completed\",\"pixel_ops\",...}\n"
+    "                    {\"x\",\"y\",\"sad\",\"exact\",\"all_cut\",\"positions\",\"completed\",\"pixel_ops\",...}\n"
+    "                    sad is always the full SAD at (x, y); all_cut: every\n"
+    "                    position was cut (fixed, ramp) and (x, y) is the fallback\n"
     "  -h, --help        this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
@@ -192,6 +195,7 @@ static int print_json(const match_opts_t *o, const match_job_t *j, uint64_t brut
     cJSON_AddNumberToObject(doc, "y", j->res.y);
     json_out_add_u64(doc, "sad", j->res.sad);
     cJSON_AddBoolToObject(doc, "exact", j->res.exact);
+    cJSON_AddBoolToObject(doc, "all_cut", j->res.completed == 0u);
     json_out_add_u64(doc, "positions", j->res.positions);
     json_out_add_u64(doc, "completed", j->res.completed);
     json_out_add_u64(doc, "pixel_ops", j->res.pixel_ops);
@@ -217,7 +221,9 @@ static void print_text(const match_opts_t *o, const match_job_t *j, uint64_t npo
            o->search_path);
     printf("SAD:        %llu  (%s)\n", (unsigned long long)res->sad,
            res->exact ? "exact: the true minimum"
-                      : "not guaranteed to be the true minimum with this mode");
+           : res->completed == 0u
+               ? "full SAD of the fallback: every position was cut, not the minimum"
+               : "not guaranteed to be the true minimum with this mode");
     printf("work:       %llu pixel ops = %.2f %% of brute force (%llu); %u of %llu "
            "positions visited, %u summed in full\n",
            (unsigned long long)res->pixel_ops,

@@ -70,4 +70,27 @@ run 2 track a.png b.png --unique 1.2 --threshold auto-ramp && stderr_has "--uniq
 run 0 compare a.png b.png && grep -q "on 20 ok windows (of 64: 16 flat" out.txt ||
   fail "compare over ok windows: $(cat out.txt)"
 run 0 track a.png b.png --overlay o.png --quiet && [ -s o.png ] || fail "overlay with statuses"
+
+# issue 14 item 1: a fixed threshold below every SAD, bounds on (the
+# default). Every position is cut; positions rejected by their bound before
+# any pixel was summed do not win the fallback (it was x=0 y=0 "SAD 0"),
+# and the SAD reported is the full one at the position reported: the same
+# as a brute-force match of the search cropped there
+"$gen" texture ms.png --size 96x80 --seed 1
+"$gen" texture mw.png --size 16x16 --seed 99
+run 0 match ms.png mw.png --threshold fixed:100 --json && grep -q '"exact":false,"all_cut":true' out.txt ||
+  fail "all-cut fallback: $(cat out.txt)"
+fx=$(sed 's/.*"x":\([0-9]*\),.*/\1/' out.txt) fy=$(sed 's/.*"y":\([0-9]*\),.*/\1/' out.txt)
+fs=$(sed 's/.*"sad":\([0-9]*\),.*/\1/' out.txt)
+[ "$fx,$fy" != "0,0" ] || fail "the fallback is a position rejected by its bound: $(cat out.txt)"
+"$gen" crop ms.png mc.png "$fx,$fy,16,16"
+run 0 match mc.png mw.png --threshold none --json && grep -q "\"sad\":$fs," out.txt ||
+  fail "the fallback's SAD $fs is not the full SAD at ($fx, $fy): $(cat out.txt)"
+run 0 match ms.png mw.png --threshold fixed:100 && grep -q "SAD: *$fs  (full SAD of the fallback" out.txt ||
+  fail "text output does not label the fallback: $(cat out.txt)"
+run 0 match ms.png mw.png --threshold ramp:1 --json && grep -q '"all_cut":true' out.txt &&
+  fs=$(sed 's/.*"sad":\([0-9]*\),.*/\1/' out.txt) fx=$(sed 's/.*"x":\([0-9]*\),.*/\1/' out.txt) &&
+  fy=$(sed 's/.*"y":\([0-9]*\),.*/\1/' out.txt) && "$gen" crop ms.png mc.png "$fx,$fy,16,16" &&
+  run 0 match mc.png mw.png --threshold none --json && grep -q "\"sad\":$fs," out.txt ||
+  fail "ramp: the fallback's SAD is not the full SAD"
 finish
