@@ -75,7 +75,7 @@ int ssda__sad_full(const ssda__rows_t *area, const ssda__rows_t *win, uint32_t x
                    uint64_t *ops, uint64_t *sad)
 {
     uint64_t total = 0u; /* <= 65535^3 */
-    uint32_t i;
+    uint32_t i, pixels;
     for (i = 0u; i < win->height; i++) {
         const uint8_t *ap;
         const uint8_t *wp;
@@ -95,7 +95,8 @@ int ssda__sad_full(const ssda__rows_t *area, const ssda__rows_t *win, uint32_t x
 #endif
         total += ssda__sad_row_u8(ap, wp, win->width);
     }
-    *ops += (uint32_t)win->width * win->height; /* < 2^32 */
+    pixels = (uint32_t)win->width * win->height; /* < 2^32 */
+    *ops += pixels;
     *sad = total;
     return SSDA_OK;
 }
