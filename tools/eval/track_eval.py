@@ -277,14 +277,15 @@ def report_pair(pair, configs, ssda, tmp, csv_rows):
     if not has_truth:
         return
     searched = (w0["status"] != "edge") & (w0["status"] != "masked")
-    tex = searched & (w0["label"] == "textured")
-    if tex.any():
+    ok_t = (w0["status"] == "ok") & np.isfinite(w0["tx"]) & np.isfinite(w0["ty"])
+    if ok_t.any():
         print("\nMedian motion (what `ssda track` prints; FIRST -> SECOND, px): of the ok "
               "vectors, sub-pixel: " + "; ".join(
                   "ssda %s (%+.2f, %+.2f)" % (n, e["median"][0], e["median"][1])
                   for n, _, _, e in results) +
-              "; truth over the textured windows: (%+.2f, %+.2f)." % (
-                  float(np.median(w0["tx"][tex])), float(np.median(w0["ty"][tex]))))
+              "; truth over the windows `ssda %s` reports ok: (%+.2f, %+.2f)." % (
+                  results[0][0], float(np.median(w0["tx"][ok_t])),
+                  float(np.median(w0["ty"][ok_t]))))
     ok0 = w0["status"] == "ok"
     textured = searched & (w0["label"] == "textured")
     peers = [("OpenCV Farneback", farneback(pair, w0)),
