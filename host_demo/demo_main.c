@@ -120,7 +120,7 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
              "px\n            plus a vortex of 3.2 px, so the clouds also turn and shear; they "
              "brighten 4 %%;\n            noise sigma 2",
              p1, p2);
-    if (demo_track(c, &a, &b, &wind, -1, 16, 1, "clouds_overlay.png", label) != 0) {
+    if (demo_track(c, &a, &b, &wind, -1, 16, 0, "clouds_overlay.png", label) != 0) {
         goto done;
     }
     demo_heading(c, "2. Brightness change and outliers: correlation and relaxation (seed 003)");

@@ -1,5 +1,6 @@
 /* demo_track.c - grid tracking in the paper's modes: work, time, agreement
-   with brute force and with the known wind; the overlay picture. */
+   with brute force and with the known wind; what each window's status
+   says; the overlay picture. */
 #include "demo.h"
 #include "draw.h"
 #include "progress.h"
@@ -55,7 +56,8 @@ typedef struct {
     double secs;
 } mode_run_t;
 
-/* One mode; timed over repeats when a run is short, for a stable figure. */
+/* One mode; timed over repeats when a run is short, for a stable figure.
+   The uniqueness test runs in the exact modes (it needs exact SADs). */
 static int run_mode(const ssda_view_t *vf, const ssda_view_t *vs, ssda_track_config_t cfg,
                     const demo_mode_t *m, size_t count, void *work, size_t work_size,
                     mode_run_t *out)
@@ -66,8 +68,12 @@ static int run_mode(const ssda_view_t *vf, const ssda_view_t *vs, ssda_track_con
     cfg.match.scan = m->scan;
     cfg.match.flags = m->flags;
     cfg.predict = m->predict;
-    cfg.match.work = m->flags ? work : NULL;
-    cfg.match.work_size = m->flags ? work_size : 0;
+    if (m->scan != SSDA_SCAN_COARSE &&
+        (m->threshold == SSDA_THRESHOLD_AUTO || m->threshold == SSDA_THRESHOLD_NONE)) {
+        cfg.flags |= SSDA_TRACK_UNIQUE;
+    }
+    cfg.match.work = work;
+    cfg.match.work_size = work_size;
     for (rep = 0; rep < 5; rep++) {
         t0 = progress_now();
         e = ssda_track(vf, vs, &cfg, out->vec, count, &out->stats);
@@ -81,56 +87,51 @@ static int run_mode(const ssda_view_t *vf, const ssda_view_t *vs, ssda_track_con
     return e;
 }
 
-/* Largest of |dx - u|, |dy - v|, and the Euclidean error, against the wind
-   at the window's centre. */
+/* The wind at the window's centre, and the Chebyshev and Euclidean errors
+   of the whole-pixel and the sub-pixel vector against it. */
+typedef struct {
+    double u, v, cheb, eucl, eucl_sub;
+} wind_err_t;
+
 static void error_vs_wind(const demo_wind_t *w, const ssda_track_grid_t *g,
-                          const ssda_track_vector_t *v, double *cheb, double *eucl,
-                          double *u, double *vv)
+                          const ssda_track_vector_t *v, wind_err_t *e)
 {
     double cx = v->x + (g->win_w - 1) / 2.0, cy = v->y + (g->win_h - 1) / 2.0;
-    demo_wind_at(w, cx, cy, u, vv);
-    *cheb = fmax(fabs(v->dx - *u), fabs(v->dy - *vv));
-    *eucl = hypot(v->dx - *u, v->dy - *vv);
+    demo_wind_at(w, cx, cy, &e->u, &e->v);
+    e->cheb = fmax(fabs(v->dx - e->u), fabs(v->dy - e->v));
+    e->eucl = hypot(v->dx - e->u, v->dy - e->v);
+    e->eucl_sub = hypot(v->sub_dx_q8 / 256.0 - e->u, v->sub_dy_q8 / 256.0 - e->v);
 }
 
-/* The tracking options shared by every mode: step, the texture rule at
-   SECOND's mean (fill pixels left out), the fill value. */
-static void base_config(const gray_image_t *second, long mask, uint32_t step, int exclude,
-                        ssda_track_config_t *cfg)
+static int draw_status(uint8_t s)
 {
-    memset(cfg, 0, sizeof *cfg);
-    cfg->step_x = cfg->step_y = (uint16_t)step;
+    switch (s) {
+    case SSDA_TRACK_OK: return DRAW_OK;
+    case SSDA_TRACK_EXCLUDED: return DRAW_EXCLUDED;
+    case SSDA_TRACK_MASKED: return DRAW_MASKED;
+    case SSDA_TRACK_FLAT: return DRAW_FLAT;
+    case SSDA_TRACK_AMBIGUOUS: return DRAW_AMBIGUOUS;
+    case SSDA_TRACK_AT_LIMIT: return DRAW_AT_LIMIT;
+    default: return DRAW_EDGE;
+    }
+}
+
+/* The window counts of the reference run and what each status means. */
+static void print_statuses(const ssda_track_stats_t *st, const ssda_track_config_t *cfg,
+                           const ssda_track_grid_t *grid, int exclude)
+{
+    printf("   windows  %u: %u ok (searched, unique, inside the range), %u flat (no texture:\n"
+           "            not searched), %u ambiguous (another match as good), %u at the limit\n"
+           "            (best match on the border of the search area: the motion may be\n"
+           "            larger)",
+           st->windows, st->ok, st->flat, st->ambiguous, st->at_limit);
     if (exclude) {
-        cfg->flags = SSDA_TRACK_EXCLUDE;
-        cfg->texture_threshold = (uint16_t)mean_level(second, mask);
-        if (cfg->texture_threshold >= gray_image_max(second)) {
-            cfg->texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
-        }
+        printf(", %u excluded beforehand as all dark or all bright", st->excluded);
     }
-    if (mask >= 0) {
-        cfg->flags |= SSDA_TRACK_MASK;
-        cfg->mask_value = (uint16_t)mask;
-    }
-}
-
-static void print_grid(const ssda_track_grid_t *grid, const char *label)
-{
-    printf("   input    %s\n", label);
-    printf("   grid     %u x %u windows of %u x %u px every %u px, each searched in the %u x %u\n"
-           "            area around it in the first image (the seed's cloud tracking)\n",
-           grid->cols, grid->rows, grid->win_w, grid->win_h, grid->step_x, grid->search_w,
-           grid->search_h);
-}
-
-static void print_windows(const ssda_track_grid_t *grid, const ssda_track_config_t *cfg,
-                          const mode_run_t *run0, int exclude)
-{
-    printf("   windows  %u: %u tracked", run0->stats.windows, run0->stats.ok);
-    if (exclude) {
-        printf(", %u excluded beforehand as all dark or all bright", run0->stats.excluded);
-    }
-    printf(", %u masked,\n            %u at the edge (search area leaves the image)\n",
-           run0->stats.masked, run0->stats.edge);
+    printf(", %u masked, %u at the edge (search area leaves the image)\n", st->masked,
+           st->edge);
+    printf("   statuses are by design, not failures: only ok vectors are to be trusted;\n"
+           "            flat = mean absolute deviation under 1.25 grey levels\n");
     if (exclude) { /* many grey crosses look like failures; they are the paper's rule */
         printf("   excluded = by design (the seed's texture rule), not a failure: fewer than %u "
                "of a window's %u pixels on one side of brightness %u (the image mean)\n",
@@ -140,11 +141,11 @@ static void print_windows(const ssda_track_grid_t *grid, const ssda_track_config
     printf("\n");
 }
 
-/* Every mode's work, time, agreement with brute force and with the wind. */
-static void print_modes(const ssda_track_grid_t *grid, const mode_run_t *run,
+/* One row per mode: work, time, agreement with brute force and the wind. */
+static void print_modes(const mode_run_t *run, const ssda_track_grid_t *grid,
                         const demo_wind_t *wind)
 {
-    double brute_ops = (double)run[0].stats.pixel_ops;
+    const double brute_ops = (double)run[0].stats.pixel_ops;
     size_t i, k;
     /* header columns as wide as the rows' fields below */
     printf("   %-40s %18s %10s%14s%s\n", "mode", "work (pixel ops)", "time",
@@ -160,9 +161,9 @@ static void print_modes(const ssda_track_grid_t *grid, const mode_run_t *run,
             ok++;
             same += v->dx == r->dx && v->dy == r->dy;
             if (wind != NULL) {
-                double ch, eu, u, vv;
-                error_vs_wind(wind, grid, v, &ch, &eu, &u, &vv);
-                near += ch <= 1.0;
+                wind_err_t e;
+                error_vs_wind(wind, grid, v, &e);
+                near += e.cheb <= 1.0;
             }
         }
         printf("   %-40s %8.2f M %5.1f %% %7.2f ms %11.1f %%", modes[i].name,
@@ -176,79 +177,86 @@ static void print_modes(const ssda_track_grid_t *grid, const mode_run_t *run,
     }
 }
 
-/* The shown mode's vectors for the overlay (with the wind as truth).
-   *ok: its tracked windows; w[0], w[1]: within 1 and 2 px of the wind;
-   *sum_e: the sum of its Euclidean errors. */
-static void shown_vectors(const ssda_track_grid_t *grid, const mode_run_t *s,
-                          const demo_wind_t *wind, draw_vector_t *dv, size_t *ok, size_t w[2],
-                          double *sum_e)
+/* The shown mode in detail: accuracy of its ok vectors (whole and
+   sub-pixel), agreement with brute force; fills the overlay's vectors. */
+static void report_shown(const mode_run_t *run, const ssda_track_grid_t *grid,
+                         const demo_wind_t *wind, draw_vector_t *dv)
 {
-    size_t k;
+    const mode_run_t *s = &run[SHOWN];
+    const double brute_ops = (double)run[0].stats.pixel_ops;
+    size_t ok = 0, w1 = 0, same = 0, k;
+    double sum_e = 0.0, sum_sub = 0.0;
     for (k = 0; k < grid->count; k++) {
         const ssda_track_vector_t *v = &s->vec[k];
         dv[k].x = v->x + (grid->win_w - 1) / 2.0;
         dv[k].y = v->y + (grid->win_h - 1) / 2.0;
-        dv[k].dx = v->dx;
-        dv[k].dy = v->dy;
-        dv[k].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
-                       : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
-                       : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
-                                                          : DRAW_EDGE;
+        dv[k].dx = v->sub_dx_q8 / 256.0;
+        dv[k].dy = v->sub_dy_q8 / 256.0;
+        dv[k].status = draw_status(v->status);
         if (v->status != SSDA_TRACK_OK) {
             continue;
         }
-        (*ok)++;
+        ok++;
+        same += v->dx == run[0].vec[k].dx && v->dy == run[0].vec[k].dy;
         if (wind != NULL) {
-            double ch, eu, u, vv;
-            error_vs_wind(wind, grid, v, &ch, &eu, &u, &vv);
+            wind_err_t e;
+            error_vs_wind(wind, grid, v, &e);
             dv[k].has_truth = 1;
-            dv[k].tdx = u;
-            dv[k].tdy = vv;
-            w[0] += ch <= 1.0;
-            w[1] += ch <= 2.0;
-            *sum_e += eu;
+            dv[k].tdx = e.u;
+            dv[k].tdy = e.v;
+            w1 += e.cheb <= 1.0;
+            sum_e += e.eucl;
+            sum_sub += e.eucl_sub;
         }
     }
-}
-
-/* The shown mode in detail: accuracy against the wind, work saved,
-   agreement with brute force; its title and subtitle for the overlay. */
-static void print_shown(const ssda_track_grid_t *grid, const mode_run_t *run,
-                        const demo_wind_t *wind, draw_vector_t *dv, char *title, size_t tlen,
-                        char *sub, size_t slen)
-{
-    const mode_run_t *s = &run[SHOWN];
-    double brute_ops = (double)run[0].stats.pixel_ops, sum_e = 0.0;
-    size_t ok = 0, w[2] = {0, 0}, same = 0, k;
-    shown_vectors(grid, s, wind, dv, &ok, w, &sum_e);
     printf("\n");
     if (wind != NULL && ok > 0) {
-        printf("   accuracy %.1f %% of the tracked windows within 1 px of the true wind, "
-               "%.1f %% within 2 px;\n"
-               "            mean error %.2f px (vectors are whole pixels; the wind is "
-               "not)\n",
-               100.0 * (double)w[0] / (double)ok, 100.0 * (double)w[1] / (double)ok,
-               sum_e / (double)ok);
-    }
-    for (k = 0; k < grid->count; k++) {
-        same += s->vec[k].status == SSDA_TRACK_OK && s->vec[k].dx == run[0].vec[k].dx &&
-                s->vec[k].dy == run[0].vec[k].dy;
+        printf("   accuracy %.1f %% of the ok windows within 1 px of the true wind; mean error\n"
+               "            %.2f px with sub-pixel vectors (equiangular fit), %.2f px whole pixels\n",
+               100.0 * (double)w1 / (double)ok, sum_sub / (double)ok, sum_e / (double)ok);
     }
     printf("   saving   the automatic threshold with prediction summed %.1f %% of the "
            "brute-force\n            pixel differences and ",
            brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0);
     if (same == ok) {
-        printf("found the same minimum in every window (exact)\n");
+        printf("found the same minimum in every ok window (exact)\n");
     } else {
-        printf("agreed with brute force in %zu of %zu windows\n", same, ok);
+        printf("agreed with brute force in %zu of %zu ok windows\n", same, ok);
     }
-    snprintf(title, tlen, "ssda-demo: %s", wind ? "synthetic clouds moved by a "
-                                                  "known wind" : "your image pair");
-    snprintf(sub, slen,
-             "automatic threshold + prediction: %u windows tracked, work %.1f %% of brute "
+}
+
+static int draw_overlay(const demo_ctx_t *c, const gray_image_t *second, const draw_vector_t *dv,
+                        const ssda_track_grid_t *grid, const mode_run_t *run,
+                        const demo_wind_t *wind, long mask, uint32_t step,
+                        const char *overlay_name)
+{
+    const mode_run_t *s = &run[SHOWN];
+    const double brute_ops = (double)run[0].stats.pixel_ops;
+    draw_vectors_opts_t o;
+    char path[1024], title[256], sub[256], err[512];
+    snprintf(title, sizeof title, "ssda-demo: %s", wind ? "synthetic clouds moved by a "
+                                                          "known wind" : "your image pair");
+    snprintf(sub, sizeof sub,
+             "automatic threshold + prediction: %u ok windows, work %.1f %% of brute "
              "force%s",
              s->stats.ok, brute_ops > 0 ? 100.0 * (double)s->stats.pixel_ops / brute_ops : 0.0,
              wind ? "; cyan = true wind" : "");
+    memset(&o, 0, sizeof o);
+    o.title = title;
+    o.subtitle = sub;
+    o.grid_step = step;
+    o.truth_label = "true wind";
+    o.have_mask = mask >= 0;
+    o.mask_value = mask >= 0 ? (uint32_t)mask : 0u;
+    demo_path(c, overlay_name, path, sizeof path);
+    if (draw_vectors_png(path, second, dv, grid->count, &o, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "ssda-demo: %s\n", err);
+        return -1;
+    }
+    printf("   picture  %s\n            (yellow: ok vectors%s; other marks: the statuses, "
+           "named in the legend)\n",
+           path, wind ? ", cyan: true wind" : "");
+    return 0;
 }
 
 int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_t *second,
@@ -262,12 +270,22 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
     void *work = NULL;
     size_t work_size, i;
     draw_vector_t *dv = NULL;
-    draw_vectors_opts_t o;
     int rc = -1, e;
-    char path[1024], title[256], sub[256], err[512];
 
     memset(run, 0, sizeof run);
-    base_config(second, mask, step, exclude, &cfg);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.step_x = cfg.step_y = (uint16_t)step;
+    if (exclude) {
+        cfg.flags = SSDA_TRACK_EXCLUDE;
+        cfg.texture_threshold = (uint16_t)mean_level(second, mask);
+        if (cfg.texture_threshold >= gray_image_max(second)) {
+            cfg.texture_threshold = (uint16_t)(gray_image_max(second) - 1u);
+        }
+    }
+    if (mask >= 0) {
+        cfg.flags |= SSDA_TRACK_MASK;
+        cfg.mask_value = (uint16_t)mask;
+    }
     if (gray_image_view(first, &vf) != SSDA_OK || gray_image_view(second, &vs) != SSDA_OK ||
         ssda_track_grid(&cfg, (uint16_t)second->width, (uint16_t)second->height, &grid) !=
             SSDA_OK) {
@@ -276,7 +294,7 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
         return -1;
     }
     work_size = SSDA_TRACK_WORK_SIZE(grid.search_w, grid.search_h, grid.win_w, grid.win_h);
-    work = malloc(work_size);
+    work = malloc(work_size); /* malloc's alignment suits the 8 bytes it needs */
     dv = calloc(grid.count + 1u, sizeof *dv);
     for (i = 0; i < NMODES; i++) {
         run[i].vec = calloc(grid.count + 1u, sizeof *run[i].vec);
@@ -288,7 +306,12 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
         fprintf(stderr, "ssda-demo: out of memory\n");
         goto done;
     }
-    print_grid(&grid, label);
+
+    printf("   input    %s\n", label);
+    printf("   grid     %u x %u windows of %u x %u px every %u px, each searched in the %u x %u\n"
+           "            area around it in the first image (the seed's cloud tracking)\n",
+           grid.cols, grid.rows, grid.win_w, grid.win_h, grid.step_x, grid.search_w,
+           grid.search_h);
     for (i = 0; i < NMODES; i++) {
         e = run_mode(&vf, &vs, cfg, &modes[i], grid.count, work, work_size, &run[i]);
         if (e != SSDA_OK) {
@@ -296,23 +319,10 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
             goto done;
         }
     }
-    print_windows(&grid, &cfg, &run[0], exclude);
-    print_modes(&grid, run, wind);
-    print_shown(&grid, run, wind, dv, title, sizeof title, sub, sizeof sub);
-    memset(&o, 0, sizeof o);
-    o.title = title;
-    o.subtitle = sub;
-    o.grid_step = step;
-    o.truth_label = "true wind";
-    o.have_mask = mask >= 0;
-    o.mask_value = mask >= 0 ? (uint32_t)mask : 0u;
-    demo_path(c, overlay_name, path, sizeof path);
-    if (draw_vectors_png(path, second, dv, grid.count, &o, NULL, err, sizeof err) != 0) {
-        fprintf(stderr, "ssda-demo: %s\n", err);
-        goto done;
-    }
-    printf("   picture  %s  (yellow: SSDA vectors%s)\n", path, wind ? ", cyan: true wind" : "");
-    rc = 0;
+    print_statuses(&run[0].stats, &cfg, &grid, exclude);
+    print_modes(run, &grid, wind);
+    report_shown(run, &grid, wind, dv);
+    rc = draw_overlay(c, second, dv, &grid, run, wind, mask, step, overlay_name);
 done:
     for (i = 0; i < NMODES; i++) {
         free(run[i].vec);

@@ -61,6 +61,64 @@ void ssda__rows_sub(ssda__rows_t *sub, const ssda__rows_t *parent, uint32_t x, u
     sub->height = (uint16_t)h;
 }
 
+/* Bytes of the bounds tables (SSDA_MATCH_WORK_SIZE in 64 bits: in a 32-bit
+   size_t the macro wraps for areas near 65535 x 65535, over 4 GB of work,
+   e.g. 32783 x 32768 with a 16 x 16 window gives 128 bytes, and a wrapped
+   size would let the tables run past the buffer). (area_w - win_w + 1) *
+   area_h < 2^32; the total < 2^35. */
+static uint64_t bounds_bytes(uint32_t area_w, uint32_t area_h, uint32_t win_w, uint32_t win_h)
+{
+    return ((((uint64_t)area_w - win_w + 1u) * area_h) + 2u * (uint64_t)win_h) *
+           sizeof(uint32_t);
+}
+
+/* The quality options (match.h: SSDA_MATCH_UNIQUE, SSDA_MATCH_SUBPIXEL):
+   exact modes only, the ratio and radius in range, the list's room after
+   the bounds tables. SSDA_OK or the error ssda_match documents. */
+static int check_quality(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t area_h,
+                         uint32_t win_w, uint32_t win_h)
+{
+    const bool unique = (cfg->flags & SSDA_MATCH_UNIQUE) != 0u;
+    uint64_t need = SSDA_MATCH_UNIQUE_WORK;
+    if ((cfg->flags & (SSDA_MATCH_UNIQUE | SSDA_MATCH_SUBPIXEL)) == 0u) {
+        return SSDA_OK;
+    }
+    if (cfg->scan == (uint8_t)SSDA_SCAN_COARSE ||
+        (cfg->threshold != (uint8_t)SSDA_THRESHOLD_AUTO &&
+         cfg->threshold != (uint8_t)SSDA_THRESHOLD_NONE) ||
+        (unique && ((cfg->unique_q8 != 0u && (cfg->unique_q8 <= 256u || cfg->unique_q8 > 1024u)) ||
+                    cfg->unique_radius > SSDA_MATCH_MAX_UNIQUE_RADIUS))) {
+        return SSDA_ERR_ARG;
+    }
+#ifdef SSDA_CFG_NO_SUBPIXEL
+    if ((cfg->flags & SSDA_MATCH_SUBPIXEL) != 0u) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+#endif
+    if (!unique) {
+        return SSDA_OK;
+    }
+#ifdef SSDA_CFG_NO_UNIQUE
+    (void)need;
+    (void)area_w;
+    (void)area_h;
+    (void)win_w;
+    (void)win_h;
+    return SSDA_ERR_UNSUPPORTED;
+#else
+    if (cfg->work == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if ((cfg->flags & SSDA_MATCH_BOUNDS) != 0u) {
+        need += (bounds_bytes(area_w, area_h, win_w, win_h) + 7u) & ~(uint64_t)7u;
+    }
+    if ((uint64_t)cfg->work_size < need || (((uintptr_t)cfg->work) & 7u) != 0u) {
+        return SSDA_ERR_BUFFER;
+    }
+    return SSDA_OK;
+#endif
+}
+
 /* The options against the geometry: SSDA_OK or the error ssda_match
    documents for them. */
 static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t area_h,
@@ -68,7 +126,8 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
 {
     if (cfg->threshold > (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
         cfg->scan > (uint8_t)SSDA_SCAN_COARSE || cfg->order > (uint8_t)SSDA_ORDER_SPREAD ||
-        (cfg->flags & (uint8_t)~SSDA_MATCH_BOUNDS) != 0u) {
+        (cfg->flags & (uint8_t)~(SSDA_MATCH_BOUNDS | SSDA_MATCH_TIE_NEAREST |
+                                 SSDA_MATCH_UNIQUE | SSDA_MATCH_SUBPIXEL)) != 0u) {
         return SSDA_ERR_ARG;
     }
     if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP && cfg->lambda_q8 == 0u) {
@@ -114,21 +173,13 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
         if (cfg->work == NULL) {
             return SSDA_ERR_NULL;
         }
-        /* The macro's size in 64 bits: in a 32-bit size_t it wraps for
-           areas near 65535 x 65535 (over 4 GB of work, e.g. 32783 x 32768
-           with a 16 x 16 window gives 128 bytes), and a wrapped size would
-           let the bounds tables run past the buffer.
-           (area_w - win_w + 1) * area_h < 2^32; the total < 2^35. */
-        const uint64_t need =
-            ((((uint64_t)area_w - win_w + 1u) * area_h) + 2u * (uint64_t)win_h) *
-            sizeof(uint32_t);
-        if ((uint64_t)cfg->work_size < need ||
+        if ((uint64_t)cfg->work_size < bounds_bytes(area_w, area_h, win_w, win_h) ||
             (((uintptr_t)cfg->work) & (sizeof(uint32_t) - 1u)) != 0u) {
             return SSDA_ERR_BUFFER;
         }
     }
 #endif
-    return SSDA_OK;
+    return check_quality(cfg, area_w, area_h, win_w, win_h);
 }
 
 const ssda_match_config_t ssda__match_defaults; /* all zero */
@@ -184,6 +235,21 @@ int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t a
     plan->fixed_cut = UINT64_MAX;
     if (mode == (uint8_t)SSDA_THRESHOLD_FIXED && cfg->fixed_threshold < UINT64_MAX - 1u) {
         plan->fixed_cut = cfg->fixed_threshold + 1u;
+    }
+    plan->unique_radius = 0u;
+    plan->unique_q8 = 0u;
+    plan->list = NULL;
+    if ((cfg->flags & SSDA_MATCH_UNIQUE) != 0u) {
+        /* the list after the bounds tables, 8-byte aligned (its SADs) */
+        size_t off = 0u;
+        if ((cfg->flags & SSDA_MATCH_BOUNDS) != 0u) {
+            off = (size_t)((bounds_bytes(area_w, area_h, win_w, win_h) + 7u) & ~(uint64_t)7u);
+        }
+        plan->unique_radius = cfg->unique_radius != 0u ? cfg->unique_radius
+                                                       : (uint8_t)SSDA_MATCH_DEFAULT_UNIQUE_RADIUS;
+        plan->unique_q8 = cfg->unique_q8 != 0u ? cfg->unique_q8
+                                               : (uint16_t)SSDA_MATCH_DEFAULT_UNIQUE_Q8;
+        plan->list = (uint8_t *)cfg->work + off;
     }
     return SSDA_OK;
 }

@@ -9,16 +9,14 @@
  * position has to beat (the reference key).
  */
 #include "match_rows.h"
+#include "match_quality.h"
 #include "kernel/kernels.h"
 #include "fixmath.h"
 #include "compiler.h"
 
-/* A candidate ordered by the tie rule: (sad, y, x) lexicographically. */
-typedef struct {
-    uint64_t sad; /* <= 65535^3 < 2^48 */
-    uint32_t x;
-    uint32_t y;
-} cand_t;
+/* A candidate ordered by the tie rule: (sad, y, x) lexicographically, or
+   (sad, distance to the prediction, y, x) with SSDA_MATCH_TIE_NEAREST. */
+typedef ssda__cand_t cand_t;
 
 /* Features compiled in (include/ssda/config.h). */
 #if !defined(SSDA_CFG_NO_FIXED) || !defined(SSDA_CFG_NO_RAMP)
@@ -37,12 +35,18 @@ typedef struct {
     uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
     uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
+    cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
+    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+#ifndef SSDA_CFG_NO_UNIQUE
+    uint8_t nlist, cap;  /* entries in list, its capacity (2R+1)^2 + 1 <= 26 */
+#endif
     bool u8;             /* 8-bit samples (else 16-bit) */
     /* the plan's flags the per-position path tests, copied at the start
        (one load from the engine, not two through the plan) */
     bool use_ref;        /* positions are cut once they cannot beat ref */
     bool bounds;         /* successive elimination active */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
+    bool tie_near;       /* SSDA_MATCH_TIE_NEAREST */
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
@@ -58,7 +62,8 @@ typedef struct {
 #endif
     cand_t best, second; /* best two completed, by the tie rule */
 #ifdef ENGINE_FALLBACK
-    cand_t fb;           /* all-cut fallback: most pixels before its cut */
+    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
+                            sad is the lower bound known at the cut */
     uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
 #endif
     uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
@@ -66,17 +71,49 @@ typedef struct {
     uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
-static bool cand_less(const cand_t *a, const cand_t *b)
+static uint32_t clamp_pos(int32_t v, uint32_t n)
+{
+    if (v < 0) {
+        return 0u;
+    }
+    return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
+}
+
+/* Squared distance of (x, y) to the prediction clamped into the range:
+   < 2 * 2^32 (clamped here: ties are rare, the engine stays small). */
+static SSDA_ALWAYS_INLINE uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t tx = clamp_pos(e->px, e->nx), ty = clamp_pos(e->py, e->ny);
+    const uint32_t dx = x > tx ? x - tx : tx - x; /* < 2^16 */
+    const uint32_t dy = y > ty ? y - ty : ty - y;
+    const uint32_t sx = dx * dx; /* < 2^32: no 64-bit multiply on the M0+ */
+    const uint32_t sy = dy * dy;
+    return (uint64_t)sx + sy;
+}
+
+/* (ax, ay) before (bx, by) by the tie rule, SADs aside: nearer to the
+   prediction (SSDA_MATCH_TIE_NEAREST), then smaller y, then smaller x. */
+static SSDA_ALWAYS_INLINE bool pos_before(const engine_t *e, uint32_t ax, uint32_t ay,
+                                          uint32_t bx, uint32_t by)
+{
+    if (e->tie_near) {
+        const uint64_t da = dist2(e, ax, ay);
+        const uint64_t db = dist2(e, bx, by);
+        if (da != db) {
+            return da < db;
+        }
+    }
+    return ay < by || (ay == by && ax < bx);
+}
+
+static bool cand_less(const engine_t *e, const cand_t *a, const cand_t *b)
 {
     /* The analyzer takes a fetch returning > 0 (match_rows.h: 0 or < 0) as
        a completed position with its sum unset. */
     if (a->sad != b->sad) { /* NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult) */
         return a->sad < b->sad;
     }
-    if (a->y != b->y) {
-        return a->y < b->y;
-    }
-    return a->x < b->x;
+    return pos_before(e, a->x, a->y, b->x, b->y);
 }
 
 #ifndef SSDA_CFG_NO_RAMP
@@ -150,19 +187,23 @@ static uint32_t row_sad(const engine_t *e, const uint8_t *a, const uint8_t *w, u
 }
 
 #ifdef ENGINE_FALLBACK
-/* A position cut after `pixels` pixels with partial SAD `partial`: keep it
-   if it is the fallback so far (most pixels, then the tie rule). */
-static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint32_t pixels)
+/* A position cut after `pixels` pixels, with `low` the lower bound of its
+   SAD known at the cut (partial SAD plus the bound of the rows not summed;
+   the bound alone for a position rejected before any pixel): keep it if it
+   is the fallback so far (most pixels, then the smallest lower bound, then
+   the tie rule). A position rejected by its bound counts 0 pixels, so it
+   wins only when every position was rejected so (issue 14). */
+static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t low, uint32_t pixels)
 {
     if (!e->need_fb) {
         return; /* a mode whose first placement always completes */
     }
     if (e->have_fb && pixels == e->fb_pixels) {
         cand_t c;
-        c.sad = partial;
+        c.sad = low;
         c.x = x;
         c.y = y;
-        if (!cand_less(&c, &e->fb)) {
+        if (!cand_less(e, &c, &e->fb)) {
             return;
         }
     } else if (e->have_fb && pixels < e->fb_pixels) {
@@ -170,15 +211,15 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t partial, uint
     } else {
         /* the first cut, or one that went further: it becomes the fallback */
     }
-    e->fb.sad = partial;
+    e->fb.sad = low;
     e->fb.x = x;
     e->fb.y = y;
     e->fb_pixels = pixels;
     e->have_fb = true;
 }
-#define NOTE_CUT(e, x, y, partial, pixels) note_cut(e, x, y, partial, pixels)
+#define NOTE_CUT(e, x, y, low, pixels) note_cut(e, x, y, low, pixels)
 #else
-#define NOTE_CUT(e, x, y, partial, pixels) ((void)0)
+#define NOTE_CUT(e, x, y, low, pixels) ((void)0)
 #endif
 
 #ifndef SSDA_CFG_NO_BOUNDS
@@ -209,10 +250,12 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
 {
     uint64_t cut_at = e->fixed_cut;
     if (e->use_ref && e->ref != NULL) {
-        /* A position before ref in (y, x) wins a tie, so it needs sad <= ref. */
+        /* A position before ref by the tie rule wins a tie, so it needs
+           sad <= ref. With uniqueness (ref is the best: raster or predict
+           scan) every position within the ratio of the best completes. */
         const cand_t *ref = e->ref;
-        bool before = y < ref->y || (y == ref->y && x < ref->x);
-        uint64_t lim = ref->sad + (before ? 1u : 0u);
+        uint64_t lim = e->list != NULL ? e->loose
+                       : ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
         if (lim < cut_at) {
             cut_at = lim;
         }
@@ -252,7 +295,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
-            NOTE_CUT(e, x, y, 0u, 0u);
+            NOTE_CUT(e, x, y, rest, 0u);
             return 0;
         }
         if (e->row_step != 1u) {
@@ -291,7 +334,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
                 e->ops += n;
                 done += n;
                 if (done < e->L && partial + rest >= cut_at) {
-                    NOTE_CUT(e, x, y, partial, done);
+                    NOTE_CUT(e, x, y, partial + rest, done);
                     return 0;
                 }
             }
@@ -305,12 +348,12 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         }
         v = partial + rest;
         if (v >= cut_at) {
-            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
+            NOTE_CUT(e, x, y, v, (k + 1u) * e->L);
             return 0;
         }
 #ifndef SSDA_CFG_NO_RAMP
         if (ramp && ramp_cuts(e, v, (k + 1u) * e->L)) {
-            NOTE_CUT(e, x, y, partial, (k + 1u) * e->L);
+            NOTE_CUT(e, x, y, v, (k + 1u) * e->L);
             return 0;
         }
 #endif
@@ -318,6 +361,31 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     *sad = partial;
     return 1;
 }
+
+#ifndef SSDA_CFG_NO_UNIQUE
+/* Keep c among the cap smallest completed positions, ascending by the tie
+   rule (the largest goes when full). (2R+1)^2 + 1 entries always hold the
+   best position outside the final winner's square whenever it is within
+   the ratio: every such position completes, and at most (2R+1)^2 of the
+   entries lie in the square. */
+static void list_insert(engine_t *e, const cand_t *c)
+{
+    uint32_t i = e->nlist;
+    if (i == e->cap) {
+        if (!cand_less(e, c, &e->list[i - 1u])) {
+            return;
+        }
+        i--;
+    } else {
+        e->nlist++;
+    }
+    while (i > 0u && cand_less(e, c, &e->list[i - 1u])) {
+        e->list[i] = e->list[i - 1u];
+        i--;
+    }
+    e->list[i] = *c;
+}
+#endif
 
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
@@ -330,11 +398,22 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     e->completed++;
     c->x = x;
     c->y = y;
-    if (e->n_best == 0u || cand_less(c, &e->best)) {
+#ifndef SSDA_CFG_NO_UNIQUE
+    if (e->list != NULL) {
+        list_insert(e, c);
+    }
+#endif
+    if (e->n_best == 0u || cand_less(e, c, &e->best)) {
         e->second = e->best;
         e->best = *c;
         e->n_best = (uint8_t)(e->n_best < 2u ? e->n_best + 1u : 2u);
-    } else if (e->n_best == 1u || cand_less(c, &e->second)) {
+#ifndef SSDA_CFG_NO_UNIQUE
+        if (e->list != NULL) { /* c->sad < 2^48: the level < 2^50 */
+            /* NOLINTNEXTLINE(clang-analyzer-core.CallAndMessage): as in cand_less */
+            e->loose = ssda__mul_q8(c->sad, e->plan->unique_q8) + 1u;
+        }
+#endif
+    } else if (e->n_best == 1u || cand_less(e, c, &e->second)) {
         e->second = *c;
         e->n_best = 2u;
     } else {
@@ -369,13 +448,6 @@ static int scan_raster(engine_t *e)
 }
 
 #ifndef SSDA_CFG_NO_PREDICT
-static uint32_t clamp_pos(int32_t v, uint32_t n)
-{
-    if (v < 0) {
-        return 0u;
-    }
-    return (uint32_t)v >= n ? n - 1u : (uint32_t)v;
-}
 
 /* Visit the positions from (x0, y0) to (x1, y1) inclusive (one row or one
    column: one of the two ranges is a single value), clipped to the range.
@@ -488,7 +560,7 @@ static int hill_climb(engine_t *e, const cand_t *start)
                 e->ref = NULL; /* next dies here */
                 return done;
             }
-            if (done > 0 && cand_less(&c, &next)) {
+            if (done > 0 && cand_less(e, &c, &next)) {
                 next = c;
             }
         }
@@ -660,6 +732,71 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
 
 #endif
 
+/* The result of a finished scan, with the quality the plan asks for
+   (written only when every fetch succeeded). Out of line: its locals stay
+   off the frame that holds the engine during the scan. */
+static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
+{
+    const ssda_match_plan_t *plan = e->plan;
+    int16_t sx = 0, sy = 0;
+    uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+#ifdef ENGINE_FALLBACK
+    uint64_t fb_sad = 0u; /* the fallback's full SAD: <= 65535^3 */
+    if (e->n_best == 0u) { /* FIXED/RAMP, every position cut: have_fb */
+        int err = ssda__sad_full(e->area, e->win, e->fb.x, e->fb.y, &e->ops, &fb_sad);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+#endif
+#ifndef SSDA_CFG_NO_SUBPIXEL
+    if ((plan->flags & SSDA_MATCH_SUBPIXEL) != 0u) { /* exact modes: some position completed */
+#ifndef SSDA_CFG_NO_UNIQUE
+        const uint32_t nlist = e->nlist; /* the search's full SADs */
+#else
+        const uint32_t nlist = 0u;
+#endif
+        int err = ssda__subpixel(e->area, e->win, e->list, nlist, &e->best, e->nx, e->ny,
+                                 &e->ops, &sx, &sy);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+#endif
+#ifndef SSDA_CFG_NO_UNIQUE
+    if (e->list != NULL) { /* exact modes too */
+        uq = ssda__unique_q8(e->list, e->nlist, &e->best, plan->unique_q8,
+                             plan->unique_radius);
+    }
+#endif
+    result->sub_x_q8 = sx;
+    result->sub_y_q8 = sy;
+    result->unique_q8 = uq;
+#ifdef ENGINE_FALLBACK
+    if (e->n_best == 0u) {
+        /* every position cut (FIXED/RAMP): the paper's fallback, reported
+           with its full SAD (summed here; fb.sad is only a lower bound) */
+        result->sad = fb_sad;
+        result->x = (uint16_t)e->fb.x;
+        result->y = (uint16_t)e->fb.y;
+        result->exact = false;
+    } else
+#endif
+    {
+        result->sad = e->best.sad;
+        result->x = (uint16_t)e->best.x;
+        result->y = (uint16_t)e->best.y;
+        result->exact = plan->scan != (uint8_t)SSDA_SCAN_COARSE &&
+                        (plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                         plan->threshold == (uint8_t)SSDA_THRESHOLD_NONE ||
+                         plan->threshold == (uint8_t)SSDA_THRESHOLD_FIXED);
+    }
+    result->positions = e->positions;
+    result->completed = e->completed;
+    result->pixel_ops = e->ops;
+    return SSDA_OK;
+}
+
 int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
                      ssda_match_result_t *result)
@@ -683,11 +820,20 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.px = predict_x;
     e.py = predict_y;
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+#ifndef SSDA_CFG_NO_UNIQUE
+    if (plan->unique_radius != 0u) {
+        const uint32_t side = 2u * plan->unique_radius + 1u; /* 3 or 5 */
+        e.list = (cand_t *)plan->list;
+        e.cap = (uint8_t)(side * side + 1u);
+        e.loose = UINT64_MAX;
+    }
+#endif
     e.row_step = plan->row_step;
     e.fixed_cut = plan->fixed_cut;
     /* the mode's flags, derived from the plan */
     e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
     e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
+    e.tie_near = (plan->flags & SSDA_MATCH_TIE_NEAREST) != 0u;
 #ifdef ENGINE_FALLBACK
     e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
 #endif
@@ -720,26 +866,5 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     if (err != SSDA_OK) { /* NOLINT(readability-misleading-indentation) */
         return err;
     }
-#ifdef ENGINE_FALLBACK
-    if (e.n_best == 0u) {
-        /* every position cut (FIXED/RAMP): the paper's fallback */
-        result->sad = e.fb.sad;
-        result->x = (uint16_t)e.fb.x;
-        result->y = (uint16_t)e.fb.y;
-        result->exact = false;
-    } else
-#endif
-    {
-        result->sad = e.best.sad;
-        result->x = (uint16_t)e.best.x;
-        result->y = (uint16_t)e.best.y;
-        result->exact = plan->scan != (uint8_t)SSDA_SCAN_COARSE &&
-                        (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                         mode == (uint8_t)SSDA_THRESHOLD_NONE ||
-                         mode == (uint8_t)SSDA_THRESHOLD_FIXED);
-    }
-    result->positions = e.positions;
-    result->completed = e.completed;
-    result->pixel_ops = e.ops;
-    return SSDA_OK;
+    return finish(&e, result);
 }

@@ -77,6 +77,25 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
     return err;
 }
 
+/* The quality flags of every window's search: the tie rule toward the
+   prediction always; uniqueness when asked (ssda__match_plan refuses it
+   outside the exact modes); the sub-pixel fit unless turned off, in the
+   exact modes only (the fit needs exact SADs: elsewhere sub = whole). */
+static void set_quality(const ssda_track_config_t *cfg, ssda_match_config_t *m)
+{
+    m->flags |= SSDA_MATCH_TIE_NEAREST;
+    if ((cfg->flags & SSDA_TRACK_UNIQUE) != 0u) {
+        m->flags |= SSDA_MATCH_UNIQUE;
+        m->unique_q8 = cfg->unique_q8;
+        m->unique_radius = cfg->unique_radius;
+    }
+    if ((cfg->flags & SSDA_TRACK_NO_SUBPIXEL) == 0u && m->scan != (uint8_t)SSDA_SCAN_COARSE &&
+        (m->threshold == (uint8_t)SSDA_THRESHOLD_AUTO ||
+         m->threshold == (uint8_t)SSDA_THRESHOLD_NONE)) {
+        m->flags |= SSDA_MATCH_SUBPIXEL;
+    }
+}
+
 int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t first_w,
                      uint32_t first_h, uint32_t second_w, uint32_t second_h,
                      ssda_track_plan_t *plan)
@@ -91,7 +110,9 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
         return err;
     }
     if (cfg->predict > (uint8_t)SSDA_TRACK_PREDICT_MEDIAN ||
-        (cfg->flags & (uint8_t)~(SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK)) != 0u) {
+        (cfg->flags & (uint8_t)~(SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK | SSDA_TRACK_NO_FLAT |
+                                 SSDA_TRACK_UNIQUE | SSDA_TRACK_NO_SUBPIXEL)) != 0u ||
+        cfg->flat_q8 > 65535u * 256u) {
         return SSDA_ERR_ARG;
     }
     plan->predict = cfg->predict;
@@ -116,7 +137,12 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
         (plan->texture_threshold >= maxval || plan->texture_min_count > pixels / 2u)) {
         return SSDA_ERR_ARG;
     }
+    plan->flat_q8 = 0u;
+    if ((plan->flags & SSDA_TRACK_NO_FLAT) == 0u) {
+        plan->flat_q8 = cfg->flat_q8 != 0u ? cfg->flat_q8 : SSDA_TRACK_DEFAULT_FLAT_Q8;
+    }
     match = cfg->match;
+    set_quality(cfg, &match);
     if (plan->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
         if (match.scan == (uint8_t)SSDA_SCAN_COARSE) {
             return SSDA_ERR_ARG;

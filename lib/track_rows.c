@@ -4,6 +4,7 @@
  * window on sub-sources of the two images.
  */
 #include "track_rows.h"
+#include "fixmath.h"
 
 const ssda__track_origin_t ssda__track_origin_whole = {0u, 0u, 0u, 0u};
 
@@ -28,6 +29,7 @@ static int check_rows(const ssda__rows_t *r)
 /* What a pass over a rectangle's pixels found. */
 typedef struct {
     uint32_t bright; /* pixels > threshold, <= 65535^2 < 2^32 */
+    uint64_t sum;    /* the flat test: sum of the pixels, <= 65535^3 < 2^48 */
     bool masked;     /* some pixel == mask value */
 } scan_t;
 
@@ -69,17 +71,56 @@ static uint32_t count_above_u16(const uint16_t *p, uint32_t n, uint32_t thr)
     return c;
 }
 
+/* Sum of a span: <= 65535 * 65535 < 2^32. */
+static uint32_t sum_u8(const uint8_t *p, uint32_t n)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i];
+    }
+    return c;
+}
+
+static uint32_t sum_u16(const uint16_t *p, uint32_t n)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i];
+    }
+    return c;
+}
+
+/* Sum of |p - m| over a span, m <= 65535: <= 65535 * 65535 < 2^32. */
+static uint32_t absdev_u8(const uint8_t *p, uint32_t n, uint32_t m)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i] > m ? p[i] - m : m - p[i];
+    }
+    return c;
+}
+
+static uint32_t absdev_u16(const uint16_t *p, uint32_t n, uint32_t m)
+{
+    uint32_t i, c = 0u;
+    for (i = 0u; i < n; i++) {
+        c += p[i] > m ? p[i] - m : m - p[i];
+    }
+    return c;
+}
+
 /* Over all rows of src, one span per row: look for the mask value (if
-   mask) and count pixels above the texture threshold (if texture). Stops
-   at the first row holding the mask value (the status is then decided).
-   Returns SSDA_OK or a fetch error. */
+   mask), count pixels above the texture threshold (if texture), sum the
+   pixels (if sum). Stops at the first row holding the mask value (the
+   status is then decided). Returns SSDA_OK or a fetch error. */
 static int scan_pixels(const ssda__rows_t *src, const ssda_track_plan_t *p, bool mask,
-                       bool texture, scan_t *s, uint64_t *pixels_read)
+                       bool texture, bool sum, scan_t *s, uint64_t *pixels_read)
 {
     const uint32_t n = src->width;
     const bool u8 = src->format == (uint8_t)SSDA_PIX_U8;
     uint32_t y;
     s->bright = 0u;
+    s->sum = 0u;
     s->masked = false;
     for (y = 0u; y < src->height && !s->masked; y++) {
         const uint8_t *px;
@@ -97,8 +138,37 @@ static int scan_pixels(const ssda__rows_t *src, const ssda_track_plan_t *p, bool
             s->bright += u8 ? count_above_u8(px, n, p->texture_threshold)
                             : count_above_u16(q, n, p->texture_threshold);
         }
+        if (sum) {
+            s->sum += u8 ? sum_u8(px, n) : sum_u16(q, n);
+        }
         *pixels_read += n;
     }
+    return SSDA_OK;
+}
+
+/* The window's texture (track.h): floor(256 * sum |p - m| / n) with m the
+   mean rounded down, from a second pass. n < 2^32; the deviation sum
+   <= 65535 * n < 2^48, shifted < 2^56; the quotient <= 65535 * 256. */
+static int texture_q8(const ssda__rows_t *win, uint64_t sum, uint32_t *out,
+                      uint64_t *pixels_read)
+{
+    const uint32_t n = (uint32_t)win->width * win->height;
+    /* n >= 1: windows are at least 1 x 1 */
+    const uint32_t m = SSDA_DIV64_32(sum, n); /* NOLINT(clang-analyzer-core.DivideZero) */
+    uint64_t dev = 0u;
+    uint32_t y;
+    for (y = 0u; y < win->height; y++) {
+        const uint8_t *px;
+        int err = ssda__rows_get(win, 0u, y, win->width, &px);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        dev += win->format == (uint8_t)SSDA_PIX_U8
+                   ? absdev_u8(px, win->width, m)
+                   : absdev_u16((const uint16_t *)(const void *)px, win->width, m);
+        *pixels_read += win->width;
+    }
+    *out = SSDA_DIV64_32(dev << 8, n);
     return SSDA_OK;
 }
 
@@ -156,7 +226,97 @@ static void predict(const ssda_track_plan_t *p, const ssda_track_vector_t *out,
     }
 }
 
-/* Status and vector of window k; on OK also runs the search. */
+/* The tests on the window alone (mask, the seed's exclusion, flat), which
+   may decide its status before FIRST is read: *decided is then true. */
+static int window_tests(const ssda__rows_t *win, const ssda_track_plan_t *p,
+                        ssda_track_vector_t *v, ssda_track_stats_t *st, bool *decided)
+{
+    const bool mask = (p->flags & SSDA_TRACK_MASK) != 0u;
+    const bool texture = (p->flags & SSDA_TRACK_EXCLUDE) != 0u;
+    const uint32_t pixels = (uint32_t)win->width * win->height; /* < 2^32 */
+    scan_t s;
+    int err;
+    *decided = false;
+    if (!mask && !texture && p->flat_q8 == 0u) {
+        return SSDA_OK;
+    }
+    err = scan_pixels(win, p, mask, texture, p->flat_q8 != 0u, &s, &st->check_pixels);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    *decided = true;
+    if (s.masked) {
+        v->status = (uint8_t)SSDA_TRACK_MASKED;
+        return SSDA_OK;
+    }
+    /* dark = pixels - bright < min_count  <=>  bright > pixels - min_count
+       (min_count <= pixels / 2 when texture is on, so no wrap) */
+    if (texture &&
+        (s.bright < p->texture_min_count || s.bright > pixels - p->texture_min_count)) {
+        v->status = (uint8_t)SSDA_TRACK_EXCLUDED;
+        return SSDA_OK;
+    }
+    if (p->flat_q8 != 0u) {
+        err = texture_q8(win, s.sum, &v->texture_q8, &st->check_pixels);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        if (v->texture_q8 < p->flat_q8) {
+            v->status = (uint8_t)SSDA_TRACK_FLAT;
+            return SSDA_OK;
+        }
+    }
+    *decided = false;
+    return SSDA_OK;
+}
+
+/* Whether a placement lies on the border of the range along an axis with
+   n placements (an axis with one placement has no border). */
+static bool on_border(uint32_t pos, uint32_t n)
+{
+    return n > 1u && (pos == 0u || pos == n - 1u);
+}
+
+/* The vector and status of a searched window from its search result. */
+static void searched(const ssda_track_grid_t *g, const ssda_match_result_t *res,
+                     ssda_track_vector_t *v)
+{
+    const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
+    const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
+    v->sad = res->sad;
+    v->dx = (int32_t)hx - (int32_t)res->x;
+    v->dy = (int32_t)hy - (int32_t)res->y;
+    /* |dx| <= 65535: 256 dx fits; the offset is at most 128 */
+    v->sub_dx_q8 = v->dx * 256 - res->sub_x_q8;
+    v->sub_dy_q8 = v->dy * 256 - res->sub_y_q8;
+    v->unique_q8 = res->unique_q8;
+    v->exact = res->exact;
+    if (on_border(res->x, (uint32_t)g->search_w - g->win_w + 1u) ||
+        on_border(res->y, (uint32_t)g->search_h - g->win_h + 1u)) {
+        v->status = (uint8_t)SSDA_TRACK_AT_LIMIT;
+    } else if (res->unique_q8 != SSDA_MATCH_UNIQUE_NONE) {
+        v->status = (uint8_t)SSDA_TRACK_AMBIGUOUS;
+    } else {
+        v->status = (uint8_t)SSDA_TRACK_OK;
+    }
+}
+
+static void vector_init(ssda_track_vector_t *v, uint32_t wx, uint32_t wy)
+{
+    v->sad = 0u;
+    v->dx = 0;
+    v->dy = 0;
+    v->sub_dx_q8 = 0;
+    v->sub_dy_q8 = 0;
+    v->texture_q8 = 0u;
+    v->x = (uint16_t)wx;
+    v->y = (uint16_t)wy;
+    v->unique_q8 = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+    v->exact = false;
+    v->status = (uint8_t)SSDA_TRACK_EDGE;
+}
+
+/* Status and vector of window k; when no test decides it, the search. */
 static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
                         const ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
                         uint32_t row, uint32_t col1, const ssda__track_origin_t *o,
@@ -167,21 +327,13 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
     const uint32_t hy = ((uint32_t)g->search_h - g->win_h) / 2u;
     const uint32_t wx = g->roi_x + col * g->step_x; /* < second width <= 65535 */
     const uint32_t wy = g->roi_y + row * g->step_y;
-    const bool mask = (p->flags & SSDA_TRACK_MASK) != 0u;
-    const bool texture = (p->flags & SSDA_TRACK_EXCLUDE) != 0u;
     ssda__rows_t win, area;
     ssda_match_result_t res;
     int32_t pdx = 0, pdy = 0; /* predicted motion: none */
-    scan_t s;
+    bool decided;
     int err;
 
-    v->sad = 0u;
-    v->dx = 0;
-    v->dy = 0;
-    v->x = (uint16_t)wx;
-    v->y = (uint16_t)wy;
-    v->exact = false;
-    v->status = (uint8_t)SSDA_TRACK_EDGE;
+    vector_init(v, wx, wy);
     if (wx < hx || wy < hy || wx - hx + g->search_w > p->first_w ||
         wy - hy + g->search_h > p->first_h) {
         return SSDA_OK;
@@ -189,25 +341,13 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
     ssda__rows_sub(&win, second, wx - o->second_x, wy - o->second_y, g->win_w, g->win_h);
     ssda__rows_sub(&area, first, wx - hx - o->first_x, wy - hy - o->first_y, g->search_w,
                    g->search_h);
-    if (mask || texture) {
-        err = scan_pixels(&win, p, mask, texture, &s, &st->check_pixels);
-        if (err != SSDA_OK) {
-            return err;
-        }
-        if (s.masked) {
-            v->status = (uint8_t)SSDA_TRACK_MASKED;
-            return SSDA_OK;
-        }
-        /* dark = pixels - bright < min_count  <=>  bright > pixels - min_count
-           (min_count <= pixels / 2 when texture is on, so no wrap) */
-        if (texture && (s.bright < p->texture_min_count ||
-                        s.bright > (uint32_t)g->win_w * g->win_h - p->texture_min_count)) {
-            v->status = (uint8_t)SSDA_TRACK_EXCLUDED;
-            return SSDA_OK;
-        }
+    err = window_tests(&win, p, v, st, &decided);
+    if (err != SSDA_OK || decided) {
+        return err;
     }
-    if (mask) {
-        err = scan_pixels(&area, p, true, false, &s, &st->check_pixels);
+    if ((p->flags & SSDA_TRACK_MASK) != 0u) {
+        scan_t s;
+        err = scan_pixels(&area, p, true, false, false, &s, &st->check_pixels);
         if (err != SSDA_OK) {
             return err;
         }
@@ -219,17 +359,14 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
     if (p->predict != (uint8_t)SSDA_TRACK_PREDICT_NONE) {
         predict(p, out, col, row, col1, &pdx, &pdy);
     }
-    /* the predicted placement (zero motion without prediction, for a
-       PREDICT scan); |pd| <= 65535: no overflow; the engine clamps */
+    /* the predicted placement (zero motion without prediction): where a
+       PREDICT scan starts and what the tie rule is nearest to; |pd| <=
+       65535: no overflow; the engine clamps */
     err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy, &res);
     if (err != SSDA_OK) {
         return err;
     }
-    v->status = (uint8_t)SSDA_TRACK_OK;
-    v->sad = res.sad;
-    v->dx = (int32_t)hx - (int32_t)res.x;
-    v->dy = (int32_t)hy - (int32_t)res.y;
-    v->exact = res.exact;
+    searched(g, &res, v);
     add_sat(&st->pixel_ops, res.pixel_ops);
     add_sat(&st->positions, res.positions);
     add_sat(&st->completed, res.completed);
@@ -247,6 +384,9 @@ static void stats_zero(ssda_track_stats_t *st)
     st->excluded = 0u;
     st->masked = 0u;
     st->edge = 0u;
+    st->flat = 0u;
+    st->ambiguous = 0u;
+    st->at_limit = 0u;
 }
 
 int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
@@ -268,6 +408,9 @@ int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
             case SSDA_TRACK_OK: acc->ok++; break;
             case SSDA_TRACK_EXCLUDED: acc->excluded++; break;
             case SSDA_TRACK_MASKED: acc->masked++; break;
+            case SSDA_TRACK_FLAT: acc->flat++; break;
+            case SSDA_TRACK_AMBIGUOUS: acc->ambiguous++; break;
+            case SSDA_TRACK_AT_LIMIT: acc->at_limit++; break;
             default: acc->edge++; break;
             }
         }

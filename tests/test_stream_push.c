@@ -23,7 +23,8 @@ static uint8_t g_first8[IH][IW];
 static uint8_t g_dev[20000];
 static uint32_t g_arena[2048];
 static uint32_t g_ring[4096]; /* 16 KB */
-static uint32_t g_work[SSDA_MATCH_WORK_SIZE(40, 30, 11, 9) / 4u];
+/* the largest of the jobs' work (bounds, and the tracking jobs' uniqueness list) */
+static uint64_t g_work[(SSDA_MATCH_WORK_SIZE_UNIQUE(40, 32, 11, 9) + 7u) / 8u];
 static test_source_t g_tdev;
 #define MAX_WIN 160u
 static ssda_track_vector_t g_want[MAX_WIN], g_got[MAX_WIN];
@@ -192,6 +193,9 @@ static ssda_track_config_t track_config(uint32_t i)
         c.step_y = i % 2u ? 6 : 16; /* overlapping bands, and gaps between them */
         c.roi_y = 3;
         c.flags = SSDA_TRACK_MASK;
+        if (c.match.threshold == SSDA_THRESHOLD_AUTO || c.match.threshold == SSDA_THRESHOLD_NONE) {
+            c.flags |= SSDA_TRACK_UNIQUE; /* its list after the bounds tables */
+        }
         c.mask_value = 4095;
         c.match.flags = SSDA_MATCH_BOUNDS;
         c.match.work = g_work;
@@ -203,7 +207,9 @@ static ssda_track_config_t track_config(uint32_t i)
 static bool same_vector(const ssda_track_vector_t *a, const ssda_track_vector_t *b)
 {
     return a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
-           a->y == b->y && a->status == b->status && a->exact == b->exact;
+           a->y == b->y && a->status == b->status && a->exact == b->exact &&
+           a->sub_dx_q8 == b->sub_dx_q8 && a->sub_dy_q8 == b->sub_dy_q8 &&
+           a->texture_q8 == b->texture_q8 && a->unique_q8 == b->unique_q8;
 }
 
 /* Push one image of a tracking job; check each push's count against the

@@ -23,7 +23,7 @@ void tearDown(void) {}
 static uint16_t g_first[IH][IW], g_second[IH][IW];
 static uint8_t g_fdev[30000], g_sdev[30000];
 static uint32_t g_farena[3072], g_sarena[1536]; /* 12 KB, 6 KB */
-static uint32_t g_work[SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) / 4u];
+static uint64_t g_work[(SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) + 7u) / 8u];
 static test_source_t g_tf, g_ts;
 #define MAX_WIN 200u
 static ssda_track_vector_t g_want[MAX_WIN], g_got[MAX_WIN];
@@ -106,6 +106,9 @@ static ssda_track_config_t config(uint32_t i)
     c.match.fixed_threshold = 9000u;
     if (i >= 12u) { /* mask, texture, bounds, another geometry */
         c.flags = SSDA_TRACK_MASK | SSDA_TRACK_EXCLUDE;
+        if (c.match.threshold == SSDA_THRESHOLD_AUTO || c.match.threshold == SSDA_THRESHOLD_NONE) {
+            c.flags |= SSDA_TRACK_UNIQUE; /* its list after the bounds tables */
+        }
         c.mask_value = 4095u;
         c.texture_threshold = 1500u;
         c.match.flags = SSDA_MATCH_BOUNDS;
@@ -128,7 +131,9 @@ static ssda_track_config_t config(uint32_t i)
 static bool same_vector(const ssda_track_vector_t *a, const ssda_track_vector_t *b)
 {
     return a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
-           a->y == b->y && a->status == b->status && a->exact == b->exact;
+           a->y == b->y && a->status == b->status && a->exact == b->exact &&
+           a->sub_dx_q8 == b->sub_dx_q8 && a->sub_dy_q8 == b->sub_dy_q8 &&
+           a->texture_q8 == b->texture_q8 && a->unique_q8 == b->unique_q8;
 }
 
 /* Compare with ssda_track in RAM. Work counts must agree too unless

@@ -18,7 +18,7 @@ void tearDown(void) {}
 
 static uint16_t g_first[IMG * IMG];
 static uint16_t g_second[IMG * IMG];
-static uint32_t g_work[SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) / sizeof(uint32_t)];
+static uint64_t g_work[(SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) + 7u) / 8u];
 static ssda_track_vector_t g_ram[NMAX];
 static ssda_track_vector_t g_out[NMAX];
 
@@ -134,6 +134,10 @@ static void assert_same(const ssda_track_vector_t *x, const ssda_track_vector_t 
         TEST_ASSERT_EQUAL_UINT16(x[k].x, y[k].x);
         TEST_ASSERT_EQUAL_UINT16(x[k].y, y[k].y);
         TEST_ASSERT_EQUAL(x[k].exact, y[k].exact);
+        TEST_ASSERT_EQUAL_INT32(x[k].sub_dx_q8, y[k].sub_dx_q8);
+        TEST_ASSERT_EQUAL_INT32(x[k].sub_dy_q8, y[k].sub_dy_q8);
+        TEST_ASSERT_EQUAL_UINT32(x[k].texture_q8, y[k].texture_q8);
+        TEST_ASSERT_EQUAL_UINT16(x[k].unique_q8, y[k].unique_q8);
     }
 }
 
@@ -148,6 +152,7 @@ static void config_case(ssda_track_config_t *cfg, uint32_t c)
     cfg->predict = (uint8_t)(c % 3u);
     if (c & 2u) {
         cfg->match.flags = SSDA_MATCH_BOUNDS;
+        cfg->flags |= SSDA_TRACK_UNIQUE; /* its list after the bounds tables */
         cfg->match.work = g_work;
         cfg->match.work_size = sizeof g_work;
     }
@@ -238,6 +243,61 @@ static void test_fetch_errors_pass_through(void)
                     TEST_ASSERT_TRUE(written);
                     assert_same(&g_ram[k], &g_out[k], 1);
                 }
+            }
+        }
+    }
+}
+
+/* One window with every test and the whole quality (mask, flat test,
+   search with uniqueness, the sub-pixel fit's own sums): a fetch that
+   fails at any point of it, on either image, comes back unchanged and
+   writes nothing. */
+static void test_one_window_fails_at_every_fetch(void)
+{
+    ssda_track_config_t cfg;
+    ssda_track_stats_t st, st0;
+    ssda__rows_t ra, rb;
+    fake_src_t fa, fb;
+    uint32_t side, n, total[2], fits;
+    make_pair();
+    memset(&cfg, 0, sizeof cfg);
+    cfg.flags = SSDA_TRACK_MASK | SSDA_TRACK_UNIQUE;
+    cfg.mask_value = 255;
+    cfg.roi_x = 40;
+    cfg.roi_y = 24;
+    cfg.roi_w = 16;
+    cfg.roi_h = 16;
+    cfg.match.work = g_work;
+    cfg.match.work_size = sizeof g_work;
+    for (fits = 0; fits < 2u; fits++) {
+        /* with bounds the search's completed neighbours serve the fit; without
+           uniqueness the fit sums all four itself */
+        cfg.match.flags = fits ? 0u : SSDA_MATCH_BOUNDS;
+        cfg.flags = (uint8_t)(fits ? SSDA_TRACK_MASK : (SSDA_TRACK_MASK | SSDA_TRACK_UNIQUE));
+        fake_init(&fa, &ra, g_first, SSDA_PIX_U8);
+        fake_init(&fb, &rb, g_second, SSDA_PIX_U8);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__track_rows(&ra, &rb, &cfg, g_ram, NMAX, NULL));
+        TEST_ASSERT_EQUAL_UINT8(SSDA_TRACK_OK, g_ram[0].status);
+        TEST_ASSERT_TRUE(g_ram[0].texture_q8 > 0u);
+        total[0] = fa.fetches;
+        total[1] = fb.fetches;
+        for (side = 0; side < 2u; side++) {
+#ifdef SSDA_TEST_SMALL
+            const uint32_t step = total[side] / 60u + 1u; /* emulated boards: a sample */
+#else
+            const uint32_t step = 1u;
+#endif
+            for (n = 1; n <= total[side]; n += step) {
+                fake_init(&fa, &ra, g_first, SSDA_PIX_U8);
+                fake_init(&fb, &rb, g_second, SSDA_PIX_U8);
+                (side ? &fb : &fa)->fail_at = n;
+                (side ? &fb : &fa)->fail_code = -77;
+                memset(g_out, 0xA5, sizeof g_out);
+                memset(&st, 0x5A, sizeof st);
+                memcpy(&st0, &st, sizeof st);
+                TEST_ASSERT_EQUAL_INT(-77, ssda__track_rows(&ra, &rb, &cfg, g_out, NMAX, &st));
+                TEST_ASSERT_EQUAL_MEMORY(&st0, &st, sizeof st);
+                TEST_ASSERT_EACH_EQUAL_HEX8(0xA5, g_out, sizeof g_out[0]);
             }
         }
     }
@@ -337,6 +397,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_streamed_equals_ram);
     RUN_TEST(test_fetch_errors_pass_through);
+    RUN_TEST(test_one_window_fails_at_every_fetch);
     RUN_TEST(test_strips_equal_whole_grid);
     RUN_TEST(test_row_source_argument_errors);
     return UNITY_END();

@@ -23,7 +23,8 @@
  *
  * The minimal cores measured by tools/budget.sh (docs/target.md) set:
  *   search: all SSDA_CFG_NO_* of the search (exact AUTO and NONE thresholds,
- *           raster scan, row order, 8-bit views)
+ *           raster scan, row order, 8-bit views; no uniqueness, no sub-pixel
+ *           fit)
  *   pitch:  all SSDA_CFG_NO_PITCH_* (streamed AMDF with early exit,
  *           voicing, the dip-run choice and its octave check, V-shaped
  *           interpolation)
@@ -72,6 +73,14 @@
 /* No 16-bit images in the search and the stream sources (views of
    SSDA_PIX_U16 are still valid views). */
 /* #define SSDA_CFG_NO_U16 */
+
+/* No uniqueness (SSDA_MATCH_UNIQUE, SSDA_TRACK_UNIQUE: the list of the
+   smallest completed positions and the ratio cut). */
+/* #define SSDA_CFG_NO_UNIQUE */
+
+/* No sub-pixel fit (SSDA_MATCH_SUBPIXEL); tracking then needs
+   SSDA_TRACK_NO_SUBPIXEL. */
+/* #define SSDA_CFG_NO_SUBPIXEL */
 
 /* ---- pitch (pitch.h) ---- */
 

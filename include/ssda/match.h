@@ -10,9 +10,11 @@
  * 0-based, x right, y down; 0 <= x <= L'-L, 0 <= y <= M'-M.
  *
  * TIE RULE: the best position has the smallest SAD; among equal SADs the
- * smallest y, then the smallest x. In the exact modes (SSDA_THRESHOLD_AUTO and
- * SSDA_THRESHOLD_NONE with the raster or predict scan) every scan, pixel order,
- * bound option and kernel returns the same (x, y, sad).
+ * smallest y, then the smallest x (with SSDA_MATCH_TIE_NEAREST: the one
+ * nearest to the prediction first, as tracking does). In the exact modes
+ * (SSDA_THRESHOLD_AUTO and SSDA_THRESHOLD_NONE with the raster or predict
+ * scan) every scan, pixel order, bound option and kernel returns the same
+ * (x, y, sad), and the same quality (SSDA_MATCH_UNIQUE, SSDA_MATCH_SUBPIXEL).
  *
  * Overflow: widths and heights are at most 65535, samples at most 65535, so
  * one window row's SAD is at most 65535 * 65535 = 4 294 836 225 < 2^32 and is
@@ -39,8 +41,14 @@ typedef enum {
     /* Constant threshold T = fixed_threshold: a position is cut once its
        partial SAD exceeds T. If any position completes, the best completed
        one is the true minimum (exact). If every position is cut, the result
-       is the position that summed the most pixels before its cut (ties by the
-       tie rule on the partial sum), flagged not exact (the paper's fallback). */
+       is the position that summed the most pixels before its cut (the
+       paper's fallback), ties by the smallest lower bound of its SAD known
+       at the cut (partial SAD plus, with bounds, the bound of the rows not
+       summed), then by the tie rule; flagged not exact, completed 0, and
+       reported with its full SAD (summed once more: L x M pixel ops). A
+       position rejected by its bound before any pixel was summed counts 0
+       pixels: it is the fallback only when every position was rejected so,
+       and then the one with the smallest bound. */
     SSDA_THRESHOLD_FIXED = 2,
     /* Barnea-Silverman increasing threshold, eq. 3:
        T(r) = lambda * (r + K * sqrt(r)), r = pixels summed so far.
@@ -83,8 +91,8 @@ typedef enum {
 /*
  * Flag: successive-elimination bounds (Li & Salari's SEA in the multilevel
  * form of Gao et al.). The window's rows are taken in groups of G = 4
- * (G = 1 for 16-bit windows wider than 16384 px; a last partial group is left
- * out). With A_k(x, y) the sum of the area pixels under group k and W_k the
+ * (G = 1 for 16-bit windows wider than 16384 px, G = M for windows of fewer
+ * than 4 rows; a last partial group is left out). With A_k(x, y) the sum of the area pixels under group k and W_k the
  * window's, the triangle inequality gives, at every position,
  *     sum_k |A_k(x, y) - W_k| <= SAD(x, y),
  * so a position is rejected from G-row sums alone, at one operation per group,
@@ -102,6 +110,60 @@ typedef enum {
  */
 #define SSDA_MATCH_BOUNDS 0x01u
 
+/*
+ * Flag: the tie rule of tracking. Among equal SADs the position nearest to
+ * the prediction (predict_x, predict_y), clamped into the range as the
+ * PREDICT scan clamps it, wins: the smallest (x - px)^2 + (y - py)^2, then
+ * the smallest y, then the smallest x. Any scan; the exact modes still
+ * return the minimum (it only decides between equal SADs). Cost: on equal
+ * SADs, two squared distances.
+ */
+#define SSDA_MATCH_TIE_NEAREST 0x02u
+
+/*
+ * Flag: uniqueness, exact. Besides the best position, the best SAD among
+ * positions outside the (2R+1) x (2R+1) square centred on it (R =
+ * unique_radius) is found whenever it is at most unique_q8 / 256 times the
+ * best SAD (floor(unique_q8 * sad / 256)); result.unique_q8 is then
+ * floor(256 * that SAD / sad), in 256 .. unique_q8 (256 when both are 0),
+ * else SSDA_MATCH_UNIQUE_NONE: no other minimum comes that close.
+ * How: positions are cut at the ratio times the best SAD instead of the best
+ * SAD, so every position within the ratio is summed in full, and the
+ * (2R+1)^2 + 1 smallest completed positions are kept in the work buffer (at
+ * most (2R+1)^2 of them lie in the square, so the best outside it is always
+ * kept). Cost: the positions within the ratio are summed in full instead of
+ * being cut after a few rows (about 10 % more pixel_ops on textured image
+ * pairs, docs/tracking.md). Exact modes only (AUTO or NONE; raster or
+ * predict scan); needs SSDA_MATCH_UNIQUE_WORK bytes of work buffer (after
+ * the bounds tables: SSDA_MATCH_WORK_SIZE_UNIQUE).
+ */
+#define SSDA_MATCH_UNIQUE 0x04u
+/* result.unique_q8 when no position outside the square is within the ratio */
+#define SSDA_MATCH_UNIQUE_NONE 0xFFFFu
+/* Defaults, chosen from data (docs/tracking.md): ratio 1.10 in Q8.8
+   (282 / 256 = 1.1016) and radius 2 (a 5 x 5 square). */
+#define SSDA_MATCH_DEFAULT_UNIQUE_Q8 282u
+#define SSDA_MATCH_DEFAULT_UNIQUE_RADIUS 2u
+/* The largest radius, and the bytes of the list of the smallest completed
+   positions: (2 * 2 + 1)^2 + 1 = 26 entries of 16 bytes. */
+#define SSDA_MATCH_MAX_UNIQUE_RADIUS 2u
+#define SSDA_MATCH_UNIQUE_WORK 416u
+
+/*
+ * Flag: sub-pixel position. After the search, the SADs l, c, r of the best
+ * position and its two neighbours on each axis (from the search when it
+ * summed them in full, else summed now) give an equiangular (V-shaped) fit:
+ *     offset = (l - r) / (2 (max(l, r) - c)),  |offset| <= 1/2 px,
+ * the exact minimum of a symmetric V through the three points (a SAD, a sum
+ * of absolute differences, grows linearly on each side of its minimum; a
+ * parabola suits squared differences and pulls SAD estimates toward whole
+ * pixels). result.sub_x_q8, sub_y_q8: the offset in Q8.8 px (-128 .. 128),
+ * rounded half away from zero; 0 on an axis where the best position is on
+ * the border of the range (no neighbour) or all three SADs are equal.
+ * Exact modes only. Cost: at most 4 window SADs.
+ */
+#define SSDA_MATCH_SUBPIXEL 0x08u
+
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
    area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
    size_t is 32 bits the macro wraps for jobs needing 4 GB or more (areas
@@ -110,6 +172,13 @@ typedef enum {
 #define SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h)                   \
     (((((size_t)(area_w) - (size_t)(win_w)) + 1u) * (size_t)(area_h) +       \
       2u * (size_t)(win_h)) * sizeof(uint32_t))
+
+/* Bytes of work buffer for SSDA_MATCH_BOUNDS and SSDA_MATCH_UNIQUE together
+   (the bounds tables rounded up to 8 bytes, then the list; enough for either
+   flag alone too). Wraps like SSDA_MATCH_WORK_SIZE. */
+#define SSDA_MATCH_WORK_SIZE_UNIQUE(area_w, area_h, win_w, win_h)            \
+    (((SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h) + 7u) & ~(size_t)7u) + \
+     (size_t)SSDA_MATCH_UNIQUE_WORK)
 
 /* Default K (safety factor of eqs. 3 and 4) in Q8.8: 2.0, the seed's value. */
 #define SSDA_DEFAULT_K_Q8 512u
@@ -124,15 +193,20 @@ typedef struct {
     uint8_t threshold;        /* ssda_threshold_t */
     uint8_t scan;             /* ssda_scan_t */
     uint8_t order;            /* ssda_order_t */
-    uint8_t flags;            /* SSDA_MATCH_BOUNDS or 0 */
+    uint8_t flags;            /* SSDA_MATCH_BOUNDS | _TIE_NEAREST | _UNIQUE | _SUBPIXEL */
     uint16_t k_q8;            /* K of eqs. 3/4, Q8.8, 0..65535 (0 = SSDA_DEFAULT_K_Q8) */
     uint16_t coarse_step;     /* SSDA_SCAN_COARSE grid step, px (0 = 8) */
     uint32_t lambda_q8;       /* RAMP: lambda of eq. 3, SAD units per pixel, Q24.8 */
     uint64_t fixed_threshold; /* FIXED: T, SAD units */
-    int32_t predict_x;        /* PREDICT: predicted top-left x in area coordinates; */
-    int32_t predict_y;        /*   any value, clamped into the valid range */
-    void *work;               /* SSDA_MATCH_BOUNDS: caller buffer, 4-byte aligned, */
-    size_t work_size;         /*   >= SSDA_MATCH_WORK_SIZE(...) bytes; else unused */
+    int32_t predict_x;        /* PREDICT, TIE_NEAREST: predicted top-left x in area */
+    int32_t predict_y;        /*   coordinates; any value, clamped into the range */
+    uint16_t unique_q8;       /* UNIQUE: ratio, Q8.8, 257 .. 1024 (0 = 282, 1.10) */
+    uint8_t unique_radius;    /* UNIQUE: square radius R, 1 or 2 (0 = 2) */
+    void *work;               /* BOUNDS: caller buffer, 4-byte aligned, >=
+                                 SSDA_MATCH_WORK_SIZE(...) bytes; UNIQUE: 8-byte
+                                 aligned, >= SSDA_MATCH_UNIQUE_WORK bytes, or with
+                                 BOUNDS >= SSDA_MATCH_WORK_SIZE_UNIQUE(...) */
+    size_t work_size;         /* bytes of work; else unused */
 } ssda_match_config_t;
 
 /*
@@ -150,19 +224,26 @@ typedef struct {
     uint16_t coarse_step; /* SSDA_SCAN_COARSE grid step (default resolved) */
     uint8_t threshold;    /* ssda_threshold_t */
     uint8_t scan;         /* ssda_scan_t */
-    uint8_t flags;        /* SSDA_MATCH_BOUNDS or 0 */
+    uint8_t flags;        /* SSDA_MATCH_* flags as given */
+    uint8_t unique_radius; /* SSDA_MATCH_UNIQUE: R (resolved); 0 = no uniqueness */
+    uint16_t unique_q8;   /* SSDA_MATCH_UNIQUE: the ratio (resolved) */
+    void *list;           /* SSDA_MATCH_UNIQUE: the list, in the work buffer */
 } ssda_match_plan_t;
 
 /* Outcome of one search. */
 typedef struct {
-    uint64_t sad;        /* SAD at (x, y); for an all-cut fallback the partial
-                            SAD at its cut */
-    uint64_t pixel_ops;  /* absolute differences computed, plus bound work */
+    uint64_t sad;        /* full SAD at (x, y), in every mode (an all-cut
+                            fallback's too: completed == 0, exact false) */
+    uint64_t pixel_ops;  /* absolute differences computed, plus bound work
+                            (and the fallback's full SAD) */
     uint32_t positions;  /* position evaluations (raster and predict scans visit
                             each position once; coarse may revisit) */
     uint32_t completed;  /* positions whose SAD was summed over all pixels */
     uint16_t x;          /* best top-left column in the area */
     uint16_t y;          /* best top-left row in the area */
+    int16_t sub_x_q8;    /* SSDA_MATCH_SUBPIXEL: the minimum lies at x + sub_x_q8 / 256 */
+    int16_t sub_y_q8;    /*   and y + sub_y_q8 / 256 (-128 .. 128); else 0 */
+    uint16_t unique_q8;  /* SSDA_MATCH_UNIQUE: see the flag; else SSDA_MATCH_UNIQUE_NONE */
     bool exact;          /* true: (x, y, sad) is the true minimum by the tie rule */
 } ssda_match_result_t;
 
@@ -173,15 +254,19 @@ typedef struct {
  *   cfg:          options; NULL means all defaults (AUTO, raster, rows).
  *   result:       written on success only.
  * Returns SSDA_OK, or without writing *result:
- *   SSDA_ERR_NULL     area, window or result NULL; bounds requested with a
- *                     NULL work buffer
+ *   SSDA_ERR_NULL     area, window or result NULL; bounds or uniqueness
+ *                     requested with a NULL work buffer
  *   SSDA_ERR_SIZE/_STRIDE/_FORMAT  invalid views (see ssda_view_check);
  *                     SSDA_ERR_SIZE also when the window is larger than the area
  *   SSDA_ERR_FORMAT   area and window formats differ
  *   SSDA_ERR_ARG      unknown threshold/scan/order/flags value, or RAMP with
- *                     lambda_q8 == 0
- *   SSDA_ERR_BUFFER   bounds requested with work_size below the macro, or a
- *                     misaligned work buffer
+ *                     lambda_q8 == 0; UNIQUE or SUBPIXEL with a threshold
+ *                     other than AUTO and NONE or with the COARSE scan;
+ *                     unique_q8 not 0 and outside 257 .. 1024; unique_radius > 2
+ *   SSDA_ERR_BUFFER   bounds or uniqueness requested with work_size below
+ *                     what they need (macros above), or a misaligned work buffer
+ *   SSDA_ERR_UNSUPPORTED  UNIQUE or SUBPIXEL in a build without them
+ *                     (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL)
  */
 int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result);

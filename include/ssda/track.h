@@ -28,11 +28,52 @@
  *   SSDA_TRACK_MASKED    (flag SSDA_TRACK_MASK) the window holds mask_value;
  *   SSDA_TRACK_EXCLUDED  (flag SSDA_TRACK_EXCLUDE) the window has no texture
  *                        by the seed's rule (below);
+ *   SSDA_TRACK_FLAT      the window's texture (texture_q8, below) is under
+ *                        flat_q8: nothing in it to match (no echo, clear
+ *                        sky, nodata); found from the window alone, its
+ *                        area is never read (SSDA_TRACK_NO_FLAT: no test);
  *   SSDA_TRACK_MASKED    (flag SSDA_TRACK_MASK) the search area holds
  *                        mask_value (a fill pixel could attract or repel
  *                        the match, so the vector would not be trustworthy);
- *   SSDA_TRACK_OK        searched; dx, dy, sad, exact are valid.
- * Only OK windows are searched. Excluded windows' areas are never read.
+ *   searched, then:
+ *   SSDA_TRACK_AT_LIMIT  the best placement lies on the border of the
+ *                        placement range (dx or dy at its extreme, -8 or
+ *                        +8 for 16 in 32; an axis with a single placement
+ *                        has no border): the true motion may be that or
+ *                        larger, so the vector is not trusted;
+ *   SSDA_TRACK_AMBIGUOUS (flag SSDA_TRACK_UNIQUE) a placement outside the
+ *                        (2R+1) x (2R+1) square around the best has a SAD
+ *                        within unique_q8 / 256 of the best one's
+ *                        (SSDA_MATCH_UNIQUE): another match about as good;
+ *   SSDA_TRACK_OK        the vector can be trusted as far as these tests
+ *                        tell.
+ * AT_LIMIT, AMBIGUOUS and OK windows are searched (dx, dy, sub_dx_q8,
+ * sub_dy_q8, sad, unique_q8, exact valid); the others are not. Only OK
+ * vectors feed the prediction of later windows.
+ *
+ * TEXTURE (texture_q8): the mean absolute deviation of the window's pixels
+ * from their mean rounded down, floor(256 * sum |p - m| / n) with
+ * m = floor(sum p / n): Q24.8 sample units, <= 65535 * 256. Two passes over
+ * the window (2 n pixel reads, in check_pixels). Default level 1.25 sample
+ * units (flat_q8 = 320), chosen from data (docs/tracking.md): above the
+ * deviation of sensor noise of about 1 grey level, below that of the
+ * weakest textures the search still matches. For data whose noise is
+ * larger in sample units (16-bit sensors), set flat_q8 to about its
+ * noise's deviation; the uniqueness test catches noisy flat windows the
+ * level lets through, after a search.
+ *
+ * TIE RULE: among equal SADs, the placement nearest to the predicted one
+ * (SSDA_MATCH_TIE_NEAREST: squared distance, then y, then x), where the
+ * prediction is the neighbours' vector (below) or zero motion with
+ * SSDA_TRACK_PREDICT_NONE. Where several placements tie, tracking so keeps
+ * the motion of its neighbours, or none, instead of the top-left placement
+ * (the largest motion, +8, +8 for 16 in 32).
+ *
+ * SUB-PIXEL MOTION (sub_dx_q8, sub_dy_q8, Q24.8 px, same sign as dx, dy):
+ * dx - offset of the equiangular fit of SSDA_MATCH_SUBPIXEL, per axis; 256 *
+ * dx where no fit is possible (the border of the range, all three SADs
+ * equal) and with SSDA_TRACK_NO_SUBPIXEL or a threshold mode other than
+ * AUTO and NONE (the fit needs exact SADs).
  *
  * TEXTURE EXCLUSION (the seed, section 3: windows that are all clear or all
  * cloud are "excluded beforehand automatically by setting a suitable
@@ -54,7 +95,8 @@
  * window's search starts at the vector predicted from OK neighbours already
  * solved, through SSDA_SCAN_PREDICT, so a good prediction lowers the
  * automatic threshold at once. In the exact modes (SSDA_THRESHOLD_AUTO,
- * SSDA_THRESHOLD_NONE) prediction changes only the work, never a vector.
+ * SSDA_THRESHOLD_NONE) prediction changes the work, and which of several
+ * equal minima wins (the tie rule above), never the SAD of a vector.
  *
  * The library reads pixels only; nothing is allocated. See docs/tracking.md.
  */
@@ -78,7 +120,10 @@ typedef enum {
     SSDA_TRACK_OK = 0,       /* searched: vector valid */
     SSDA_TRACK_EXCLUDED = 1, /* textureless window (SSDA_TRACK_EXCLUDE) */
     SSDA_TRACK_MASKED = 2,   /* window or area holds mask_value (SSDA_TRACK_MASK) */
-    SSDA_TRACK_EDGE = 3      /* search area would leave FIRST */
+    SSDA_TRACK_EDGE = 3,     /* search area would leave FIRST */
+    SSDA_TRACK_FLAT = 4,     /* texture below flat_q8: not searched */
+    SSDA_TRACK_AMBIGUOUS = 5, /* another placement within the uniqueness ratio */
+    SSDA_TRACK_AT_LIMIT = 6  /* best placement on the border of the range */
 } ssda_track_status_t;
 
 /* Prediction of each window's vector from solved neighbours. */
@@ -100,11 +145,22 @@ typedef enum {
 /* Flags. */
 #define SSDA_TRACK_EXCLUDE 0x01u /* exclude textureless windows (rule above) */
 #define SSDA_TRACK_MASK 0x02u    /* windows/areas holding mask_value are MASKED */
+#define SSDA_TRACK_NO_FLAT 0x04u /* no texture test: no window is FLAT */
+/* uniqueness test: AMBIGUOUS windows (SSDA_MATCH_UNIQUE; needs match.work,
+   SSDA_TRACK_WORK_SIZE bytes, and the AUTO or NONE threshold) */
+#define SSDA_TRACK_UNIQUE 0x08u
+#define SSDA_TRACK_NO_SUBPIXEL 0x10u /* no sub-pixel fit: sub_d*_q8 = 256 * d* */
+
+/* Default flat level, Q24.8 sample units: mean absolute deviation 1.25. */
+#define SSDA_TRACK_DEFAULT_FLAT_Q8 320u
 
 /*
  * Tracking options. A zero-filled struct is valid: 16 x 16 windows, 32 x 32
  * areas, step 16, the whole SECOND image, AUTO threshold with raster scan,
- * no prediction, no exclusion, no mask.
+ * no prediction, no exclusion, no mask; the flat test at 1.25, the sub-pixel
+ * fit; no uniqueness test (it needs a work buffer: for vectors a tracking
+ * unit can trust, set SSDA_TRACK_UNIQUE and match.work, as `ssda track`
+ * does).
  */
 typedef struct {
     uint16_t win_w, win_h;       /* window size, px (0 = 16) */
@@ -124,10 +180,18 @@ typedef struct {
     uint32_t texture_min_count;  /* SSDA_TRACK_EXCLUDE: pixels needed on each side
                                     of the threshold, 2 * count <= win_w * win_h
                                     (0 = win_w * win_h / 16, at least 1) */
+    uint32_t flat_q8;            /* FLAT below this texture, Q24.8 sample units,
+                                    <= 65535 * 256 (0 = 320, i.e. 1.25) */
+    uint16_t unique_q8;          /* SSDA_TRACK_UNIQUE: ratio, Q8.8, 257 .. 1024
+                                    (0 = 282, 1.10) */
+    uint8_t unique_radius;       /* SSDA_TRACK_UNIQUE: square radius 1 or 2 (0 = 2) */
     /* Search options for every window (see match.h). predict_x/predict_y
        are ignored (set per window). With a prediction mode other than
        NONE, scan must be RASTER or PREDICT and is run as PREDICT.
-       SSDA_MATCH_BOUNDS needs work >= SSDA_TRACK_WORK_SIZE(...) bytes. */
+       SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need work >=
+       SSDA_TRACK_WORK_SIZE(...) bytes, 8-byte aligned. The quality flags
+       of the search are set by tracking: TIE_NEAREST always, SUBPIXEL and
+       UNIQUE from the flags above (flags given here are kept). */
     ssda_match_config_t match;
 } ssda_track_config_t;
 
@@ -152,30 +216,42 @@ typedef struct {
     ssda_track_grid_t grid;
     uint32_t texture_threshold; /* < the format's maximum */
     uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 */
+    uint32_t flat_q8;           /* resolved; 0: no flat test */
     uint16_t mask_value;        /* <= the format's maximum */
     uint16_t first_w, first_h;  /* FIRST's size (the EDGE test) */
     uint8_t predict;            /* ssda_track_predict_t */
-    uint8_t flags;              /* SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK */
+    uint8_t flags;              /* SSDA_TRACK_* flags */
 } ssda_track_plan_t;
 
 /* Result for one window. */
+/* Result for one window. "Searched": OK, AMBIGUOUS, AT_LIMIT. */
 typedef struct {
-    uint64_t sad;    /* OK: SAD at the match (< 2^48); else 0 */
-    int32_t dx, dy;  /* OK: motion FIRST -> SECOND, px (see GEOMETRY); else 0 */
+    uint64_t sad;    /* searched: SAD at the match (< 2^48); else 0 */
+    int32_t dx, dy;  /* searched: motion FIRST -> SECOND, px (see GEOMETRY); else 0 */
+    int32_t sub_dx_q8, sub_dy_q8; /* searched: sub-pixel motion, Q24.8 px (SUB-PIXEL
+                                     MOTION above); else 0 */
+    uint32_t texture_q8; /* the window's texture, Q24.8 (TEXTURE above), once
+                            measured (the flat test on, the window tested);
+                            else 0 */
     uint16_t x, y;   /* window top-left in SECOND, px */
+    uint16_t unique_q8; /* searched with SSDA_TRACK_UNIQUE: the ratio of
+                           SSDA_MATCH_UNIQUE (AMBIGUOUS) or
+                           SSDA_MATCH_UNIQUE_NONE; else SSDA_MATCH_UNIQUE_NONE */
     uint8_t status;  /* ssda_track_status_t */
-    bool exact;      /* OK: ssda_match's exact flag; else false */
+    bool exact;      /* searched: ssda_match's exact flag; else false */
 } ssda_track_vector_t;
 
 /* Totals over one call. Counts saturate at UINT64_MAX (unreachable in
    practice: it would take decades of computation). */
 typedef struct {
-    uint64_t pixel_ops;    /* sum of ssda_match pixel_ops over OK windows */
+    uint64_t pixel_ops;    /* sum of ssda_match pixel_ops over searched windows
+                              (the sub-pixel fit's sums included) */
     uint64_t positions;    /* sum of positions evaluated */
     uint64_t completed;    /* sum of positions summed in full */
-    uint64_t check_pixels; /* pixels read by the mask and texture tests */
+    uint64_t check_pixels; /* pixels read by the mask, exclusion and flat tests */
     uint32_t windows;      /* grid windows (= grid count) */
     uint32_t ok, excluded, masked, edge; /* windows per status */
+    uint32_t flat, ambiguous, at_limit;
 } ssda_track_stats_t;
 
 /* Windows along one grid axis: region length len, window side win, step. */
@@ -196,10 +272,10 @@ typedef struct {
     (SSDA_TRACK_GRID_COUNT(roi_w, roi_h, win_w, win_h, step_x, step_y) *      \
      sizeof(ssda_track_vector_t))
 
-/* Bytes of match work buffer SSDA_MATCH_BOUNDS needs (one, reused by
-   every window). */
+/* Bytes of match work buffer SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need
+   (one, reused by every window; 8-byte aligned). */
 #define SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h)                \
-    SSDA_MATCH_WORK_SIZE(search_w, search_h, win_w, win_h)
+    SSDA_MATCH_WORK_SIZE_UNIQUE(search_w, search_h, win_w, win_h)
 
 /*
  * Resolve defaults and lay out the grid of cfg on a SECOND image of
@@ -225,18 +301,26 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
  *             k = row * cols + col. Entries past the grid are not touched.
  *   stats:     totals, or NULL.
  * Returns SSDA_OK, or without writing out or stats:
- *   SSDA_ERR_NULL     first, second or out NULL; bounds requested with a
- *                     NULL work buffer
+ *   SSDA_ERR_NULL     first, second or out NULL; bounds or SSDA_TRACK_UNIQUE
+ *                     requested with a NULL work buffer
  *   SSDA_ERR_SIZE/_STRIDE/_FORMAT  invalid views; SSDA_ERR_SIZE also for the
  *                     geometry errors of ssda_track_grid
  *   SSDA_ERR_FORMAT   first and second formats differ
  *   SSDA_ERR_ARG      unknown predict value or flags; mask_value or
  *                     texture_threshold beyond the format's range;
- *                     2 * texture_min_count > win_w * win_h; COARSE scan with
- *                     prediction; and every SSDA_ERR_ARG of ssda_match
- *   SSDA_ERR_BUFFER   out_count below the grid count; bounds work buffer
- *                     below SSDA_TRACK_WORK_SIZE or misaligned
- * Work: for each OK window, one ssda_match over a search_w x search_h area.
+ *                     2 * texture_min_count > win_w * win_h; flat_q8 >
+ *                     65535 * 256; COARSE scan with prediction;
+ *                     SSDA_TRACK_UNIQUE with a threshold other than AUTO and
+ *                     NONE or the COARSE scan; and every SSDA_ERR_ARG of
+ *                     ssda_match (unique_q8, unique_radius)
+ *   SSDA_ERR_BUFFER   out_count below the grid count; bounds or uniqueness
+ *                     work buffer below SSDA_TRACK_WORK_SIZE or misaligned
+ *   SSDA_ERR_UNSUPPORTED  uniqueness or the sub-pixel fit in a build without
+ *                     them (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL: set
+ *                     SSDA_TRACK_NO_SUBPIXEL there)
+ * Work: for each window not FLAT, EXCLUDED, MASKED or EDGE, one ssda_match
+ * over a search_w x search_h area (and at most 4 window SADs for the
+ * sub-pixel fit); 2 window passes for the flat test.
  */
 int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
                const ssda_track_config_t *cfg, ssda_track_vector_t *out,

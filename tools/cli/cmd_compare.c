@@ -12,7 +12,8 @@ static void help(void)
 {
     fputs("usage: ssda compare FIRST.png SECOND.png [track options]\n"
           "\n"
-          "Track as `ssda track` does, then search every ok window again by exhaustive\n"
+          "Track as `ssda track` does, then search every ok window (only those: flat,\n"
+          "ambiguous and at_limit windows are left out of the counts) again by exhaustive\n"
           "normalised cross-correlation (NCC, the maximum the seed's FFT correlation\n"
           "finds) over the same area of the same (pre-processed) images. Prints the share\n"
           "of windows whose SSDA vector is within 0, 1 and 2 px of the NCC vector\n"
@@ -163,7 +164,7 @@ static int write_outputs(const track_opts_t *o, const char *first, const char *s
         snprintf(title, sizeof title, "ssda compare  %s -> %s", cli_basename(first),
                  cli_basename(second));
         snprintf(sub, sizeof sub,
-                 "SSDA vs exhaustive NCC on %u windows: within 0 px %.0f %%, 1 px %.0f %%, "
+                 "SSDA vs exhaustive NCC on %u ok windows: within 0 px %.0f %%, 1 px %.0f %%, "
                  "2 px %.0f %%",
                  ok, PCT(c->within[0]), PCT(c->within[1]), PCT(c->within[2]));
         if ((f = cli_outputs_open(&out, o->overlay_path)) == NULL ||
@@ -183,13 +184,16 @@ static void print_summary(const track_opts_t *o, const track_result_t *r, const 
     uint64_t brute = track_brute_ops(r);
     uint32_t ok = c->ok;
     printf("SSDA vs exhaustive normalised cross-correlation on %u ok windows "
-           "(of %u; window %ux%u, search %ux%u):\n",
-           ok, r->grid.count, r->grid.win_w, r->grid.win_h, r->grid.search_w, r->grid.search_h);
+           "(of %u: %u flat, %u ambiguous, %u at_limit, %u excluded, %u masked, %u edge left "
+           "out; window %ux%u, search %ux%u):\n",
+           ok, r->grid.count, r->stats.flat, r->stats.ambiguous, r->stats.at_limit,
+           r->stats.excluded, r->stats.masked, r->stats.edge, r->grid.win_w, r->grid.win_h,
+           r->grid.search_w, r->grid.search_h);
     printf("  within 0 px: %4u  %5.1f %%\n", c->within[0], PCT(c->within[0]));
     printf("  within 1 px: %4u  %5.1f %%\n", c->within[1], PCT(c->within[1]));
     printf("  within 2 px: %4u  %5.1f %%\n", c->within[2], PCT(c->within[2]));
     printf("time: SSDA %.2f ms (%.2f %% of brute-force pixel ops), NCC %.2f ms",
-           1e3 * r->secs, brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0,
+           1e3 * r->secs, brute ? 100.0 * (double)track_work_ops(r) / (double)brute : 0.0,
            1e3 * c->secs);
     if (threads > 1u) {
         printf(" on %u threads", threads);

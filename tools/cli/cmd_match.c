@@ -23,7 +23,8 @@ static const char help[] =
     "                      auto           automatic constant threshold: exact, fast\n"
     "                      none           every position summed in full (reference)\n"
     "                      fixed:T        constant threshold T (SAD units); exact if\n"
-    "                                     any position completes\n"
+    "                                     any position completes, else the position\n"
+    "                                     that summed the most pixels (the fallback)\n"
     "                      ramp:LAMBDA[:K]  Barnea-Silverman T(r) = LAMBDA (r + K sqrt r),\n"
     "                                     LAMBDA in SAD units per pixel, K default 2\n"
     "                      auto-ramp[:K]  automatic increasing threshold (eq. 4)\n"
@@ -36,8 +37,11 @@ static const char help[] =
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
     "  --json            print one JSON object instead of text (stdout; no FILE:\n"
     "                    redirect it):\n"
-    "                    {\"x\",\"y\",\"sad\",\"rho\",\"metric\",\"exact\",\"positions\",\"completed\",\n"
-    "                    \"pixel_ops\",...}: sad and rho at the best placement whatever the metric\n"
+    "                    {\"x\",\"y\",\"sad\",\"rho\",\"metric\",\"exact\",\"all_cut\",\"positions\",\n"
+    "                    \"completed\",\"pixel_ops\",...}: sad and rho at the best placement\n"
+    "                    whatever the metric; sad is always the full SAD at (x, y);\n"
+    "                    all_cut: every position was cut (fixed, ramp) and (x, y) is\n"
+    "                    the fallback\n"
     "  -h, --help        this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
@@ -267,6 +271,7 @@ static int print_json(const match_opts_t *o, const match_job_t *j, uint64_t brut
     }
     cJSON_AddStringToObject(doc, "metric", o->metric == 0 ? "sad" : o->metric == 1 ? "ncc" : "absncc");
     cJSON_AddBoolToObject(doc, "exact", j->res.exact);
+    cJSON_AddBoolToObject(doc, "all_cut", o->metric == 0 && j->res.completed == 0u);
     json_out_add_u64(doc, "positions", j->res.positions);
     json_out_add_u64(doc, "completed", j->res.completed);
     json_out_add_u64(doc, "pixel_ops", j->res.pixel_ops);
@@ -297,7 +302,9 @@ static void print_text(const match_opts_t *o, const match_job_t *j, uint64_t npo
     } else {
         printf("SAD:        %llu  (%s)\n", (unsigned long long)res->sad,
                res->exact ? "exact: the true minimum"
-                          : "not guaranteed to be the true minimum with this mode");
+               : res->completed == 0u
+                   ? "full SAD of the fallback: every position was cut, not the minimum"
+                   : "not guaranteed to be the true minimum with this mode");
         if ((uint32_t)j->w_img.width * j->w_img.height <= SSDA_NCC_MAX_PIXELS) {
             printf("rho there:  %.6f\n", j->rho_q30 / 1073741824.0);
         }

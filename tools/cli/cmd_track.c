@@ -19,38 +19,16 @@ static void help(void)
     fputs(track_opts_help, stdout);
     fputs("  -h, --help        this text\n"
           "\n"
-          "JSON: {\"windows\":[{\"x\",\"y\",\"dx\",\"dy\",\"sad\",\"status\",\"exact\"}...],\n"
-          "       \"stats\":{\"pixel_ops\",\"bytes_read\",\"brute_force_ops\",...}, \"grid\",...}\n"
-          "status: ok, excluded (no texture), masked (fill value), edge (area leaves FIRST).\n"
+          "JSON: {\"windows\":[{\"x\",\"y\",\"dx\",\"dy\",\"sub_dx\",\"sub_dy\",\"sad\",\"texture\",\n"
+          "       \"unique\",\"status\",\"exact\"}...], \"stats\":{\"pixel_ops\",\"check_pixels\",\n"
+          "       \"brute_force_ops\",\"ok\",\"flat\",...}, \"grid\",...}\n"
+          "status: ok (trust it), flat (no texture, not searched), ambiguous (another\n"
+          "match as good), at_limit (best match on the border of the search: the motion\n"
+          "may be larger), excluded (--exclude), masked (fill value), edge (area leaves\n"
+          "FIRST). dx, dy, sub_dx, sub_dy are valid for ok, ambiguous and at_limit; the\n"
+          "summary, its median motion and the overlay's arrows use ok vectors only.\n"
           "Exit codes: 0 ok, 1 bad input, 2 usage.\n",
           stdout);
-}
-
-static int cmp_i32(const void *a, const void *b)
-{
-    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
-    return (x > y) - (x < y);
-}
-
-/* Median of the OK windows' dx (axis 0) or dy (axis 1). */
-static int32_t median_component(const track_result_t *r, int axis)
-{
-    int32_t *v = malloc((r->grid.count + 1u) * sizeof *v), m = 0;
-    uint32_t k, n = 0;
-    if (v == NULL) {
-        return 0;
-    }
-    for (k = 0; k < r->grid.count; k++) {
-        if (r->vec[k].status == SSDA_TRACK_OK) {
-            v[n++] = axis == 0 ? r->vec[k].dx : r->vec[k].dy;
-        }
-    }
-    if (n > 0) {
-        qsort(v, n, sizeof *v, cmp_i32);
-        m = v[n / 2];
-    }
-    free(v);
-    return m;
 }
 
 /* --json and --overlay, all or nothing. */
@@ -73,11 +51,11 @@ static int write_outputs(const track_opts_t *o, const char *first, const char *s
                  cli_basename(second));
         snprintf(sub, sizeof sub,
                  "window %ux%u, search %ux%u, step %u, threshold %s%s:  %u ok, "
-                 "median motion (%+d, %+d) px,  work %.1f %% of brute force",
+                 "median (%+.2f, %+.2f) px,  work %.1f %% of brute force",
                  r->grid.win_w, r->grid.win_h, r->grid.search_w, r->grid.search_h,
                  r->grid.step_x, tname, o->grad ? ", grad" : "", r->stats.ok,
-                 (int)median_component(r, 0), (int)median_component(r, 1),
-                 brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0);
+                 track_median_motion(r, 0), track_median_motion(r, 1),
+                 brute ? 100.0 * (double)track_work_ops(r) / (double)brute : 0.0);
         if ((f = cli_outputs_open(&out, o->overlay_path)) == NULL ||
             track_write_overlay("track", f, o->overlay_path, r, o, NULL, NULL, title, sub) != 0) {
             rc = CLI_INPUT;
@@ -96,16 +74,23 @@ static void print_summary(const track_opts_t *o, const track_result_t *r)
     printf("%u window%s (%u x %u grid; window %ux%u, search %ux%u, step %ux%u)\n", r->grid.count,
            r->grid.count == 1 ? "" : "s", r->grid.cols, r->grid.rows, r->grid.win_w,
            r->grid.win_h, r->grid.search_w, r->grid.search_h, r->grid.step_x, r->grid.step_y);
-    printf("status:  %u ok, %u excluded, %u masked, %u edge\n", r->stats.ok, r->stats.excluded,
+    printf("status:  %u ok, %u flat, %u ambiguous, %u at_limit, %u excluded, %u masked, "
+           "%u edge\n",
+           r->stats.ok, r->stats.flat, r->stats.ambiguous, r->stats.at_limit, r->stats.excluded,
            r->stats.masked, r->stats.edge);
     if (r->stats.ok > 0) {
-        printf("motion:  median dx=%+d dy=%+d px (FIRST -> SECOND)\n",
-               (int)median_component(r, 0), (int)median_component(r, 1));
-        printf("work:    %llu pixel ops = %.2f %% of brute force (%llu); threshold %s, "
+        printf("motion:  median of the %u ok vectors dx=%+.2f dy=%+.2f px (FIRST -> SECOND)\n",
+               r->stats.ok, track_median_motion(r, 0), track_median_motion(r, 1));
+    }
+    if (brute > 0) {
+        printf("work:    %llu pixel ops (search %llu + window tests %llu) = %.2f %% of brute "
+               "force over the %u windows neither edge nor masked (%llu); threshold %s, "
                "scan %s, %.2f ms\n",
-               (unsigned long long)r->stats.pixel_ops,
-               brute ? 100.0 * (double)r->stats.pixel_ops / (double)brute : 0.0,
-               (unsigned long long)brute, tname, cli_scan_name(&r->cfg.match), 1e3 * r->secs);
+               (unsigned long long)track_work_ops(r), (unsigned long long)r->stats.pixel_ops,
+               (unsigned long long)r->stats.check_pixels,
+               100.0 * (double)track_work_ops(r) / (double)brute,
+               r->stats.windows - r->stats.edge - r->stats.masked, (unsigned long long)brute,
+               tname, cli_scan_name(&r->cfg.match), 1e3 * r->secs);
     }
     if (o->have_mem) {
         uint64_t images = (uint64_t)r->first.stride * r->first.height +

@@ -26,6 +26,17 @@ const char track_opts_help[] =
     "  --order ROWS      rows (default) or spread\n"
     "  --no-bounds       no successive-elimination bounds (default: bounds on;\n"
     "                    exact either way, bounds do less work)\n"
+    "vector quality (each window gets a status; only 'ok' vectors are trusted):\n"
+    "  --flat LEVEL      'flat' (not searched) when the window's mean absolute\n"
+    "                    deviation is below LEVEL, sample units (default 1.25;\n"
+    "                    0 = no test)\n"
+    "  --unique RATIO    'ambiguous' when a placement outside the 5x5 square around\n"
+    "                    the best has a SAD within RATIO times the best's (default\n"
+    "                    1.10, 1.004..4; off = no test; exact thresholds only)\n"
+    "  --unique-radius R that square's radius, 1 or 2 (default 2)\n"
+    "  --no-subpixel     whole-pixel vectors only (sub_dx = dx, sub_dy = dy)\n"
+    "  'at_limit': the best placement is on the border of the search area (the\n"
+    "  motion may be larger: try a larger --search)\n"
     "windows to skip:\n"
     "  --exclude [LEVEL[:COUNT]]  skip textureless windows (the seed's rule): a window\n"
     "                    is excluded when fewer than COUNT of its pixels lie on one\n"
@@ -55,6 +66,7 @@ void track_opts_init(track_opts_t *o)
     memset(o, 0, sizeof *o);
     o->cfg.predict = SSDA_TRACK_PREDICT_MEDIAN;
     o->cfg.match.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
+    o->cfg.flags = SSDA_TRACK_UNIQUE;       /* dropped in inexact modes unless asked */
 }
 
 /* "N" or "WxH", each 1..65535. */
@@ -270,6 +282,47 @@ static int take_skip(cli_args_t *a, track_opts_t *o)
     return 1;
 }
 
+/* --flat, --unique, --unique-radius, --no-subpixel. */
+static int take_quality(cli_args_t *a, track_opts_t *o)
+{
+    const char *v;
+    double d = 0.0;
+    uint32_t u = 0;
+    if (cli_opt(a, "--flat", &v)) {
+        if (v != NULL && cli_parse_double(v, 0.0, 65535.0, &d) != 0) {
+            bad_value(a, "bad --flat '%s' (mean absolute deviation in sample units, "
+                         "0..65535; 0 = no test)", v);
+        }
+        o->cfg.flags = (uint8_t)(d > 0.0 ? o->cfg.flags & ~SSDA_TRACK_NO_FLAT
+                                         : o->cfg.flags | SSDA_TRACK_NO_FLAT);
+        o->cfg.flat_q8 = (uint32_t)(d * 256.0 + 0.5);
+        if (d > 0.0 && o->cfg.flat_q8 == 0u) {
+            o->cfg.flat_q8 = 1u; /* the smallest level, 1/256 */
+        }
+    } else if (cli_opt(a, "--unique", &v)) {
+        if (v != NULL && strcmp(v, "off") == 0) {
+            o->cfg.flags &= (uint8_t)~SSDA_TRACK_UNIQUE;
+            o->unique_given = 0;
+        } else if (v != NULL && (cli_parse_double(v, 257.0 / 256.0, 4.0, &d) != 0)) {
+            bad_value(a, "bad --unique '%s' (a ratio, 1.004..4, or off)", v);
+        } else if (v != NULL) {
+            o->cfg.flags |= SSDA_TRACK_UNIQUE;
+            o->cfg.unique_q8 = (uint16_t)(d * 256.0 + 0.5);
+            o->unique_given = 1;
+        }
+    } else if (cli_opt(a, "--unique-radius", &v)) {
+        if (v != NULL && cli_parse_u32(v, 1, 2, &u) != 0) {
+            bad_value(a, "bad --unique-radius '%s' (1 or 2)", v);
+        }
+        o->cfg.unique_radius = (uint8_t)u;
+    } else if (cli_flag(a, "--no-subpixel")) {
+        o->cfg.flags |= SSDA_TRACK_NO_SUBPIXEL;
+    } else {
+        return 0;
+    }
+    return 1;
+}
+
 /* --json, --overlay, --arrow-scale, --quiet. */
 static int take_output(cli_args_t *a, track_opts_t *o)
 {
@@ -306,7 +359,8 @@ static int take_output(cli_args_t *a, track_opts_t *o)
 
 int track_opts_take(cli_args_t *a, track_opts_t *o)
 {
-    return take_grid(a, o) || take_search(a, o) || take_skip(a, o) || take_output(a, o);
+    return take_grid(a, o) || take_search(a, o) || take_quality(a, o) || take_skip(a, o) ||
+           take_output(a, o);
 }
 
 int track_check_positionals(const cli_args_t *a, const track_opts_t *o)
@@ -362,6 +416,9 @@ const char *track_status_name(int status)
     case SSDA_TRACK_EXCLUDED: return "excluded";
     case SSDA_TRACK_MASKED: return "masked";
     case SSDA_TRACK_EDGE: return "edge";
+    case SSDA_TRACK_FLAT: return "flat";
+    case SSDA_TRACK_AMBIGUOUS: return "ambiguous";
+    case SSDA_TRACK_AT_LIMIT: return "at_limit";
     default: return "unknown";
     }
 }
@@ -601,6 +658,17 @@ static void stats_add(ssda_track_stats_t *t, const ssda_track_stats_t *s)
     t->excluded += s->excluded;
     t->masked += s->masked;
     t->edge += s->edge;
+    t->flat += s->flat;
+    t->ambiguous += s->ambiguous;
+    t->at_limit += s->at_limit;
+}
+
+/* AUTO or NONE with the raster or predict scan: the modes whose SADs are
+   exact, where uniqueness and the sub-pixel fit run. */
+static int exact_mode(const ssda_match_config_t *m)
+{
+    return m->scan != SSDA_SCAN_COARSE &&
+           (m->threshold == SSDA_THRESHOLD_AUTO || m->threshold == SSDA_THRESHOLD_NONE);
 }
 
 static const char *predict_name(uint8_t predict)
@@ -790,9 +858,13 @@ static int alloc_run(const char *cmd, const track_opts_t *o, track_result_t *r, 
         r->cfg.match.flags &= (uint8_t)~SSDA_MATCH_BOUNDS;
     }
     *work = NULL;
-    if (r->cfg.match.flags & SSDA_MATCH_BOUNDS) {
-        r->cfg.match.work_size = SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
-                                                      r->grid.win_w, r->grid.win_h);
+    if ((r->cfg.match.flags & SSDA_MATCH_BOUNDS) || (r->cfg.flags & SSDA_TRACK_UNIQUE)) {
+        /* the bounds tables, then the uniqueness list; without bounds the
+           list alone */
+        r->cfg.match.work_size = (r->cfg.match.flags & SSDA_MATCH_BOUNDS)
+                                     ? SSDA_TRACK_WORK_SIZE(r->grid.search_w, r->grid.search_h,
+                                                            r->grid.win_w, r->grid.win_h)
+                                     : SSDA_MATCH_UNIQUE_WORK;
         if ((*work = malloc(r->cfg.match.work_size)) == NULL) {
             return cli_input_error(cmd, "out of memory");
         }
@@ -840,7 +912,25 @@ static int run_in_ram(const track_opts_t *o, track_result_t *r)
     return e;
 }
 
-/* No window could be searched: say why (the run itself is valid). */
+/* More than a quarter of the searched windows at the limit: the motion is
+   likely larger than the search reaches (or the brightness changed, which
+   pulls SAD's minima to the border). */
+static void warn_at_limit(const char *cmd, const track_result_t *r)
+{
+    const ssda_track_stats_t *s = &r->stats;
+    const uint32_t searched = s->ok + s->ambiguous + s->at_limit;
+    if (searched == 0u || 4u * (uint64_t)s->at_limit <= searched) {
+        return;
+    }
+    fprintf(stderr, "ssda %s: warning: %u of %u searched windows are 'at_limit' (best match "
+            "on the border of the %ux%u search area): the motion may be larger than it "
+            "reaches, try --search %ux%u; or the brightness changed between the images, "
+            "try --grad\n",
+            cmd, s->at_limit, searched, r->grid.search_w, r->grid.search_h,
+            2u * r->grid.search_w - r->grid.win_w, 2u * r->grid.search_h - r->grid.win_h);
+}
+
+/* No window is ok: say why (the run itself is valid). */
 static void warn_nothing_tracked(const char *cmd, const track_result_t *r)
 {
     const ssda_track_stats_t *s = &r->stats;
@@ -853,10 +943,17 @@ static void warn_nothing_tracked(const char *cmd, const track_result_t *r)
                 "larger images\n",
                 cmd, s->windows, r->grid.search_w, r->grid.search_h, r->first.width,
                 r->first.height);
-    } else {
+    } else if (s->ambiguous + s->at_limit == 0u) {
         fprintf(stderr, "ssda %s: warning: nothing to track: of %u windows %u excluded (no "
-                "texture), %u masked (fill value), %u edge (search area leaves FIRST)\n",
-                cmd, s->windows, s->excluded, s->masked, s->edge);
+                "texture), %u flat (no texture; --flat LEVEL), %u masked (fill value), %u edge "
+                "(search area leaves FIRST)\n",
+                cmd, s->windows, s->excluded, s->flat, s->masked, s->edge);
+    } else {
+        fprintf(stderr, "ssda %s: warning: no window is 'ok': of %u windows %u ambiguous "
+                "(another match about as good; --unique RATIO), %u at_limit (best match on the "
+                "border of the search; --search), %u flat, %u excluded, %u masked, %u edge\n",
+                cmd, s->windows, s->ambiguous, s->at_limit, s->flat, s->excluded, s->masked,
+                s->edge);
     }
 }
 
@@ -882,6 +979,7 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     free(work);
     r->cfg.match.work = NULL;
     if (rc == CLI_OK) {
+        warn_at_limit(cmd, r);
         warn_nothing_tracked(cmd, r);
     }
     return rc;
@@ -939,6 +1037,13 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     }
     r->cfg = o->cfg;
     resolve_scan(cmd, o, &r->cfg);
+    if ((r->cfg.flags & SSDA_TRACK_UNIQUE) && !exact_mode(&r->cfg.match)) {
+        if (o->unique_given) {
+            return cli_usage_error(cmd, "--unique needs an exact search (--threshold auto or "
+                                   "none, --scan raster or predict): the test needs exact SADs");
+        }
+        r->cfg.flags &= (uint8_t)~SSDA_TRACK_UNIQUE; /* the default: not in this mode */
+    }
     rc = load_inputs(cmd, first_path, second_path, o, r);
     if (rc == CLI_OK) {
         rc = prepare_and_track(cmd, o, r);
@@ -960,7 +1065,38 @@ uint64_t track_brute_ops(const track_result_t *r)
     const ssda_track_grid_t *g = &r->grid;
     uint64_t per = (uint64_t)(g->search_w - g->win_w + 1u) * (g->search_h - g->win_h + 1u) *
                    g->win_w * g->win_h;
-    return per * r->stats.ok;
+    return per * (r->stats.windows - r->stats.edge - r->stats.masked);
+}
+
+uint64_t track_work_ops(const track_result_t *r)
+{
+    return r->stats.pixel_ops + r->stats.check_pixels;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double track_median_motion(const track_result_t *r, int axis)
+{
+    double *v = malloc((r->grid.count + 1u) * sizeof *v), m = 0.0;
+    uint32_t k, n = 0;
+    if (v == NULL) {
+        return 0.0;
+    }
+    for (k = 0; k < r->grid.count; k++) {
+        if (r->vec[k].status == SSDA_TRACK_OK) {
+            v[n++] = (axis == 0 ? r->vec[k].sub_dx_q8 : r->vec[k].sub_dy_q8) / 256.0;
+        }
+    }
+    if (n > 0) {
+        qsort(v, n, sizeof *v, cmp_double);
+        m = n % 2u ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+    free(v);
+    return m;
 }
 
 /* ---- outputs ---- */
@@ -1018,6 +1154,23 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     } else {
         cJSON_AddNullToObject(opt, "mask_value");
     }
+    if (r->cfg.flags & SSDA_TRACK_NO_FLAT) {
+        cJSON_AddNullToObject(opt, "flat");
+    } else {
+        json_out_add_fixed(opt, "flat", (r->cfg.flat_q8 ? r->cfg.flat_q8
+                                                        : SSDA_TRACK_DEFAULT_FLAT_Q8) / 256.0, 8);
+    }
+    if (r->cfg.flags & SSDA_TRACK_UNIQUE) {
+        cJSON *u = cJSON_AddObjectToObject(opt, "unique");
+        json_out_add_fixed(u, "ratio", (r->cfg.unique_q8 ? r->cfg.unique_q8
+                                                         : SSDA_MATCH_DEFAULT_UNIQUE_Q8) / 256.0, 8);
+        cJSON_AddNumberToObject(u, "radius", r->cfg.unique_radius ? r->cfg.unique_radius
+                                                                  : SSDA_MATCH_DEFAULT_UNIQUE_RADIUS);
+    } else {
+        cJSON_AddNullToObject(opt, "unique");
+    }
+    cJSON_AddBoolToObject(opt, "subpixel", !(r->cfg.flags & SSDA_TRACK_NO_SUBPIXEL) &&
+                                               exact_mode(&r->cfg.match));
     return opt;
 }
 
@@ -1035,6 +1188,9 @@ static cJSON *json_stats(const track_result_t *r, const track_opts_t *o)
     cJSON_AddNumberToObject(st, "excluded", r->stats.excluded);
     cJSON_AddNumberToObject(st, "masked", r->stats.masked);
     cJSON_AddNumberToObject(st, "edge", r->stats.edge);
+    cJSON_AddNumberToObject(st, "flat", r->stats.flat);
+    cJSON_AddNumberToObject(st, "ambiguous", r->stats.ambiguous);
+    cJSON_AddNumberToObject(st, "at_limit", r->stats.at_limit);
     json_out_add_fixed(st, "time_s", r->secs, 6);
     track_metric_json_stats(st, o, r);
     if (o->have_mem) {
@@ -1061,7 +1217,20 @@ static cJSON *json_window(void *ctx, size_t k)
     cJSON_AddNumberToObject(item, "y", v->y);
     cJSON_AddNumberToObject(item, "dx", v->dx);
     cJSON_AddNumberToObject(item, "dy", v->dy);
+    /* Q8 values: exact in 8 decimals */
+    json_out_add_fixed(item, "sub_dx", v->sub_dx_q8 / 256.0, 8);
+    json_out_add_fixed(item, "sub_dy", v->sub_dy_q8 / 256.0, 8);
     json_out_add_u64(item, "sad", v->sad);
+    if (v->texture_q8 != 0u || v->status == SSDA_TRACK_FLAT) {
+        json_out_add_fixed(item, "texture", v->texture_q8 / 256.0, 8);
+    } else {
+        cJSON_AddNullToObject(item, "texture");
+    }
+    if (v->unique_q8 != SSDA_MATCH_UNIQUE_NONE) {
+        json_out_add_fixed(item, "unique", v->unique_q8 / 256.0, 8);
+    } else {
+        cJSON_AddNullToObject(item, "unique");
+    }
     cJSON_AddStringToObject(item, "status", track_status_name(v->status));
     cJSON_AddBoolToObject(item, "exact", v->exact);
     if (w->ref != NULL && v->status == SSDA_TRACK_OK) {
@@ -1104,6 +1273,19 @@ int track_write_json(const char *cmd, FILE *f, const track_result_t *r, const tr
     rc = json_out_print(f, doc, &lazy);
     cJSON_Delete(doc);
     return rc == 0 ? 0 : (cli_input_error(cmd, "out of memory for the JSON"), -1);
+}
+
+static int draw_status(uint8_t status)
+{
+    switch (status) {
+    case SSDA_TRACK_OK: return DRAW_OK;
+    case SSDA_TRACK_EXCLUDED: return DRAW_EXCLUDED;
+    case SSDA_TRACK_MASKED: return DRAW_MASKED;
+    case SSDA_TRACK_FLAT: return DRAW_FLAT;
+    case SSDA_TRACK_AMBIGUOUS: return DRAW_AMBIGUOUS;
+    case SSDA_TRACK_AT_LIMIT: return DRAW_AT_LIMIT;
+    default: return DRAW_EDGE;
+    }
 }
 
 /* The part of SECOND (as read) the grid covers, plus the search margin, so
@@ -1165,12 +1347,9 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
         }
         dv[n].x = v->x - x0 + (r->grid.win_w - 1) / 2.0;
         dv[n].y = v->y - y0 + (r->grid.win_h - 1) / 2.0;
-        dv[n].dx = v->dx;
-        dv[n].dy = v->dy;
-        dv[n].status = v->status == SSDA_TRACK_OK         ? DRAW_OK
-                       : v->status == SSDA_TRACK_EXCLUDED ? DRAW_EXCLUDED
-                       : v->status == SSDA_TRACK_MASKED   ? DRAW_MASKED
-                                                          : DRAW_EDGE;
+        dv[n].dx = v->sub_dx_q8 / 256.0;
+        dv[n].dy = v->sub_dy_q8 / 256.0;
+        dv[n].status = draw_status(v->status);
         if (truth != NULL && v->status == SSDA_TRACK_OK) {
             dv[n].has_truth = 1;
             dv[n].tdx = truth[k][0];

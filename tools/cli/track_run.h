@@ -18,6 +18,7 @@ typedef struct {
     int exclude;              /* --exclude given */
     int exclude_argi;         /* argv index of --exclude (its value is optional) */
     int scan_given;           /* --scan given */
+    int unique_given;         /* --unique RATIO given (not off) */
     int exclude_level_given;  /* LEVEL given (else the mean of SECOND) */
     uint32_t exclude_level;
     uint32_t exclude_count;   /* COUNT, 0 = window pixels / 16 */
@@ -88,11 +89,20 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
               const track_opts_t *o, track_result_t *r);
 void track_result_free(track_result_t *r);
 
-/* "ok", "excluded", "masked", "edge". */
+/* "ok", "flat", "ambiguous", "at_limit", "excluded", "masked", "edge". */
 const char *track_status_name(int status);
 
-/* Brute-force pixel operations for the OK windows (each area searched in full). */
+/* Brute-force pixel operations over every window that is neither edge nor
+   masked (each area searched in full, as without any texture test). */
 uint64_t track_brute_ops(const track_result_t *r);
+
+/* The work the run did, comparable with track_brute_ops: the searches'
+   pixel_ops plus the pixels the window tests read (check_pixels). */
+uint64_t track_work_ops(const track_result_t *r);
+
+/* Median of the ok windows' sub-pixel dx (axis 0) or dy (axis 1), px; 0
+   without ok windows. */
+double track_median_motion(const track_result_t *r, int axis);
 
 /* Write the JSON document (see docs/cli.md) to f (an output of the
    command's cli_outputs_t). ref (grid.count entries, may be NULL) adds

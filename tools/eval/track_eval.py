@@ -92,6 +92,7 @@ def window_arrays(doc, pair):
     sdy = np.array([w.get("sub_dy", w["dy"]) for w in wins], float)
     tx = np.full(n, np.nan)
     ty = np.full(n, np.nan)
+    spread = np.full(n, np.nan)
     label = np.array(["textured"] * n, dtype=object)
     sec = pair.get("clean_second", pair["second"])
     for k in range(n):
@@ -109,8 +110,9 @@ def window_arrays(doc, pair):
             if valid.mean() >= 0.75:
                 tx[k] = np.median(t[..., 0][valid])
                 ty[k] = np.median(t[..., 1][valid])
+                spread[k] = max(np.ptp(t[..., 0][valid]), np.ptp(t[..., 1][valid]))
     return dict(x=x, y=y, status=status, dx=dx, dy=dy, sdx=sdx, sdy=sdy, has_sub=has_sub,
-                tx=tx, ty=ty, label=label, ww=ww, wh=wh, sw=g["search_w"], sh=g["search_h"])
+                tx=tx, ty=ty, spread=spread, label=label, ww=ww, wh=wh, sw=g["search_w"], sh=g["search_h"])
 
 
 # ---- peers -------------------------------------------------------------------
@@ -220,6 +222,7 @@ def evaluate(doc, w):
         flat_ok=int((ok & flat).sum()),
         whole=epe_stats(w["dx"], w["dy"], w["tx"], w["ty"], ok),
         sub=epe_stats(w["sdx"], w["sdy"], w["tx"], w["ty"], ok) if w["has_sub"] else None,
+        coherent=epe_stats(w["sdx"], w["sdy"], w["tx"], w["ty"], ok & (w["spread"] <= 1.0)),
         work_saved=brute / max(work, 1), statuses=statuses,
         consistency=neighbour_consistency(w, ok),
         median=(float(np.median(w["sdx"][ok])) if ok.any() else float("nan"),
@@ -265,9 +268,24 @@ def report_pair(pair, configs, ssda, tmp, csv_rows):
         for wl in ev["warnings"]:
             print("|  | stderr: %s |||%s" % (wl.replace("|", "/"), "||||||" if has_truth else "||"))
         csv_rows.append((pair["name"], "ssda " + name, ev))
+    ev0c = results[0][3]["coherent"]
+    if has_truth and ev0c is not None and ev0c["n"] < results[0][3]["ok"]:
+        print("\nssda %s, ok windows whose truth varies by at most 1 px across the window "
+              "(%d of them; one vector can describe them): sub-pixel EPE mean %.2f, median "
+              "%.2f, %.0f %% within 1 px." % (results[0][0], ev0c["n"], ev0c["mean"],
+                                              ev0c["median"], 100 * ev0c["within1"]))
     if not has_truth:
         return
     searched = (w0["status"] != "edge") & (w0["status"] != "masked")
+    ok_t = (w0["status"] == "ok") & np.isfinite(w0["tx"]) & np.isfinite(w0["ty"])
+    if ok_t.any():
+        print("\nMedian motion (what `ssda track` prints; FIRST -> SECOND, px): of the ok "
+              "vectors, sub-pixel: " + "; ".join(
+                  "ssda %s (%+.2f, %+.2f)" % (n, e["median"][0], e["median"][1])
+                  for n, _, _, e in results) +
+              "; truth over the windows `ssda %s` reports ok: (%+.2f, %+.2f)." % (
+                  results[0][0], float(np.median(w0["tx"][ok_t])),
+                  float(np.median(w0["ty"][ok_t]))))
     ok0 = w0["status"] == "ok"
     textured = searched & (w0["label"] == "textured")
     peers = [("OpenCV Farneback", farneback(pair, w0)),

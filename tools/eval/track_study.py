@@ -269,6 +269,58 @@ def fit_table(name, recs):
                                                  pct((e <= 0.5).mean()), pct((e <= 1).mean())))
 
 
+def summary(results, level):
+    """Compact tables across pairs (results: [(name, recs)])."""
+    print("\n### Texture level (mean absolute deviation, sample units): %g\n" % level)
+    print("| pair | flat windows (scene) | their largest | flagged | textured windows | "
+          "flagged (lost) | error of the flagged textured |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name, recs in results:
+        lab = np.array([r["label"] for r in recs])
+        mad = np.array([r["mad"] for r in recs])
+        e = np.array([r.get("e_equiangular", np.nan) for r in recs])
+        f, t = lab == "flat", lab == "textured"
+        lost = t & (mad < level)
+        print("| %s | %d | %s | %s | %d | %s | %s |" % (
+            name, f.sum(), "%.2f" % mad[f].max() if f.any() else "-",
+            pct((mad[f] < level).mean()) if f.any() else "-", t.sum(), pct(lost.mean() /
+            max(t.mean(), 1e-9)) if t.any() else "-",
+            "%.2f px" % np.nanmean(e[lost]) if lost.any() and np.isfinite(e[lost]).any() else "-"))
+    choices = [(1, 1.10), (2, 1.05), (2, 1.10), (2, 1.20), (2, 1.50)]
+    print("\n### Uniqueness after the texture level, at-limit windows removed: textured "
+          "windows kept / flat windows kept / mean sub-pixel error of the kept\n")
+    print("| pair | " + " | ".join("%dx%d, %.2f" % (2 * r + 1, 2 * r + 1, q) for r, q in choices) +
+          " |")
+    print("|---|" + "---:|" * len(choices))
+    for name, recs in results:
+        rows = [r for r in recs if r["mad"] >= level and not r["at_limit"]]
+        if not rows:
+            continue
+        lab = np.array([r["label"] for r in rows])
+        e = np.array([r.get("e_equiangular", np.nan) for r in rows])
+        cells = []
+        for rad, q in choices:
+            keep = np.array([r["u%d" % rad] > q for r in rows])
+            tex = lab == "textured"
+            cells.append("%s / %d / %s" % (pct(keep[tex].mean()) if tex.any() else "-",
+                                          (keep & (lab == "flat")).sum(),
+                                          "%.2f" % np.nanmean(e[keep]) if keep.any() and
+                                          np.isfinite(e[keep]).any() else "-"))
+        print("| %s | %s |" % (name, " | ".join(cells)))
+    print("\n### Sub-pixel fit: mean endpoint error (px) of textured, unique (5x5, 1.10), "
+          "not-at-limit windows\n")
+    print("| pair | windows | whole pixels | parabola | equiangular (V) |")
+    print("|---|---:|---:|---:|---:|")
+    for name, recs in results:
+        rows = [r for r in recs if "e_whole" in r and r["label"] == "textured" and
+                not r["at_limit"] and r["u2"] > 1.10 and r["mad"] >= level]
+        if rows:
+            print("| %s | %d | %.3f | %.3f | %.3f |" % (
+                name, len(rows), np.mean([r["e_whole"] for r in rows]),
+                np.mean([r["e_parabola"] for r in rows]),
+                np.mean([r["e_equiangular"] for r in rows])))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
@@ -281,6 +333,7 @@ def main():
     ap.add_argument("--stereo")
     ap.add_argument("--measure", default="mad")
     ap.add_argument("--level", type=float, default=1.25)
+    ap.add_argument("--summary", action="store_true", help="only the compact tables across pairs")
     args = ap.parse_args()
     pairs = [] if args.no_synthetic else track_scenes.synthetic_scenes(args.quick)
     for spec in args.photo:
@@ -299,6 +352,9 @@ def main():
     if args.only:
         pairs = [p for p in pairs if p["name"] in args.only.split(",")]
     print("## Vector quality study (issue 15)\n")
+    if args.summary:
+        summary([(p["name"], analyse(windows_of(p))) for p in pairs], args.level)
+        return
     for p in pairs:
         print("\n### %s\n\n%s." % (p["name"], p["note"]))
         recs = analyse(windows_of(p))

@@ -4,7 +4,8 @@
  *   Valid inputs: the call succeeds; whenever the result says exact it is
  *   the brute-force minimum of this file (smallest SAD, then y, then x);
  *   AUTO and NONE with the raster or predict scan must say exact; a
- *   completed result's SAD is the full SAD at its position (ssda_sad_at and
+ *   result's SAD is the full SAD at its position, an all-cut fallback's too
+ *   (ssda_sad_at and
  *   the brute force agree); two calls give the same result.
  *   Inputs with one broken rule: the documented error, result untouched.
  */
@@ -242,7 +243,7 @@ static int break_rule(case_t *c, uint32_t brk, uint32_t sub, ssda_view_t **pa, s
         case 0: cfg->threshold = (uint8_t)(5u + sub % 251u); break;
         case 1: cfg->scan = (uint8_t)(3u + sub % 253u); break;
         case 2: cfg->order = (uint8_t)(2u + sub % 254u); break;
-        default: cfg->flags = (uint8_t)(cfg->flags | (2u << (sub % 7u))); break;
+        default: cfg->flags = (uint8_t)(cfg->flags | (0x10u << (sub % 4u))); break; /* no flag */
         }
         return SSDA_ERR_ARG;
     case BREAK_RAMP_LAMBDA:
@@ -287,11 +288,11 @@ static void check_result(const case_t *c, const ssda_match_result_t *res)
     mine = full_sad(&c->area, &c->win, res->x, res->y);
     FUZZ_CHECK(ssda_sad_at(&c->area, &c->win, res->x, res->y, &at) == SSDA_OK);
     FUZZ_CHECK(at == mine);
-    if (res->completed > 0u) {
-        FUZZ_CHECK(res->sad == mine); /* a completed position's full SAD */
-        FUZZ_CHECK(res->sad >= ref.sad);
-    } else {
-        FUZZ_CHECK(res->sad <= mine); /* all cut: the partial sum at the cut */
+    /* the full SAD at the position, an all-cut fallback's too (issue 14) */
+    FUZZ_CHECK(res->sad == mine);
+    FUZZ_CHECK(res->sad >= ref.sad);
+    if (res->completed == 0u) {
+        FUZZ_CHECK(!res->exact);
     }
 }
 

@@ -5,11 +5,16 @@
  *     SSDA_TRACK_GRID_COUNT), and errors exactly when the geometry is bad;
  *   - an input this file finds valid is accepted, any other is refused with
  *     out and stats untouched; entries past the grid are never written;
- *   - every window's position and status (EDGE, MASKED, EXCLUDED, OK) follow
- *     the header's rules; non-OK windows carry zeros;
- *   - in the exact modes (AUTO or NONE, no coarse scan) the OK windows'
- *     vectors and SADs equal a brute-force search of their areas (checked
- *     for every window while cheap, else for a sample);
+ *   - every window's position and status (EDGE, MASKED, EXCLUDED, FLAT, then
+ *     searched: AT_LIMIT, AMBIGUOUS, OK) follow the header's rules, the
+ *     texture (mean absolute deviation) computed here; windows not
+ *     searched carry zeros;
+ *   - in the exact modes (AUTO or NONE, no coarse scan) the searched
+ *     windows' SADs equal the minimum of a brute-force search of their
+ *     areas and their vectors point at a placement with that SAD (checked
+ *     for every window while cheap, else for a sample; which of equal
+ *     minima wins depends on the neighbours' prediction, tested in
+ *     test_track_quality);
  *   - stats count the statuses; a second call gives the same output.
  */
 #include <string.h>
@@ -23,7 +28,7 @@
 
 static uint16_t g_first[MAX_IMG * MAX_IMG], g_second[MAX_IMG * MAX_IMG];
 static ssda_track_vector_t g_out[MAX_OUT + 1u], g_out2[MAX_OUT + 1u];
-static uint32_t g_work[(2u * MAX_IMG + 1u) * 2u * MAX_IMG + 8u * MAX_IMG];
+static uint64_t g_work[((2u * MAX_IMG + 1u) * 2u * MAX_IMG + 8u * MAX_IMG) / 2u + 64u]; /* 8-aligned */
 
 static uint32_t next_rand(uint32_t *s)
 {
@@ -117,6 +122,7 @@ typedef struct {
     ssda_track_grid_t grid;
     int grc;
     uint32_t pixels, thr, minc; /* window pixels; the texture rule's level and count */
+    uint32_t flat;              /* the flat level resolved, Q24.8; 0: no test */
 } case_t;
 
 /* The options from the fuzzer's bytes, valid or not. */
@@ -135,7 +141,12 @@ static void read_config(fuzz_in_t *in, case_t *c)
     cfg->roi_w = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, MAX_IMG + 1u));
     cfg->roi_h = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, MAX_IMG + 1u));
     cfg->predict = (uint8_t)fuzz_range(in, 0, 3);       /* 3: invalid */
-    cfg->flags = (uint8_t)(fuzz_u8(in) & (fuzz_one_in(in, 16) ? 0xFFu : 3u));
+    cfg->flags = (uint8_t)(fuzz_u8(in) & (fuzz_one_in(in, 16) ? 0xFFu : 0x1Fu));
+    cfg->flat_q8 = fuzz_one_in(in, 32) ? 65535u * 256u + 1u
+                                       : (fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 0, 4000));
+    cfg->unique_q8 = (uint16_t)(fuzz_one_in(in, 32) ? fuzz_u16(in)
+                                : (fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 257, 1024)));
+    cfg->unique_radius = (uint8_t)fuzz_range(in, 0, 3); /* 3: invalid */
     cfg->mask_value = (uint16_t)(fuzz_u8(in) & 1u ? fuzz_range(in, 0, 3) * (c->maxv / 3u)
                                                   : fuzz_u16(in));
     cfg->texture_threshold = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_u16(in) % (c->maxv + 2u));
@@ -148,7 +159,7 @@ static void read_config(fuzz_in_t *in, case_t *c)
     cfg->match.coarse_step = (uint16_t)fuzz_range(in, 0, 10);
     cfg->match.lambda_q8 = fuzz_range(in, 0, 5000);
     cfg->match.fixed_threshold = fuzz_u32(in) % 100000u;
-    if (cfg->match.flags) {
+    if (cfg->match.flags || (cfg->flags & SSDA_TRACK_UNIQUE)) {
         cfg->match.work = fuzz_one_in(in, 32) ? NULL : g_work;
         cfg->match.work_size = sizeof g_work - (fuzz_one_in(in, 32) ? sizeof g_work : 0u);
     }
@@ -215,8 +226,22 @@ static int input_valid(case_t *c)
     c->thr = cfg->texture_threshold ? cfg->texture_threshold : (c->maxv + 1u) / 2u;
     c->minc = cfg->texture_min_count ? cfg->texture_min_count
                                      : (c->pixels / 16u > 0u ? c->pixels / 16u : 1u);
+    const int unique = (cfg->flags & SSDA_TRACK_UNIQUE) != 0u;
+    const uint64_t need_u = (cfg->match.flags & SSDA_MATCH_BOUNDS)
+                                ? (uint64_t)SSDA_TRACK_WORK_SIZE(c->axx.search, c->axy.search,
+                                                                 c->axx.win, c->axy.win)
+                                : (uint64_t)SSDA_MATCH_UNIQUE_WORK;
+    c->flat = (cfg->flags & SSDA_TRACK_NO_FLAT) ? 0u : (cfg->flat_q8 ? cfg->flat_q8 : 320u);
+    if (unique && !((cfg->match.threshold == SSDA_THRESHOLD_AUTO ||
+                     cfg->match.threshold == SSDA_THRESHOLD_NONE) &&
+                    cfg->match.scan != SSDA_SCAN_COARSE &&
+                    (cfg->unique_q8 == 0u || (cfg->unique_q8 >= 257u && cfg->unique_q8 <= 1024u)) &&
+                    cfg->unique_radius <= 2u && cfg->match.work != NULL &&
+                    cfg->match.work_size >= need_u)) {
+        return 0;
+    }
     return c->grc == SSDA_OK && c->grid.count <= c->out_count && cfg->predict <= 2u &&
-           (cfg->flags & ~3u) == 0u &&
+           (cfg->flags & ~0x1Fu) == 0u && cfg->flat_q8 <= 65535u * 256u &&
            (!(cfg->flags & SSDA_TRACK_MASK) || cfg->mask_value <= c->maxv) &&
            (!(cfg->flags & SSDA_TRACK_EXCLUDE) || (c->thr < c->maxv && 2u * c->minc <= c->pixels)) &&
            !(cfg->predict != 0u && cfg->match.scan == SSDA_SCAN_COARSE) &&
@@ -228,7 +253,29 @@ static int input_valid(case_t *c)
                   SSDA_TRACK_WORK_SIZE(c->axx.search, c->axy.search, c->axx.win, c->axy.win)));
 }
 
-/* The status the header gives the window at (wx, wy), area at (ax, ay). */
+/* The window's texture by track.h: floor(256 * sum |p - m| / n) with
+   m = floor(sum p / n). */
+static uint32_t texture_q8(const case_t *c, uint32_t wx, uint32_t wy)
+{
+    uint64_t sum = 0, dev = 0, m;
+    uint32_t x, y;
+    for (y = 0; y < c->axy.win; y++) {
+        for (x = 0; x < c->axx.win; x++) {
+            sum += px(&c->s, wx + x, wy + y);
+        }
+    }
+    m = sum / c->pixels;
+    for (y = 0; y < c->axy.win; y++) {
+        for (x = 0; x < c->axx.win; x++) {
+            uint64_t p = px(&c->s, wx + x, wy + y);
+            dev += p > m ? p - m : m - p;
+        }
+    }
+    return (uint32_t)(256u * dev / c->pixels);
+}
+
+/* The status the header gives the window at (wx, wy), area at (ax, ay),
+   before the search: OK stands for "searched". */
 static uint32_t expected_status(const case_t *c, uint32_t wx, uint32_t wy, int64_t ax, int64_t ay)
 {
     const ssda_track_config_t *cfg = &c->cfg;
@@ -249,6 +296,9 @@ static uint32_t expected_status(const case_t *c, uint32_t wx, uint32_t wy, int64
         }
         want = bright < c->minc || c->pixels - bright < c->minc ? SSDA_TRACK_EXCLUDED
                                                                 : SSDA_TRACK_OK;
+    }
+    if (want == SSDA_TRACK_OK && c->flat != 0u && texture_q8(c, wx, wy) < c->flat) {
+        want = SSDA_TRACK_FLAT;
     }
     if (want == SSDA_TRACK_OK && (cfg->flags & SSDA_TRACK_MASK) &&
         holds(&c->f, (uint32_t)ax, (uint32_t)ay, c->axx.search, c->axy.search,
@@ -277,12 +327,16 @@ static void check_brute(const case_t *c, const ssda_track_vector_t *v, uint32_t 
         }
     }
     FUZZ_CHECK(v->sad == best);
-    FUZZ_CHECK(v->dx == (int32_t)hx - (int32_t)bx && v->dy == (int32_t)hy - (int32_t)by);
+    (void)bx;
+    (void)by;
+    FUZZ_CHECK(sad_at(&c->f, &c->s, (uint32_t)(ax + (int64_t)hx - v->dx),
+                      (uint32_t)(ay + (int64_t)hy - v->dy), wx, wy, c->axx.win,
+                      c->axy.win) == best);
 }
 
 /* Window k: position, status, a vector inside its area, and in the exact
    modes the brute-force answer (every window while cheap, else a sample). */
-static void check_window(const case_t *c, uint32_t k, int exact_mode, uint32_t counts[4])
+static void check_window(const case_t *c, uint32_t k, int exact_mode, uint32_t counts[7])
 {
     const ssda_track_vector_t *v = &g_out[k];
     uint32_t wx = c->axx.start + (k % c->grid.cols) * c->axx.step;
@@ -292,12 +346,40 @@ static void check_window(const case_t *c, uint32_t k, int exact_mode, uint32_t c
     uint64_t brute_cost = (uint64_t)(c->axx.search - c->axx.win + 1u) *
                           (c->axy.search - c->axy.win + 1u) * c->pixels;
     FUZZ_CHECK(v->x == wx && v->y == wy);
-    FUZZ_CHECK(v->status <= SSDA_TRACK_EDGE);
+    uint32_t want = expected_status(c, wx, wy, ax, ay);
+    int at_limit;
+    FUZZ_CHECK(v->status <= SSDA_TRACK_AT_LIMIT);
     counts[v->status]++;
-    FUZZ_CHECK(v->status == expected_status(c, wx, wy, ax, ay));
-    if (v->status != SSDA_TRACK_OK) {
-        FUZZ_CHECK(v->sad == 0 && v->dx == 0 && v->dy == 0 && !v->exact);
+    if (want != SSDA_TRACK_OK) {
+        FUZZ_CHECK(v->status == want);
+        FUZZ_CHECK(v->sad == 0 && v->dx == 0 && v->dy == 0 && !v->exact &&
+                   v->sub_dx_q8 == 0 && v->sub_dy_q8 == 0);
+        /* measured once the window reached the flat test: FLAT, and
+           MASKED by its area (the window itself holds no fill) */
+        FUZZ_CHECK(v->texture_q8 ==
+                   ((want == SSDA_TRACK_FLAT ||
+                     (want == SSDA_TRACK_MASKED && c->flat != 0u &&
+                      !holds(&c->s, wx, wy, c->axx.win, c->axy.win, c->cfg.mask_value)))
+                        ? texture_q8(c, wx, wy)
+                        : 0u));
         return;
+    }
+    FUZZ_CHECK(v->texture_q8 == (c->flat != 0u ? texture_q8(c, wx, wy) : 0u));
+    /* searched: AT_LIMIT when on the border of an axis with more than one
+       placement, else AMBIGUOUS exactly when the uniqueness test found a
+       rival, else OK */
+    at_limit = (c->axx.search > c->axx.win &&
+                (v->dx == (int32_t)hx ||
+                 v->dx == (int32_t)hx - (int32_t)(c->axx.search - c->axx.win))) ||
+               (c->axy.search > c->axy.win &&
+                (v->dy == (int32_t)hy ||
+                 v->dy == (int32_t)hy - (int32_t)(c->axy.search - c->axy.win)));
+    if (at_limit) {
+        FUZZ_CHECK(v->status == SSDA_TRACK_AT_LIMIT);
+    } else if (v->unique_q8 != SSDA_MATCH_UNIQUE_NONE) {
+        FUZZ_CHECK((c->cfg.flags & SSDA_TRACK_UNIQUE) && v->status == SSDA_TRACK_AMBIGUOUS);
+    } else {
+        FUZZ_CHECK(v->status == SSDA_TRACK_OK);
     }
     /* the vector stays inside the area; its SAD is the one there when exact */
     FUZZ_CHECK(v->dx <= (int32_t)hx &&
@@ -314,13 +396,14 @@ static void check_window(const case_t *c, uint32_t k, int exact_mode, uint32_t c
 }
 
 /* Stats count the statuses; a second call gives the same output. */
-static void check_repeat(const case_t *c, const ssda_track_stats_t *st, const uint32_t counts[4])
+static void check_repeat(const case_t *c, const ssda_track_stats_t *st, const uint32_t counts[7])
 {
     ssda_track_stats_t st2;
     uint32_t k;
     FUZZ_CHECK(st->windows == c->grid.count);
     FUZZ_CHECK(st->ok == counts[0] && st->excluded == counts[1] && st->masked == counts[2] &&
-               st->edge == counts[3]);
+               st->edge == counts[3] && st->flat == counts[4] && st->ambiguous == counts[5] &&
+               st->at_limit == counts[6]);
     FUZZ_CHECK(st->completed <= st->positions);
     memset(&st2, 0x4D, sizeof st2);
     FUZZ_CHECK(ssda_track(&c->fv, &c->sv, &c->cfg, g_out2, c->out_count, &st2) == SSDA_OK);
@@ -330,7 +413,9 @@ static void check_repeat(const case_t *c, const ssda_track_stats_t *st, const ui
     for (k = 0; k < c->grid.count; k++) { /* field by field: padding may differ */
         const ssda_track_vector_t *a = &g_out[k], *b = &g_out2[k];
         FUZZ_CHECK(a->sad == b->sad && a->dx == b->dx && a->dy == b->dy && a->x == b->x &&
-                   a->y == b->y && a->status == b->status && a->exact == b->exact);
+                   a->y == b->y && a->status == b->status && a->exact == b->exact &&
+                   a->sub_dx_q8 == b->sub_dx_q8 && a->sub_dy_q8 == b->sub_dy_q8 &&
+                   a->texture_q8 == b->texture_q8 && a->unique_q8 == b->unique_q8);
     }
 }
 
@@ -342,7 +427,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     case_t c;
     ssda_track_stats_t st, poison_st;
     ssda_track_vector_t poison_v;
-    uint32_t k, counts[4] = {0, 0, 0, 0};
+    uint32_t k, counts[7] = {0, 0, 0, 0, 0, 0, 0};
     int rc, valid, exact_mode;
 
     memset(&c, 0, sizeof c);

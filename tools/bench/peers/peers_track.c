@@ -112,11 +112,14 @@ static int setup_run(const peers_pair_t *p, unsigned win, void *work, size_t wor
     ssda_track_config_t base;
     int e;
     memset(&base, 0, sizeof base);
+    /* the search alone: every window neither edge nor masked is searched
+       (ok or at_limit), no sub-pixel sums */
+    base.flags = SSDA_TRACK_NO_FLAT | SSDA_TRACK_NO_SUBPIXEL;
     base.win_w = base.win_h = (uint16_t)win;
     base.search_w = base.search_h = (uint16_t)(2 * win);
     base.step_x = base.step_y = (uint16_t)win;
     if (p->use_mask) {
-        base.flags = SSDA_TRACK_MASK;
+        base.flags |= SSDA_TRACK_MASK;
         base.mask_value = p->mask_value;
     }
     e = ssda_track_grid(&base, p->second.width, p->second.height, grid);
@@ -128,6 +131,11 @@ static int setup_run(const peers_pair_t *p, unsigned win, void *work, size_t wor
     r->count = grid->count;
     r->cfg_none = base;
     r->cfg_none.match.threshold = SSDA_THRESHOLD_NONE;
+    /* the same prediction as auto, so that equal SADs go to the same
+       placement (the tie rule is nearest to the prediction): brute force
+       then gives auto's vectors exactly */
+    r->cfg_none.match.scan = SSDA_SCAN_PREDICT;
+    r->cfg_none.predict = SSDA_TRACK_PREDICT_MEDIAN;
     r->cfg_auto = base;
     r->cfg_auto.match.threshold = SSDA_THRESHOLD_AUTO;
     r->cfg_auto.match.scan = SSDA_SCAN_PREDICT;
@@ -159,7 +167,7 @@ static int make_jobs(const peers_pair_t *p, track_run_t *r, unsigned win,
     }
     for (size_t k = 0; k < r->count; k++) {
         const ssda_track_vector_t *v = &r->out[(size_t)M_NONE * r->count + k];
-        if (v->status == SSDA_TRACK_OK) {
+        if (v->status == SSDA_TRACK_OK || v->status == SSDA_TRACK_AT_LIMIT) {
             cv_peer_job_t *j = &r->jobs[r->njobs];
             j->wx = v->x;
             j->wy = v->y;
@@ -221,7 +229,7 @@ static uint32_t compare_vectors(const peers_pair_t *p, const track_run_t *r, uns
         const ssda_track_vector_t *ref = &r->out[(size_t)M_NONE * r->count + k];
         const ssda_track_vector_t *au = &r->out[(size_t)M_AUTO * r->count + k];
         int tu = 0, tv = 0;
-        identical += au->status == SSDA_TRACK_OK && au->dx == ref->dx && au->dy == ref->dy &&
+        identical += au->status == ref->status && au->dx == ref->dx && au->dy == ref->dy &&
                      au->sad == ref->sad;
         if (p->synthetic_truth) {
             synth_moved_field(ref->x + (int)win / 2, ref->y + (int)win / 2, p->second.width,
@@ -249,7 +257,7 @@ static void print_rows(const peers_pair_t *p, const track_run_t *r, unsigned win
         printf("| %s | %.2f | %.1fx | %.2f | %.1fx | ", k_names[m], 1e6 * med[m] / (double)r->njobs,
                med[m] / med[M_AUTO], 1e6 * med_cpu[m] / (double)r->njobs, med_cpu[m] / med_cpu[M_AUTO]);
         if (m == M_AUTO || m == M_NONE) {
-            printf("%.0f | ", (double)st[m].pixel_ops / (double)st[m].ok);
+            printf("%.0f | ", (double)st[m].pixel_ops / (double)(st[m].ok + st[m].at_limit));
         } else if (m == M_BARE) {
             printf("%u | ", (win + 1) * (win + 1) * win * win);
         } else {

@@ -455,11 +455,12 @@ static int setup(bench_t *b)
         return 1;
     }
     memset(&b->cfg, 0, sizeof b->cfg); /* 16 x 16 windows, 32 x 32 areas, step 16 */
+    b->cfg.flags = SSDA_TRACK_NO_FLAT | SSDA_TRACK_NO_SUBPIXEL; /* the search's reads alone */
     b->cfg.predict = b->o.predict;
     b->cfg.match.threshold = SSDA_THRESHOLD_AUTO;
     b->cfg.match.scan = SSDA_SCAN_PREDICT;
     if (b->o.use_mask) {
-        b->cfg.flags = SSDA_TRACK_MASK;
+        b->cfg.flags |= SSDA_TRACK_MASK;
         b->cfg.mask_value = b->o.mask;
     }
     if (b->o.bounds) {

@@ -6,6 +6,10 @@
  *
  *   match-json FILE X|- Y|- SAD|- EXACT(true|false|-)   ("-": not checked)
  *   track-json FILE DX DY MINFRAC [--min-ok N] [--count STATUS N] [--no-ok]
+ *       [--searched] [--whole]
+ *       --searched: DX, DY and MINFRAC over every searched window (ok,
+ *       ambiguous, at_limit), not the ok ones only; --whole: every sub_dx,
+ *       sub_dy equals dx, dy
  *       MINFRAC of the ok windows must have exactly (DX, DY); the JSON is
  *       also checked for consistency (grid, statuses, stats).
  *   compare-json FILE MIN_WITHIN1_PCT
@@ -107,35 +111,71 @@ static int check_match(int argc, char **argv)
     return rc;
 }
 
-static const char *status_names[] = {"ok", "excluded", "masked", "edge"};
+/* The statuses; the first NSEARCHED were searched and have vectors. */
+#define NSTATUS 7
+#define NSEARCHED 3
+static const char *status_names[NSTATUS] = {"ok", "ambiguous", "at_limit", "flat",
+                                           "excluded", "masked", "edge"};
 
-/* One window of a track JSON: its fields, a known status, a vector inside
-   the search range for ok (others none). Counts the status; *agree when
-   its vector is (dx, dy). Returns 0 or 1 (said). */
+static int g_searched; /* --searched: agreement over every searched window */
+static int g_whole;    /* --whole: sub-pixel vectors equal the whole ones */
+
+/* A searched window's vectors: inside the search range, the sub-pixel one
+   within half a pixel of the whole one; at_limit exactly when a component
+   is at the range's border (an axis with one placement has none). */
+static int check_vector(const json_t *w, size_t i, int s, const double geo[4], double wdx,
+                        double wdy)
+{
+    double sw = geo[0], sh = geo[1], ww = geo[2], wh = geo[3], sdx, sdy;
+    /* dx ranges over hx - (sw - ww) .. hx */
+    double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
+    int border = (sw > ww && (wdx == hx || wdx == hx - (sw - ww))) ||
+                 (sh > wh && (wdy == hy || wdy == hy - (sh - wh)));
+    if (num(w, "sub_dx", &sdx) || num(w, "sub_dy", &sdy)) {
+        return fail("window %zu lacks sub_dx or sub_dy", i);
+    }
+    if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
+        return fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
+    }
+    if (g_whole && (sdx != wdx || sdy != wdy)) {
+        return fail("window %zu sub-pixel (%g, %g), expected (%g, %g)", i, sdx, sdy, wdx, wdy);
+    }
+    if (fabs(sdx - wdx) > 0.5 || fabs(sdy - wdy) > 0.5) {
+        return fail("window %zu sub-pixel (%g, %g) more than 0.5 px from (%g, %g)", i, sdx, sdy,
+                    wdx, wdy);
+    }
+    if (border != (s == 2)) {
+        return fail("window %zu (%g, %g) is %s", i, wdx, wdy, status_names[s]);
+    }
+    return 0;
+}
+
+/* One window of a track JSON: its fields, a known status, vectors for the
+   searched statuses (others none). Counts the status; *agree when an ok
+   vector is (dx, dy). Returns 0 or 1 (said). */
+
 static int check_window(const json_t *w, size_t i, const double geo[4], double dx, double dy,
-                        size_t counts[4], size_t *agree)
+                        size_t counts[NSTATUS], size_t *agree)
 {
     const json_t *st = json_object_get(w, "status");
-    double wx, wy, wdx, wdy, sad, sw = geo[0], sh = geo[1], ww = geo[2], wh = geo[3];
+    double wx, wy, wdx, wdy, sad;
     int k, s = -1;
     if (!json_is_string(st) || num(w, "x", &wx) || num(w, "y", &wy) || num(w, "dx", &wdx) ||
         num(w, "dy", &wdy) || num(w, "sad", &sad)) {
         return fail("window %zu lacks x, y, dx, dy, sad or status", i);
     }
-    for (k = 0; k < 4; k++) {
+    for (k = 0; k < NSTATUS; k++) {
         if (strcmp(json_string_value(st), status_names[k]) == 0) s = k;
     }
     if (s < 0) {
         return fail("window %zu has unknown status '%s'", i, json_string_value(st));
     }
     counts[s]++;
-    if (s == 0) {
-        /* dx ranges over hx - (sw - ww) .. hx */
-        double hx = floor((sw - ww) / 2), hy = floor((sh - wh) / 2);
-        if (wdx > hx || wdx < hx - (sw - ww) || wdy > hy || wdy < hy - (sh - wh)) {
-            return fail("window %zu vector (%g, %g) outside the search range", i, wdx, wdy);
+    if (s < NSEARCHED) {
+        if (check_vector(w, i, s, geo, wdx, wdy) != 0) {
+            return 1;
         }
-        *agree += wdx == dx && wdy == dy;
+        *agree += (s == 0 || g_searched) && wdx == dx && wdy == dy;
     } else if (wdx != 0 || wdy != 0) {
         return fail("window %zu is %s but has a vector", i, json_string_value(st));
     }
@@ -144,7 +184,7 @@ static int check_window(const json_t *w, size_t i, const double geo[4], double d
 
 /* Options after FILE DX DY MINFRAC: --min-ok N, --no-ok, --count STATUS N.
    Returns 0 or 2 (bad command line). */
-static int track_options(int argc, char **argv, long *min_ok, long want_count[4])
+static int track_options(int argc, char **argv, long *min_ok, long want_count[NSTATUS])
 {
     int a;
     for (a = 4; a < argc; a++) {
@@ -152,9 +192,13 @@ static int track_options(int argc, char **argv, long *min_ok, long want_count[4]
             *min_ok = atol(argv[++a]);
         } else if (strcmp(argv[a], "--no-ok") == 0) {
             *min_ok = 0;
+        } else if (strcmp(argv[a], "--searched") == 0) {
+            g_searched = 1;
+        } else if (strcmp(argv[a], "--whole") == 0) {
+            g_whole = 1;
         } else if (strcmp(argv[a], "--count") == 0 && a + 2 < argc) {
             int k, found = 0;
-            for (k = 0; k < 4; k++) {
+            for (k = 0; k < NSTATUS; k++) {
                 if (strcmp(argv[a + 1], status_names[k]) == 0) {
                     want_count[k] = atol(argv[a + 2]);
                     found = 1;
@@ -170,11 +214,12 @@ static int track_options(int argc, char **argv, long *min_ok, long want_count[4]
 }
 
 /* Status counts: stats agree with the windows, and with --count. */
-static int check_counts(const json_t *stats, const size_t counts[4], const long want_count[4])
+static int check_counts(const json_t *stats, const size_t counts[NSTATUS],
+                        const long want_count[NSTATUS])
 {
     double counts_json;
     int a;
-    for (a = 0; a < 4; a++) {
+    for (a = 0; a < NSTATUS; a++) {
         if (num(stats, status_names[a], &counts_json) || counts_json != (double)counts[a]) {
             return fail("stats.%s disagrees with the windows (%zu)", status_names[a], counts[a]);
         }
@@ -190,8 +235,8 @@ static int check_track(int argc, char **argv)
     json_t *j;
     const json_t *wins, *stats, *grid;
     double dx, dy, minfrac, cols, rows, geo[4], v;
-    size_t counts[4] = {0, 0, 0, 0}, agree = 0, i;
-    long min_ok = 1, want_count[4] = {-1, -1, -1, -1};
+    size_t counts[NSTATUS] = {0}, agree = 0, i;
+    long min_ok = 1, want_count[NSTATUS] = {-1, -1, -1, -1, -1, -1, -1};
     int rc = 0;
     if (argc < 4 || track_options(argc, argv, &min_ok, want_count) != 0) return 2;
     dx = atof(argv[1]);
@@ -215,11 +260,16 @@ static int check_track(int argc, char **argv)
         rc = check_window(json_array_get(wins, i), i, geo, dx, dy, counts, &agree);
     }
     rc = rc == 0 ? check_counts(stats, counts, want_count) : rc;
-    if (rc == 0 && (long)counts[0] < min_ok) {
-        rc = fail("only %zu ok windows, expected at least %ld", counts[0], min_ok);
-    } else if (rc == 0 && counts[0] > 0 && (double)agree < minfrac * (double)counts[0]) {
-        rc = fail("%zu of %zu ok windows found (%g, %g); wanted %.0f %%", agree, counts[0], dx,
-                  dy, 100 * minfrac);
+    {
+        /* the windows the agreement is over: ok, or every searched one */
+        const size_t base = g_searched ? counts[0] + counts[1] + counts[2] : counts[0];
+        if (rc == 0 && (long)base < min_ok) {
+            rc = fail("only %zu %s windows, expected at least %ld", base,
+                      g_searched ? "searched" : "ok", min_ok);
+        } else if (rc == 0 && base > 0 && (double)agree < minfrac * (double)base) {
+            rc = fail("%zu of %zu %s windows found (%g, %g); wanted %.0f %%", agree, base,
+                      g_searched ? "searched" : "ok", dx, dy, 100 * minfrac);
+        }
     }
     json_decref(j);
     return rc;

@@ -107,7 +107,7 @@ track)
   run 0 track a.png b.png --json t.json --overlay o.png --quiet
   chk track-json t.json 3 -2 1.0 --count ok 36 --count edge 28
   chk png-size o.png 896 1024
-  grep -q "median dx=+3 dy=-2" out.txt || fail "track summary"
+  grep -q "median of the 36 ok vectors dx=+3.00 dy=-2.00" out.txt || fail "track summary"
   grep -q "every" err.txt && fail "a sparse grid's overlay was thinned: $(cat err.txt)"
   # a grid too dense for the picture (8 px steps at 2x zoom = 16 output px):
   # every 2nd vector of each row and column is drawn, said on stderr; the JSON has all

@@ -25,11 +25,12 @@ track)
   # item 3: an odd margin gives a one-sided range, and says so
   "$gen" texture c.png --size 128x128 --seed 3 --shift -1,-1
   "$gen" texture d.png --size 128x128 --seed 3 --shift 1,1
+  # (two placements per axis: both on the border, every vector at_limit)
   run 0 track a.png c.png --window 16 --search 17 --json t.json --quiet &&
     stderr_has "odd margin: dx ranges over -1..+0, dy over -1..+0" &&
-    chk track-json t.json -1 -1 1.0
+    chk track-json t.json -1 -1 1.0 --searched --count ok 0
   run 0 track a.png d.png --window 16 --search 17 --json t.json --quiet &&   # +1 is out of range
-    chk track-json t.json 0 0 1.0
+    chk track-json t.json 0 0 1.0 --searched --count ok 0
   run 0 track a.png b.png --window 16 --search 40x39 --quiet && stderr_has "dx ranges over -12..+12, dy over -12..+11"
   run 0 track a.png b.png --window 16 --search 40 --quiet && grep -q "odd margin" err.txt && fail "even margin warned"
   # item 5: messages name the argument

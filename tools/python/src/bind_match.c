@@ -7,7 +7,7 @@ static PyTypeObject *match_result_type;
 static PyStructSequence_Field match_result_fields[] = {
     {"x", "best top-left column in the area, px"},
     {"y", "best top-left row in the area, px"},
-    {"sad", "sum of absolute differences there (a partial sum for an all-cut fallback)"},
+    {"sad", "sum of absolute differences there, full (an all-cut fallback's too)"},
     {"exact", "True: (x, y, sad) is the true minimum by the tie rule"},
     {"pixel_ops", "absolute differences computed, plus bound work"},
     {"positions", "position evaluations"},

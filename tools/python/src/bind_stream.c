@@ -586,14 +586,8 @@ static PyObject *py_stream_track(PyObject *self, PyObject *args, PyObject *kw)
         ssdapy_error(e, "ssda_track_grid");
         goto fail;
     }
-    if ((cfg.match.flags & SSDA_MATCH_BOUNDS) != 0u) {
-        cfg.match.work_size = SSDA_TRACK_WORK_SIZE(t.grid.search_w, t.grid.search_h,
-                                                   t.grid.win_w, t.grid.win_h);
-        if ((work = PyMem_Malloc(cfg.match.work_size)) == NULL) {
-            PyErr_NoMemory();
-            goto fail;
-        }
-        cfg.match.work = work;
+    if (ssdapy_track_work(&cfg, &t.grid, &work) != 0) {
+        goto fail;
     }
     if ((t.vectors = ssdapy_track_vectors(&t.grid, &v)) == NULL) {
         goto fail;

@@ -16,11 +16,13 @@ static PyStructSequence_Field grid_fields[] = {
 
 static PyStructSequence_Field stats_fields[] = {
     {"pixel_ops", "sum of the searches' pixel_ops"}, {"positions", NULL}, {"completed", NULL},
-    {"check_pixels", "pixels read by the mask and texture tests"}, {"windows", NULL},
-    {"ok", NULL}, {"excluded", NULL}, {"masked", NULL}, {"edge", NULL}, {NULL, NULL}};
+    {"check_pixels", "pixels read by the mask, exclusion and flat tests"}, {"windows", NULL},
+    {"ok", NULL}, {"excluded", NULL}, {"masked", NULL}, {"edge", NULL}, {"flat", NULL},
+    {"ambiguous", NULL}, {"at_limit", NULL}, {NULL, NULL}};
 
 static PyStructSequence_Field result_fields[] = {
-    {"vectors", "rows x cols structured array: sad, dx, dy, x, y, status, exact"},
+    {"vectors", "rows x cols structured array: sad, dx, dy, sub_dx_q8, sub_dy_q8, "
+                "texture_q8, x, y, unique_q8, status, exact"},
     {"grid", "the Grid the options gave"},
     {"stats", "TrackStats: totals over the call"},
     {NULL, NULL}};
@@ -49,7 +51,7 @@ static PyObject *stats_object(const ssda_track_stats_t *s)
 {
     const unsigned long long v[] = {s->pixel_ops, s->positions, s->completed,
                                     s->check_pixels, s->windows, s->ok, s->excluded,
-                                    s->masked, s->edge};
+                                    s->masked, s->edge, s->flat, s->ambiguous, s->at_limit};
     PyObject *o = PyStructSequence_New(stats_type);
     Py_ssize_t i;
     if (o == NULL) {
@@ -163,7 +165,9 @@ static int parse_u(PyObject *v, const char *name, unsigned long long hi, void *d
     if (ssdapy_uint(v, name, 0, hi, &u) != 0) {
         return -1;
     }
-    if (bytes == 2) {
+    if (bytes == 1) {
+        *(uint8_t *)dst = (uint8_t)u;
+    } else if (bytes == 2) {
         *(uint16_t *)dst = (uint16_t)u;
     } else {
         *(uint32_t *)dst = (uint32_t)u;
@@ -190,10 +194,40 @@ static int parse_mask(PyObject *v, ssda_track_config_t *cfg)
     return 0;
 }
 
+/* The quality options (issue 15), as the ssda tool has them: flat test and
+   sub-pixel fit on, uniqueness on in the exact modes (dropped in the others
+   unless unique=True is given, which the library then refuses). */
+static int quality_options(PyObject *kw, ssda_track_config_t *cfg, int *unique_given)
+{
+    uint8_t on = SSDA_TRACK_UNIQUE, flat = 1, sub = 1;
+    PyObject *u = ssdapy_kw_take(kw, "unique");
+    if (u != NULL) {
+        int rc = parse_flag(u, &on, SSDA_TRACK_UNIQUE);
+        *unique_given = PyObject_IsTrue(u) == 1;
+        Py_DECREF(u);
+        if (rc != 0) {
+            return -1;
+        }
+    }
+    cfg->flags |= on;
+    TAKE("flat", parse_flag(v_, &flat, 1));
+    TAKE("subpixel", parse_flag(v_, &sub, 1));
+    cfg->flags |= (uint8_t)((flat ? 0u : SSDA_TRACK_NO_FLAT) | (sub ? 0u : SSDA_TRACK_NO_SUBPIXEL));
+    TAKE("flat_q8", parse_u(v_, "flat_q8", 65535u * 256u, &cfg->flat_q8, 4));
+    TAKE("unique_q8", parse_u(v_, "unique_q8", 1024u, &cfg->unique_q8, 2));
+    TAKE("unique_radius", parse_u(v_, "unique_radius", 2u, &cfg->unique_radius, 1));
+    return 0;
+}
+
 int ssdapy_track_options(PyObject *kw, ssda_track_config_t *cfg)
 {
+    int unique_given = 0;
+    const ssda_match_config_t *m = &cfg->match;
     memset(cfg, 0, sizeof *cfg);
     cfg->predict = SSDA_TRACK_PREDICT_MEDIAN;
+    if (quality_options(kw, cfg, &unique_given) != 0) {
+        return -1;
+    }
     TAKE("window", ssdapy_size2(v_, "window", 1, 65535u, &cfg->win_w, &cfg->win_h));
     TAKE("search", ssdapy_size2(v_, "search", 1, 65535u, &cfg->search_w, &cfg->search_h));
     TAKE("step", ssdapy_size2(v_, "step", 1, 65535u, &cfg->step_x, &cfg->step_y));
@@ -205,7 +239,31 @@ int ssdapy_track_options(PyObject *kw, ssda_track_config_t *cfg)
     TAKE("texture_min_count", parse_u(v_, "texture_min_count", 0xFFFFFFFFu,
                                       &cfg->texture_min_count, 4));
     TAKE("mask_value", parse_mask(v_, cfg));
-    return ssdapy_match_options(kw, &cfg->match, 0);
+    if (ssdapy_match_options(kw, &cfg->match, 0) != 0) {
+        return -1;
+    }
+    if (!unique_given && (m->scan == SSDA_SCAN_COARSE || (m->threshold != SSDA_THRESHOLD_AUTO &&
+                                                           m->threshold != SSDA_THRESHOLD_NONE))) {
+        cfg->flags &= (uint8_t)~SSDA_TRACK_UNIQUE; /* the default, not in this mode */
+    }
+    return 0;
+}
+
+int ssdapy_track_work(ssda_track_config_t *cfg, const ssda_track_grid_t *g, void **work)
+{
+    *work = NULL;
+    if ((cfg->match.flags & SSDA_MATCH_BOUNDS) == 0u && (cfg->flags & SSDA_TRACK_UNIQUE) == 0u) {
+        return 0;
+    }
+    /* the bounds tables and the uniqueness list; PyMem's blocks are
+       aligned for 8-byte values */
+    cfg->match.work_size = SSDA_TRACK_WORK_SIZE(g->search_w, g->search_h, g->win_w, g->win_h);
+    if ((*work = PyMem_Malloc(cfg->match.work_size)) == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    cfg->match.work = *work;
+    return 0;
 }
 
 static PyObject *py_track(PyObject *self, PyObject *args, PyObject *kw)
@@ -236,13 +294,8 @@ static PyObject *py_track(PyObject *self, PyObject *args, PyObject *kw)
         ssdapy_error(e, "ssda_track_grid");
         goto done;
     }
-    if ((cfg.match.flags & SSDA_MATCH_BOUNDS) != 0u) {
-        cfg.match.work_size = SSDA_TRACK_WORK_SIZE(g.search_w, g.search_h, g.win_w, g.win_h);
-        if ((work = PyMem_Malloc(cfg.match.work_size)) == NULL) {
-            PyErr_NoMemory();
-            goto done;
-        }
-        cfg.match.work = work;
+    if (ssdapy_track_work(&cfg, &g, &work) != 0) {
+        goto done;
     }
     if ((vec = ssdapy_track_vectors(&g, &v)) == NULL) {
         goto done;
@@ -282,7 +335,8 @@ static PyObject *py_track_grid(PyObject *self, PyObject *args, PyObject *kw)
 #define TRACK_OPTS                                                                    \
     "window=16, search=None, step=None, roi=None, predict='median', exclude=False, "  \
     "texture_threshold=0, texture_min_count=0, mask_value=None, threshold='auto', "   \
-    "scan='raster', order='rows', bounds=True, k_q8=0, lambda_q8=0, "                 \
+    "scan='raster', order='rows', bounds=True, k_q8=0, lambda_q8=0, flat=True, "      \
+    "unique=None, subpixel=True, flat_q8=0, unique_q8=0, unique_radius=0, "           \
     "fixed_threshold=0, coarse_step=0"
 
 static PyMethodDef methods[] = {
@@ -292,8 +346,15 @@ static PyMethodDef methods[] = {
      "first centred on it (ssda_track, ssda/track.h). first and second are 2-D uint8\n"
      "or uint16 arrays of one dtype. Returns TrackResult(vectors, grid, stats):\n"
      "vectors is a (rows, cols) structured array with fields sad, dx, dy (motion\n"
-     "from first to second, px), x, y (window top-left in second), status\n"
-     "(TRACK_OK, TRACK_EXCLUDED, TRACK_MASKED, TRACK_EDGE) and exact.\n"
+     "from first to second, px), sub_dx_q8, sub_dy_q8 (sub-pixel motion, 1/256 px),\n"
+     "texture_q8 (the window's mean absolute deviation, 1/256), x, y (window\n"
+     "top-left in second), unique_q8 (ambiguous windows: second-best SAD over\n"
+     "best, 1/256; else MATCH_UNIQUE_NONE), status (TRACK_OK, TRACK_FLAT,\n"
+     "TRACK_AMBIGUOUS, TRACK_AT_LIMIT, TRACK_EXCLUDED, TRACK_MASKED, TRACK_EDGE;\n"
+     "trust TRACK_OK vectors) and exact. flat, unique, subpixel: the quality\n"
+     "tests (on, as in the ssda tool; unique only in the exact modes unless\n"
+     "given); flat_q8, unique_q8, unique_radius: their levels (0 = the library's\n"
+     "defaults 320, 282, 2).\n"
      "window, search, step: N or (w, h) (defaults 16, twice the window, the\n"
      "window); roi: (x, y, w, h) of second; predict: 'median' (default), 'left'\n"
      "(the seed's) or 'none'; exclude: skip textureless windows (texture_threshold,\n"
@@ -308,25 +369,30 @@ static PyMethodDef methods[] = {
 
 int ssdapy_init_track(PyObject *m)
 {
-    static const char *const names[] = {"sad", "dx", "dy", "x", "y", "status", "exact"};
-    static const char *const formats[] = {"u8", "i4", "i4", "u2", "u2", "u1", "?"};
+    static const char *const names[] = {"sad", "dx", "dy", "sub_dx_q8", "sub_dy_q8",
+                                        "texture_q8", "x", "y", "unique_q8", "status",
+                                        "exact"};
+    static const char *const formats[] = {"u8", "i4", "i4", "i4", "i4", "u4",
+                                          "u2", "u2", "u2", "u1", "?"};
     static const size_t offsets[] = {
         offsetof(ssda_track_vector_t, sad), offsetof(ssda_track_vector_t, dx),
-        offsetof(ssda_track_vector_t, dy), offsetof(ssda_track_vector_t, x),
-        offsetof(ssda_track_vector_t, y), offsetof(ssda_track_vector_t, status),
+        offsetof(ssda_track_vector_t, dy), offsetof(ssda_track_vector_t, sub_dx_q8),
+        offsetof(ssda_track_vector_t, sub_dy_q8), offsetof(ssda_track_vector_t, texture_q8),
+        offsetof(ssda_track_vector_t, x), offsetof(ssda_track_vector_t, y),
+        offsetof(ssda_track_vector_t, unique_q8), offsetof(ssda_track_vector_t, status),
         offsetof(ssda_track_vector_t, exact)};
     _Static_assert(sizeof(bool) == 1, "numpy '?' is one byte");
     grid_type = ssdapy_struct_type(m, "ssda.Grid", "A tracking grid (ssda_track_grid_t).",
                                    grid_fields, 13);
     stats_type = ssdapy_struct_type(m, "ssda.TrackStats",
                                     "Totals over one tracking call (ssda_track_stats_t).",
-                                    stats_fields, 9);
+                                    stats_fields, 12);
     result_type = ssdapy_struct_type(m, "ssda.TrackResult",
                                      "Result of track / stream_track.", result_fields, 3);
     if (grid_type == NULL || stats_type == NULL || result_type == NULL) {
         return -1;
     }
-    vector_dtype = ssdapy_np_struct_dtype(7, names, formats, offsets,
+    vector_dtype = ssdapy_np_struct_dtype(11, names, formats, offsets,
                                           sizeof(ssda_track_vector_t));
     if (vector_dtype == NULL) {
         return -1;
@@ -336,7 +402,11 @@ int ssdapy_init_track(PyObject *m)
         PyModule_AddIntConstant(m, "TRACK_OK", SSDA_TRACK_OK) != 0 ||
         PyModule_AddIntConstant(m, "TRACK_EXCLUDED", SSDA_TRACK_EXCLUDED) != 0 ||
         PyModule_AddIntConstant(m, "TRACK_MASKED", SSDA_TRACK_MASKED) != 0 ||
-        PyModule_AddIntConstant(m, "TRACK_EDGE", SSDA_TRACK_EDGE) != 0) {
+        PyModule_AddIntConstant(m, "TRACK_EDGE", SSDA_TRACK_EDGE) != 0 ||
+        PyModule_AddIntConstant(m, "TRACK_FLAT", SSDA_TRACK_FLAT) != 0 ||
+        PyModule_AddIntConstant(m, "TRACK_AMBIGUOUS", SSDA_TRACK_AMBIGUOUS) != 0 ||
+        PyModule_AddIntConstant(m, "TRACK_AT_LIMIT", SSDA_TRACK_AT_LIMIT) != 0 ||
+        PyModule_AddIntConstant(m, "MATCH_UNIQUE_NONE", SSDA_MATCH_UNIQUE_NONE) != 0) {
         return -1;
     }
     return PyModule_AddFunctions(m, methods);

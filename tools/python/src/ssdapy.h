@@ -182,6 +182,9 @@ PyObject *ssdapy_match_result(const ssda_match_result_t *r);
 /* Take the tracking options (bind_track.c) into *cfg; cfg->match.work is
    left NULL (see ssdapy_track_work). */
 int ssdapy_track_options(PyObject *kw, ssda_track_config_t *cfg);
+/* The work buffer cfg needs (bounds tables, uniqueness list) on grid g, set
+   into cfg; *work (PyMem) is freed by the caller. 0, or -1 (MemoryError). */
+int ssdapy_track_work(ssda_track_config_t *cfg, const ssda_track_grid_t *g, void **work);
 /* The TrackResult of a finished tracking call: vectors (rows x cols
    structured array, written by the library), grid and stats. */
 PyObject *ssdapy_track_vectors(const ssda_track_grid_t *g, ssda_track_vector_t **data);

@@ -65,7 +65,9 @@ static const field_t track_fields[] = {
     F(ssda_track_config_t, roi_w, 2),   F(ssda_track_config_t, roi_h, 2),
     F(ssda_track_config_t, predict, 1), F(ssda_track_config_t, flags, 1),
     F(ssda_track_config_t, mask_value, 2), F(ssda_track_config_t, texture_threshold, 2),
-    F(ssda_track_config_t, texture_min_count, 4), {NULL, 0, 0}};
+    F(ssda_track_config_t, texture_min_count, 4), F(ssda_track_config_t, flat_q8, 4),
+    F(ssda_track_config_t, unique_q8, 2), F(ssda_track_config_t, unique_radius, 1),
+    {NULL, 0, 0}};
 
 static const field_t pitch_fields[] = {
     F(ssda_pitch_config_t, f0_min_hz, 2),  F(ssda_pitch_config_t, f0_max_hz, 2),
@@ -252,21 +254,24 @@ static int run_track(int argc, char **argv)
     if ((e = ssda_track_grid(&cfg, vb.width, vb.height, &g)) != SSDA_OK) {
         return fail(e);
     }
-    if (cfg.match.flags & SSDA_MATCH_BOUNDS) {
+    if ((cfg.match.flags & SSDA_MATCH_BOUNDS) || (cfg.flags & SSDA_TRACK_UNIQUE)) {
         cfg.match.work_size = SSDA_TRACK_WORK_SIZE(g.search_w, g.search_h, g.win_w, g.win_h);
-        cfg.match.work = malloc(cfg.match.work_size);
+        cfg.match.work = malloc(cfg.match.work_size); /* malloc: 8-byte aligned */
     }
     v = calloc(g.count, sizeof *v);
     if ((e = ssda_track(&va, &vb, &cfg, v, g.count, &s)) != SSDA_OK) {
         return fail(e);
     }
     printf("%u %u %u\n", g.count, g.cols, g.rows);
-    printf("%llu %llu %llu %llu %u %u %u %u %u\n", (unsigned long long)s.pixel_ops,
+    printf("%llu %llu %llu %llu %u %u %u %u %u %u %u %u\n", (unsigned long long)s.pixel_ops,
            (unsigned long long)s.positions, (unsigned long long)s.completed,
-           (unsigned long long)s.check_pixels, s.windows, s.ok, s.excluded, s.masked, s.edge);
+           (unsigned long long)s.check_pixels, s.windows, s.ok, s.excluded, s.masked, s.edge,
+           s.flat, s.ambiguous, s.at_limit);
     for (i = 0; i < (int)g.count; i++) {
-        printf("%llu %d %d %u %u %u %d\n", (unsigned long long)v[i].sad, (int)v[i].dx,
-               (int)v[i].dy, v[i].x, v[i].y, v[i].status, v[i].exact ? 1 : 0);
+        printf("%llu %d %d %d %d %u %u %u %u %u %d\n", (unsigned long long)v[i].sad,
+               (int)v[i].dx, (int)v[i].dy, (int)v[i].sub_dx_q8, (int)v[i].sub_dy_q8,
+               (unsigned)v[i].texture_q8, v[i].x, v[i].y, v[i].unique_q8, v[i].status,
+               v[i].exact ? 1 : 0);
     }
     return 0;
 }

@@ -10,7 +10,10 @@ from conftest import shifted_pair, write_png
 
 PREDICT = {"none": 0, "left": 1, "median": 2}
 STATUS = {"ok": ssda.TRACK_OK, "excluded": ssda.TRACK_EXCLUDED,
-          "masked": ssda.TRACK_MASKED, "edge": ssda.TRACK_EDGE}
+          "masked": ssda.TRACK_MASKED, "edge": ssda.TRACK_EDGE, "flat": ssda.TRACK_FLAT,
+          "ambiguous": ssda.TRACK_AMBIGUOUS, "at_limit": ssda.TRACK_AT_LIMIT}
+FIELDS = ("sad", "dx", "dy", "sub_dx_q8", "sub_dy_q8", "texture_q8", "x", "y", "unique_q8",
+          "status", "exact")
 
 
 @pytest.mark.parametrize("dtype", [np.uint8, np.uint16])
@@ -38,10 +41,14 @@ CASES = [
      ["win_w=12", "win_h=8", "search_w=20", "search_h=18", "step_x=6", "step_y=5",
       "roi_x=4", "roi_y=6", "roi_w=90", "roi_h=70"]),
     ({"exclude": True, "texture_threshold": 100, "texture_min_count": 30, "order": "spread"},
-     ["flags=1", "texture_threshold=100", "texture_min_count=30", "m.order=1"]),
+     ["flags=9", "texture_threshold=100", "texture_min_count=30", "m.order=1"]),
+    # uniqueness is on by default only in the exact modes
     ({"mask_value": 0, "threshold": "auto_ramp"}, ["flags=2", "mask_value=0", "m.threshold=4"]),
     ({"predict": "none", "scan": "coarse", "threshold": "fixed", "fixed_threshold": 3000},
-     ["predict=0", "m.scan=2", "m.threshold=2", "m.fixed_threshold=3000"]),
+     ["flags=0", "predict=0", "m.scan=2", "m.threshold=2", "m.fixed_threshold=3000"]),
+    ({"flat": False, "unique": False, "subpixel": False}, ["flags=20"]),
+    ({"flat_q8": 700, "unique_q8": 400, "unique_radius": 1},
+     ["flat_q8=700", "unique_q8=400", "unique_radius=1"]),
 ]
 
 
@@ -55,16 +62,15 @@ def test_every_field_equals_the_c_library(cref, dtype, opts, cargs):
     if "exclude" in opts:  # flat regions
         first[:, :30] = second[:, :30] = 7
     bpp = np.dtype(dtype).itemsize
-    defaults = ["predict=2", "m.flags=1"]  # the binding's defaults (the tool's)
+    defaults = ["predict=2", "m.flags=1", "flags=8"]  # the binding's defaults (the tool's)
     lines = cref("track", cref.raw("f.raw", first), cref.raw("s.raw", second), 100, 80, bpp,
                  *(defaults + cargs))
     r = ssda.track(first, second, **opts)
     assert [r.grid.count, r.grid.cols, r.grid.rows] == lines[0]
     s = r.stats
     assert [s.pixel_ops, s.positions, s.completed, s.check_pixels, s.windows, s.ok,
-            s.excluded, s.masked, s.edge] == lines[1]
-    got = [[int(v["sad"]), int(v["dx"]), int(v["dy"]), int(v["x"]), int(v["y"]),
-            int(v["status"]), int(v["exact"])] for v in r.vectors.ravel()]
+            s.excluded, s.masked, s.edge, s.flat, s.ambiguous, s.at_limit] == lines[1]
+    got = [[int(v[f]) for f in FIELDS] for v in r.vectors.ravel()]
     assert got == lines[2:]
 
 
@@ -86,17 +92,19 @@ def test_equals_the_ssda_tool(cli, tmp_path, dtype, cli_opts, opts):
     j = json.loads((tmp_path / "out.json").read_text())
     r = ssda.track(first, second, **opts)
     assert [r.grid.cols, r.grid.rows] == [j["grid"]["cols"], j["grid"]["rows"]]
-    want = [(w["x"], w["y"], w["dx"], w["dy"], w["sad"], STATUS[w["status"]], w["exact"])
+    want = [(w["x"], w["y"], w["dx"], w["dy"], w["sad"], STATUS[w["status"]], w["exact"],
+             round(w["sub_dx"] * 256), round(w["sub_dy"] * 256))
             for w in j["windows"]]
     got = [(int(v["x"]), int(v["y"]), int(v["dx"]), int(v["dy"]), int(v["sad"]),
-            int(v["status"]), bool(v["exact"])) for v in r.vectors.ravel()]
+            int(v["status"]), bool(v["exact"]), int(v["sub_dx_q8"]), int(v["sub_dy_q8"]))
+           for v in r.vectors.ravel()]
     assert got == want
     for k in ("pixel_ops", "positions", "completed", "check_pixels", "ok", "excluded",
-              "masked", "edge"):
+              "masked", "edge", "flat", "ambiguous", "at_limit"):
         assert getattr(r.stats, k) == j["stats"][k], k
 
 
 def test_vectors_dtype_is_the_c_struct():
     dt = ssda.TRACK_VECTOR_DTYPE
-    assert dt.names == ("sad", "dx", "dy", "x", "y", "status", "exact")
+    assert dt.names == FIELDS
     assert dt["dx"] == np.int32 and dt["sad"] == np.uint64 and dt["exact"] == np.bool_
