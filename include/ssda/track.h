@@ -46,7 +46,9 @@
  *   Defaults: texture_threshold = half the sample range (128 for 8-bit,
  *   32768 for 16-bit; set it for your data, e.g. a cloud/clear level, or
  *   2048 for 12-bit counts); texture_min_count = win_w * win_h / 16 (16 of
- *   256 for the 16 x 16 window), at least 1.
+ *   256 for the 16 x 16 window), at least 1, at most win_w * win_h / 2: a
+ *   default is always valid, and for a 1 x 1 window (no texture to count)
+ *   it is 0, so that no window is excluded.
  *
  * PREDICTION (the seed, section 4 and Table 3: "prediction was made so that
  * the motion vector equals that of the neighbouring region"): windows are
@@ -123,7 +125,8 @@ typedef struct {
                                     (0 = half range: 128 or 32768) */
     uint32_t texture_min_count;  /* SSDA_TRACK_EXCLUDE: pixels needed on each side
                                     of the threshold, 2 * count <= win_w * win_h
-                                    (0 = win_w * win_h / 16, at least 1) */
+                                    (0 = win_w * win_h / 16, at least 1; 0 for a
+                                    1 x 1 window: nothing excluded) */
     /* Search options for every window (see match.h). predict_x/predict_y
        are ignored (set per window). With a prediction mode other than
        NONE, scan must be RASTER or PREDICT and is run as PREDICT.
@@ -151,7 +154,7 @@ typedef struct {
     ssda_match_plan_t match;    /* every window's search (scan set for the prediction) */
     ssda_track_grid_t grid;
     uint32_t texture_threshold; /* < the format's maximum */
-    uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 */
+    uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 (0 for a 1 x 1 window) */
     uint16_t mask_value;        /* <= the format's maximum */
     uint16_t first_w, first_h;  /* FIRST's size (the EDGE test) */
     uint8_t predict;            /* ssda_track_predict_t */
