@@ -369,7 +369,6 @@ typedef struct {
     uint8_t format;
     uint8_t state;               /* search, tracking, done, or stopped */
     uint8_t role;                /* ssda_push_role_t (tracking) */
-    bool other_banded;           /* a streamed other's plate holds a band */
     ssda_source_t *other;        /* the window (search) or the other image */
     ssda_source_plan_t other_plate; /* a streamed other's plate for the job */
     ssda_rect_t area;            /* search: the area in the pushed image */
