@@ -218,21 +218,22 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
     const ssda_pitch_info_t *info = f->info;
     const uint32_t margin_q20 = (((uint32_t)info->threshold_q15 * 43691u) >> 17) << 5;
     const uint32_t limit = floor_q20 + margin_q20 / 2u; /* < 2^21 */
-    uint32_t k;
+    uint32_t k = 2u;
     if (period_q16 + 32768u < info->lag_min << 16) {
         return true; /* the dip itself is more than half a lag below the range */
     }
     if (period_q16 >= (2u * info->lag_min) << 16) { /* lag_min <= 4800: < 2^30 */
         return false; /* every sub-period is in range: the scan saw it */
     }
-    for (k = 2u; ; k++) {
+    for (;;) { /* k = 2, 3, ... while round(P / k) >= 3 */
         /* round(P / k): P < 2 lag_min <= 9600 samples, Q16 < 2^30 */
         const uint32_t c = SSDA_DIV32(period_q16 + (k << 15), k << 16);
         uint32_t lag;
+        k++;
         if (c < 3u) {
             return false;
         }
-        if (c >= info->lag_min || (uint64_t)period_q16 >= (uint64_t)k * (info->lag_min << 16)) {
+        if (c >= info->lag_min || (uint64_t)period_q16 >= (uint64_t)(k - 1u) * (info->lag_min << 16)) {
             continue; /* P / k in range: a dip there would have been found */
         }
         for (lag = c - 2u; lag <= c + 2u; lag++) {
