@@ -206,8 +206,9 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
 /*
  * Below-range check (see pitch.h, step 6): a tone above f0_max has its
  * first dip in range at a multiple P of its period (1 500 Hz read 750 Hz).
- * True (unvoiced) when P itself is below lag_min - 1/2. When P < 2 lag_min, look at each sub-period P / k (k >= 2) below lag_min
- * and at least 3 samples: lags c - 2 .. c + 2 around c = round(P / k),
+ * True (unvoiced) when P itself is below lag_min - 1/2. When P < 2 lag_min,
+ * look at each sub-period P / k (k >= 2) below lag_min and at least 3
+ * samples: lags c - 2 .. c + 2 around c = round(P / k),
  * summed in full; if the interpolated floor at a local minimum among
  * c - 1 .. c + 1 is within half the octave margin of F (nq_floor <= F +
  * margin / 2), the period is shorter than the range allows and the frame
