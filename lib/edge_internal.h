@@ -24,8 +24,10 @@ SSDA_INTERNAL uint32_t ssda__edge_ring(const uint16_t *map, uint32_t w, uint32_t
 
 /* Facts about a ring code. */
 typedef struct {
-    uint32_t runs;       /* cyclic runs of set bits (0 for 0x00, 1 for 0xFF) */
-    uint32_t c8;         /* 8-connected components of the set bits within the ring */
+    uint32_t runs;       /* cyclic runs of set bits, 0..3 (3: three or more;
+                            0 for 0x00, 1 for 0xFF) */
+    uint32_t c8;         /* 1: the set bits are one 8-connected component
+                            within the ring; 2: not (0x00 gives 2) */
     bool unsuitable;     /* a run of >= 4, or a run of 3 centred on a diagonal */
     bool keeps4;         /* every set 4-neighbour lies in one run */
     uint32_t bg4;        /* 4-neighbours not set, 0..4 */

@@ -8,6 +8,21 @@ const int8_t ssda__ring_dy[8] = {0, -1, -1, -1, 0, 1, 1, 1};
 uint32_t ssda__edge_ring(const uint16_t *map, uint32_t w, uint32_t h, uint32_t x, uint32_t y)
 {
     uint32_t ring = 0u, k;
+    if (x > 0u && y > 0u && x + 1u < w && y + 1u < h) { /* inside: no bound tests */
+        const uint32_t ym = y - 1u;
+        const uint16_t *up = map + (size_t)ym * w + x;
+        const uint16_t *mid = up + w;
+        const uint16_t *down = mid + w;
+        /* bit k from neighbour k: E, NE, N, NW, W, SW, S, SE */
+        const uint32_t on[8] = {mid[1], up[1], up[0], up[-1], mid[-1], down[-1], down[0],
+                                down[1]};
+        for (k = 0u; k < 8u; k++) {
+            if ((on[k] & SSDA_EDGE_ON) != 0u) {
+                ring |= 1u << k;
+            }
+        }
+        return ring;
+    }
     for (k = 0u; k < 8u; k++) {
         const int32_t nx = (int32_t)x + ssda__ring_dx[k];
         const int32_t ny = (int32_t)y + ssda__ring_dy[k];
@@ -24,59 +39,54 @@ static bool bit(uint32_t ring, uint32_t k)
     return ((ring >> (k & 7u)) & 1u) != 0u;
 }
 
-/* 8-connected components of the set positions inside the ring: positions
-   k, k+1 are always adjacent; k, k+2 too when k is even (two 4-neighbours
-   meet at a corner). Counted as runs, less the runs joined across a clear
-   corner between two set 4-neighbours. */
-static uint32_t components8(uint32_t ring, uint32_t runs)
-{
-    uint32_t joins = 0u, k;
-    if (runs <= 1u) {
-        return runs;
-    }
-    for (k = 0u; k < 8u; k += 2u) {
-        if (bit(ring, k) && !bit(ring, k + 1u) && bit(ring, k + 2u)) {
-            joins++;
-        }
-    }
-    /* joins link runs around the ring: a cycle (the four 4-neighbours
-       alone) joins as many times as there are runs, into one */
-    return joins >= runs ? 1u : runs - joins;
-}
-
 void ssda__ring_info(uint32_t ring, ssda__ring_info_t *info)
 {
-    uint32_t k, runs = 0u, even_runs = 0u;
-    bool unsuitable = ring == 0xFFu;
-    info->bg4 = 0u;
-    for (k = 0u; k < 8u; k++) {
-        if (bit(ring, k) && !bit(ring, k + 7u)) { /* a run starts at k */
-            uint32_t len = 0u;
-            bool has_even = false;
-            while (len < 8u && bit(ring, k + len)) {
-                has_even = has_even || ((k + len) & 1u) == 0u;
-                len++;
-            }
-            runs++;
-            even_runs += has_even ? 1u : 0u;
-            /* four or more in a row; or three whose middle is a corner
-               (the centre and the three make a 2 x 2 block) */
-            if (len >= 4u || (len == 3u && ((k + 1u) & 1u) != 0u)) {
-                unsuitable = true;
-            }
-        }
-        if ((k & 1u) == 0u && !bit(ring, k)) {
-            info->bg4++;
-        }
+    /*
+     * Facts of every ring code, one byte each (printed by
+     * tools/gen_ring_facts.py from the definitions below;
+     * tests/test_edge_refine.c checks the classes and the thinning's choices
+     * against the appendix written out there):
+     *   bits 0-1  cyclic runs of set bits, 3 standing for 3 or more (0xFF: 1)
+     *   bit  2    unsuitable: a run of >= 4, or of 3 centred on a diagonal
+     *   bit  3    every set 4-neighbour lies in one run (deletion keeps
+     *             4-connectivity)
+     *   bit  4    the set bits form one 8-connected component within the ring
+     *             (runs joined across a clear corner between two set
+     *             4-neighbours)
+     *   bits 5-7  4-neighbours not set, 0..4
+     */
+    static const uint8_t ring_facts[256] = {
+        0x88u, 0x79u, 0x99u, 0x79u, 0x79u, 0x52u, 0x79u, 0x5Du, 0x99u, 0x6Au, 0x8Au, 0x6Au,
+        0x79u, 0x52u, 0x79u, 0x5Du, 0x79u, 0x42u, 0x6Au, 0x42u, 0x52u, 0x33u, 0x52u, 0x36u,
+        0x79u, 0x42u, 0x6Au, 0x42u, 0x5Du, 0x36u, 0x5Du, 0x3Du, 0x99u, 0x6Au, 0x8Au, 0x6Au,
+        0x6Au, 0x43u, 0x6Au, 0x4Eu, 0x8Au, 0x6Bu, 0x8Bu, 0x6Bu, 0x6Au, 0x43u, 0x6Au, 0x4Eu,
+        0x79u, 0x42u, 0x6Au, 0x42u, 0x52u, 0x33u, 0x52u, 0x36u, 0x79u, 0x42u, 0x6Au, 0x42u,
+        0x5Du, 0x36u, 0x5Du, 0x3Du, 0x79u, 0x52u, 0x6Au, 0x52u, 0x42u, 0x33u, 0x42u, 0x36u,
+        0x6Au, 0x43u, 0x6Bu, 0x43u, 0x42u, 0x33u, 0x42u, 0x36u, 0x52u, 0x33u, 0x43u, 0x33u,
+        0x33u, 0x13u, 0x33u, 0x17u, 0x52u, 0x33u, 0x43u, 0x33u, 0x36u, 0x17u, 0x36u, 0x16u,
+        0x79u, 0x52u, 0x6Au, 0x52u, 0x42u, 0x33u, 0x42u, 0x36u, 0x6Au, 0x43u, 0x6Bu, 0x43u,
+        0x42u, 0x33u, 0x42u, 0x36u, 0x5Du, 0x36u, 0x4Eu, 0x36u, 0x36u, 0x17u, 0x36u, 0x16u,
+        0x5Du, 0x36u, 0x4Eu, 0x36u, 0x3Du, 0x16u, 0x3Du, 0x1Du, 0x99u, 0x79u, 0x8Au, 0x79u,
+        0x6Au, 0x52u, 0x6Au, 0x5Du, 0x8Au, 0x6Au, 0x8Bu, 0x6Au, 0x6Au, 0x52u, 0x6Au, 0x5Du,
+        0x6Au, 0x42u, 0x6Bu, 0x42u, 0x43u, 0x33u, 0x43u, 0x36u, 0x6Au, 0x42u, 0x6Bu, 0x42u,
+        0x4Eu, 0x36u, 0x4Eu, 0x3Du, 0x8Au, 0x6Au, 0x8Bu, 0x6Au, 0x6Bu, 0x43u, 0x6Bu, 0x4Eu,
+        0x8Bu, 0x6Bu, 0x8Bu, 0x6Bu, 0x6Bu, 0x43u, 0x6Bu, 0x4Eu, 0x6Au, 0x42u, 0x6Bu, 0x42u,
+        0x43u, 0x33u, 0x43u, 0x36u, 0x6Au, 0x42u, 0x6Bu, 0x42u, 0x4Eu, 0x36u, 0x4Eu, 0x3Du,
+        0x79u, 0x5Du, 0x6Au, 0x5Du, 0x42u, 0x36u, 0x42u, 0x3Du, 0x6Au, 0x4Eu, 0x6Bu, 0x4Eu,
+        0x42u, 0x36u, 0x42u, 0x3Du, 0x52u, 0x36u, 0x43u, 0x36u, 0x33u, 0x17u, 0x33u, 0x16u,
+        0x52u, 0x36u, 0x43u, 0x36u, 0x36u, 0x16u, 0x36u, 0x1Du, 0x79u, 0x5Du, 0x6Au, 0x5Du,
+        0x42u, 0x36u, 0x42u, 0x3Du, 0x6Au, 0x4Eu, 0x6Bu, 0x4Eu, 0x42u, 0x36u, 0x42u, 0x3Du,
+        0x5Du, 0x3Du, 0x4Eu, 0x3Du, 0x36u, 0x16u, 0x36u, 0x1Du, 0x5Du, 0x3Du, 0x4Eu, 0x3Du,
+        0x3Du, 0x1Du, 0x3Du, 0x1Du};
+    const uint32_t f = ring_facts[ring & 0xFFu];
+    info->runs = f & 3u;
+    info->unsuitable = (f & 4u) != 0u;
+    info->keeps4 = (f & 8u) != 0u;
+    info->c8 = 2u; /* only "one component or not" is used */
+    if ((f & 16u) != 0u) {
+        info->c8 = 1u;
     }
-    if (ring == 0xFFu) {
-        runs = 1u;
-        even_runs = 1u;
-    }
-    info->runs = runs;
-    info->c8 = components8(ring, runs);
-    info->unsuitable = unsuitable;
-    info->keeps4 = even_runs <= 1u;
+    info->bg4 = f >> 5;
 }
 
 uint32_t ssda__ring_class(uint32_t ring)

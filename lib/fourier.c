@@ -115,14 +115,43 @@ uint32_t ssda__fd_abs(const ssda_fd_coef_t *c)
     return ssda__isqrt64(norm2(c));
 }
 
-uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b)
+/* sum |a_n| |b_n| over both orders' signs: < 32 * 2^25 * 2^25 */
+static uint64_t abs_products(const ssda_fd_t *a, const ssda_fd_t *b)
 {
-    uint64_t sum = 0u; /* sum |a_n| |b_n| < 32 * 2^25 * 2^25 */
-    uint32_t k, r1, r2, q;
+    uint64_t sum = 0u;
+    uint32_t k;
     for (k = 0u; k < a->order; k++) {
         sum += (uint64_t)ssda__fd_abs(&a->pos[k]) * ssda__fd_abs(&b->pos[k]);
         sum += (uint64_t)ssda__fd_abs(&a->neg[k]) * ssda__fd_abs(&b->neg[k]);
     }
+    return sum;
+}
+
+uint32_t ssda__fd_fixed_bound(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16)
+{
+    /* E^2 = 1 + s^2 A / B - 2 s Re(...) / B >= 1 + s^2 A / B - 2 s sum / B:
+       the first ratio rounded down, the second up, then 4 LSB off */
+    const uint32_t ab = ssda__ratio_q16(a->energy_q16, 0, b->energy_q16);
+    const uint64_t t1 = ((uint64_t)ssda__mulshr_sat(s_q16, s_q16, 16u) * ab) >> 16;
+    uint64_t t2, e;
+    uint32_t sb;
+    if (t1 > 0xFFFFFFFFu) {
+        return 0xFFFFFFFFu; /* E^2 >= (sqrt(t1) - 1)^2, as ssda_fd_match_fixed */
+    }
+    sb = ssda__ratio_q16(abs_products(a, b), 0, b->energy_q16);
+    {
+        const uint64_t s2 = (uint64_t)s_q16 * 2u;
+        t2 = ((s2 * ((uint64_t)sb + 1u)) >> 16) + 1u; /* < 2^25 * 2^32 */
+    }
+    e = 65536u + t1;
+    e = e > t2 + 4u ? e - t2 - 4u : 0u;
+    return e > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)e;
+}
+
+uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b)
+{
+    const uint64_t sum = abs_products(a, b);
+    uint32_t r1, r2, q;
     /* E^2 >= 1 - sum^2 / (A B) = 1 - (sum / A)(sum / B); each ratio and
        the product rounded up, so the bound stays below the true one */
     r1 = ssda__ratio_q16(sum, 0, a->energy_q16);

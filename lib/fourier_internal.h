@@ -17,6 +17,10 @@ SSDA_INTERNAL uint32_t ssda__mulshr_sat(uint32_t a, uint32_t b, uint32_t s);
    |Z(alpha)| <= sum |a_n| |b_n| (Cauchy-Schwarz per term). Same orders. */
 SSDA_INTERNAL uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b);
 
+/* A lower bound of ssda_fd_match_fixed's E^2 (Q16) for scale s_q16 (1..2^24)
+   and any rotation, without the search. Same orders. */
+SSDA_INTERNAL uint32_t ssda__fd_fixed_bound(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16);
+
 /* |a| for a complex coefficient, Q8 px (isqrt, floor). */
 SSDA_INTERNAL uint32_t ssda__fd_abs(const ssda_fd_coef_t *c);
 

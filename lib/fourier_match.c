@@ -5,7 +5,6 @@
 #include "fixmath.h"
 #include "fixtrig.h"
 
-#define TERMS (2u * SSDA_FD_MAX_ORDER)
 #define GRID_LOG2 7u                     /* 128 grid points over a turn */
 #define GRID (1u << GRID_LOG2)
 #define CELL 0x02000000u                 /* one grid step, turns: 2^(32 - 7) */
@@ -13,12 +12,18 @@
 #define PEAKS 3u
 #define C_BITS 27u                       /* |c_n| components below 2^27 */
 
-/* The terms c_k exp(i k alpha), k = +-1..+-M, with c_k scaled by 2^-shift. */
+/* Z(alpha) = sum_k c_k exp(i k alpha), k = +-1..+-M, with c_k scaled by
+   2^-shift, held as the orders' sums and differences: with c_k = r+ + i i+
+   and c_-k = r- + i i-, P = r+ + r-, Q = i+ - i-, R = r+ - r-, S = i+ + i-.
+   Since cos and sin are exactly even and odd (fixtrig.c's mirrored table),
+   the terms k and -k at one alpha sum to
+     Re: P cos - Q sin,  Im: R sin + S cos  (W: k (R cos - S sin), k (P sin + Q cos)),
+   the same integers as summing them apart, with half the products. */
 typedef struct {
-    int32_t re[TERMS], im[TERMS];
-    int32_t k[TERMS];
-    uint32_t count;
-    uint32_t shift;  /* c_true = c 2^shift (Q16 px^2) */
+    int32_t p[SSDA_FD_MAX_ORDER], q[SSDA_FD_MAX_ORDER];
+    int32_t r[SSDA_FD_MAX_ORDER], s[SSDA_FD_MAX_ORDER]; /* |.| < 2^28.5 */
+    uint32_t order;
+    uint32_t shift; /* c_true = c 2^shift (Q16 px^2) */
 } zpoly_t;
 
 /* Z and W = sum k c_k exp(i k alpha) at one alpha: |Z| < 2^48, |W| < 2^52. */
@@ -26,48 +31,77 @@ typedef struct {
     int64_t zr, zi, wr, wi;
 } zval_t;
 
-static void zpoly_build(const ssda_fd_t *a, const ssda_fd_t *b, zpoly_t *p)
+/* conj(b_n) a_n for one coefficient pair: |.| < 2^49 each. */
+static void cross(const ssda_fd_coef_t *ca, const ssda_fd_coef_t *cb, int64_t *re, int64_t *im)
 {
-    int64_t cr[TERMS], ci[TERMS];
+    const int64_t ar = ca->re_q8, ai = ca->im_q8;
+    const int64_t br = cb->re_q8, bi = cb->im_q8;
+    *re = br * ar + bi * ai;
+    *im = br * ai - bi * ar;
+}
+
+/* The bits of the largest component of every c_n. */
+static uint32_t cross_bits(const ssda_fd_t *a, const ssda_fd_t *b)
+{
     uint64_t big = 0u;
-    uint32_t n, j, len;
+    uint32_t n;
     for (n = 0u; n < a->order; n++) {
-        for (j = 0u; j < 2u; j++) {
-            const uint32_t t = 2u * n + j;
-            const ssda_fd_coef_t *ca = (j == 0u) ? &a->pos[n] : &a->neg[n];
-            const ssda_fd_coef_t *cb = (j == 0u) ? &b->pos[n] : &b->neg[n];
-            const int64_t ar = ca->re_q8, ai = ca->im_q8;
-            const int64_t br = cb->re_q8, bi = cb->im_q8;
-            /* conj(b) a = (br ar + bi ai) + i (br ai - bi ar): |.| < 2^49 */
-            cr[t] = br * ar + bi * ai;
-            ci[t] = br * ai - bi * ar;
-            p->k[t] = j == 0u ? (int32_t)n + 1 : -((int32_t)n + 1);
-            big = ssda__abs64(cr[t]) > big ? ssda__abs64(cr[t]) : big;
-            big = ssda__abs64(ci[t]) > big ? ssda__abs64(ci[t]) : big;
-        }
+        int64_t pr, pi, nr, ni;
+        cross(&a->pos[n], &b->pos[n], &pr, &pi);
+        cross(&a->neg[n], &b->neg[n], &nr, &ni);
+        big |= ssda__abs64(pr) | ssda__abs64(pi) | ssda__abs64(nr) | ssda__abs64(ni);
     }
-    p->count = 2u * a->order;
-    len = ssda__bitlen64(big);
+    return ssda__bitlen64(big);
+}
+
+/* One c_n scaled by 2^-shift and, for the fixed match (rot != NULL: cos,
+   sin Q15), turned by phi: |.| < 2^27.5 either way. */
+static void scaled_term(int64_t re, int64_t im, uint32_t shift, const int32_t *rot, int32_t *r,
+                        int32_t *i)
+{
+    int64_t sr = ssda__asr64(re, shift), si = ssda__asr64(im, shift);
+    if (rot != NULL) { /* c exp(i phi): Re of the sum is the cross term */
+        const int64_t tr = sr * rot[0] - si * rot[1];
+        const int64_t ti = sr * rot[1] + si * rot[0];
+        sr = ssda__asr64(tr, 15u);
+        si = ssda__asr64(ti, 15u);
+    }
+    *r = (int32_t)sr;
+    *i = (int32_t)si;
+}
+
+static void zpoly_build(const ssda_fd_t *a, const ssda_fd_t *b, const int32_t *rot, zpoly_t *p)
+{
+    const uint32_t len = cross_bits(a, b);
+    uint32_t n;
+    p->order = a->order;
     p->shift = len > C_BITS ? len - C_BITS : 0u;
-    for (j = 0u; j < p->count; j++) {
-        p->re[j] = (int32_t)ssda__asr64(cr[j], p->shift);
-        p->im[j] = (int32_t)ssda__asr64(ci[j], p->shift);
+    for (n = 0u; n < a->order; n++) {
+        int64_t re, im;
+        int32_t pr, pi, nr, ni;
+        cross(&a->pos[n], &b->pos[n], &re, &im);
+        scaled_term(re, im, p->shift, rot, &pr, &pi);
+        cross(&a->neg[n], &b->neg[n], &re, &im);
+        scaled_term(re, im, p->shift, rot, &nr, &ni);
+        p->p[n] = pr + nr;
+        p->q[n] = pi - ni;
+        p->r[n] = pr - nr;
+        p->s[n] = pi + ni;
     }
 }
 
 static zval_t zpoly_eval(const zpoly_t *p, uint32_t alpha)
 {
     zval_t v = {0, 0, 0, 0};
-    uint32_t j;
-    for (j = 0u; j < p->count; j++) {
-        const uint32_t turn = (uint32_t)p->k[j] * alpha; /* k alpha mod one turn */
+    uint32_t n;
+    for (n = 0u; n < p->order; n++) {
+        const int64_t k = (int64_t)n + 1;
+        const uint32_t turn = (n + 1u) * alpha; /* k alpha mod one turn */
         const int64_t cs = ssda__cos_q15(turn), sn = ssda__sin_q15(turn);
-        const int64_t r = p->re[j] * cs - p->im[j] * sn; /* < 2^43 */
-        const int64_t i = p->re[j] * sn + p->im[j] * cs;
-        v.zr += r;
-        v.zi += i;
-        v.wr += r * p->k[j];
-        v.wi += i * p->k[j];
+        v.zr += p->p[n] * cs - p->q[n] * sn; /* < 2^44 */
+        v.zi += p->r[n] * sn + p->s[n] * cs;
+        v.wr += k * (p->r[n] * cs - p->s[n] * sn);
+        v.wi += k * (p->p[n] * sn + p->q[n] * cs);
     }
     return v;
 }
@@ -94,15 +128,21 @@ static bool rising_real(const zval_t *v)
     return v->wi < 0;
 }
 
-/* Score of alpha: |Z|^2 (free) or Re Z (fixed, offset to stay unsigned). */
+/* Score of a value: |Z|^2 (free) or Re Z (fixed, offset to stay unsigned). */
+static uint64_t rank(const zval_t *v, bool fixed)
+{
+    if (fixed) {
+        const int64_t lifted = v->zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
+        return (uint64_t)lifted;
+    }
+    return power(v);
+}
+
+/* Score of alpha. */
 static uint64_t score(const zpoly_t *p, uint32_t alpha, bool fixed)
 {
     const zval_t v = zpoly_eval(p, alpha);
-    if (fixed) {
-        const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
-        return (uint64_t)lifted;
-    }
-    return power(&v);
+    return rank(&v, fixed);
 }
 
 /* Refine a grid maximum at cell j by bisection of the derivative's sign in
@@ -127,56 +167,81 @@ static uint32_t refine(const zpoly_t *p, uint32_t j, bool fixed)
     return lo + width / 2u;
 }
 
-/* Scores at the GRID points alpha_j = j / GRID turn: there k alpha_j is a
+/* Score at grid point j, alpha_j = j / GRID turn: there k alpha_j is a
    whole number of grid steps, so exp(i k alpha_j) comes from one table of
-   GRID entries (no interpolation, no per-term cos/sin). */
-static void grid_scores(const zpoly_t *p, bool fixed, uint64_t *g)
+   GRID entries (Q14: the scan only ranks the grid points). */
+static uint64_t grid_score(const zpoly_t *p, bool fixed, uint32_t j)
 {
-    int32_t tc[GRID], ts[GRID];
-    uint32_t j, t;
-    for (j = 0u; j < GRID; j++) {
-        tc[j] = ssda__cos_q15(j * CELL);
-        ts[j] = ssda__sin_q15(j * CELL);
+    /* trunc(ssda__sin_q15(m CELL) / 2), m = 0..127: sin in Q14 on the grid;
+       cos(m CELL) = sin((m + 32) CELL) */
+    static const int16_t grid_sin[GRID] = {
+        0, 804, 1606, 2404, 3196, 3981, 4756, 5519, 6270, 7005, 7723, 8423, 9102,
+        9760, 10394, 11003, 11585, 12139, 12665, 13160, 13623, 14053, 14449, 14811,
+        15137, 15426, 15678, 15893, 16069, 16206, 16305, 16364, 16384, 16364, 16305,
+        16206, 16069, 15893, 15678, 15426, 15137, 14811, 14449, 14053, 13623, 13160,
+        12665, 12139, 11585, 11003, 10394, 9760, 9102, 8423, 7723, 7005, 6270, 5519,
+        4756, 3981, 3196, 2404, 1606, 804, 0, -804, -1606, -2404, -3196, -3981, -4756,
+        -5519, -6270, -7005, -7723, -8423, -9102, -9760, -10394, -11003, -11585, -12139,
+        -12665, -13160, -13623, -14053, -14449, -14811, -15137, -15426, -15678, -15893,
+        -16069, -16206, -16305, -16364, -16384, -16364, -16305, -16206, -16069, -15893,
+        -15678, -15426, -15137, -14811, -14449, -14053, -13623, -13160, -12665, -12139,
+        -11585, -11003, -10394, -9760, -9102, -8423, -7723, -7005, -6270, -5519, -4756,
+        -3981, -3196, -2404, -1606, -804};
+    zval_t v = {0, 0, 0, 0};
+    uint32_t n;
+    for (n = 0u; n < p->order; n++) {
+        const uint32_t m = ((n + 1u) * j) & (GRID - 1u);
+        const int64_t sn = grid_sin[m], cs = grid_sin[(m + (GRID / 4u)) & (GRID - 1u)];
+        v.zr += p->p[n] * cs - p->q[n] * sn; /* < 2^43 each */
+        v.zi += p->r[n] * sn + p->s[n] * cs;
     }
-    for (j = 0u; j < GRID; j++) {
-        zval_t v = {0, 0, 0, 0};
-        for (t = 0u; t < p->count; t++) {
-            const uint32_t m = ((uint32_t)p->k[t] * j) & (GRID - 1u);
-            v.zr += (int64_t)p->re[t] * tc[m] - (int64_t)p->im[t] * ts[m];
-            v.zi += (int64_t)p->re[t] * ts[m] + (int64_t)p->im[t] * tc[m];
-        }
-        if (fixed) {
-            const int64_t lifted = v.zr + 4611686018427387904LL; /* + 2^62: |Z| < 2^48 */
-            g[j] = (uint64_t)lifted;
-        } else {
-            g[j] = power(&v);
-        }
-    }
+    return rank(&v, fixed);
 }
 
-/* The alpha maximising the score: grid scan, the PEAKS best local maxima
-   refined, the best refined kept (ties: the smaller alpha). */
+/* Keep the PEAKS best (value, then the smaller index) grid maxima. */
+static void peak_insert(uint32_t *peak, uint64_t *val, uint32_t *n, uint32_t j, uint64_t v)
+{
+    uint32_t at = *n, i;
+    while (at > 0u && (val[at - 1u] < v || (val[at - 1u] == v && peak[at - 1u] > j))) {
+        at--;
+    }
+    if (at >= PEAKS) {
+        return;
+    }
+    for (i = (*n < PEAKS ? *n : PEAKS - 1u); i > at; i--) {
+        peak[i] = peak[i - 1u];
+        val[i] = val[i - 1u];
+    }
+    peak[at] = j;
+    val[at] = v;
+    *n = *n < PEAKS ? *n + 1u : PEAKS;
+}
+
+/* The alpha maximising the score: a scan of the GRID points kept as it
+   goes (local maxima: >= the previous point, > the next, cyclically), the
+   PEAKS best refined, the best refined kept (ties: the smaller alpha). */
 static uint32_t best_alpha(const zpoly_t *p, bool fixed)
 {
-    uint64_t g[GRID];
     uint32_t peak[PEAKS], npeak = 0u, j, i, best_alpha = 0u;
-    uint64_t best = 0u;
-    grid_scores(p, fixed, g);
-    for (j = 0u; j < GRID; j++) { /* local maxima, kept best first */
-        const uint64_t prev = g[(j + GRID - 1u) & (GRID - 1u)], next = g[(j + 1u) & (GRID - 1u)];
-        if (g[j] >= prev && g[j] > next) {
-            uint32_t at = npeak < PEAKS ? npeak : PEAKS;
-            while (at > 0u && g[peak[at - 1u]] < g[j]) {
-                at--;
-            }
-            if (at < PEAKS) {
-                for (i = (npeak < PEAKS ? npeak : PEAKS - 1u); i > at; i--) {
-                    peak[i] = peak[i - 1u];
-                }
-                peak[at] = j;
-                npeak = npeak < PEAKS ? npeak + 1u : PEAKS;
-            }
+    uint64_t val[PEAKS], first = 0u, second = 0u, prev2 = 0u, prev = 0u, best = 0u;
+    for (j = 0u; j < GRID + 2u; j++) {
+        uint64_t cur;
+        if (j < GRID) {
+            cur = grid_score(p, fixed, j);
+        } else {
+            cur = j == GRID ? first : second; /* wrap round to points 0 and 1 */
         }
+        if (j == 0u) {
+            first = cur;
+        } else if (j == 1u) {
+            second = cur;
+        } else if (prev >= prev2 && prev > cur) { /* j - 1 is a local maximum */
+            peak_insert(peak, val, &npeak, (j - 1u) & (GRID - 1u), prev);
+        } else {
+            /* not a maximum */
+        }
+        prev2 = prev;
+        prev = cur;
     }
     if (npeak == 0u) { /* a flat score (a circle): any alpha */
         return 0u;
@@ -228,7 +293,7 @@ int ssda_fd_match(const ssda_fd_t *a, const ssda_fd_t *b, ssda_fd_match_t *m)
     if (err != SSDA_OK) {
         return err;
     }
-    zpoly_build(a, b, &p);
+    zpoly_build(a, b, NULL, &p);
     alpha = best_alpha(&p, false);
     v = zpoly_eval(&p, alpha);
     mag = magnitude(&v, &e);
@@ -248,9 +313,9 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
 {
     zpoly_t p;
     zval_t v;
-    uint32_t alpha, j, t1, t2;
-    uint64_t e2;
-    const int32_t cs = ssda__cos_q15(phi), sn = ssda__sin_q15(phi);
+    uint32_t alpha, ab;
+    uint64_t e2, t1;
+    const int32_t rot[2] = {ssda__cos_q15(phi), ssda__sin_q15(phi)};
     const int err = check(a, b, m);
     if (err != SSDA_OK) {
         return err;
@@ -258,27 +323,27 @@ int ssda_fd_match_fixed(const ssda_fd_t *a, const ssda_fd_t *b, uint32_t s_q16, 
     if (s_q16 == 0u || s_q16 > (1u << 24)) {
         return SSDA_ERR_ARG;
     }
-    zpoly_build(a, b, &p);
-    for (j = 0u; j < p.count; j++) { /* c exp(i phi): Re of the sum is the cross term */
-        const int64_t r = (int64_t)p.re[j] * cs - (int64_t)p.im[j] * sn;
-        const int64_t i = (int64_t)p.re[j] * sn + (int64_t)p.im[j] * cs;
-        p.re[j] = (int32_t)ssda__asr64(r, 15u); /* |.| < 2^27.5 */
-        p.im[j] = (int32_t)ssda__asr64(i, 15u);
-    }
+    zpoly_build(a, b, rot, &p);
     alpha = best_alpha(&p, true);
     v = zpoly_eval(&p, alpha);
-    /* E^2 = (B + s^2 A - 2 s R) / B with R = Re(exp(i phi) Z) */
-    t1 = ssda__mulshr_sat(ssda__mulshr_sat(s_q16, s_q16, 16u),
-                          ssda__ratio_q16(a->energy_q16, 0, b->energy_q16), 16u);
-    t2 = ssda__mulshr_sat(2u * s_q16,
-                          ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15,
-                                          b->energy_q16),
-                          16u);
-    e2 = 65536u + (uint64_t)t1;
-    if (v.zr >= 0) {
-        e2 = e2 > t2 ? e2 - t2 : 0u;
+    /* E^2 = (B + s^2 A - 2 s R) / B with R = Re(exp(i phi) Z). t1 = s^2 A / B
+       (Q16); since R <= sqrt(A B), 2 s R / B <= 2 sqrt(t1): when t1 does not
+       fit 32 bits, E^2 >= (sqrt(t1) - 1)^2 > 255^2 and saturates. */
+    ab = ssda__ratio_q16(a->energy_q16, 0, b->energy_q16);
+    t1 = ((uint64_t)ssda__mulshr_sat(s_q16, s_q16, 16u) * ab) >> 16; /* < 2^48 */
+    if (ab == 0xFFFFFFFFu || t1 > 0xFFFFFFFFu) {
+        e2 = 0xFFFFFFFFu;
     } else {
-        e2 += t2;
+        const uint64_t s2 = (uint64_t)s_q16 * 2u;
+        const uint64_t t2 =
+            (s2 * ssda__ratio_q16(ssda__abs64(v.zr), (int32_t)p.shift - 15, b->energy_q16)) >>
+            16;
+        e2 = 65536u + t1; /* t2 < 2^41 */
+        if (v.zr >= 0) {
+            e2 = e2 > t2 ? e2 - t2 : 0u;
+        } else {
+            e2 += t2;
+        }
     }
     m->s_q16 = s_q16;
     m->phi = phi;

@@ -157,6 +157,10 @@ static uint32_t grow(const plan_t *p, const nucleus_t *nu, const ssda_symreg_aff
                             !area_near(p->ref[i].area, p->mov[j].area, s, p->ratio_q8))) {
                 continue;
             }
+            if (!forced && ssda__fd_fixed_bound(&p->fr[i], &p->fm[j], s == 0u ? 1u : s) >
+                               p->e2_grow) {
+                continue; /* cannot pair: no search (SSDA's early exit, in shapes) */
+            }
             (void)ssda_fd_match_fixed(&p->fr[i], &p->fm[j], s == 0u ? 1u : s, phi, &m);
             if ((forced || m.e2_q16 <= p->e2_grow) &&
                 (best == SSDA__NONE || forced || m.e2_q16 < best_e2)) {
@@ -342,7 +346,7 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     p->n_ref = n_ref;
     p->n_mov = n_mov;
     p->k = def(c->nuclei, SSDA_SYMREG_DEFAULT_NUCLEI);
-    p->min_pairs = def(c->min_pairs, 3u);
+    p->min_pairs = def(c->min_pairs, SSDA_SYMREG_DEFAULT_MIN_PAIRS);
     p->e2_nucleus = def(c->e2_nucleus_q16, 3277u);   /* 0.05 */
     p->e2_grow = def(c->e2_grow_q16, 16384u);        /* 0.25 */
     p->e2_final = def(c->e2_final_q16, 9830u);       /* 0.15 */
@@ -429,7 +433,11 @@ int ssda_symreg(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n_ref,
     best.set = best_set;
     n = find_nuclei(&p, list, &r);                                              /* [1] */
     for (i = 0u; i < n; i++) {                                                  /* [2] */
-        run_nucleus(&p, &list[i], i, set, owner, &best);
+        /* the seed's rule (a): a nucleus already paired in the best final set
+           grows into that set again */
+        if (best.pairs == 0u || best_set[list[i].ref].mov != list[i].mov) {
+            run_nucleus(&p, &list[i], i, set, owner, &best);
+        }
     }
     r.nuclei = n;
     if (best.pairs > 0u) {                                                      /* [3] */

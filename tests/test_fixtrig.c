@@ -70,6 +70,28 @@ static void check_atan2(int64_t y, int64_t x)
     }
 }
 
+/* fourier_match.c sums the orders k and -k with one cos and one sin: that
+   is exact only if cos is even and sin odd to the last bit, at every angle
+   (the mirrored quarter table makes them so; an unmirrored or rounded
+   table would not be). The quadrant edges and every table step's ends are
+   among the angles. */
+static void test_sin_cos_exactly_even_and_odd(void)
+{
+    uint32_t i, e;
+    for (i = 0u; i < (1u << (32u - ANGLE_STEP_LOG2)); i++) {
+        const uint32_t a = (i << ANGLE_STEP_LOG2) + (i * 2654435761u >> (32u - ANGLE_STEP_LOG2));
+        TEST_ASSERT_EQUAL_INT32(ssda__cos_q15(a), ssda__cos_q15(0u - a));
+        TEST_ASSERT_EQUAL_INT32(-ssda__sin_q15(a), ssda__sin_q15(0u - a));
+    }
+    for (i = 0u; i < 512u; i++) { /* table steps (2^23) and one unit either side */
+        for (e = 0u; e < 3u; e++) {
+            const uint32_t a = (i << 23) + e - 1u;
+            TEST_ASSERT_EQUAL_INT32(ssda__cos_q15(a), ssda__cos_q15(0u - a));
+            TEST_ASSERT_EQUAL_INT32(-ssda__sin_q15(a), ssda__sin_q15(0u - a));
+        }
+    }
+}
+
 static void test_atan2_against_double(void)
 {
     test_rng_t r;
@@ -137,6 +159,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_sin_cos_within_two_lsb);
+    RUN_TEST(test_sin_cos_exactly_even_and_odd);
     RUN_TEST(test_atan2_against_double);
     RUN_TEST(test_shifts_against_division);
     return UNITY_END();

@@ -311,6 +311,7 @@ static void test_unrelated_shapes_match_the_double_reference(void)
                                       m.e2_q16 / 65536.0);
             TEST_ASSERT_EQUAL_UINT32(s_q16, m.s_q16);
             TEST_ASSERT_EQUAL_UINT32(phi_t, m.phi);
+            TEST_ASSERT_TRUE(ssda__fd_fixed_bound(&a, &b, s_q16) <= m.e2_q16);
         }
     }
     TEST_ASSERT_TRUE(checked_angles * 4u >= TRIALS); /* most random pairs have one clear optimum */

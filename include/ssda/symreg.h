@@ -12,7 +12,8 @@
  *     bound cannot enter the lists below is skipped without the search).
  *     The `nuclei` pairs of smallest E^2 (<= e2_nucleus), at most two from
  *     any one REF loop, are the nuclei (ties: the earlier pair).
- * [2] For each nucleus in order of E^2:
+ * [2] For each nucleus in order of E^2 (one already paired in the best
+ *     final set is skipped: it grows into that set again, seed (a)):
  *   [2.1] start from the similarity of eq. 16: MOV = s R(phi) (REF - c_ref)
  *         + c_mov with the nucleus's s, phi and centroids;
  *   [2.2] every REF loop's centroid is mapped; MOV loops within
@@ -20,7 +21,8 @@
  *         area fits (area_ratio) are matched with scale and rotation fixed
  *         (ssda_fd_match_fixed; s = sqrt|ae - bd| and phi the mean angle of
  *         the mapped axes, eqs. 14-15); the best E^2 <= e2_grow pairs it
- *         (each MOV loop used once: the smaller E^2 keeps it). Fewer than
+ *         (each MOV loop used once: the smaller E^2 keeps it; a pair whose
+ *         E^2 lower bound is above e2_grow is not searched). Fewer than
  *         min_pairs pairs, or no more than the last final set: next nucleus;
  *   [2.3] the affine transform is fitted to the pairs' centroids by least
  *         squares (eq. 17);
@@ -62,7 +64,8 @@ typedef struct {
 /* Settings. Zero-filled = defaults (docs/symbolic.md says which matter). */
 typedef struct {
     uint16_t nuclei;        /* nuclei tried (0 = 100; the seed: "for example 30") */
-    uint16_t min_pairs;     /* pairs a registration needs, >= 3 (0 = 3, seed) */
+    uint16_t min_pairs;     /* pairs a registration needs, >= 3 (the seed's
+                               least); 0 = SSDA_SYMREG_DEFAULT_MIN_PAIRS */
     uint32_t e2_nucleus_q16; /* [1] free-match E^2 of a nucleus (0 = 0.05) */
     uint32_t e2_grow_q16;   /* [2.2] fixed-match E^2 to pair (0 = 0.25) */
     uint32_t e2_final_q16;  /* [2.5] fixed-match E^2 kept, <= e2_grow (0 = 0.15) */
@@ -98,6 +101,13 @@ typedef struct {
     uint32_t matches;       /* free matches run in [1] */
     uint32_t skipped;       /* [1] pairs the E^2 bound skipped */
 } ssda_symreg_result_t;
+
+/* Pairs a registration needs when the config says 0: 6, not the seed's 3.
+   Three pairs fit an affine transform exactly (nothing left to check) and
+   four or five barely: on real photographs turned and scaled, 38 of 41
+   wrong registrations had 3 to 5 pairs, every right one 8 or more
+   (docs/symbolic.md). */
+#define SSDA_SYMREG_DEFAULT_MIN_PAIRS 6u
 
 /* Nuclei tried when the config says 0. */
 #define SSDA_SYMREG_DEFAULT_NUCLEI 100u

@@ -21,7 +21,7 @@ static const char help[] =
     "point, and an affine transform grown from the best pairs by least squares on\n"
     "the loops' centroids. Works across rotation, scale and brightness changes\n"
     "when both images hold closed outlines (buildings, fields, blobs); needs at\n"
-    "least 3 loops matched.\n"
+    "least 6 loops matched (--min-pairs).\n"
     "\n"
     "Prints the transform REF (x, y) -> MOV (a x + b y + c, d x + e y + f), the\n"
     "pairs and the RMS residual of the centroids.\n"
@@ -42,7 +42,7 @@ static const char help[] =
     "  --order N         Fourier descriptor order, 1..16 (10)\n"
     "registration:\n"
     "  --nuclei N        nucleus pairs tried, 1..1000 (100; the seed used about 30)\n"
-    "  --min-pairs N     pairs a registration needs, 3.. (3)\n"
+    "  --min-pairs N     pairs a registration needs, 3.. (6; the seed's least is 3)\n"
     "  --scale MIN,MAX   scales MOV/REF searched, e.g. 0.5,2 (default)\n"
     "  -q, --quiet       no summary on stdout\n"
     "  -h, --help        this text\n"
@@ -378,7 +378,7 @@ int cmd_symreg(int argc, char **argv)
     loops_run_t r, m;
     ssda_symreg_result_t res;
     ssda_symreg_pair_t *pairs = NULL;
-    const uint32_t need = 3u;
+    uint32_t need;
     char err[512];
     int rc = CLI_INPUT, t;
     memset(&o, 0, sizeof o);
@@ -404,6 +404,7 @@ int cmd_symreg(int argc, char **argv)
     if (a.npos != 2) {
         return cli_usage_error(a.cmd, "need REF.png and MOV.png");
     }
+    need = o.reg.min_pairs ? o.reg.min_pairs : SSDA_SYMREG_DEFAULT_MIN_PAIRS;
     cli_warn_png_name(a.cmd, "--overlay", o.overlay);
     cli_warn_png_name(a.cmd, "-o", o.out);
     if (load8(a.cmd, a.pos[0], &ri) != 0 || load8(a.cmd, a.pos[1], &mi) != 0) {
@@ -428,8 +429,7 @@ int cmd_symreg(int argc, char **argv)
         rc = cli_input_error(a.cmd,
                              "no registration: REF %u loops, MOV %u loops, %u candidate pairs, "
                              "%u nuclei tried, none reached %u agreeing pairs",
-                             r.n, m.n, res.candidates, res.nuclei,
-                             o.reg.min_pairs ? o.reg.min_pairs : need);
+                             r.n, m.n, res.candidates, res.nuclei, need);
         goto done;
     }
     rc = outputs(a.cmd, &o, a.pos[0], a.pos[1], &ri, &mi, &r, &m, &res, pairs);

@@ -65,7 +65,7 @@ run 0 symreg ref2.png mov2.png --json reg2.json -q
 # nothing to register: exit 1 naming the counts, no output left
 "$gen" scene flat.png flat2.png --flat --size 128 >/dev/null || fail "gen flat"
 run 1 symreg flat.png flat2.png --json f.json --overlay f.png -o f2.png
-stderr_has "too few loops: REF has 0, MOV 0"
+stderr_has "too few loops: REF has 0, MOV 0; a registration needs at least 6"
 absent f.json f.png f2.png
 run 1 symreg ref.png flat2.png --json f.json
 stderr_has "too few loops"
