@@ -213,8 +213,11 @@ static int input_valid(case_t *c)
     const ssda_track_config_t *cfg = &c->cfg;
     c->pixels = c->axx.win * c->axy.win;
     c->thr = cfg->texture_threshold ? cfg->texture_threshold : (c->maxv + 1u) / 2u;
+    /* the default: w*h / 16, at least 1, at most w*h / 2 (0 for one pixel,
+       issue 22.2: a default is always valid) */
     c->minc = cfg->texture_min_count ? cfg->texture_min_count
-                                     : (c->pixels / 16u > 0u ? c->pixels / 16u : 1u);
+                                     : (c->pixels / 16u > 0u ? c->pixels / 16u
+                                                             : (c->pixels / 2u < 1u ? 0u : 1u));
     return c->grc == SSDA_OK && c->grid.count <= c->out_count && cfg->predict <= 2u &&
            (cfg->flags & ~3u) == 0u &&
            (!(cfg->flags & SSDA_TRACK_MASK) || cfg->mask_value <= c->maxv) &&
