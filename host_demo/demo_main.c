@@ -219,63 +219,96 @@ static int run_files(const demo_ctx_t *c, const char *img1, const char *img2, co
     return 0;
 }
 
-int main(int argc, char **argv)
-{
-    demo_ctx_t c = {0, 0, "ssda-demo-out"};
-    const char *imgs[2] = {NULL, NULL}, *snd = NULL, *ref = NULL;
-    int nimg = 0, i, rc;
-    long mask = -1;
-    uint32_t step = 16;
+/* What the command line names. */
+typedef struct {
+    const char *imgs[2], *snd, *ref;
+    int nimg;
+    long mask;
+    uint32_t step;
+} demo_args_t;
 
-    for (i = 1; i < argc; i++) {
+/* A number option's value in lo..hi into *v. Returns 0, or 2 (printed). */
+static int number_arg(const char *name, const char *s, long lo, long hi, long *v)
+{
+    char *end;
+    *v = strtol(s, &end, 10);
+    if (*end != '\0' || *v < lo || *v > hi) {
+        fprintf(stderr, "ssda-demo: bad %s '%s' (%ld..%ld)\n", name, s, lo, hi);
+        return 2;
+    }
+    return 0;
+}
+
+/* A file argument: two PNGs and one sound at most. Returns 0 or the exit
+   code (printed). */
+static int file_arg(const char *a, demo_args_t *d)
+{
+    if (access(a, R_OK) != 0) {
+        fprintf(stderr, "ssda-demo: cannot open '%s': %s\n", a, strerror(errno));
+        return 1;
+    }
+    if (is_png(a)) {
+        if (d->nimg == 2) {
+            fprintf(stderr, "ssda-demo: give two images (FIRST and SECOND), not more\n");
+            return 2;
+        }
+        d->imgs[d->nimg++] = a;
+    } else {
+        if (d->snd != NULL) {
+            fprintf(stderr, "ssda-demo: give one sound file, not more\n");
+            return 2;
+        }
+        d->snd = a; /* anything else is tried as a sound file */
+    }
+    return 0;
+}
+
+/* The command line into c and d. Returns -1 to go on, else the exit code
+   (--help: 0). */
+static int parse_args(int argc, char **argv, demo_ctx_t *c, demo_args_t *d)
+{
+    int i, rc = 0;
+    long v;
+    for (i = 1; i < argc && rc == 0; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
             fputs(usage, stdout);
             return 0;
         } else if (strcmp(a, "--out") == 0 && i + 1 < argc) {
-            c.out_dir = argv[++i];
+            c->out_dir = argv[++i];
         } else if (strcmp(a, "--quiet") == 0) {
-            c.quiet = 1;
+            c->quiet = 1;
         } else if (strcmp(a, "--ref") == 0 && i + 1 < argc) {
-            ref = argv[++i];
+            d->ref = argv[++i];
         } else if (strcmp(a, "--mask-value") == 0 && i + 1 < argc) {
-            char *end;
-            mask = strtol(argv[++i], &end, 10);
-            if (*end != '\0' || mask < 0 || mask > 65535) {
-                fprintf(stderr, "ssda-demo: bad --mask-value '%s' (0..65535)\n", argv[i]);
-                return 2;
-            }
+            rc = number_arg("--mask-value", argv[++i], 0, 65535, &d->mask);
         } else if (strcmp(a, "--step") == 0 && i + 1 < argc) {
-            char *end;
-            long v = strtol(argv[++i], &end, 10);
-            if (*end != '\0' || v < 1 || v > 65535) {
-                fprintf(stderr, "ssda-demo: bad --step '%s' (1..65535)\n", argv[i]);
-                return 2;
-            }
-            step = (uint32_t)v;
+            rc = number_arg("--step", argv[++i], 1, 65535, &v);
+            d->step = (uint32_t)v;
         } else if (a[0] == '-' && a[1] != '\0') {
             fprintf(stderr, "ssda-demo: unknown option '%s'\n\n%s", a, usage);
             return 2;
-        } else if (access(a, R_OK) != 0) {
-            fprintf(stderr, "ssda-demo: cannot open '%s': %s\n", a, strerror(errno));
-            return 1;
-        } else if (is_png(a)) {
-            if (nimg == 2) {
-                fprintf(stderr, "ssda-demo: give two images (FIRST and SECOND), not more\n");
-                return 2;
-            }
-            imgs[nimg++] = a;
         } else {
-            if (snd != NULL) {
-                fprintf(stderr, "ssda-demo: give one sound file, not more\n");
-                return 2;
-            }
-            snd = a; /* anything else is tried as a sound file */
+            rc = file_arg(a, d);
         }
     }
-    if (nimg == 1) {
+    if (rc != 0) {
+        return rc;
+    }
+    if (d->nimg == 1) {
         fprintf(stderr, "ssda-demo: give two images (FIRST and SECOND) to track\n");
         return 2;
+    }
+    return -1;
+}
+
+int main(int argc, char **argv)
+{
+    demo_ctx_t c = {0, 0, "ssda-demo-out"};
+    demo_args_t d = {{NULL, NULL}, NULL, NULL, 0, -1, 16};
+    int rc = parse_args(argc, argv, &c, &d);
+    if (rc >= 0) {
+        return rc;
     }
     if (mkdir(c.out_dir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "ssda-demo: cannot create the output folder '%s': %s\n", c.out_dir,
@@ -290,10 +323,10 @@ int main(int argc, char **argv)
            c.color ? "\033[1m" : "", (unsigned)SSDA_VERSION_MAJOR, (unsigned)SSDA_VERSION_MINOR,
            (unsigned)SSDA_VERSION_PATCH, c.color ? "\033[0m" : "");
     printf("output folder: %s/\n", c.out_dir);
-    if (nimg == 0 && snd == NULL) {
+    if (d.nimg == 0 && d.snd == NULL) {
         rc = run_synthetic(&c, argv[0]);
     } else {
-        rc = run_files(&c, imgs[0], imgs[1], snd, ref, mask, step);
+        rc = run_files(&c, d.imgs[0], d.imgs[1], d.snd, d.ref, d.mask, d.step);
     }
     printf("\n");
     if (c.quiet && rc == 0) {

@@ -96,23 +96,28 @@ static void make_buildings(void)
     }
 }
 
-int demo_symreg(const demo_ctx_t *c, const char *label_prefix)
-{
-    /* REF -> MOV: turn 30 degrees (+x towards +y), scale 1.15 about the
-       centre, shift (9, -6) px; MOV 30 % darker */
-    const double deg = 30.0, sc = 1.15, gain = 0.7, h = SIZE / 2.0;
-    const double co = cos(deg * 3.14159265358979 / 180), si = sin(deg * 3.14159265358979 / 180);
-    double A[6], Ainv[6], E[6], worst = 0;
-    const double id[6] = {1, 0, 0, 0, 1, 0};
-    gray_image_t ref = {0}, mov = {0};
-    loops_run_cfg_t cfg;
-    loops_run_t lr = {0}, lm = {0};
+/* The pair's truth: REF -> MOV turns 30 degrees (+x towards +y), scales
+   1.15 about the centre and shifts (9, -6) px; MOV is 30 % darker. */
+#define TRUE_DEG 30.0
+#define TRUE_SCALE 1.15
+#define TRUE_GAIN 0.7
+
+/* Everything one run holds. */
+typedef struct {
+    double A[6], Ainv[6]; /* REF -> MOV and back */
+    gray_image_t ref, mov;
+    loops_run_t lr, lm;
     ssda_symreg_result_t res;
-    ssda_symreg_pair_t *pairs = NULL;
-    void *work = NULL;
-    size_t wsize;
-    char p1[1024], p2[1024], po[1024], e[512];
-    int rc = -1, k;
+    ssda_symreg_pair_t *pairs;
+    double worst; /* corner error, px */
+} run_t;
+
+static void truth(run_t *r)
+{
+    const double h = SIZE / 2.0, sc = TRUE_SCALE;
+    const double co = cos(TRUE_DEG * 3.14159265358979 / 180),
+                 si = sin(TRUE_DEG * 3.14159265358979 / 180);
+    double *A = r->A, *Ainv = r->Ainv;
     A[0] = sc * co;
     A[1] = -sc * si;
     A[3] = sc * si;
@@ -125,18 +130,27 @@ int demo_symreg(const demo_ctx_t *c, const char *label_prefix)
     Ainv[4] = co / sc;
     Ainv[2] = -(Ainv[0] * A[2] + Ainv[1] * A[5]);
     Ainv[5] = -(Ainv[3] * A[2] + Ainv[4] * A[5]);
+}
+
+/* Render and write the pair. Returns 0 or -1 (printed). */
+static int make_pair(const demo_ctx_t *c, const char *label_prefix, run_t *r)
+{
+    const double id[6] = {1, 0, 0, 0, 1, 0};
+    char p1[1024], p2[1024], e[512];
     make_buildings();
-    if (gray_image_alloc(&ref, SIZE, SIZE, 8) != 0 || gray_image_alloc(&mov, SIZE, SIZE, 8) != 0) {
+    if (gray_image_alloc(&r->ref, SIZE, SIZE, 8) != 0 ||
+        gray_image_alloc(&r->mov, SIZE, SIZE, 8) != 0) {
         fprintf(stderr, "ssda-demo: out of memory\n");
-        goto done;
+        return -1;
     }
-    render(&ref, id, 1.0);
-    render(&mov, Ainv, gain);
+    render(&r->ref, id, 1.0);
+    render(&r->mov, r->Ainv, TRUE_GAIN);
     demo_path(c, "aerial_1.png", p1, sizeof p1);
     demo_path(c, "aerial_2.png", p2, sizeof p2);
-    if (png_write_gray(p1, &ref, e, sizeof e) != 0 || png_write_gray(p2, &mov, e, sizeof e) != 0) {
+    if (png_write_gray(p1, &r->ref, e, sizeof e) != 0 ||
+        png_write_gray(p2, &r->mov, e, sizeof e) != 0) {
         fprintf(stderr, "ssda-demo: %s\n", e);
-        goto done;
+        return -1;
     }
     if (!c->quiet) {
         printf("   %s%s and %s:\n"
@@ -145,81 +159,123 @@ int demo_symreg(const demo_ctx_t *c, const char *label_prefix)
                "            and 30 %% darker\n",
                label_prefix, p1, p2, SIZE, SIZE);
     }
+    return 0;
+}
+
+/* Loops of both images, the registration, its worst corner error against
+   the truth. Returns 0 or -1 (printed). */
+static int register_pair(run_t *r)
+{
+    loops_run_cfg_t cfg;
+    ssda_symreg_affine_t *t = &r->res.affine;
+    void *work;
+    size_t wsize;
+    char e[512];
+    int k, rc;
     memset(&cfg, 0, sizeof cfg);
-    if (loops_run(&ref, &cfg, &lr, e, sizeof e) != 0 || loops_run(&mov, &cfg, &lm, e, sizeof e) != 0) {
+    if (loops_run(&r->ref, &cfg, &r->lr, e, sizeof e) != 0 ||
+        loops_run(&r->mov, &cfg, &r->lm, e, sizeof e) != 0) {
         fprintf(stderr, "ssda-demo: %s\n", e);
-        goto done;
+        return -1;
     }
-    wsize = SSDA_SYMREG_WORK_SIZE(lr.n, lm.n, SSDA_SYMREG_DEFAULT_NUCLEI);
+    wsize = SSDA_SYMREG_WORK_SIZE(r->lr.n, r->lm.n, SSDA_SYMREG_DEFAULT_NUCLEI);
     work = malloc(wsize);
-    pairs = calloc(lr.n + 1u, sizeof *pairs);
-    if (work == NULL || pairs == NULL ||
-        ssda_symreg(lr.loops, lr.fds, lr.n, lm.loops, lm.fds, lm.n, NULL, work, wsize, pairs,
-                    lr.n, &res) != SSDA_OK) {
+    r->pairs = calloc(r->lr.n + 1u, sizeof *r->pairs);
+    rc = work == NULL || r->pairs == NULL ||
+                 ssda_symreg(r->lr.loops, r->lr.fds, r->lr.n, r->lm.loops, r->lm.fds, r->lm.n,
+                             NULL, work, wsize, r->pairs, r->lr.n, &r->res) != SSDA_OK
+             ? -1
+             : 0;
+    free(work);
+    if (rc != 0) {
         fprintf(stderr, "ssda-demo: registration failed\n");
-        goto done;
+        return -1;
     }
-    E[0] = res.affine.a_q16 / 65536.0;
-    E[1] = res.affine.b_q16 / 65536.0;
-    E[2] = res.affine.c_q8 / 256.0;
-    E[3] = res.affine.d_q16 / 65536.0;
-    E[4] = res.affine.e_q16 / 65536.0;
-    E[5] = res.affine.f_q8 / 256.0;
+    r->worst = 0;
     for (k = 0; k < 4; k++) {
         const double x = (k & 1) ? SIZE - 1.0 : 0.0, y = (k & 2) ? SIZE - 1.0 : 0.0;
-        const double ex = E[0] * x + E[1] * y + E[2] - (A[0] * x + A[1] * y + A[2]);
-        const double ey = E[3] * x + E[4] * y + E[5] - (A[3] * x + A[4] * y + A[5]);
-        worst = fmax(worst, sqrt(ex * ex + ey * ey));
+        const double *A = r->A;
+        const double ex = t->a_q16 / 65536.0 * x + t->b_q16 / 65536.0 * y + t->c_q8 / 256.0 -
+                          (A[0] * x + A[1] * y + A[2]);
+        const double ey = t->d_q16 / 65536.0 * x + t->e_q16 / 65536.0 * y + t->f_q8 / 256.0 -
+                          (A[3] * x + A[4] * y + A[5]);
+        r->worst = fmax(r->worst, sqrt(ex * ex + ey * ey));
     }
-    if (!c->quiet) {
-        printf("   loops: %u in the first, %u in the second (edges %u px thinned, %u T, %u I, %u V "
-               "gaps closed)\n",
-               lr.n, lm.n, lr.edge_stats.thinned, lr.edge_stats.closed_t, lr.edge_stats.closed_i,
-               lr.edge_stats.closed_v);
-        printf("   matched pairs: %u of %u nuclei tried; centroid RMS %.2f px\n", res.pairs,
-               res.nuclei, res.rms_q8 / 256.0);
-        printf("   transform      scale %.4f (true %.4f), rotation %.3f deg (true %.3f)\n",
-               res.scale_q16 / 65536.0, sc, res.rotation * (360.0 / 4294967296.0), deg);
-        printf("   corners of the first image land within %.2f px of the truth%s\n", worst,
-               worst < 2.0 ? "" : "  <- worse than 2 px");
-        printf("   library buffers: %.0f KB for the first image (its edge map: %.0f KB, 2 bytes "
-               "per pixel)\n",
-               lr.lib_bytes / 1024.0, SSDA_EDGE_MAP_SIZE(SIZE, SIZE) / 1024.0);
-    }
+    return 0;
+}
+
+static void report(const run_t *r)
+{
+    const loops_run_t *lr = &r->lr;
+    printf("   loops: %u in the first, %u in the second (edges %u px thinned, %u T, %u I, %u V "
+           "gaps closed)\n",
+           lr->n, r->lm.n, lr->edge_stats.thinned, lr->edge_stats.closed_t,
+           lr->edge_stats.closed_i, lr->edge_stats.closed_v);
+    printf("   matched pairs: %u of %u nuclei tried; centroid RMS %.2f px\n", r->res.pairs,
+           r->res.nuclei, r->res.rms_q8 / 256.0);
+    printf("   transform      scale %.4f (true %.4f), rotation %.3f deg (true %.3f)\n",
+           r->res.scale_q16 / 65536.0, TRUE_SCALE, r->res.rotation * (360.0 / 4294967296.0),
+           TRUE_DEG);
+    printf("   corners of the first image land within %.2f px of the truth%s\n", r->worst,
+           r->worst < 2.0 ? "" : "  <- worse than 2 px");
+    printf("   library buffers: %.0f KB for the first image (its edge map: %.0f KB, 2 bytes "
+           "per pixel)\n",
+           lr->lib_bytes / 1024.0, SSDA_EDGE_MAP_SIZE(SIZE, SIZE) / 1024.0);
+}
+
+/* Both images' loops, the pairs joined. Returns 0 or -1 (printed). */
+static int overlay(const demo_ctx_t *c, const run_t *r)
+{
+    draw_loops_side_t sr = {&r->ref, r->lr.loops, r->lr.n, r->lr.samples, "first: loops"};
+    draw_loops_side_t sm = {&r->mov, r->lm.loops, r->lm.n, r->lm.samples, "second: loops"};
+    draw_loops_pair_t *dp = calloc(r->res.pairs + 1u, sizeof *dp);
+    char sub[256], po[1024], e[512];
+    uint32_t i;
+    int rc;
     demo_path(c, "symreg_overlay.png", po, sizeof po);
-    {
-        draw_loops_side_t sr = {&ref, lr.loops, lr.n, lr.samples, "first: loops"};
-        draw_loops_side_t sm = {&mov, lm.loops, lm.n, lm.samples, "second: loops"};
-        draw_loops_pair_t *dp = calloc(res.pairs + 1u, sizeof *dp);
-        char sub[256];
-        uint32_t i;
-        for (i = 0; dp != NULL && i < res.pairs; i++) {
-            dp[i].ref = pairs[i].ref;
-            dp[i].mov = pairs[i].mov;
-        }
-        snprintf(sub, sizeof sub, "%u pairs; scale %.4f, rotation %.2f deg; corners within %.2f px "
-                 "of the truth", res.pairs, res.scale_q16 / 65536.0,
-                 res.rotation * (360.0 / 4294967296.0), worst);
-        if (dp == NULL || draw_loops_png(po, &sr, &sm, dp, res.pairs,
-                                         "Registration by closed loops (seed 001)", sub, e,
-                                         sizeof e) != 0) {
-            free(dp);
-            fprintf(stderr, "ssda-demo: %s\n", dp == NULL ? "out of memory" : e);
-            goto done;
-        }
-        free(dp);
+    for (i = 0; dp != NULL && i < r->res.pairs; i++) {
+        dp[i].ref = r->pairs[i].ref;
+        dp[i].mov = r->pairs[i].mov;
     }
-    printf("   wrote %s\n", po);
-    rc = res.pairs >= 3 && worst < 2.0 ? 0 : -1;
+    snprintf(sub, sizeof sub,
+             "%u pairs; scale %.4f, rotation %.2f deg; corners within %.2f px of the truth",
+             r->res.pairs, r->res.scale_q16 / 65536.0, r->res.rotation * (360.0 / 4294967296.0),
+             r->worst);
+    rc = dp == NULL || draw_loops_png(po, &sr, &sm, dp, r->res.pairs,
+                                      "Registration by closed loops (seed 001)", sub, e,
+                                      sizeof e) != 0
+             ? -1
+             : 0;
     if (rc != 0) {
-        fprintf(stderr, "ssda-demo: the registration missed the known transform\n");
+        fprintf(stderr, "ssda-demo: %s\n", dp == NULL ? "out of memory" : e);
+    } else {
+        printf("   wrote %s\n", po);
     }
-done:
-    free(work);
-    free(pairs);
-    loops_run_free(&lr);
-    loops_run_free(&lm);
-    gray_image_free(&ref);
-    gray_image_free(&mov);
+    free(dp);
+    return rc;
+}
+
+int demo_symreg(const demo_ctx_t *c, const char *label_prefix)
+{
+    run_t r;
+    int rc = -1;
+    memset(&r, 0, sizeof r);
+    truth(&r);
+    if (make_pair(c, label_prefix, &r) == 0 && register_pair(&r) == 0) {
+        if (!c->quiet) {
+            report(&r);
+        }
+        if (overlay(c, &r) == 0) {
+            rc = r.res.pairs >= 3 && r.worst < 2.0 ? 0 : -1;
+            if (rc != 0) {
+                fprintf(stderr, "ssda-demo: the registration missed the known transform\n");
+            }
+        }
+    }
+    free(r.pairs);
+    loops_run_free(&r.lr);
+    loops_run_free(&r.lm);
+    gray_image_free(&r.ref);
+    gray_image_free(&r.mov);
     return rc;
 }

@@ -1,10 +1,10 @@
 /* cmd_shape.c - `ssda shape A.png B.png`: Fourier-descriptor match of the
    largest closed contour of two silhouettes (seed 001, eqs. 1-12). */
 #include "cli.h"
+#include "json_out.h"
 #include "ssda/fourier.h"
 #include "ssda/loops.h"
 
-#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -153,109 +153,143 @@ static cJSON *object_json(const char *path, const object_t *ob)
 {
     cJSON *o = cJSON_CreateObject();
     const double c[2] = {ob->cx, ob->cy};
-    cJSON_AddStringToObject(o, "path", path);
+    json_out_add_string(o, "path", path);
     cJSON_AddNumberToObject(o, "area", ob->area);
     cJSON_AddNumberToObject(o, "perimeter", ob->perimeter_q8 / 256.0);
     cJSON_AddItemToObject(o, "centroid", cJSON_CreateDoubleArray(c, 2));
     return o;
 }
 
-int cmd_shape(int argc, char **argv)
+typedef struct {
+    const char *json;
+    uint32_t thr, samples, order;
+    int invert, quiet;
+} shape_opts_t;
+
+/* The options into o; CLI_OK, or the exit code (--help: CLI_OK with
+   *done set). */
+static int parse(cli_args_t *a, shape_opts_t *o, int *done)
 {
-    cli_args_t a;
-    const char *v, *json = NULL;
-    uint32_t thr = 128, samples = 256, order = 10, quiet = 0;
-    int invert = 0, rc;
-    ssda_fd_t fa, fb;
-    ssda_fd_match_t m;
-    object_t oa, ob;
-    double phi, alpha;
-    cli_args_begin(&a, "shape", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
+    const char *v;
+    while (cli_next(a)) {
+        if (cli_flag(a, "--help") || cli_flag(a, "-h")) {
             fputs(help, stdout);
+            *done = 1;
             return CLI_OK;
-        } else if (cli_opt(&a, "--json", &v)) {
-            json = v;
-        } else if (cli_opt(&a, "--threshold", &v)) {
-            if (v != NULL && cli_parse_u32(v, 1, 255, &thr) != 0) {
-                return cli_usage_error(a.cmd, "bad --threshold '%s' (1..255)", v);
+        } else if (cli_opt(a, "--json", &v)) {
+            o->json = v;
+        } else if (cli_opt(a, "--threshold", &v)) {
+            if (v != NULL && cli_parse_u32(v, 1, 255, &o->thr) != 0) {
+                return cli_usage_error(a->cmd, "bad --threshold '%s' (1..255)", v);
             }
-        } else if (cli_flag(&a, "--invert")) {
-            invert = 1;
-        } else if (cli_opt(&a, "--samples", &v)) {
-            if (v != NULL && (cli_parse_u32(v, 8, 1024, &samples) != 0 ||
-                              (samples & (samples - 1)) != 0)) {
-                return cli_usage_error(a.cmd, "bad --samples '%s' (a power of two, 8..1024)", v);
+        } else if (cli_flag(a, "--invert")) {
+            o->invert = 1;
+        } else if (cli_opt(a, "--samples", &v)) {
+            if (v != NULL && (cli_parse_u32(v, 8, 1024, &o->samples) != 0 ||
+                              (o->samples & (o->samples - 1)) != 0)) {
+                return cli_usage_error(a->cmd, "bad --samples '%s' (a power of two, 8..1024)", v);
             }
-        } else if (cli_opt(&a, "--order", &v)) {
-            if (v != NULL && cli_parse_u32(v, 1, SSDA_FD_MAX_ORDER, &order) != 0) {
-                return cli_usage_error(a.cmd, "bad --order '%s' (1..16)", v);
+        } else if (cli_opt(a, "--order", &v)) {
+            if (v != NULL && cli_parse_u32(v, 1, SSDA_FD_MAX_ORDER, &o->order) != 0) {
+                return cli_usage_error(a->cmd, "bad --order '%s' (1..16)", v);
             }
-        } else if (cli_flag(&a, "--quiet") || cli_flag(&a, "-q")) {
-            quiet = 1;
+        } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
+            o->quiet = 1;
         } else {
-            return cli_unknown(&a);
+            return cli_unknown(a);
         }
-        if (a.bad) {
+        if (a->bad) {
             return CLI_USAGE;
         }
     }
-    if (a.bad) {
+    if (a->bad) {
         return CLI_USAGE;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need A.png and B.png");
+    if (a->npos != 2) {
+        return cli_usage_error(a->cmd, "need A.png and B.png");
     }
-    if (2u * order >= samples) {
-        return cli_usage_error(a.cmd, "--order %u needs more than %u samples", order, 2u * order);
+    if (2u * o->order >= o->samples) {
+        return cli_usage_error(a->cmd, "--order %u needs more than %u samples", o->order,
+                               2u * o->order);
     }
-    if (descriptors(a.cmd, a.pos[0], thr, invert, samples, order, &fa, &oa) != 0 ||
-        descriptors(a.cmd, a.pos[1], thr, invert, samples, order, &fb, &ob) != 0) {
+    return CLI_OK;
+}
+
+/* phi in degrees, -180..180. */
+static double phi_deg(uint32_t phi)
+{
+    const double d = phi * (360.0 / 4294967296.0);
+    return d > 180.0 ? d - 360.0 : d;
+}
+
+static double alpha_rad(uint32_t alpha)
+{
+    return alpha * (2.0 * 3.14159265358979323846 / 4294967296.0);
+}
+
+/* --json (atomic; "-" stdout). */
+static int write_json(const cli_args_t *a, const shape_opts_t *o, const ssda_fd_match_t *m,
+                      const object_t *oa, const object_t *ob)
+{
+    cli_outputs_t out;
+    cJSON *doc = json_out_object();
+    FILE *f;
+    int bad;
+    cJSON_AddNumberToObject(doc, "s", m->s_q16 / 65536.0);
+    cJSON_AddNumberToObject(doc, "phi_deg", phi_deg(m->phi));
+    cJSON_AddNumberToObject(doc, "alpha", alpha_rad(m->alpha));
+    cJSON_AddNumberToObject(doc, "alpha_frac", m->alpha / 4294967296.0);
+    cJSON_AddNumberToObject(doc, "e2", m->e2_q16 / 65536.0);
+    cJSON_AddNumberToObject(doc, "samples", o->samples);
+    cJSON_AddNumberToObject(doc, "order", o->order);
+    cJSON_AddItemToObject(doc, "a", object_json(a->pos[0], oa));
+    cJSON_AddItemToObject(doc, "b", object_json(a->pos[1], ob));
+    cli_outputs_begin(&out, a->cmd);
+    bad = (f = cli_outputs_open(&out, o->json)) == NULL || json_out_print(f, doc, NULL) != 0;
+    cJSON_Delete(doc);
+    if (bad) {
+        cli_outputs_abort(&out);
+        return f == NULL ? CLI_INPUT : cli_input_error(a->cmd, "out of memory for the JSON");
+    }
+    return cli_outputs_commit(&out);
+}
+
+static void summary(const cli_args_t *a, const ssda_fd_match_t *m, const object_t *oa,
+                    const object_t *ob)
+{
+    printf("A %s: area %u px, perimeter %.1f px\n", cli_basename(a->pos[0]), oa->area,
+           oa->perimeter_q8 / 256.0);
+    printf("B %s: area %u px, perimeter %.1f px\n", cli_basename(a->pos[1]), ob->area,
+           ob->perimeter_q8 / 256.0);
+    printf("s %.5f  phi %.3f deg  alpha %.4f rad (%.2f %% of the way round)  E2 %.5f\n",
+           m->s_q16 / 65536.0, phi_deg(m->phi), alpha_rad(m->alpha),
+           100.0 * (m->alpha / 4294967296.0), m->e2_q16 / 65536.0);
+}
+
+int cmd_shape(int argc, char **argv)
+{
+    cli_args_t a;
+    shape_opts_t o = {NULL, 128, 256, 10, 0, 0};
+    int rc, done = 0;
+    ssda_fd_t fa, fb;
+    ssda_fd_match_t m;
+    object_t oa, ob;
+    cli_args_begin(&a, "shape", argc, argv);
+    if ((rc = parse(&a, &o, &done)) != CLI_OK || done) {
+        return rc;
+    }
+    if (descriptors(a.cmd, a.pos[0], o.thr, o.invert, o.samples, o.order, &fa, &oa) != 0 ||
+        descriptors(a.cmd, a.pos[1], o.thr, o.invert, o.samples, o.order, &fb, &ob) != 0) {
         return CLI_INPUT;
     }
     if ((rc = ssda_fd_match(&fa, &fb, &m)) != SSDA_OK) {
         return cli_input_error(a.cmd, "match: %s", ssda_strerror(rc));
     }
-    phi = m.phi * (360.0 / 4294967296.0);
-    phi = phi > 180.0 ? phi - 360.0 : phi;
-    alpha = m.alpha * (2.0 * 3.14159265358979323846 / 4294967296.0);
-    if (json != NULL) {
-        cli_outputs_t out;
-        cJSON *root = cJSON_CreateObject();
-        char *text;
-        FILE *f;
-        cJSON_AddNumberToObject(root, "s", m.s_q16 / 65536.0);
-        cJSON_AddNumberToObject(root, "phi_deg", phi);
-        cJSON_AddNumberToObject(root, "alpha", alpha);
-        cJSON_AddNumberToObject(root, "alpha_frac", m.alpha / 4294967296.0);
-        cJSON_AddNumberToObject(root, "e2", m.e2_q16 / 65536.0);
-        cJSON_AddNumberToObject(root, "samples", samples);
-        cJSON_AddNumberToObject(root, "order", order);
-        cJSON_AddItemToObject(root, "a", object_json(a.pos[0], &oa));
-        cJSON_AddItemToObject(root, "b", object_json(a.pos[1], &ob));
-        text = cJSON_Print(root);
-        cJSON_Delete(root);
-        cli_outputs_begin(&out, a.cmd);
-        if (text == NULL || (f = cli_outputs_open(&out, json)) == NULL || fputs(text, f) < 0 ||
-            fputc('\n', f) == EOF) {
-            cJSON_free(text);
-            cli_outputs_abort(&out);
-            return cli_input_error(a.cmd, "cannot write '%s'", json);
-        }
-        cJSON_free(text);
-        if ((rc = cli_outputs_commit(&out)) != CLI_OK) {
-            return rc;
-        }
+    if (o.json != NULL && (rc = write_json(&a, &o, &m, &oa, &ob)) != CLI_OK) {
+        return rc;
     }
-    if (!quiet && !(json != NULL && strcmp(json, "-") == 0)) {
-        printf("A %s: area %u px, perimeter %.1f px\n", cli_basename(a.pos[0]), oa.area,
-               oa.perimeter_q8 / 256.0);
-        printf("B %s: area %u px, perimeter %.1f px\n", cli_basename(a.pos[1]), ob.area,
-               ob.perimeter_q8 / 256.0);
-        printf("s %.5f  phi %.3f deg  alpha %.4f rad (%.2f %% of the way round)  E2 %.5f\n",
-               m.s_q16 / 65536.0, phi, alpha, 100.0 * (m.alpha / 4294967296.0),
-               m.e2_q16 / 65536.0);
+    if (!o.quiet && !(o.json != NULL && strcmp(o.json, "-") == 0)) {
+        summary(&a, &m, &oa, &ob);
     }
     return CLI_OK;
 }

@@ -3,11 +3,11 @@
    grown into an affine transform. */
 #include "cli.h"
 #include "draw_loops.h"
+#include "json_out.h"
 #include "loops_run.h"
 #include "warp_affine.h"
 #include "ssda/symreg.h"
 
-#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,13 +83,6 @@ static int16_t grey_of(uint32_t u)
     return u == 0 ? (int16_t)SSDA_LOOPS_GREY_ANY : (int16_t)u;
 }
 
-/* One option into o; 0 if not ours, 1 taken, -1 after a usage error. */
-static int take(cli_args_t *a, symreg_opts_t *o)
-{
-    const char *v = NULL;
-    uint32_t u = 0;
-    int32_t lo, hi;
-    double d1, d2;
 #define NEED_U32(name, lo_, hi_, range)                                                   \
     if (v == NULL) { /* cli_opt said so */                                                \
         return -1;                                                                        \
@@ -98,13 +91,15 @@ static int take(cli_args_t *a, symreg_opts_t *o)
         cli_usage_error(a->cmd, "bad " name " '%s' (" range ")", v);                      \
         return -1;                                                                        \
     }
-    if (cli_opt(a, "--json", &v)) {
-        o->json = v;
-    } else if (cli_opt(a, "--overlay", &v)) {
-        o->overlay = v;
-    } else if (cli_opt(a, "-o", &v)) {
-        o->out = v;
-    } else if (cli_opt(a, "--strength", &v)) {
+
+/* An option of the loops' stages into o; 0 if not one, 1 taken, -1 after
+   a usage error. */
+static int take_loops(cli_args_t *a, symreg_opts_t *o)
+{
+    const char *v = NULL;
+    uint32_t u = 0;
+    int32_t lo, hi;
+    if (cli_opt(a, "--strength", &v)) {
         NEED_U32("--strength", 1, 255, "1..255");
         o->ref.strength = o->mov.strength = (uint8_t)u;
     } else if (cli_opt(a, "--grey-min", &v)) {
@@ -132,7 +127,19 @@ static int take(cli_args_t *a, symreg_opts_t *o)
     } else if (cli_opt(a, "--gap", &v)) {
         NEED_U32("--gap", 1, 64, "1..64");
         o->ref.refine.gap_max = o->mov.refine.gap_max = (uint8_t)u;
-    } else if (cli_opt(a, "--samples", &v)) {
+    } else {
+        return 0;
+    }
+    return a->bad ? -1 : 1;
+}
+
+/* An option of the descriptors or the registration into o; as take_loops. */
+static int take_registration(cli_args_t *a, symreg_opts_t *o)
+{
+    const char *v = NULL;
+    uint32_t u = 0;
+    double d1, d2;
+    if (cli_opt(a, "--samples", &v)) {
         NEED_U32("--samples", 8, 1024, "a power of two, 8..1024");
         if ((u & (u - 1)) != 0) {
             cli_usage_error(a->cmd, "bad --samples '%s' (a power of two, 8..1024)", v);
@@ -158,13 +165,60 @@ static int take(cli_args_t *a, symreg_opts_t *o)
         }
         o->reg.scale_min_q16 = (uint32_t)lround(d1 * 65536.0);
         o->reg.scale_max_q16 = (uint32_t)lround(d2 * 65536.0);
-    } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
-        o->quiet = 1;
     } else {
         return 0;
     }
-#undef NEED_U32
     return a->bad ? -1 : 1;
+}
+#undef NEED_U32
+
+/* One option into o; 0 if not ours, 1 taken, -1 after a usage error. */
+static int take(cli_args_t *a, symreg_opts_t *o)
+{
+    const char *v = NULL;
+    int t;
+    if (cli_opt(a, "--json", &v)) {
+        o->json = v;
+    } else if (cli_opt(a, "--overlay", &v)) {
+        o->overlay = v;
+    } else if (cli_opt(a, "-o", &v)) {
+        o->out = v;
+    } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
+        o->quiet = 1;
+    } else if ((t = take_loops(a, o)) != 0 || (t = take_registration(a, o)) != 0) {
+        return t;
+    } else {
+        return 0;
+    }
+    return a->bad ? -1 : 1;
+}
+
+/* The options into o; CLI_OK, or the exit code (--help: CLI_OK with
+   *done set). */
+static int parse(cli_args_t *a, symreg_opts_t *o, int *done)
+{
+    int t;
+    while (cli_next(a)) {
+        if (cli_flag(a, "--help") || cli_flag(a, "-h")) {
+            fputs(help, stdout);
+            *done = 1;
+            return CLI_OK;
+        }
+        t = take(a, o);
+        if (t < 0 || a->bad) {
+            return CLI_USAGE;
+        }
+        if (t == 0) {
+            return cli_unknown(a);
+        }
+    }
+    if (a->bad) {
+        return CLI_USAGE;
+    }
+    if (a->npos != 2) {
+        return cli_usage_error(a->cmd, "need REF.png and MOV.png");
+    }
+    return CLI_OK;
 }
 
 static double deg(uint32_t turns)
@@ -189,55 +243,53 @@ static cJSON *point(int32_t x_q8, int32_t y_q8)
     return cJSON_CreateDoubleArray(v, 2);
 }
 
+static cJSON *pair_json(const ssda_symreg_pair_t *p, const loops_run_t *r, const loops_run_t *m)
+{
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddNumberToObject(o, "ref_index", p->ref);
+    cJSON_AddNumberToObject(o, "mov_index", p->mov);
+    cJSON_AddItemToObject(o, "ref", point(r->loops[p->ref].cx_q8, r->loops[p->ref].cy_q8));
+    cJSON_AddItemToObject(o, "mov", point(m->loops[p->mov].cx_q8, m->loops[p->mov].cy_q8));
+    cJSON_AddNumberToObject(o, "s", p->s_q16 / 65536.0);
+    cJSON_AddNumberToObject(o, "phi_deg", deg(p->phi));
+    cJSON_AddNumberToObject(o, "e2", p->e2_q16 / 65536.0);
+    cJSON_AddNumberToObject(o, "e2_fixed", p->e2_fixed_q16 / 65536.0);
+    cJSON_AddNumberToObject(o, "resid", p->resid_q8 / 256.0);
+    cJSON_AddNumberToObject(o, "ref_area", r->loops[p->ref].area);
+    cJSON_AddNumberToObject(o, "mov_area", m->loops[p->mov].area);
+    return o;
+}
+
+/* The document (json_out.h's layout); 0, or -1 out of memory. */
 static int write_json(FILE *f, const char *ref_path, const char *mov_path, const loops_run_t *r,
                       const loops_run_t *m, const ssda_symreg_result_t *res,
                       const ssda_symreg_pair_t *pairs)
 {
-    cJSON *root = cJSON_CreateObject(), *arr;
+    cJSON *doc = json_out_object(), *arr;
     double A[6];
-    char *text;
     uint32_t i;
     int rc;
     affine_doubles(&res->affine, A);
-    cJSON_AddStringToObject(root, "ref", ref_path);
-    cJSON_AddStringToObject(root, "mov", mov_path);
-    cJSON_AddNumberToObject(root, "loops_ref", r->n);
-    cJSON_AddNumberToObject(root, "loops_mov", m->n);
-    arr = cJSON_AddArrayToObject(root, "pairs");
+    json_out_add_string(doc, "ref", ref_path);
+    json_out_add_string(doc, "mov", mov_path);
+    cJSON_AddNumberToObject(doc, "loops_ref", r->n);
+    cJSON_AddNumberToObject(doc, "loops_mov", m->n);
+    arr = cJSON_AddArrayToObject(doc, "pairs");
     for (i = 0; i < res->pairs; i++) {
-        const ssda_symreg_pair_t *p = &pairs[i];
-        cJSON *o = cJSON_CreateObject();
-        cJSON_AddNumberToObject(o, "ref_index", p->ref);
-        cJSON_AddNumberToObject(o, "mov_index", p->mov);
-        cJSON_AddItemToObject(o, "ref", point(r->loops[p->ref].cx_q8, r->loops[p->ref].cy_q8));
-        cJSON_AddItemToObject(o, "mov", point(m->loops[p->mov].cx_q8, m->loops[p->mov].cy_q8));
-        cJSON_AddNumberToObject(o, "s", p->s_q16 / 65536.0);
-        cJSON_AddNumberToObject(o, "phi_deg", deg(p->phi));
-        cJSON_AddNumberToObject(o, "e2", p->e2_q16 / 65536.0);
-        cJSON_AddNumberToObject(o, "e2_fixed", p->e2_fixed_q16 / 65536.0);
-        cJSON_AddNumberToObject(o, "resid", p->resid_q8 / 256.0);
-        cJSON_AddNumberToObject(o, "ref_area", r->loops[p->ref].area);
-        cJSON_AddNumberToObject(o, "mov_area", m->loops[p->mov].area);
-        cJSON_AddItemToArray(arr, o);
+        cJSON_AddItemToArray(arr, pair_json(&pairs[i], r, m));
     }
-    cJSON_AddItemToObject(root, "affine", cJSON_CreateDoubleArray(A, 6));
-    cJSON_AddNumberToObject(root, "rms", res->rms_q8 / 256.0);
-    cJSON_AddNumberToObject(root, "scale", res->scale_q16 / 65536.0);
-    cJSON_AddNumberToObject(root, "rotation_deg", deg(res->rotation));
-    cJSON_AddNumberToObject(root, "candidates", res->candidates);
-    cJSON_AddNumberToObject(root, "nuclei", res->nuclei);
+    cJSON_AddItemToObject(doc, "affine", cJSON_CreateDoubleArray(A, 6));
+    cJSON_AddNumberToObject(doc, "rms", res->rms_q8 / 256.0);
+    cJSON_AddNumberToObject(doc, "scale", res->scale_q16 / 65536.0);
+    cJSON_AddNumberToObject(doc, "rotation_deg", deg(res->rotation));
+    cJSON_AddNumberToObject(doc, "candidates", res->candidates);
+    cJSON_AddNumberToObject(doc, "nuclei", res->nuclei);
     /* the library's buffers: each image's chain, and the registration's work */
-    cJSON_AddNumberToObject(root, "lib_bytes_ref", (double)r->lib_bytes);
-    cJSON_AddNumberToObject(root, "lib_bytes_mov", (double)m->lib_bytes);
-    cJSON_AddNumberToObject(root, "lib_bytes_symreg",
-                            (double)SSDA_SYMREG_WORK_SIZE(r->n, m->n, res->nuclei));
-    text = cJSON_Print(root);
-    cJSON_Delete(root);
-    if (text == NULL) {
-        return -1;
-    }
-    rc = fputs(text, f) < 0 || fputc('\n', f) == EOF ? -1 : 0;
-    cJSON_free(text);
+    json_out_add_u64(doc, "lib_bytes_ref", r->lib_bytes);
+    json_out_add_u64(doc, "lib_bytes_mov", m->lib_bytes);
+    json_out_add_u64(doc, "lib_bytes_symreg", SSDA_SYMREG_WORK_SIZE(r->n, m->n, res->nuclei));
+    rc = json_out_print(f, doc, NULL);
+    cJSON_Delete(doc);
     return rc;
 }
 
@@ -269,7 +321,7 @@ static int outputs(const char *cmd, const symreg_opts_t *o, const char *ref_path
         if ((f = cli_outputs_open(&out, o->json)) == NULL ||
             write_json(f, ref_path, mov_path, r, m, res, pairs) != 0) {
             cli_outputs_abort(&out);
-            return f == NULL ? CLI_INPUT : cli_input_error(cmd, "cannot write '%s'", o->json);
+            return f == NULL ? CLI_INPUT : cli_input_error(cmd, "out of memory for the JSON");
         }
     }
     if (o->overlay != NULL) {
@@ -380,29 +432,13 @@ int cmd_symreg(int argc, char **argv)
     ssda_symreg_pair_t *pairs = NULL;
     uint32_t need;
     char err[512];
-    int rc = CLI_INPUT, t;
+    int rc = CLI_INPUT, t, help_only = 0;
     memset(&o, 0, sizeof o);
     memset(&r, 0, sizeof r);
     memset(&m, 0, sizeof m);
     cli_args_begin(&a, "symreg", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            fputs(help, stdout);
-            return CLI_OK;
-        }
-        t = take(&a, &o);
-        if (t < 0 || a.bad) {
-            return CLI_USAGE;
-        }
-        if (t == 0) {
-            return cli_unknown(&a);
-        }
-    }
-    if (a.bad) {
-        return CLI_USAGE;
-    }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, "need REF.png and MOV.png");
+    if ((t = parse(&a, &o, &help_only)) != CLI_OK || help_only) {
+        return t;
     }
     need = o.reg.min_pairs ? o.reg.min_pairs : SSDA_SYMREG_DEFAULT_MIN_PAIRS;
     cli_warn_png_name(a.cmd, "--overlay", o.overlay);
