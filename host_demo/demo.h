@@ -79,6 +79,10 @@ int demo_track(const demo_ctx_t *c, const gray_image_t *first, const gray_image_
 int demo_pitch(const demo_ctx_t *c, const demo_signal_t *sig, int synthetic,
                const char *ref_csv, const char *plot_name, const char *label);
 
+/* Colour segmentation (seed 004) of a synthetic aerial scene with known
+   regions: K-L transform, mixtures, labels, scores; writes scene.png,
+   segment_hist.png and segment_labels.png. Returns 0 or -1. */
+int demo_segment(const demo_ctx_t *c);
 /* Part 3: registration by closed loops (seed 001) of a synthetic aerial
    pair with a known similarity and gain; writes the inputs and
    symreg_overlay.png. Returns 0, or -1 on failure or when the corners are

@@ -135,15 +135,23 @@ static int run_synthetic(const demo_ctx_t *c, const char *argv0)
     if (demo_symreg(c, "") != 0) {
         goto done;
     }
+    demo_heading(c, "4. Colour segmentation: K-L transform and Gaussian mixtures (seed 004)");
+    if (demo_segment(c) != 0) {
+        goto done;
+    }
     tool_path(argv0, tool, sizeof tool);
     demo_heading(c, "Next: the same on your own files");
     printf("   %s track FIRST.png SECOND.png --overlay vectors.png --json vectors.json\n", tool);
     printf("   %s pitch SOUND.wav --plot pitch.png --csv f0.csv\n", tool);
+    printf("   %s segment PHOTO.png -o labels.png --plot hist.png --picture labels_colour.png\n",
+           tool);
     printf("   for example on the files above:\n");
     printf("   %s track %s %s --exclude --overlay %s/my_vectors.png\n", tool, p1, p2, c->out_dir);
     printf("   %s pitch %s --ref %s --plot %s/my_pitch.png\n", tool, pw, pc, c->out_dir);
     printf("   %s symreg %s/aerial_1.png %s/aerial_2.png --overlay %s/my_loops.png -o "
            "%s/registered.png\n", tool, c->out_dir, c->out_dir, c->out_dir, c->out_dir);
+    printf("   %s segment %s/scene.png --picture %s/my_labels.png\n", tool, c->out_dir,
+           c->out_dir);
     printf("   (docs/cli.md lists every option)\n");
     rc = 0;
 done:

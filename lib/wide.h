@@ -2,7 +2,8 @@
  * wide.h - internal: exact unsigned products and comparisons wider than 64
  * bits, in portable C99 (32-bit partial products, no compiler extension),
  * for the correlation search (ncc.h): its comparisons need num^2 * var, up
- * to 2^124 * 2^62 = 2^186.
+ * to 2^124 * 2^62 = 2^186; and 128-bit sums, shifts, quotients and roots
+ * for the K-L transform (kl.h) and the mixture fits (mixture.h).
  */
 #ifndef SSDA_WIDE_H
 #define SSDA_WIDE_H
@@ -66,5 +67,32 @@ static inline uint32_t ssda__bitlen64(uint64_t v)
 #else
 SSDA_INTERNAL uint32_t ssda__bitlen64(uint64_t v);
 #endif
+
+/* ---- 128-bit arithmetic of the K-L transform and the mixture fits
+   (kl_*.c, mix_*.c): exact sums, shifts and quotients on setup paths (once
+   per image or per fit iteration and component), never per pixel ---- */
+
+/* v as a 128-bit value. */
+SSDA_INTERNAL ssda__u128_t ssda__u128_from(uint64_t v);
+/* a + b and a - b modulo 2^128. */
+SSDA_INTERNAL ssda__u128_t ssda__u128_add(ssda__u128_t a, ssda__u128_t b);
+SSDA_INTERNAL ssda__u128_t ssda__u128_sub(ssda__u128_t a, ssda__u128_t b);
+/* a << s and a >> s for s in 0..127 (bits shifted out are lost). */
+SSDA_INTERNAL ssda__u128_t ssda__u128_shl(ssda__u128_t a, uint32_t s);
+SSDA_INTERNAL ssda__u128_t ssda__u128_shr(ssda__u128_t a, uint32_t s);
+/* Number of significant bits: 0 for 0, 128 for values >= 2^127. */
+SSDA_INTERNAL uint32_t ssda__u128_bits(ssda__u128_t a);
+/* floor(n / d) for d > 0 (restoring division, one bit per step, up to 128
+   steps); a zero d gives all ones. */
+SSDA_INTERNAL ssda__u128_t ssda__u128_div(ssda__u128_t n, ssda__u128_t d);
+/* floor(sqrt(a)) (< 2^64), bitwise. */
+SSDA_INTERNAL uint64_t ssda__u128_isqrt(ssda__u128_t a);
+/* min(a, 2^64 - 1). */
+SSDA_INTERNAL uint64_t ssda__u128_sat64(ssda__u128_t a);
+
+/* round(v / 2^s) with halves away from zero, for s in 1..62: symmetric in
+   sign (round(-v) = -round(v)), so results do not depend on which way a
+   vector points; no right shift of a negative value. */
+SSDA_INTERNAL int64_t ssda__round_shift(int64_t v, uint32_t s);
 
 #endif /* SSDA_WIDE_H */

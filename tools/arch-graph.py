@@ -35,9 +35,11 @@ LAYERS = [
      [r"^lib/match", r"^lib/view\."]),
     ("pitch: AMDF stream (pitch.h)", "#fce8f3", 3, [r"^lib/pitch"]),
     ("image operator: Fig. 8 gradient (grad.h)", "#f1f3f4", 3, [r"^lib/grad\."]),
+    ("seed 004: colour segmentation: K-L transform, mixtures, regions "
+     "(kl.h, mixture.h, region.h)", "#fff8e1", 3, [r"^lib/(kl_|mix_|region)"]),
     ("kernels: SAD / AMDF inner loops, one set linked", "#f3e8fd", 4, [r"^lib/kernel/"]),
     ("foundation: seal, validity, slide, integer maths, errors", "#eeeeee", 4,
-     [r"^lib/(compiler|state|slide|fixmath|fixtrig|wide|error)\."]),
+     [r"^lib/(compiler|state|slide|fixmath|fixtrig|fixexp|wide|error)\."]),
 ]
 NEW_MODULE_TIER = 2
 NEW_MODULE_COLOUR = "#e0f7fa"

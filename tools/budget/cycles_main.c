@@ -24,6 +24,9 @@ int main(void)
 #ifdef SSDA_BUDGET_HAVE_PITCH
     jobs_pitch();
 #endif
+#ifdef SSDA_BUDGET_HAVE_SEGMENT
+    jobs_segment();
+#endif
 #ifdef SSDA_BUDGET_HAVE_STREAM
     jobs_stream();
 #endif

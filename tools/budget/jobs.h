@@ -19,6 +19,8 @@ void jobs_match(void);
 void jobs_track(void);
 /* ssda_pitch_push, instructions per analysis frame, by mode. */
 void jobs_pitch(void);
+/* kl.h, mixture.h, region.h: per pixel and per fit. */
+void jobs_segment(void);
 /* ssda_push_row of push-mode tracking: one row, and a whole frame. */
 void jobs_stream(void);
 /* Seed 001's chain on a 96 x 96 pair: edges, loops, descriptors, matches,

@@ -34,6 +34,9 @@ FEATURE_NAMES = {
     "symreg": "symbolic registration (`symreg.h`)",
     "view": "image views (`view.h`)",
     "ssda": "error names (`ssda.h`)",
+    "kl": "K-L transform (`kl.h`)",
+    "mixture": "Gaussian mixtures of histograms (`mixture.h`)",
+    "region": "isolated points, contours, counts (`region.h`)",
 }
 
 
@@ -514,6 +517,25 @@ def main():
                 w(f"| {label} | " + " | ".join(cells) +
                   f" | {fmt(round(r0[3] / max(1, r0[1])))} | {r0[2]} |\n")
 
+        if any("segment.kl_acc" in r for _, _, r in runs):
+            w("\n| colour segmentation (`kl.h`, `mixture.h`, `region.h`); 256 x 16 RGB, "
+              "4 stripes | " + " | ".join(f"{n}: instructions" for n in names) +
+              " | per | stack peak (B) |\n")
+            w("|---|" + "---:|" * len(runs) + "---|---:|\n")
+            for key, label, per_what in (
+                    ("segment.kl_acc", "band statistics (`ssda_kl_acc_add_row`)", "pixel"),
+                    ("segment.kl_transform", "three features (`ssda_kl_transform_row`)", "pixel"),
+                    ("segment.label", "labels through the table (`ssda_mix_label_row`)", "pixel"),
+                    ("segment.clean", "isolated-point removal (`ssda_region_push`)", "pixel"),
+                    ("segment.kl_solve", "K-L solve: matrix, Jacobi, plan (`ssda_kl_solve`)", "call"),
+                    ("segment.em_fit", "EM, 256 bins, K = 4 (`ssda_mix_fit`)", "iteration"),
+                    ("segment.search_fit", "the seed's search, same histogram (`ssda_mix_fit`)",
+                     "fit")):
+                r0 = get(runs[0][2], key)
+                cells = [per(*get(r, key)[:2]) if per_what == "pixel"
+                         else fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
+                         for _, _, r in runs]
+                w(f"| {label} | " + " | ".join(cells) + f" | {per_what} | {r0[2]} |\n")
         if any("symreg.edge_detect" in r for _, _, r in runs):
             r0 = runs[0][2]
             pairs = get(r0, "symreg.pairs")

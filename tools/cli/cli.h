@@ -110,7 +110,7 @@ int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_imag
  * rename that still fails puts back what the others replaced). On any
  * failure, cli_outputs_abort deletes the temp files: no output is created or
  * changed. FIFOs, character devices and /dev/std* are written directly. */
-#define CLI_MAX_OUTPUTS 4
+#define CLI_MAX_OUTPUTS 12
 
 typedef struct {
     const char *cmd;
@@ -151,6 +151,7 @@ int cmd_track(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_grad(int argc, char **argv);
 int cmd_pitch(int argc, char **argv);
+int cmd_segment(int argc, char **argv);
 int cmd_symreg(int argc, char **argv);
 int cmd_shape(int argc, char **argv);
 

@@ -16,6 +16,7 @@ static const struct {
     {"compare", cmd_compare, "SSDA vectors vs exhaustive normalised cross-correlation"},
     {"grad", cmd_grad, "the seed's Fig. 8 differential operator on an image"},
     {"pitch", cmd_pitch, "f0 track of a WAV (or any libsndfile format) by AMDF"},
+    {"segment", cmd_segment, "colour segmentation: K-L transform + Gaussian-mixture histograms"},
     {"symreg", cmd_symreg, "register two images by their closed loops (rotation, scale, gain)"},
     {"shape", cmd_shape, "Fourier-descriptor match of two silhouettes: scale, rotation, E2"},
 };

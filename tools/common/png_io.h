@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdint.h>
+#include <stdio.h>
 #include "ssda/view.h"
 
 /* Largest decoded buffer png_read_gray will allocate, in bytes (1 GiB). */
@@ -95,5 +96,31 @@ static inline uint32_t gray_image_max(const gray_image_t *img)
 {
     return img->bits == 16 ? 65535u : 255u;
 }
+
+/* ---- colour ---- */
+
+/* A packed interleaved RGB image in host memory: pixel (x, y) band k at
+   sample (y * width + x) * 3 + k; rows stride bytes apart. */
+typedef struct {
+    void *pixels;      /* malloc'ed; uint8_t or native-order uint16_t samples */
+    uint32_t width;    /* 1..65535 */
+    uint32_t height;   /* 1..65535 */
+    uint32_t stride;   /* bytes per row = 3 * width * bytes per sample */
+    uint8_t bits;      /* 8 or 16 */
+} rgb_image_t;
+
+/*
+ * Read path as RGB, samples as stored (no gamma or profile; 16-bit sources
+ * stay 16-bit, 1..8-bit ones become 8-bit as png_read_gray scales gray),
+ * into *img (release with rgb_image_free). Palette entries are looked up;
+ * alpha and tRNS are ignored; a gray PNG gives three equal bands, and
+ * info->was_color (if info is not NULL) says which it was. Limits and
+ * errors as png_read_gray; *img untouched on error.
+ */
+int png_read_rgb(const char *path, rgb_image_t *img, png_source_info_t *info, char *err,
+                 size_t errlen);
+
+/* Free the pixels and zero the struct (safe on a zeroed struct). */
+void rgb_image_free(rgb_image_t *img);
 
 #endif /* SSDA_PNG_IO_H */
