@@ -203,6 +203,53 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
     }
 }
 
+/*
+ * Below-range check (see pitch.h, step 6): a tone above f0_max has its
+ * first dip in range at a multiple P of its period (1 500 Hz read 750 Hz).
+ * True (unvoiced) when P itself is below lag_min - 1/2. When P < 2 lag_min,
+ * look at each sub-period P / k (k >= 2) below lag_min and at least 3
+ * samples: lags c - 2 .. c + 2 around c = round(P / k),
+ * summed in full; if the interpolated floor at a local minimum among
+ * c - 1 .. c + 1 is within half the octave margin of F (nq_floor <= F +
+ * margin / 2), the period is shorter than the range allows and the frame
+ * is unvoiced. Uses the scan's best_* values as scratch (unused by now).
+ */
+static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
+{
+    const ssda_pitch_info_t *info = f->info;
+    const uint32_t margin_q20 = (((uint32_t)info->threshold_q15 * 43691u) >> 17) << 5;
+    const uint32_t limit = floor_q20 + margin_q20 / 2u; /* < 2^21 */
+    uint32_t k = 2u;
+    if (period_q16 + 32768u < info->lag_min << 16) {
+        return true; /* the dip itself is more than half a lag below the range */
+    }
+    if (period_q16 >= (2u * info->lag_min) << 16) { /* lag_min <= 4800: < 2^30 */
+        return false; /* every sub-period is in range: the scan saw it */
+    }
+    for (;;) { /* k = 2, 3, ... while round(P / k) >= 3 */
+        /* round(P / k): P < 2 lag_min <= 9600 samples, Q16 < 2^30 */
+        const uint32_t c = SSDA_DIV32(period_q16 + (k << 15), k << 16);
+        uint32_t lag;
+        k++;
+        if (c < 3u) {
+            return false;
+        }
+        if (c >= info->lag_min || (uint64_t)period_q16 >= (uint64_t)(k - 1u) * (info->lag_min << 16)) {
+            continue; /* P / k in range: a dip there would have been found */
+        }
+        for (lag = c - 2u; lag <= c + 2u; lag++) {
+            f->best_left = f->best;
+            f->best = f->best_right;
+            value_at(f, lag, NO_BOUND, &f->best_right);
+            if (lag >= c && !n_less(&f->best_left, &f->best) &&
+                !n_less(&f->best_right, &f->best) &&
+                dip_floor_q20(f, &f->best_left, &f->best, &f->best_right) <= limit) {
+                return true;
+            }
+        }
+    }
+}
+
 static void silent_estimate(ssda_pitch_estimate_t *est)
 {
     est->lag = 0u;
@@ -240,7 +287,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, est->period_q16);
     n_q15 = ssda__div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
-    est->voiced = found && n_at_most_q15(&w->t_mid, info->voicing_q15);
+    est->voiced = found && n_at_most_q15(&w->t_mid, info->voicing_q15) &&
+                  !below_range(w, period, dip_floor_q20(w, &w->t_left, &w->t_mid, &w->t_right));
     est->dip = found;
     est->silent = false;
     est->diffs = w->diffs;

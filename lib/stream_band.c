@@ -104,3 +104,20 @@ size_t ssda__stream_run_extra(const ssda_source_t *s, uint32_t step_y)
     run = step_y < s->cfg.tile_h ? step_y : s->cfg.tile_h;
     return (size_t)(run - 1u) * s->cfg.stride;
 }
+
+/* Plan the plate of a streamed source (in RAM: nothing) for bands of `rows`
+   rows of region r sliding down q rows at a time: with a tiled source's
+   run room (ssda__stream_run_extra) when the band still fits with it, else
+   without, so that a band that fits the arena is always held (the job
+   checked that it fits). */
+void ssda__stream_band_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+                            uint32_t rows, uint32_t q, ssda_source_plan_t *plan)
+{
+    if (s->view != NULL) {
+        return;
+    }
+    (void)ssda__stream_plate_plan(s, r, span, rows, q, ssda__stream_run_extra(s, q), plan);
+    if (!ssda__stream_plan_holds_band(plan, rows)) {
+        (void)ssda__stream_plate_plan(s, r, span, rows, q, 0u, plan);
+    }
+}

@@ -167,6 +167,13 @@ SSDA_INTERNAL bool ssda__stream_grid_rects(const ssda_track_grid_t *g, uint32_t 
    band gains per grid step in one read per tile (0 for raster, RAM). */
 SSDA_INTERNAL size_t ssda__stream_run_extra(const ssda_source_t *s, uint32_t step_y);
 
+/* Plan the plate of s (streamed; in RAM: nothing) into *plan for bands of
+   `rows` rows of region r moving down q rows at a time, with a tiled
+   source's run room when the band still fits with it. The job has checked
+   that a band (r's width x rows, or span x rows) fits the arena. */
+SSDA_INTERNAL void ssda__stream_band_plan(ssda_source_t *s, const ssda_rect_t *r, uint32_t span,
+                                          uint32_t rows, uint32_t q, ssda_source_plan_t *plan);
+
 /* Row source of the band with top-left (x, y) of a streamed source's plate
    (kept inside the plate's region): the plate moved there, as rows in
    memory; *ox, *oy receive where the band starts in the image.

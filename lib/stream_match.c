@@ -2,12 +2,16 @@
    checks, plate shapes for the scan, then the engine over row sources. */
 #include "stream_internal.h"
 
-/* Narrowest plate each streamed operand needs: the widest span the engine
-   fetches from it (whole area rows when it builds bounds). */
-static uint32_t area_span(const ssda_match_config_t *cfg, const ssda_rect_t *a,
+/* Rows of the area's smallest accepted plate (as wide as the area): a
+   raster scan revisits a band of window-height rows moving down, the other
+   scans jump around the whole area. Any smaller plate would re-read rows
+   without bound (issue 22: 3.9 GB read for a 131 KB area), so a job is
+   refused below it: every byte is then read at most twice (once more when
+   the raster scan starts again from the top after building the bounds). */
+static uint32_t area_rows(const ssda_match_config_t *cfg, const ssda_rect_t *a,
                           const ssda_rect_t *w)
 {
-    return (cfg->flags & SSDA_MATCH_BOUNDS) != 0u ? a->width : w->width;
+    return cfg->scan == (uint8_t)SSDA_SCAN_RASTER ? w->height : a->height;
 }
 
 /* Shape the plates of the streamed operands for the search: the raster
@@ -18,12 +22,11 @@ static void shape_plates(ssda_source_t *area, const ssda_rect_t *ar, ssda_source
 {
     if (area->view == NULL) {
         const bool raster = cfg->scan == (uint8_t)SSDA_SCAN_RASTER;
-        (void)ssda__stream_plate_shape(area, ar, area_span(cfg, ar, wr),
-                                       raster ? wr->height : ar->height, 1u, 0u);
+        (void)ssda__stream_plate_shape(area, ar, ar->width, area_rows(cfg, ar, wr), 1u, 0u);
         /* A raster scan's band of window-height rows moves down one row at
            a time: a plate with spare rows jumps by them (rows needed are
            read once, each slide copies the band's rows in the arena). */
-        if (raster && area->plate.ph >= wr->height) {
+        if (raster) { /* ph >= window height: checked by the caller */
             area->plate.qy = (uint16_t)(area->plate.ph - wr->height + 1u);
         }
     }
@@ -70,8 +73,8 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda__stream_holds(area, area_span(cfg, &ar, &wr), 1u, 0u) ||
-        !ssda__stream_holds(window, wr.width, 1u, 0u)) {
+    if (!ssda__stream_holds(area, ar.width, area_rows(cfg, &ar, &wr), 0u) ||
+        !ssda__stream_holds(window, wr.width, wr.height, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     shape_plates(area, &ar, window, &wr, cfg);

@@ -122,8 +122,8 @@ int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
     if (err != SSDA_OK) {
         return err;
     }
-    if (!ssda__stream_holds(cfg->other, wr.width, 1u, 0u)) {
-        return SSDA_ERR_BUFFER;
+    if (!ssda__stream_holds(cfg->other, wr.width, wr.height, 0u)) {
+        return SSDA_ERR_BUFFER; /* the window is read once, whole (issue 22) */
     }
     err = ring_fits((uint8_t)cfg->format, area.width, area.height, cfg->ring, cfg->ring_size,
                     cfg->other);
@@ -202,6 +202,7 @@ static int track_layout(const ssda_push_config_t *cfg, const ssda_track_config_t
     kept->height = 1u; /* every window EDGE: a one-pixel ring */
     *lo = plan->grid.rows;
     *hi = 0u;
+    *oreg = *kept;
     if (ssda__stream_grid_rects(&plan->grid, fw, fh, 0u, plan->grid.cols, &ar, &wr, lo, hi)) {
         *kept = first ? ar : wr;
         kept->height = first ? plan->grid.search_h : plan->grid.win_h;
@@ -236,8 +237,12 @@ int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
     if (err != SSDA_OK) {
         return err;
     }
+    /* the other image's band as wide as the grid (lo > hi: nothing is read,
+       a row will do): grid rows are solved whole, so a narrower plate would
+       re-read its rows without bound (issue 22) */
     if (!ssda__track_out_fits(plan.grid.count, out_count) ||
-        !ssda__stream_holds(cfg->other, first ? plan.grid.win_w : plan.grid.search_w, 1u, 0u)) {
+        !ssda__stream_holds(cfg->other, lo <= hi ? oreg.width : 1u,
+                            lo <= hi ? (first ? plan.grid.win_h : plan.grid.search_h) : 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     err = ring_fits((uint8_t)cfg->format, kept.width, kept.height, cfg->ring, cfg->ring_size,
@@ -254,13 +259,9 @@ int ssda_push_init_track(ssda_push_t *push, const ssda_push_config_t *cfg,
     push->row_hi = (uint16_t)hi;
     if (lo <= hi && cfg->other->view == NULL) {
         /* the other image's bands, sliding down one grid step at a time */
-        const uint32_t oband = first ? plan.grid.win_h : plan.grid.search_h;
-        (void)ssda__stream_plate_plan(push->other, &oreg,
-                                      first ? plan.grid.win_w : plan.grid.search_w, oband,
-                                      plan.grid.step_y,
-                                      ssda__stream_run_extra(cfg->other, plan.grid.step_y),
-                                      &push->other_plate);
-        push->other_banded = ssda__stream_plan_holds_band(&push->other_plate, oband);
+        ssda__stream_band_plan(push->other, &oreg, oreg.width,
+                               first ? plan.grid.win_h : plan.grid.search_h, plan.grid.step_y,
+                               &push->other_plate);
     }
     track_next(push);
     return SSDA_OK;
@@ -327,13 +328,13 @@ static int solve_row(ssda_push_t *p, uint32_t r)
     ring_rows(p, top, band_rows(p), &pushed);
     ssda__stream_rows(&other, p->other, NULL);
     if (p->other->view == NULL) {
+        /* the plate holds a whole-width band (checked at init) */
+        int err;
         ssda__stream_plate_use(p->other, &p->other_plate);
-        if (p->other_banded) {
-            int err = ssda__stream_band_rows(p->other, p->other_plate.region.x,
-                                             first ? wy : wy - hy, &other, &ox, &oy);
-            if (err != SSDA_OK) {
-                return err;
-            }
+        err = ssda__stream_band_rows(p->other, p->other_plate.region.x, first ? wy : wy - hy,
+                                     &other, &ox, &oy);
+        if (err != SSDA_OK) {
+            return err;
         }
     }
     o.first_x = first ? p->x0 : ox;

@@ -67,6 +67,17 @@ static uint32_t band_width(const ssda_source_t *s, uint32_t rows, uint32_t step_
                            : ssda__stream_plate_fit_w(s, rows, ssda__stream_run_extra(s, step_y));
 }
 
+/* Does the result depend on the order windows are solved in? MEDIAN
+   prediction in an inexact mode: then one full-width strip is used. */
+static bool order_matters(const ssda_track_plan_t *p)
+{
+    const uint8_t mode = p->match.threshold;
+    const bool exact = (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                        mode == (uint8_t)SSDA_THRESHOLD_NONE) &&
+                       p->match.scan != (uint8_t)SSDA_SCAN_COARSE;
+    return !exact && p->predict == (uint8_t)SSDA_TRACK_PREDICT_MEDIAN;
+}
+
 /* Grid columns per strip: as many as keep the strip's areas (search_h rows)
    and windows (win_h rows) in the plates; the whole grid width when the
    result could depend on the order (MEDIAN prediction in an inexact mode). */
@@ -76,12 +87,8 @@ static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *firs
     const ssda_track_grid_t *g = &p->grid;
     const uint32_t fit_f = band_width(first, g->search_h, g->step_y);
     const uint32_t fit_s = band_width(second, g->win_h, g->step_y);
-    const uint8_t mode = p->match.threshold;
-    const bool exact = (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                        mode == (uint8_t)SSDA_THRESHOLD_NONE) &&
-                       p->match.scan != (uint8_t)SSDA_SCAN_COARSE;
     uint32_t k = 1u;
-    if (!exact && p->predict == (uint8_t)SSDA_TRACK_PREDICT_MEDIAN) {
+    if (order_matters(p)) {
         return g->cols;
     }
     while (k < g->cols) {
@@ -110,16 +117,28 @@ static void plan_strip(ssda_source_t *first, ssda_source_t *second,
     if (!st->banded) {
         return; /* no window reads anything */
     }
-    if (first->view == NULL) {
-        (void)ssda__stream_plate_shape(first, &st->ar, g->search_w, g->search_h, g->step_y,
-                                       ssda__stream_run_extra(first, g->step_y));
-        st->banded = ssda__stream_plan_holds_band(&first->plate, g->search_h);
+    ssda__stream_band_plan(first, &st->ar, g->search_w, g->search_h, g->step_y, &first->plate);
+    ssda__stream_band_plan(second, &st->wr, g->win_w, g->win_h, g->step_y, &second->plate);
+}
+
+/* The arena each image needs (issue 22): a band of the strip of one grid
+   column (search_h rows of search_w px in FIRST, win_h rows of win_w px in
+   SECOND), or of every column (`full`: one full-width strip, when the
+   result depends on the order); any less would fetch rows through the
+   plate as the tracker asks, re-reading them without bound. A row is
+   enough when no window reads pixels. */
+static bool arenas_hold_bands(const ssda_track_plan_t *p, const ssda_source_t *first,
+                              const ssda_source_t *second, bool full)
+{
+    const ssda_track_grid_t *g = &p->grid;
+    ssda_rect_t ar, wr;
+    uint32_t lo, hi;
+    if (!ssda__stream_grid_rects(g, p->first_w, p->first_h, 0u, g->cols, &ar, &wr, &lo, &hi)) {
+        return ssda__stream_holds(first, g->search_w, 1u, 0u) &&
+               ssda__stream_holds(second, g->win_w, 1u, 0u);
     }
-    if (second->view == NULL) {
-        (void)ssda__stream_plate_shape(second, &st->wr, g->win_w, g->win_h, g->step_y,
-                                       ssda__stream_run_extra(second, g->step_y));
-        st->banded = st->banded && ssda__stream_plan_holds_band(&second->plate, g->win_h);
-    }
+    return ssda__stream_holds(first, full ? ar.width : g->search_w, g->search_h, 0u) &&
+           ssda__stream_holds(second, full ? wr.width : g->win_w, g->win_h, 0u);
 }
 
 int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
@@ -153,15 +172,12 @@ int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,
     if (!ssda__track_out_fits(plan.grid.count, out_count)) {
         return SSDA_ERR_BUFFER;
     }
-    /* The tracker fetches whole area rows (mask test, bounds) and whole
-       window rows: the narrowest plates that can serve it. */
-    if (!ssda__stream_holds(first, plan.grid.search_w, 1u, 0u) ||
-        !ssda__stream_holds(second, plan.grid.win_w, 1u, 0u)) {
+    k = strip_cols(&plan, first, second);
+    if (!arenas_hold_bands(&plan, first, second, order_matters(&plan))) {
         return SSDA_ERR_BUFFER;
     }
     ssda__stream_rows(&frows, first, NULL);
     ssda__stream_rows(&srows, second, NULL);
-    k = strip_cols(&plan, first, second);
     (void)memset(&acc, 0, sizeof acc);
     for (c0 = 0u; c0 < plan.grid.cols; c0 += k) {
         st.c0 = c0;

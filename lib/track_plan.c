@@ -128,13 +128,19 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
                                                        : (maxval + 1u) / 2u;
     plan->texture_min_count = cfg->texture_min_count;
     if (plan->texture_min_count == 0u) {
+        /* the default is always valid: w*h / 16, at least 1, at most w*h / 2
+           (0 for a 1-pixel window, which has no texture: nothing excluded) */
         plan->texture_min_count = pixels / SSDA_TRACK_DEFAULT_MIN_COUNT_DIV;
         if (plan->texture_min_count == 0u) {
-            plan->texture_min_count = 1u;
+            plan->texture_min_count = pixels / 2u < 1u ? pixels / 2u : 1u;
         }
+    } else if (plan->texture_min_count > pixels / 2u &&
+               (plan->flags & SSDA_TRACK_EXCLUDE) != 0u) {
+        return SSDA_ERR_ARG;
+    } else {
+        /* given and valid (or unused without SSDA_TRACK_EXCLUDE) */
     }
-    if ((plan->flags & SSDA_TRACK_EXCLUDE) != 0u &&
-        (plan->texture_threshold >= maxval || plan->texture_min_count > pixels / 2u)) {
+    if ((plan->flags & SSDA_TRACK_EXCLUDE) != 0u && plan->texture_threshold >= maxval) {
         return SSDA_ERR_ARG;
     }
     plan->flat_q8 = 0u;

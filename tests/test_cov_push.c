@@ -97,14 +97,15 @@ static void test_match_init_refusals_leave_the_job_untouched(void)
     /* window as wide as allowed but taller than the area */
     ar.height = 8;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, test_push_init_match(&p, IW, IH, 1, &ar, &win, &wr, NULL, &res, g_ring, sizeof g_ring));
-    /* a streamed window whose arena is one byte short of a window row */
+    /* a streamed window whose arena is one byte short of the whole window
+       (its minimum since issue 22: it is read once) */
     ar.height = 20;
-    make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 1u, 4u, 0u) - 1u);
+    make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 9u, 1u, 4u, 0u) - 1u);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, test_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
     TEST_ASSERT_EQUAL_UINT64(0u, g_t.reads);
     /* with that byte it runs, and finds the window where it was cut */
-    make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 1u, 4u, 0u));
+    make_streamed(&narrow, &wv, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 9u, 1u, 4u, 0u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, 1, &ar, &narrow, &wr, NULL, &res, g_ring, sizeof g_ring));
     {
         uint32_t y, bx, by;
@@ -263,10 +264,11 @@ static void test_track_all_edge_either_role(void)
     }
 }
 
-/* Pushing FIRST with SECOND streamed through a plate of one window row
-   (rows fetched as the tracker asks): a read failing at any point stops
-   the job with its code, later pushes are SSDA_ERR_STATE, the windows
-   solved before it are ssda_track's, and stats stay untouched. */
+/* Pushing FIRST with SECOND streamed through its smallest plate (a band of
+   windows as wide as the grid, since issue 22; read_size 4, so one read
+   per row): a read failing at any point stops the job with its code, later
+   pushes are SSDA_ERR_STATE, the windows solved before it are ssda_track's,
+   and stats stay untouched. */
 static void test_fetch_mode_failure_anywhere_stops_tracking(void)
 {
     ssda_view_t fv = view_of(g_first), sv = view_of(g_second);
@@ -274,7 +276,7 @@ static void test_fetch_mode_failure_anywhere_stops_tracking(void)
     ssda_push_t p;
     ssda_track_stats_t st, poison;
     ssda_track_grid_t g;
-    const size_t arena = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 1u, 4u, 0u);
+    const size_t arena = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 16u, 1u, 4u, 0u);
     uint64_t reads, k, step;
     uint32_t y, i;
     make_images(6u);

@@ -214,10 +214,10 @@ static void test_match_arena_at_every_row_boundary(void)
             for (b = 0; b < 2u; b++) {
                 const geometry_t *g = &k_geoms[gi];
                 uint8_t format = (uint8_t)fi;
-                /* the documented minimum: a plate as wide as the window
-                   without bounds, as the area with them */
+                /* the documented minimum (issue 22): a band of window-height
+                   rows as wide as the area (raster scan), bounds or not */
                 uint32_t span = b ? IW : 8u;
-                size_t min = source_size(g, format, span, 1u);
+                size_t min = source_size(g, format, IW, 6u);
                 match_at(g, format, b != 0u, true, min - 1u, min);
                 for (h = 1; h <= IH; h++) { /* the plate gains a row at each */
                     size_t at_span = source_size(g, format, span, h);
@@ -227,8 +227,8 @@ static void test_match_arena_at_every_row_boundary(void)
                     match_at(g, format, b != 0u, true, at_full, min);
                     match_at(g, format, b != 0u, true, at_full - 1u, min);
                 }
-                /* a streamed window: its width x 1, up to its whole height */
-                min = source_size(g, format, 8u, 1u);
+                /* a streamed window: the whole window (8 x 6) */
+                min = source_size(g, format, 8u, 6u);
                 match_at(g, format, b != 0u, false, min - 1u, min);
                 for (h = 1; h <= 7u; h++) {
                     match_at(g, format, b != 0u, false, source_size(g, format, 8u, h), min);
@@ -307,7 +307,8 @@ static void test_track_arena_at_every_row_boundary(void)
         for (fi = 1; fi <= 2u; fi++) {
             const geometry_t *g = &k_geoms[gi];
             uint8_t format = (uint8_t)fi;
-            size_t min_f = source_size(g, format, 14u, 1u), min_s = source_size(g, format, 8u, 1u);
+            /* a band of one grid column (issue 22): 14 x 10 areas, 8 x 6 windows */
+            size_t min_f = source_size(g, format, 14u, 10u), min_s = source_size(g, format, 8u, 6u);
             size_t big_f = source_size(g, format, IW, IH), big_s = source_size(g, format, IW, IH);
             track_at(g, format, min_f - 1u, big_s, min_f, min_s);
             track_at(g, format, big_f, min_s - 1u, min_f, min_s);

@@ -231,7 +231,8 @@ static void test_push_search_fails_at_every_window_read(void)
     for (fi = 0; fi < 2u; fi++) {
         uint8_t format = formats[fi];
         const geometry_t *g = &k_geoms[fi == 0u ? 3u : 1u];
-        size_t arena = SSDA_SOURCE_SIZE(g->layout, 12u, 2u, 2u, g->read_size, g->tile_w);
+        /* the whole window: a push search's minimum since issue 22 */
+        size_t arena = SSDA_SOURCE_SIZE(g->layout, 12u, 9u, 2u, g->read_size, g->tile_w);
         size_t ring = SSDA_PUSH_SIZE(area.width, area.height, format);
         ssda_view_t fv = view_of(format, true), sv = view_of(format, false), ar, wr;
         ssda_match_config_t c;
@@ -253,7 +254,7 @@ static void test_push_search_fails_at_every_window_read(void)
                                   ssda_push_row(&p, ssda_view_row(&fv, y)));
         }
         n = g_ts.reads;
-        TEST_ASSERT_TRUE(n > 4u);
+        TEST_ASSERT_TRUE(n >= 2u); /* the window, read once: a read per tile or row run */
         memset(&poison, 0x3D, sizeof poison);
         for (k = 0; k < n; k++) {
             make_source(&ws, false, g, format, arena);
@@ -298,7 +299,8 @@ static void test_push_tracking_first_pushed_fails_at_every_read(void)
     ssda_track_stats_t ram, st, poison;
     ssda_source_t s;
     ssda_push_t p;
-    size_t arena = SSDA_SOURCE_SIZE(g->layout, 14u, 8u, 2u, g->read_size, g->tile_w);
+    /* a band of windows as wide as the image: the minimum since issue 22 */
+    size_t arena = SSDA_SOURCE_SIZE(g->layout, IW, 8u, 2u, g->read_size, g->tile_w);
     size_t ring = SSDA_PUSH_SIZE(IW, 12u, 2u);
     uint64_t n, k;
     uint32_t y;

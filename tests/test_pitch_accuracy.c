@@ -296,11 +296,48 @@ static void test_tones_just_below_f0_max(void)
     }
 }
 
+/* Tones just above f0_max (default 1000 Hz), and far above it: their
+   period is shorter than lag_min, so the first dip in range is at a
+   multiple of it (1500 Hz read 750 Hz, 2500 Hz read 833 Hz, voiced). A
+   period below the range must not be reported as its multiple: every frame
+   is unvoiced (issue 14, item 11). Early exit and every lag in full, with
+   and without the low-pass filter. */
+static void test_tones_above_f0_max_are_unvoiced(void)
+{
+    static const uint32_t rates[] = {16000u, 44100u, 48000u};
+    static const double f0s[] = {1020.0, 1050.0, 1100.0, 1500.0, 1990.0, 2500.0, 3700.0};
+    uint32_t i, j;
+    for (i = 0; i < 9u; i++) {
+        static const uint8_t flags[] = {0u, SSDA_PITCH_FULL, SSDA_PITCH_NO_FILTER};
+        for (j = 0; j < 7u; j++) {
+            test_voice_t v;
+            ssda_pitch_config_t c = config(rates[i % 3u], flags[i / 3u]);
+            uint32_t n = rates[i % 3u] / 8u; /* 0.125 s */
+            stats_t st;
+            if ((double)rates[i % 3u] / f0s[j] >= (double)(rates[i % 3u] / 1000u) - 0.5) {
+                continue; /* within half a lag of lag_min: read as itself (1020 Hz at 16 kHz) */
+            }
+            test_voice_sine(&v, f0s[j], 12000.0);
+            test_signal_voice(g_sig, n, 0u, rates[i % 3u], &v);
+            st = run(&c, g_sig, n, NULL);
+            TEST_ASSERT_TRUE(st.frames >= 3u);
+            TEST_ASSERT_EQUAL_UINT32(0u, st.silent);
+            if (st.voiced != 0u) {
+                char msg[64];
+                (void)snprintf(msg, sizeof msg, "%.0f Hz at %u Hz, flags %u", f0s[j],
+                               (unsigned)rates[i % 3u], (unsigned)flags[i / 3u]);
+                TEST_FAIL_MESSAGE(msg);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_sines_at_several_rates);
     RUN_TEST(test_tones_just_below_f0_max);
+    RUN_TEST(test_tones_above_f0_max_are_unvoiced);
     RUN_TEST(test_vowels_have_no_octave_errors);
     RUN_TEST(test_missing_fundamental_and_bright_pulses);
     RUN_TEST(test_vibrato_is_followed);

@@ -149,19 +149,25 @@ static uint64_t true_min(uint8_t format)
     return r.sad;
 }
 
-/* Which operands are streamed: 1 area, 2 window, 3 both. */
+/* Smallest area arena a search accepts (issue 22): a band of window-height
+   rows as wide as the area for the raster scan, the whole area for the
+   others; `spare` rows more (at most the area's height). */
+static size_t area_minimum(const geometry_t *g, uint8_t format, uint8_t scan, uint32_t spare)
+{
+    uint32_t rows = (scan == SSDA_SCAN_RASTER ? 10u : 36u) + spare;
+    return SSDA_SOURCE_SIZE(g->layout, 40u, rows < 36u ? rows : 36u, format, g->read_size,
+                            g->tile_w);
+}
+
+/* Which operands are streamed: 1 area, 2 window, 3 both. The area's arena
+   is its minimum for each configuration's scan plus `spare` rows. */
 static void run_equality(uint8_t format, uint32_t which, const geometry_t *g,
-                         size_t area_arena, size_t win_arena)
+                         uint32_t spare, size_t win_arena)
 {
     ssda_source_t as, ws;
     ssda_view_t av = view_of(format, true), wv = view_of(format, false);
     uint64_t min_sad = true_min(format);
     uint32_t i;
-    if ((which & 1u) != 0u) {
-        make_source(&as, true, g, format, area_arena);
-    } else {
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&as, &av));
-    }
     if ((which & 2u) != 0u) {
         make_source(&ws, false, g, format, win_arena);
     } else {
@@ -170,6 +176,11 @@ static void run_equality(uint8_t format, uint32_t which, const geometry_t *g,
     for (i = 0; i < N_CONFIGS; i++) {
         ssda_match_config_t c = config(i, min_sad);
         ssda_match_result_t want, got;
+        if ((which & 1u) != 0u) {
+            make_source(&as, true, g, format, area_minimum(g, format, c.scan, spare));
+        } else {
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&as, &av));
+        }
         memset(&want, 0, sizeof want);
         memset(&got, 0, sizeof got);
         TEST_ASSERT_EQUAL_INT(SSDA_OK, reference(format, &c, &want));
@@ -193,23 +204,22 @@ static void test_equal_to_ram_in_every_mode_layout_and_arena(void)
         const geometry_t *g = &k_geoms[gi];
         for (fi = 1; fi <= 2; fi++) {
             const uint8_t f = (uint8_t)fi;
-            /* smallest arenas (bounds need whole area rows), a raster-scan
-               band, the whole area */
-            size_t a_sizes[3], w_sizes[3];
-            a_sizes[0] = SSDA_SOURCE_SIZE(g->layout, 40u, 1u, f, g->read_size, g->tile_w);
-            a_sizes[1] = SSDA_SOURCE_SIZE(g->layout, 40u, 10u, f, g->read_size, g->tile_w);
-            a_sizes[2] = SSDA_SOURCE_SIZE(g->layout, 40u, 36u, f, g->read_size, g->tile_w);
-            w_sizes[0] = SSDA_SOURCE_SIZE(g->layout, 12u, 1u, f, g->read_size, g->tile_w);
-            w_sizes[1] = SSDA_SOURCE_SIZE(g->layout, 12u, 3u, f, g->read_size, g->tile_w);
-            w_sizes[2] = SSDA_SOURCE_SIZE(g->layout, 12u, 10u, f, g->read_size, g->tile_w);
+            /* smallest arenas (a raster band of window-height rows, the
+               whole area for the other scans; the whole window), two
+               spare rows, the whole area; windows with spare bytes */
+            static const uint32_t spare[3] = {0u, 2u, 26u};
+            size_t w_sizes[3];
+            w_sizes[0] = SSDA_SOURCE_SIZE(g->layout, 12u, 10u, f, g->read_size, g->tile_w);
+            w_sizes[1] = w_sizes[0] + 4u;
+            w_sizes[2] = SSDA_SOURCE_SIZE(g->layout, 12u, 12u, f, g->read_size, g->tile_w);
             for (which = 1; which <= 3; which++) {
                 if (gi != 0u && which != 3u) {
                     continue; /* one streamed operand: first layout only */
                 }
                 for (ai = 0; ai < 3; ai++) {
-                    TEST_ASSERT_TRUE(a_sizes[ai] <= sizeof g_aarena);
+                    TEST_ASSERT_TRUE(area_minimum(g, f, SSDA_SCAN_PREDICT, 0u) <= sizeof g_aarena);
                     TEST_ASSERT_TRUE(w_sizes[ai] <= sizeof g_warena);
-                    run_equality(f, which, g, a_sizes[ai], w_sizes[ai]);
+                    run_equality(f, which, g, spare[ai], w_sizes[ai]);
                 }
             }
         }
@@ -229,11 +239,11 @@ static void test_ties_survive_streaming(void)
     }
     {
         ssda_source_t as, ws;
-        make_source(&as, true, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 4u, 2u, 1u, 7u));
         make_source(&ws, false, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 10u, 2u, 1u, 7u));
         for (i = 0; i < N_CONFIGS; i++) {
             ssda_match_config_t c = config(i, 0u);
             ssda_match_result_t want, got;
+            make_source(&as, true, &g, SSDA_PIX_U16, area_minimum(&g, SSDA_PIX_U16, c.scan, 0u));
             memset(&want, 0, sizeof want);
             memset(&got, 0, sizeof got);
             c.lambda_q8 = 100u;
@@ -321,16 +331,19 @@ static void test_failure_at_every_read_leaves_result_untouched(void)
 {
     /* AUTO raster with bounds, tiled with granularity, a sliding band of
        12 rows; AUTO predict, raster with granularity, the whole area;
-       coarse with spread order, tiled, a band of 16 rows. */
+       coarse with spread order, tiled, the whole area. */
     failure_sweep(36u, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 12u, 2u, 64u, 12u),
                   SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 10u, 2u, 64u, 12u));
     failure_sweep(6u, &k_geoms[1], SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 40u, 36u, 2u, 16u, 0u),
                   SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 10u, 2u, 16u, 0u));
-    failure_sweep(30u, &k_geoms[2], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 16u, 2u, 1u, 16u),
+    failure_sweep(30u, &k_geoms[2], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 40u, 36u, 2u, 1u, 16u),
                   SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 12u, 10u, 2u, 1u, 16u));
 }
 
-/* An arena below the job's minimum is refused before any read. */
+/* An arena below the job's minimum is refused before any read (issue 22:
+   the minimum is the plate that reads each byte about once: a band of
+   window-height rows as wide as the area for the raster scan, with or
+   without bounds; the whole area for the other scans; the whole window). */
 static void test_short_arena_is_refused_before_reading(void)
 {
     static const geometry_t g = {SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 1};
@@ -338,34 +351,132 @@ static void test_short_arena_is_refused_before_reading(void)
     ssda_view_t wv;
     ssda_match_config_t c;
     ssda_match_result_t got, poison;
+    uint32_t scan, bounds;
     make_images(24u);
     memset(&poison, 0x6B, sizeof poison);
-    memset(&c, 0, sizeof c);
     wv = view_of(SSDA_PIX_U16, false);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&view_src, &wv));
-    /* one byte short of a window-wide plate for the area (no bounds) */
-    make_source(&as, true, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 2u, 1u, 0u) - 1u);
-    got = poison;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_match(&as, &k_area, &view_src, &k_win, &c, &got));
-    TEST_ASSERT_EQUAL_MEMORY(&poison, &got, sizeof got);
-    /* window width is enough without bounds ... */
-    make_source(&as, true, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 2u, 1u, 0u));
-    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &view_src, &k_win, &c, &got));
-    /* ... but bounds fetch whole area rows */
-    c.flags = SSDA_MATCH_BOUNDS;
-    c.work = g_work;
-    c.work_size = sizeof g_work;
-    make_source(&as, true, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 40u, 1u, 2u, 1u, 0u) - 1u);
-    got = poison;
-    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_match(&as, &k_area, &view_src, &k_win, &c, &got));
-    TEST_ASSERT_EQUAL_MEMORY(&poison, &got, sizeof got);
-    TEST_ASSERT_EQUAL_UINT64(0, g_ta.reads);
-    /* a streamed window narrower than itself */
+    for (scan = 0; scan < 3u; scan++) {
+        for (bounds = 0; bounds < 2u; bounds++) {
+            size_t need = area_minimum(&g, SSDA_PIX_U16, (uint8_t)scan, 0u);
+            memset(&c, 0, sizeof c);
+            c.scan = (uint8_t)scan;
+            if (bounds != 0u) {
+                c.flags = SSDA_MATCH_BOUNDS;
+                c.work = g_work;
+                c.work_size = sizeof g_work;
+            }
+            make_source(&as, true, &g, SSDA_PIX_U16, need - 1u);
+            got = poison;
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
+                                  ssda_stream_match(&as, &k_area, &view_src, &k_win, &c, &got));
+            TEST_ASSERT_EQUAL_MEMORY(&poison, &got, sizeof got);
+            TEST_ASSERT_EQUAL_UINT64(0, g_ta.reads);
+            make_source(&as, true, &g, SSDA_PIX_U16, need);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &view_src, &k_win, &c, &got));
+        }
+    }
+    /* a streamed window needs its whole rectangle */
     memset(&c, 0, sizeof c);
     make_source(&as, true, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 40u, 36u, 2u, 1u, 0u));
-    make_source(&ws, false, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 1u, 2u, 1u, 0u) - 1u);
+    make_source(&ws, false, &g, SSDA_PIX_U16, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 12u, 10u, 2u, 1u, 0u) - 1u);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_match(&as, &k_area, &ws, &k_win, &c, &got));
     TEST_ASSERT_EQUAL_UINT64(0, g_ta.reads + g_tw.reads);
+}
+
+/* The bound (issue 22) over layouts, read sizes, scans, bounds, orders,
+   threshold modes and every arena from the minimum up to the whole area:
+   the area's bytes read are at most AMP_BOUND times those of the same
+   search with the whole area in the arena (each byte read once, at the
+   layout's granularity), and the window's equal them. */
+#define AMP_BOUND 2u
+static void test_bytes_read_are_bounded_for_every_accepted_arena(void)
+{
+    static const uint32_t spares[] = {0u, 1u, 2u, 3u, 5u, 9u, 17u};
+    uint32_t gi, i, si;
+    double worst = 0.0;
+    char msg[96];
+    make_images(26u);
+    for (gi = 0; gi < N_GEOMS; gi++) {
+        const geometry_t *g = &k_geoms[gi];
+        const size_t wa = SSDA_SOURCE_SIZE(g->layout, 12u, 10u, 2u, g->read_size, g->tile_w);
+#ifdef SSDA_TEST_SMALL
+        for (i = gi; i < N_CONFIGS; i += 5u) { /* a fifth of them on the boards */
+#else
+        for (i = 0; i < N_CONFIGS; i++) {
+#endif
+            ssda_match_config_t c = config(i, true_min(SSDA_PIX_U16));
+            ssda_source_t as, ws;
+            ssda_match_result_t res;
+            uint64_t once, once_w;
+            make_source(&as, true, g, SSDA_PIX_U16, area_minimum(g, SSDA_PIX_U16, c.scan, 26u));
+            make_source(&ws, false, g, SSDA_PIX_U16, wa);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &k_win, &c, &res));
+            once = as.stats.bytes_read;
+            once_w = ws.stats.bytes_read;
+            for (si = 0; si < sizeof spares / sizeof spares[0]; si++) {
+                double amp;
+                make_source(&as, true, g, SSDA_PIX_U16, area_minimum(g, SSDA_PIX_U16, c.scan, spares[si]));
+                make_source(&ws, false, g, SSDA_PIX_U16, wa);
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &k_win, &c, &res));
+                amp = (double)as.stats.bytes_read / (double)once;
+                worst = amp > worst ? amp : worst;
+                if (as.stats.bytes_read > AMP_BOUND * once || ws.stats.bytes_read != once_w) {
+                    snprintf(msg, sizeof msg, "geometry %u config %u spare %u: %llu vs %llu once",
+                             (unsigned)gi, (unsigned)i, (unsigned)spares[si],
+                             (unsigned long long)as.stats.bytes_read, (unsigned long long)once);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+        }
+    }
+    snprintf(msg, sizeof msg, "worst area amplification %.3f (bound %u)", worst, AMP_BOUND);
+    printf("%s\n", msg);
+}
+
+/* The issue's case, scaled down: a W x 2 8-bit area, a 46 x 2 window,
+   raster scan with bounds, an arena halfway between the old minimum (one
+   area row) and a band of the window's height. It read 30 000 times the
+   area (60 004 reads of a whole row for W = 65535): now it is refused
+   before any read, and the arena that works (the band) reads each byte at
+   most twice (bounds, then the scan from the top). */
+#define WIDE_W 3000u
+static uint8_t g_wide[2][WIDE_W], g_wide_dev[2u * WIDE_W];
+static uint32_t g_wide_arena[(2u * WIDE_W) / 4u + 1u];
+static uint32_t g_wide_work[SSDA_MATCH_WORK_SIZE(WIDE_W, 2, 46, 2) / 4u];
+static void test_small_arena_no_longer_reads_without_bound(void)
+{
+    test_rng_t r;
+    test_source_t dev;
+    ssda_view_t v, w;
+    ssda_source_t as, ws;
+    ssda_source_config_t sc;
+    ssda_match_config_t c;
+    ssda_match_result_t want, got;
+    const size_t half = (SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, WIDE_W, 1u, 1u, 1u, 0u) +
+                         SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, WIDE_W, 2u, 1u, 1u, 0u)) / 2u;
+    test_rng_seed(&r, 99u);
+    test_fill_texture_u8(&g_wide[0][0], WIDE_W, 2u, WIDE_W, &r);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, g_wide, WIDE_W, 2u, WIDE_W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&w, &v, 1234u, 0u, 46u, 2u));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&ws, &w));
+    memset(&c, 0, sizeof c);
+    c.flags = SSDA_MATCH_BOUNDS;
+    c.work = g_wide_work;
+    c.work_size = sizeof g_wide_work;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&v, &w, &c, &want));
+    test_source_init(&dev, g_wide_dev, sizeof g_wide_dev, 1u);
+    sc = test_source_config(&dev, &v, SSDA_LAYOUT_RASTER, 0u, 0u, 0u, WIDE_W, 0u, 1u,
+                            g_wide_arena, half);
+    test_source_store(&dev, &sc, &v);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&as, &sc));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_match(&as, NULL, &ws, NULL, &c, &got));
+    TEST_ASSERT_EQUAL_UINT64(0, dev.reads);
+    sc.arena_size = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, WIDE_W, 2u, 1u, 1u, 0u);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&as, &sc));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, NULL, &ws, NULL, &c, &got));
+    TEST_ASSERT_TRUE(same_result(&want, &got));
+    TEST_ASSERT_TRUE(as.stats.bytes_read <= 2u * 2u * WIDE_W);
 }
 
 static void test_bad_arguments_are_refused(void)
@@ -457,6 +568,8 @@ int main(void)
     RUN_TEST(test_reads_each_byte_once_when_the_arena_allows);
     RUN_TEST(test_failure_at_every_read_leaves_result_untouched);
     RUN_TEST(test_short_arena_is_refused_before_reading);
+    RUN_TEST(test_small_arena_no_longer_reads_without_bound);
+    RUN_TEST(test_bytes_read_are_bounded_for_every_accepted_arena);
     RUN_TEST(test_bad_arguments_are_refused);
     RUN_TEST(test_overlapping_arenas_are_refused);
     return UNITY_END();

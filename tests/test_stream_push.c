@@ -295,16 +295,27 @@ static void test_tracking_equals_ram_for_both_roles(void)
             const uint32_t span = first ? IW : (g.cols - 1u) * g.step_x + g.win_w;
             const uint32_t other_w = IW, other_band = first ? g.win_h : g.search_h;
             /* other: in RAM; streamed with a whole-width band; streamed with
-               the minimum (fetch mode). Ring: the band, and a larger one. */
+               a band of one window (refused since issue 22: grid rows are
+               solved whole, so it re-read rows without bound). Ring: the
+               band, and a larger one. */
             for (mode = 0; mode < 3; mode++) {
                 ssda_source_t other;
                 size_t arena = mode == 1u ? SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, other_w, other_band, 2u, 8u, 0u)
                                           : SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER,
-                                                             first ? g.win_w : g.search_w, 1u, 2u, 8u, 0u);
+                                                             first ? g.win_w : g.search_w, other_band, 2u, 8u, 0u);
                 if ((i % 3u) != mode && i >= 4u) {
                     continue; /* keep the run short: every mode on the first configs */
                 }
                 TEST_ASSERT_TRUE(arena <= sizeof g_arena);
+                if (mode == 2u) {
+                    ssda_push_t p;
+                    make_other(&other, first ? &s : &f, true, arena);
+                    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
+                                          test_push_init_track(&p, IW, IH, SSDA_PIX_U16, (uint8_t)role,
+                                                               &other, &c, g_got, MAX_WIN, NULL, g_ring,
+                                                               SSDA_PUSH_SIZE(span, band, 2u)));
+                    continue;
+                }
                 make_other(&other, first ? &s : &f, mode != 0u, arena);
                 push_track((uint8_t)role, &c, &other, SSDA_PUSH_SIZE(span, band, 2u));
                 make_other(&other, first ? &s : &f, mode != 0u, arena);
@@ -437,16 +448,16 @@ static void test_bad_arguments(void)
 static void test_ring_overlapping_the_other_arena(void)
 {
     ssda_view_t w = view16(false);
-    uint8_t *tail = (uint8_t *)g_ring + sizeof g_ring - 2048u;
+    uint8_t *tail = (uint8_t *)g_ring + sizeof g_ring - 4096u;
     ssda_source_t os, other;
     ssda_source_config_t c;
     ssda_push_t p, before;
     ssda_match_result_t res;
     ssda_track_config_t tc;
-    make_other(&os, &w, true, 2048u);
+    make_other(&os, &w, true, 4096u);
     c = os.cfg;
     c.arena = tail;
-    c.arena_size = 2048u;
+    c.arena_size = 4096u;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&other, &c));
     memset(&tc, 0, sizeof tc);
     memset(&p, 0x66, sizeof p);
@@ -457,9 +468,9 @@ static void test_ring_overlapping_the_other_arena(void)
                                                              g_got, MAX_WIN, NULL, g_ring, sizeof g_ring));
     TEST_ASSERT_EQUAL_MEMORY(&before, &p, sizeof p);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_match(&p, IW, IH, 2, &k_area, &other, &k_win, NULL, &res,
-                                                        g_ring, sizeof g_ring - 2048u));
+                                                        g_ring, sizeof g_ring - 4096u));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, test_push_init_track(&p, IW, IH, 2, SSDA_PUSH_FIRST, &other, &tc, g_got,
-                                                        MAX_WIN, NULL, g_ring, sizeof g_ring - 2048u));
+                                                        MAX_WIN, NULL, g_ring, sizeof g_ring - 4096u));
 }
 
 int main(void)

@@ -173,15 +173,24 @@ static void check_against_ram(ssda_source_t *f, ssda_source_t *s, const ssda_tra
     TEST_ASSERT_EQUAL_UINT64(0, g_tf.contract_violations + g_ts.contract_violations);
 }
 
-/* Arena sizes: minimum, strips of 1 and 3 columns, the whole grid width
-   (7 columns of the default grid: 128 x 32 areas, 112 x 16 windows). */
+/* Does the result depend on the order of the windows (MEDIAN prediction in
+   an inexact mode)? Then the job needs a band of the whole grid width. */
+static bool order_matters(const ssda_track_config_t *c)
+{
+    return c->predict == SSDA_TRACK_PREDICT_MEDIAN && c->match.threshold != SSDA_THRESHOLD_AUTO &&
+           c->match.threshold != SSDA_THRESHOLD_NONE;
+}
+
+/* Arena sizes: the minimum (a band of one column's areas and windows),
+   a strip of 1 column and spare width, strips of 3 columns, the whole grid
+   width (7 columns of the default grid: 128 x 32 areas, 112 x 16 windows). */
 static void arena_sizes(const geometry_t *g, size_t *fa, size_t *sa)
 {
     const uint8_t L = g->layout;
-    fa[0] = SSDA_SOURCE_SIZE(L, 32u, 1u, 2u, g->read_size, g->tile_w);
-    sa[0] = SSDA_SOURCE_SIZE(L, 16u, 1u, 2u, g->read_size, g->tile_w);
-    fa[1] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(1, 16, 32), 32u, 2u, g->read_size, g->tile_w);
-    sa[1] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(1, 16, 16), 16u, 2u, g->read_size, g->tile_w);
+    fa[0] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(1, 16, 32), 32u, 2u, g->read_size, g->tile_w);
+    sa[0] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(1, 16, 16), 16u, 2u, g->read_size, g->tile_w);
+    fa[1] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(2, 16, 32) - 1u, 32u, 2u, g->read_size, g->tile_w);
+    sa[1] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(2, 16, 16) - 1u, 16u, 2u, g->read_size, g->tile_w);
     fa[2] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(3, 16, 32), 32u, 2u, g->read_size, g->tile_w);
     sa[2] = SSDA_SOURCE_SIZE(L, SSDA_STREAM_STRIP_W(3, 16, 16), 16u, 2u, g->read_size, g->tile_w);
     fa[3] = SSDA_SOURCE_SIZE(L, IW, 32u, 2u, g->read_size, g->tile_w);
@@ -208,6 +217,14 @@ static void test_equal_to_ram_over_layouts_arenas_and_modes(void)
                 if ((gi != 0u && i % 3u != gi % 3u) || (ai == 0u && i % 5u != 0u)) {
                     continue;
                 }
+                if (order_matters(&c) && ai != 3u) {
+                    /* one full-width strip is needed: refused, nothing read */
+                    uint64_t reads = g_tf.reads + g_ts.reads;
+                    TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER,
+                                          ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, NULL));
+                    TEST_ASSERT_EQUAL_UINT64(reads, g_tf.reads + g_ts.reads);
+                    continue;
+                }
                 check_against_ram(&f, &s, &c, ai == 3u);
             }
         }
@@ -223,10 +240,11 @@ static void test_one_image_streamed(void)
     make_images(32u);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&fview, &fv));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&sview, &sv));
-    make_source(&f, true, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 48u, 32u, 2u, 16u, 20u));
-    make_source(&s, false, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, 32u, 16u, 2u, 16u, 20u));
     for (i = 0; i < N_CONFIGS; i++) {
         ssda_track_config_t c = config(i);
+        const bool full = order_matters(&c); /* a band of the whole width */
+        make_source(&f, true, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, full ? IW : 48u, 32u, 2u, 16u, 20u));
+        make_source(&s, false, &k_geoms[3], SSDA_SOURCE_SIZE(SSDA_LAYOUT_TILED, full ? IW : 32u, 16u, 2u, 16u, 20u));
         check_against_ram(&f, &sview, &c, false);
         check_against_ram(&fview, &s, &c, false);
         check_against_ram(&fview, &sview, &c, false);
@@ -264,6 +282,63 @@ static void test_each_strip_reads_its_areas_and_windows_once(void)
     check_against_ram(&f, &s, &c, false);
     TEST_ASSERT_EQUAL_UINT64(want_s, s.stats.bytes_read);
     TEST_ASSERT_EQUAL_UINT64(want_f, f.stats.bytes_read);
+}
+
+/* The bound (issue 22) over layouts, read sizes, modes and arenas from the
+   minimum (a band of one column) up to the whole grid width: each image's
+   bytes read are at most STRIP_W(1, step_x, side) / step_x (the strips'
+   overlap at one column a strip: 2 for the default grid, 26 / 9 and 12 / 9
+   for the other) plus one, times those of the job with a band of the whole
+   grid width in the arena (one strip: every byte read once at the layout's
+   granularity). */
+static void test_bytes_read_are_bounded_for_every_accepted_arena(void)
+{
+    uint32_t gi, i, extra;
+    double worst_f = 0.0, worst_s = 0.0;
+    make_images(36u);
+    for (gi = 0; gi < N_GEOMS; gi++) {
+        const geometry_t *g = &k_geoms[gi];
+        for (i = 0; i < N_CONFIGS; i++) {
+            ssda_track_config_t c = config(i);
+            ssda_track_grid_t grid;
+            ssda_source_t f, s;
+            uint64_t once_f, once_s;
+            double bound_f, bound_s;
+            if (order_matters(&c)) {
+                continue; /* one full-width strip only */
+            }
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &grid));
+            /* each strip row's read is widened by up to 2 (read_size - 1)
+               bytes, and a tiled one may cover its edge tiles' whole rows
+               (up to 2 tile strides) */
+            const double slack = 2.0 * (g->read_size - 1u) +
+                                 (g->layout == SSDA_LAYOUT_TILED ? 2.0 * (g->tile_w * 2u + g->stride_pad) : 0.0);
+            bound_f = ((double)grid.search_w / grid.step_x + 1.0) * (1.0 + slack / (2.0 * grid.search_w));
+            bound_s = ((double)grid.win_w / grid.step_x + 1.0) * (1.0 + slack / (2.0 * grid.win_w));
+            make_source(&f, true, g, SSDA_SOURCE_SIZE(g->layout, IW, grid.search_h, 2u, g->read_size, g->tile_w));
+            make_source(&s, false, g, SSDA_SOURCE_SIZE(g->layout, IW, grid.win_h, 2u, g->read_size, g->tile_w));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, NULL));
+            once_f = f.stats.bytes_read;
+            once_s = s.stats.bytes_read;
+            for (extra = 0; extra < 64u; extra += 7u) {
+                double af, as;
+                make_source(&f, true, g, SSDA_SOURCE_SIZE(g->layout, grid.search_w + extra, grid.search_h, 2u, g->read_size, g->tile_w));
+                make_source(&s, false, g, SSDA_SOURCE_SIZE(g->layout, grid.win_w + extra, grid.win_h, 2u, g->read_size, g->tile_w));
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, NULL));
+                af = (double)f.stats.bytes_read / (double)once_f;
+                as = (double)s.stats.bytes_read / (double)once_s;
+                worst_f = af > worst_f ? af : worst_f;
+                worst_s = as > worst_s ? as : worst_s;
+                if (af > bound_f || as > bound_s) {
+                    char msg[96];
+                    snprintf(msg, sizeof msg, "geometry %u config %u extra %u: %.2f, %.2f x once",
+                             (unsigned)gi, (unsigned)i, (unsigned)extra, af, as);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+        }
+    }
+    printf("worst amplification: FIRST %.3f, SECOND %.3f\n", worst_f, worst_s);
 }
 
 /* A failure at read k of either device, for every k of a clean run: the
@@ -316,16 +391,18 @@ static void test_short_arenas_and_bad_arguments(void)
     memset(bytes8, 0, sizeof bytes8);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v8, bytes8, IW, 1, IW, SSDA_PIX_U8));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&f8, &v8));
-    /* one byte short of a search-area row for FIRST, of a window row for SECOND */
-    make_source(&f, true, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 32u, 1u, 2u, 1u, 0u) - 1u);
-    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 2u, 1u, 0u));
+    /* one byte short of a band of one column's search areas for FIRST
+       (32 x 32), of its windows for SECOND (16 x 16): below that the
+       tracker re-read rows without bound (issue 22) */
+    make_source(&f, true, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 32u, 32u, 2u, 1u, 0u) - 1u);
+    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 16u, 2u, 1u, 0u));
     st = poison;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, &st));
-    make_source(&f, true, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 32u, 1u, 2u, 1u, 0u));
-    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 2u, 1u, 0u) - 1u);
+    make_source(&f, true, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 32u, 32u, 2u, 1u, 0u));
+    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 16u, 2u, 1u, 0u) - 1u);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, &st));
     TEST_ASSERT_EQUAL_UINT64(0, g_tf.reads + g_ts.reads);
-    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 1u, 2u, 1u, 0u));
+    make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 16u, 2u, 1u, 0u));
     /* the minimum works (and gives ssda_track's vectors) */
     check_against_ram(&f, &s, &c, false);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_track(&f, &s, &c, g_got, 34u, &st));
@@ -396,6 +473,7 @@ int main(void)
     RUN_TEST(test_equal_to_ram_over_layouts_arenas_and_modes);
     RUN_TEST(test_one_image_streamed);
     RUN_TEST(test_each_strip_reads_its_areas_and_windows_once);
+    RUN_TEST(test_bytes_read_are_bounded_for_every_accepted_arena);
     RUN_TEST(test_failure_at_every_read);
     RUN_TEST(test_short_arenas_and_bad_arguments);
     RUN_TEST(test_overlapping_arenas_are_refused);

@@ -614,6 +614,54 @@ static void test_flat_test_worst_case(void)
     TEST_ASSERT_EQUAL_UINT64(0, g_out[0].sad);
 }
 
+/* A default is always valid (issue 22, item 2): with exclusion on, the
+   default texture_min_count of a 1 x 1 window (1 before, above 1 / 2) was
+   refused with SSDA_ERR_ARG. A single pixel has no texture: nothing is
+   excluded, so the vectors equal those of the run without exclusion. Small
+   windows (2 and 15 pixels) get at least 1. An explicit count above
+   w*h / 2 is still refused. */
+static void test_default_min_count_is_valid_for_tiny_windows(void)
+{
+    ssda_view_t a, b;
+    ssda_track_config_t cfg;
+    ssda_track_stats_t st, st_plain;
+    uint32_t k, n;
+    make_pair_u8(field_uniform, 77u);
+    views_u8(&a, &b);
+    seed_config(&cfg);
+    cfg.win_w = 1;
+    cfg.win_h = 1;
+    cfg.search_w = 9;
+    cfg.search_h = 9;
+    cfg.step_x = 16;
+    cfg.step_y = 16;
+    n = 7u * 7u;
+    cfg.flags = SSDA_TRACK_EXCLUDE;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, n, &st));
+    TEST_ASSERT_EQUAL_UINT32(0u, st.excluded);
+    cfg.flags = 0;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out2, n, &st_plain));
+    for (k = 0; k < n; k++) {
+        TEST_ASSERT_EQUAL_UINT8(g_out2[k].status, g_out[k].status);
+        TEST_ASSERT_EQUAL_INT32(g_out2[k].dx, g_out[k].dx);
+        TEST_ASSERT_EQUAL_INT32(g_out2[k].dy, g_out[k].dy);
+    }
+    TEST_ASSERT_EQUAL_UINT32(st_plain.ok, st.ok);
+    cfg.flags = SSDA_TRACK_EXCLUDE;
+    cfg.texture_min_count = 1; /* explicit: above 1 / 2 */
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_track(&a, &b, &cfg, g_out, n, &st));
+    /* 1 x 2 and 3 x 5: the default is 1, so a flat window is excluded */
+    cfg.texture_min_count = 0;
+    cfg.win_h = 2;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, n, &st));
+    cfg.win_w = 3;
+    cfg.win_h = 5;
+    memset(g_second, 7, sizeof g_second);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, n, &st));
+    TEST_ASSERT_EQUAL_UINT32(st.windows, st.excluded + st.edge);
+    TEST_ASSERT_TRUE(st.excluded > 0u);
+}
+
 /* Every argument error returns its code and writes neither out nor stats. */
 static void expect_error(int code, const ssda_view_t *a, const ssda_view_t *b,
                          const ssda_track_config_t *cfg, size_t n)
@@ -785,5 +833,6 @@ int main(void)
     RUN_TEST(test_extreme_geometry);
     RUN_TEST(test_flat_test_worst_case);
     RUN_TEST(test_bad_arguments_write_nothing);
+    RUN_TEST(test_default_min_count_is_valid_for_tiny_windows);
     return UNITY_END();
 }

@@ -41,6 +41,14 @@
  *     floor(v + 1/2) on the Q16 value.
  *  5. No dip: t = the lag in [lag_min, lag_max] of smallest n (ties:
  *     smaller), and the frame is unvoiced.
+ *  6. Below the range (a tone above f0_max: its first dip in range is at a
+ *     multiple of its period): with P and F of the final t, the frame is
+ *     unvoiced when P < lag_min - 1/2, or when P < 2 lag_min and for some
+ *     k >= 2 with c = round(P / k), 3 <= c < lag_min and P / k < lag_min,
+ *     a lag u in c - 1 .. c + 1 with n(u - 1) >= n(u) <= n(u + 1) has its
+ *     interpolated floor (F's formula on nq(u - 1), nq(u), nq(u + 1))
+ *     <= F + margin / 2: the period is P / k, shorter than the range
+ *     allows. lag, f0 and dip still describe the dip in range.
  * Sub-sample period through a, b, c = nq(t - 1), nq(t), nq(t + 1) with
  * nq(u) = floor(2^20 d(u) / s(u)):
  *   den = 2 (max(a, c) - b)  default: a V, the shape of an absolute-
@@ -52,7 +60,8 @@
  *   period_q16 = 65536 t + delta_q16;
  *   f0_q16 = floor(((rate << 32) + floor(period_q16 / 2)) / period_q16);
  *   confidence_q15 = 32767 - min(32767, floor(32768 n(t))).
- * Voiced: a dip was found and n(t) <= voicing_q15 / 32768.
+ * Voiced: a dip was found, n(t) <= voicing_q15 / 32768, and step 6 does
+ * not find the period below the range.
  * All comparisons of n are exact (cross-multiplied), except those written
  * with nq.
  *

@@ -28,13 +28,18 @@
  *     read again; every other row is read: one read per plate row in the
  *     raster layout (one per plate load when whole rows are stored at the
  *     plate's pitch), one per tile and run of rows in the tiled one.
- * Jobs (ssda_stream_match, ssda_stream_track) shape the plate for their
- * region and order their work so that each byte is read as few times as the
- * arena allows; see docs/streaming.md for the plans and the figures.
+ * Jobs (ssda_stream_match, ssda_stream_track, push jobs) shape the plate
+ * for their region and refuse (SSDA_ERR_BUFFER, before any read) an arena
+ * below the plate that bounds what they read: at most 2x the bytes of
+ * reading their region once for a search, and the strips' overlap for
+ * tracking (issue 22: a smaller plate re-read rows without bound, 30 000x
+ * the image). Each job names its minimum; see docs/streaming.md for the
+ * plans, the bounds and the figures.
  *
  * Errors: a negative value returned by read() is passed back unchanged
- * (so it may be any negative int; SSDA_ERR_IO is a good default), and the
- * job's result is left untouched. After a failed read the plate is empty and
+ * (so it may be any negative int; SSDA_ERR_IO is a good default), and a
+ * positive one (not a valid return) is turned into SSDA_ERR_IO; either way
+ * the job's result is left untouched. After a failed read the plate is empty and
  * the source stays usable. Counters are never reset by the library.
  *
  * The library never allocates: the source struct and the arena belong to the
@@ -75,7 +80,8 @@ typedef enum {
 /*
  * Read size bytes at byte address offset of the device into buffer.
  * Return 0 on success or a negative error code, which the library passes
- * back unchanged. offset and size are multiples of the source's read_size;
+ * back unchanged; a positive return is taken as a failure and becomes
+ * SSDA_ERR_IO. offset and size are multiples of the source's read_size;
  * size > 0. A read may cover up to read_size - 1 bytes before the image's
  * first byte and after its last (the aligned range around it), never more.
  * buffer lies in the arena but may have any byte alignment (a plate row of
@@ -259,11 +265,15 @@ int ssda_source_row(ssda_source_t *src, uint32_t x, uint32_t y, uint32_t n,
  *             The window rectangle is no larger than the area's.
  *   cfg:      as ssda_match (NULL = defaults).
  *   result:   written on success only.
- * Arena: a streamed area needs SSDA_SOURCE_SIZE(.., span, 1, ..) where span
- * is the area width with SSDA_MATCH_BOUNDS, else the window width; with
- * (area width) x (window height) the raster scan reads every byte once, and
- * with the whole area every scan does. A streamed window needs
- * (window width) x 1; (window width) x (window height) reads it once.
+ * Arena (the minimum; below it SSDA_ERR_BUFFER before any read): a streamed
+ * area needs SSDA_SOURCE_SIZE(layout, area width, window height, format,
+ * read_size, tile_w) for SSDA_SCAN_RASTER (a band that slides down) and
+ * SSDA_SOURCE_SIZE(.., area width, area height, ..) for the other scans
+ * (they jump around the area); a streamed window needs its whole rectangle,
+ * SSDA_SOURCE_SIZE(.., window width, window height, ..). Then the area's
+ * bytes read are at most twice those of reading it once (the raster scan
+ * reads its band again after building bounds) and the window's once; a
+ * smaller plate would re-read rows without bound (issue 22).
  * Returns SSDA_OK, or without writing *result:
  *   SSDA_ERR_NULL, _SIZE, _FORMAT, _ARG, _BUFFER as ssda_match (SIZE also
  *   for a rectangle outside its source, BUFFER also for a short arena,
@@ -284,24 +294,31 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * bottom while the plates slide down one grid step at a time, so every byte
  * is read about once (strips overlap by search_w - step_x columns), and
  * each grid row is searched on the plates as on images in RAM. Within a
- * strip windows are solved in raster order. An arena too small for a band
- * still works: rows are then fetched through the plate as the tracker asks
- * (more reads, same results). Strips change only the order of the work, so:
+ * strip windows are solved in raster order. Strips change only the order
+ * of the work, so:
  *   - vectors, statuses and exact flags equal ssda_track's whenever the
  *     result does not depend on the order: exact modes (AUTO, NONE without
  *     COARSE scan), or no prediction, or SSDA_TRACK_PREDICT_LEFT (whose
  *     neighbours are solved in both orders); otherwise (MEDIAN prediction
- *     with an inexact mode) one full-width strip is used, which reads more
- *     when it does not fit but gives ssda_track's result exactly;
+ *     with an inexact mode) one full-width strip is used, which gives
+ *     ssda_track's result exactly and needs a band of the whole grid width;
  *   - the work counts (pixel_ops, positions, completed) may differ from
  *     ssda_track's when prediction is on, since a window at a strip's right
  *     edge has no solved up-right neighbour.
- * Arena: a streamed FIRST needs SSDA_SOURCE_SIZE(.., search_w, 1, ..), a
- * streamed SECOND (.., win_w, 1, ..); read-once strips of n columns need
+ * Arena (the minimum; below it SSDA_ERR_BUFFER before any read): a band of
+ * one grid column, SSDA_SOURCE_SIZE(.., search_w, search_h, ..) for a
+ * streamed FIRST and SSDA_SOURCE_SIZE(.., win_w, win_h, ..) for a streamed
+ * SECOND; with MEDIAN prediction in an inexact mode a band of every column,
+ * SSDA_STREAM_STRIP_W(cols, step_x, search_w) (at most FIRST's width) x
+ * search_h and SSDA_STREAM_STRIP_W(cols, step_x, win_w) x win_h (a row is
+ * enough when no window's area lies inside FIRST). Strips of n columns need
  * SSDA_STREAM_STRIP_W(n, step_x, search_w) x search_h and
  * SSDA_STREAM_STRIP_W(n, step_x, win_w) x win_h (tiled sources also
  * (min(tile_h, step_y) - 1) * stride bytes more, so that the rows a band
- * gains at each step come in one read per tile).
+ * gains at each step come in one read per tile); each image's bytes are
+ * then at most (strip width / (n step_x)) times those of reading its
+ * region once, plus each strip row's read alignment (issue 22: below one
+ * column's band the tracker re-read rows without bound).
  * Returns what ssda_track returns (every argument error before any read or
  * write; SSDA_ERR_BUFFER also for an arena below the minimum, SSDA_ERR_ARG
  * also for one streamed source given as both images or two whose arenas
@@ -369,7 +386,6 @@ typedef struct {
     uint8_t format;
     uint8_t state;               /* search, tracking, done, or stopped */
     uint8_t role;                /* ssda_push_role_t (tracking) */
-    bool other_banded;           /* a streamed other's plate holds a band */
     ssda_source_t *other;        /* the window (search) or the other image */
     ssda_source_plan_t other_plate; /* a streamed other's plate for the job */
     ssda_rect_t area;            /* search: the area in the pushed image */
@@ -392,7 +408,8 @@ typedef struct {
  * A search whose area is cfg->area_rect (NULL = whole) of the pushed image,
  * cfg->width x cfg->height pixels of cfg->format; the window is
  * cfg->window_rect (NULL = whole) of the source cfg->other (in RAM or
- * streamed, arena as ssda_stream_match says). The search runs in the push
+ * streamed: its arena at least the whole window rectangle, read once). The
+ * search runs in the push
  * that brings the area's last row and writes *result (as ssda_match would;
  * match NULL = defaults); that push returns 1.
  *   cfg->ring, cfg->ring_size: 4-byte aligned buffer of at least
@@ -422,8 +439,12 @@ int ssda_push_init_match(ssda_push_t *push, const ssda_push_config_t *cfg,
  *     bytes, span = SSDA_STREAM_STRIP_W(grid cols, step_x, search_w)
  *     (FIRST) or SSDA_STREAM_STRIP_W(grid cols, step_x, win_w) (SECOND),
  *     capped at the image width; band = search_h (FIRST) or win_h (SECOND).
- * A streamed other image needs its arena as ssda_stream_track says; with a
- * whole-width band of it, it is read once.
+ * A streamed other image needs a band of it as wide as the grid's windows
+ * (or areas) in it: SSDA_SOURCE_SIZE(.., SSDA_STREAM_STRIP_W(cols, step_x,
+ * win_w) (FIRST pushed) or (.., search_w) (SECOND pushed), at most its
+ * width, win_h or search_h rows, ..) (a row when no window reads pixels);
+ * it is then read once. Grid rows are solved whole, so a narrower plate
+ * would re-read its rows without bound: refused (SSDA_ERR_BUFFER).
  * The other source, out, stats, the ring and track->match.work (with
  * SSDA_MATCH_BOUNDS; the job keeps the pointer) must outlive the job.
  * Returns SSDA_OK or what ssda_stream_track returns for its arguments

@@ -87,7 +87,9 @@
  *   Defaults: texture_threshold = half the sample range (128 for 8-bit,
  *   32768 for 16-bit; set it for your data, e.g. a cloud/clear level, or
  *   2048 for 12-bit counts); texture_min_count = win_w * win_h / 16 (16 of
- *   256 for the 16 x 16 window), at least 1.
+ *   256 for the 16 x 16 window), at least 1, at most win_w * win_h / 2: a
+ *   default is always valid, and for a 1 x 1 window (no texture to count)
+ *   it is 0, so that no window is excluded.
  *
  * PREDICTION (the seed, section 4 and Table 3: "prediction was made so that
  * the motion vector equals that of the neighbouring region"): windows are
@@ -179,7 +181,8 @@ typedef struct {
                                     (0 = half range: 128 or 32768) */
     uint32_t texture_min_count;  /* SSDA_TRACK_EXCLUDE: pixels needed on each side
                                     of the threshold, 2 * count <= win_w * win_h
-                                    (0 = win_w * win_h / 16, at least 1) */
+                                    (0 = win_w * win_h / 16, at least 1; 0 for a
+                                    1 x 1 window: nothing excluded) */
     uint32_t flat_q8;            /* FLAT below this texture, Q24.8 sample units,
                                     <= 65535 * 256 (0 = 320, i.e. 1.25) */
     uint16_t unique_q8;          /* SSDA_TRACK_UNIQUE: ratio, Q8.8, 257 .. 1024
@@ -215,7 +218,7 @@ typedef struct {
     ssda_match_plan_t match;    /* every window's search (scan set for the prediction) */
     ssda_track_grid_t grid;
     uint32_t texture_threshold; /* < the format's maximum */
-    uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 */
+    uint32_t texture_min_count; /* 1 .. win_w * win_h / 2 (0 for a 1 x 1 window) */
     uint32_t flat_q8;           /* resolved; 0: no flat test */
     uint16_t mask_value;        /* <= the format's maximum */
     uint16_t first_w, first_h;  /* FIRST's size (the EDGE test) */

@@ -59,6 +59,56 @@ static int64_t dip_floor(const test_pitch_ref_cfg_t *c, uint32_t t)
     return b > drop ? b - drop : 0;
 }
 
+/* d and s of one lag, straight from the definition (for lags the scan does
+   not cover: the sub-periods of step 6). */
+static void lag_values(const int16_t *x, const test_pitch_ref_cfg_t *c, int64_t mean,
+                       int64_t level, uint32_t t)
+{
+    int64_t d = 0, b = 0;
+    uint32_t i;
+    for (i = 0; i < c->frame_len; i++) {
+        d += iabs((int64_t)x[i] - x[i + t]);
+        b += iabs((int64_t)x[i + t] - mean);
+    }
+    g_d[t] = d;
+    g_s[t] = level + b;
+}
+
+/* Step 6 of pitch.h (below the range): is the period P (Q16) of the chosen
+   dip, whose interpolated floor is F (Q20), a multiple of a period shorter
+   than lag_min? Each sub-period is checked as written: every lag around it
+   summed in full. */
+static bool below_range(const int16_t *x, const test_pitch_ref_cfg_t *c, int64_t mean,
+                        int64_t level, int64_t period, int64_t floor_q20)
+{
+    const int64_t limit = floor_q20 + (int64_t)(c->threshold_q15 / 3u) * 32 / 2;
+    int64_t k;
+    if (period + 32768 < (int64_t)c->lag_min * 65536) {
+        return true;
+    }
+    if (period >= 2 * (int64_t)c->lag_min * 65536) {
+        return false;
+    }
+    for (k = 2;; k++) {
+        int64_t cc = (period + k * 32768) / (k * 65536);
+        uint32_t u;
+        if (cc < 3) {
+            return false;
+        }
+        if (cc >= (int64_t)c->lag_min || period >= k * (int64_t)c->lag_min * 65536) {
+            continue;
+        }
+        for (u = (uint32_t)cc - 2u; u <= (uint32_t)cc + 2u; u++) {
+            lag_values(x, c, mean, level, u);
+        }
+        for (u = (uint32_t)cc - 1u; u <= (uint32_t)cc + 1u; u++) {
+            if (!less(u - 1u, u) && !less(u + 1u, u) && dip_floor(c, u) <= limit) {
+                return true;
+            }
+        }
+    }
+}
+
 void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_pitch_ref_t *out)
 {
     const int64_t k = c->frame_len;
@@ -175,7 +225,15 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
         int64_t nq15 = g_d[chosen] * 32768 / g_s[chosen];
         out->confidence_q15 = (uint16_t)(nq15 >= 32767 ? 0 : 32767 - nq15);
     }
-    out->voiced = found && under(chosen, c->voicing_q15);
+    {
+        /* step 6 overwrites the values of the sub-period lags: F first */
+        const int64_t f = found ? dip_floor(c, chosen) : 0;
+        const int64_t d = g_d[chosen], sc = g_s[chosen];
+        out->voiced = found && under(chosen, c->voicing_q15) &&
+                      !below_range(x, c, mean, level, period, f);
+        g_d[chosen] = d;
+        g_s[chosen] = sc;
+    }
     out->dip = found;
     out->silent = false;
 }

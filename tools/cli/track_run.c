@@ -45,6 +45,8 @@ const char track_opts_help[] =
     "  --mask-value V    windows or areas holding V are 'masked' (GOES fill: 4095)\n"
     "  --grad            apply the Fig. 8 differential operator to both images first\n"
     "  --mem BYTES       track from block-streamed images within BYTES of memory\n"
+    "                    (at least a band of one grid column's search areas and\n"
+    "                    windows; below it the run is refused and says how much)\n"
     "outputs:\n"
     "  --json FILE|-     write the vectors as JSON (- = stdout)\n"
     "  --overlay OUT.png draw the vectors over SECOND (a grid too dense to read is\n"
@@ -523,44 +525,43 @@ static int device_read(void *context, uint32_t offset, void *buffer, uint32_t si
     return 0;
 }
 
-/* Split mem bytes into the two plates: read-once strips of as many grid
-   columns as fit; otherwise SECOND keeps what one strip of windows needs
-   (or its share) and FIRST takes the rest. Returns 0, or -1 when mem is
-   below one row of a search area plus one row of a window (*need set). */
-static int split_arena(const ssda_track_grid_t *g, uint8_t format, uint64_t mem,
-                       size_t *first, size_t *second, size_t *need)
+/* Plate bytes of FIRST (fs) or SECOND for a strip of n grid columns: a
+   band of its search areas (windows) as wide as the strip, at most the
+   image wide. */
+static size_t strip_bytes(const ssda_track_grid_t *g, uint8_t format, uint32_t n, bool fs,
+                          uint32_t img_w)
 {
-    size_t min_f = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->search_w, 1, format, 1, 0);
-    size_t min_s = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->win_w, 1, format, 1, 0);
+    size_t w = SSDA_STREAM_STRIP_W(n, g->step_x, fs ? g->search_w : g->win_w);
+    return SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, w < img_w ? w : img_w, fs ? g->search_h : g->win_h,
+                            format, 1, 0);
+}
+
+/* Split mem bytes into the two plates: read-once strips of as many grid
+   columns as fit (SECOND gets its strip, FIRST the rest), at least one
+   column, or all of them when the result depends on the order (`full`:
+   median prediction in an inexact mode). Returns 0, or -1 when mem is
+   below that minimum (*need set: the library refuses less, issue 22, as
+   it re-read rows without bound). More memory never gives fewer columns,
+   so the amplification never grows with it (issue 14, item 4). */
+static int split_arena(const ssda_track_grid_t *g, uint8_t format, uint64_t mem, bool full,
+                       uint32_t first_w, uint32_t second_w, size_t *first, size_t *second,
+                       size_t *need)
+{
+    const uint32_t n_min = full ? g->cols : 1u;
     uint32_t n;
-    *need = min_f + min_s;
+    *need = strip_bytes(g, format, n_min, true, first_w) +
+            strip_bytes(g, format, n_min, false, second_w);
     if (mem < *need) {
         return -1;
     }
-    for (n = g->cols; n >= 1u; n--) {
-        size_t f = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, SSDA_STREAM_STRIP_W(n, g->step_x, g->search_w),
-                                    g->search_h, format, 1, 0);
-        size_t s = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, SSDA_STREAM_STRIP_W(n, g->step_x, g->win_w),
-                                    g->win_h, format, 1, 0);
-        if ((uint64_t)f + s <= mem) {
-            *first = (size_t)(mem - s);
-            *second = s;
-            return 0;
+    for (n = g->cols; n > n_min; n--) {
+        if ((uint64_t)strip_bytes(g, format, n, true, first_w) +
+                strip_bytes(g, format, n, false, second_w) <= mem) {
+            break;
         }
     }
-    {
-        size_t s1 = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, g->win_w, g->win_h, format, 1, 0);
-        double share = (double)g->win_w * g->win_h /
-                       ((double)g->win_w * g->win_h + (double)g->search_w * g->search_h);
-        size_t s = (size_t)((double)mem * share);
-        s = s > s1 ? s1 : s;
-        s = s < min_s ? min_s : s;
-        if (mem - s < min_f) {
-            s = (size_t)mem - min_f;
-        }
-        *second = s;
-        *first = (size_t)mem - s;
-    }
+    *second = strip_bytes(g, format, n, false, second_w);
+    *first = (size_t)(mem - *second);
     return 0;
 }
 
@@ -593,10 +594,18 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
     void *arena_f = NULL, *arena_s = NULL;
     uint8_t format = r->first.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
     int e;
-    if (split_arena(&r->grid, format, o->mem, &af, &as, &need) != 0) {
-        return cli_usage_error(cmd, "--mem %llu is below the %zu bytes one row of a search "
-                               "area and one row of a window need",
-                               (unsigned long long)o->mem, need);
+    const uint8_t mode = r->cfg.match.threshold;
+    const bool full = r->cfg.predict == SSDA_TRACK_PREDICT_MEDIAN &&
+                      mode != SSDA_THRESHOLD_AUTO && mode != SSDA_THRESHOLD_NONE;
+    if (split_arena(&r->grid, format, o->mem, full, r->first.width, r->second.width, &af, &as,
+                    &need) != 0) {
+        return cli_usage_error(cmd, "--mem %llu is below the useful minimum: %zu bytes, a band "
+                               "of %s search areas and windows (%s)",
+                               (unsigned long long)o->mem, need,
+                               full ? "every grid column's" : "one grid column's",
+                               full ? "median prediction in an inexact mode needs the whole "
+                                      "grid width"
+                                    : "less would re-read rows without bound");
     }
     /* A plate never needs more than its whole image: --mem 10G on a small
        pair allocates what the images need, not 10 GB. */

@@ -258,10 +258,14 @@ static void job_match(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     FUZZ_CHECK(ssda_view_roi(&wroi, &v[1], wr.x, wr.y, wr.width, wr.height) == SSDA_OK);
     FUZZ_CHECK(ssda_match(&aroi, &wroi, &c, &want) == SSDA_OK);
 
-    need_a = SSDA_SOURCE_SIZE(st[0].cfg.layout, (c.flags & SSDA_MATCH_BOUNDS) ? ar.width : wr.width,
-                              1u, v[0].format, st[0].cfg.read_size, st[0].cfg.tile_w);
-    need_w = SSDA_SOURCE_SIZE(st[1].cfg.layout, wr.width, 1u, v[1].format, st[1].cfg.read_size,
-                              st[1].cfg.tile_w);
+    /* the minimum (issue 22): a band of window-height rows as wide as the
+       area for the raster scan, the whole area for the others; the whole
+       window */
+    need_a = SSDA_SOURCE_SIZE(st[0].cfg.layout, ar.width,
+                              c.scan == SSDA_SCAN_RASTER ? wr.height : ar.height, v[0].format,
+                              st[0].cfg.read_size, st[0].cfg.tile_w);
+    need_w = SSDA_SOURCE_SIZE(st[1].cfg.layout, wr.width, wr.height, v[1].format,
+                              st[1].cfg.read_size, st[1].cfg.tile_w);
     arena_a = pick_arena(in, st[0].init_min, need_a);
     arena_w = pick_arena(in, st[1].init_min, need_w);
     ra = init_source(&as, &st[0], &v[0], arena_a);
@@ -331,10 +335,22 @@ static void job_track(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     if (ssda_track(&v[0], &v[1], &c, g_want, MAX_OUT, &want) != SSDA_OK) {
         return; /* argument errors belong to fuzz_track */
     }
-    need_f = SSDA_SOURCE_SIZE(st[0].cfg.layout, c.search_w, 1u, v[0].format, st[0].cfg.read_size,
-                              st[0].cfg.tile_w);
-    need_s = SSDA_SOURCE_SIZE(st[1].cfg.layout, c.win_w, 1u, v[1].format, st[1].cfg.read_size,
-                              st[1].cfg.tile_w);
+    {
+        /* the minimum (issue 22): a band of one grid column's areas and
+           windows, or of all columns when the order matters (MEDIAN in an
+           inexact mode); at least what the library needs */
+        const bool full = c.predict == SSDA_TRACK_PREDICT_MEDIAN &&
+                          c.match.threshold != SSDA_THRESHOLD_AUTO &&
+                          c.match.threshold != SSDA_THRESHOLD_NONE;
+        size_t fw = full ? SSDA_STREAM_STRIP_W(grid.cols, grid.step_x, grid.search_w) : grid.search_w;
+        size_t sw = full ? SSDA_STREAM_STRIP_W(grid.cols, grid.step_x, grid.win_w) : grid.win_w;
+        fw = fw < v[0].width ? fw : v[0].width;
+        sw = sw < v[1].width ? sw : v[1].width;
+        need_f = SSDA_SOURCE_SIZE(st[0].cfg.layout, fw, grid.search_h, v[0].format,
+                                  st[0].cfg.read_size, st[0].cfg.tile_w);
+        need_s = SSDA_SOURCE_SIZE(st[1].cfg.layout, sw, grid.win_h, v[1].format,
+                                  st[1].cfg.read_size, st[1].cfg.tile_w);
+    }
     arena_f = pick_arena(in, st[0].init_min, need_f);
     arena_s = pick_arena(in, st[1].init_min, need_s);
     if (init_source(&fs, &st[0], &v[0], arena_f) != SSDA_OK ||
@@ -434,8 +450,8 @@ static void job_push(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t f
     FUZZ_CHECK(ssda_view_roi(&aroi, &v[0], ar.x, ar.y, ar.width, ar.height) == SSDA_OK);
     FUZZ_CHECK(ssda_view_roi(&wroi, &v[1], wr.x, wr.y, wr.width, wr.height) == SSDA_OK);
     FUZZ_CHECK(ssda_match(&aroi, &wroi, &c, &want) == SSDA_OK);
-    need_w = SSDA_SOURCE_SIZE(st[1].cfg.layout, wr.width, 1u, v[1].format, st[1].cfg.read_size,
-                              st[1].cfg.tile_w);
+    need_w = SSDA_SOURCE_SIZE(st[1].cfg.layout, wr.width, wr.height, v[1].format,
+                              st[1].cfg.read_size, st[1].cfg.tile_w); /* the whole window */
     arena_w = pick_arena(in, st[1].init_min, need_w);
     if (init_source(&ws, &st[1], &v[1], arena_w) != SSDA_OK) {
         return;

@@ -224,8 +224,11 @@ static int input_valid(case_t *c)
     const ssda_track_config_t *cfg = &c->cfg;
     c->pixels = c->axx.win * c->axy.win;
     c->thr = cfg->texture_threshold ? cfg->texture_threshold : (c->maxv + 1u) / 2u;
+    /* the default: w*h / 16, at least 1, at most w*h / 2 (0 for one pixel,
+       issue 22.2: a default is always valid) */
     c->minc = cfg->texture_min_count ? cfg->texture_min_count
-                                     : (c->pixels / 16u > 0u ? c->pixels / 16u : 1u);
+                                     : (c->pixels / 16u > 0u ? c->pixels / 16u
+                                                             : (c->pixels / 2u < 1u ? 0u : 1u));
     const int unique = (cfg->flags & SSDA_TRACK_UNIQUE) != 0u;
     const uint64_t need_u = (cfg->match.flags & SSDA_MATCH_BOUNDS)
                                 ? (uint64_t)SSDA_TRACK_WORK_SIZE(c->axx.search, c->axy.search,
