@@ -77,10 +77,12 @@ track)
   "$gen" texture n.png --size 120x100 --seed 7 --shift 2,-3
   "$flowtool" gain n.png nb.png 0.6 60
   for m in sad ncc absncc; do
-    # rho and sad of every ok window against a double-precision recomputation;
+    # rho and sad of every ok window (at least 20 of the 24 searched: the
+    # statuses of issue 15 may call a few ambiguous or at_limit) against a
+    # double-precision recomputation;
     # with ncc/absncc the placement is the brute-force argmax of rho (|rho|)
     run 0 track r.png nb.png --metric $m --json t.json --quiet &&
-      "$flowtool" track-rho r.png nb.png t.json $m 24 &&
+      "$flowtool" track-rho r.png nb.png t.json $m 20 &&
       grep -q "\"metric\":\"$m\"" t.json && grep -q '"metric_time_s"' t.json ||
       fail "track --metric $m: $(head -c 400 t.json)"
   done
