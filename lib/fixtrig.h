@@ -19,7 +19,7 @@
 /* cos and sin of angle in Q15, in [-32768, 32768]: a 129-entry quarter-wave
    table (512 steps per turn) linearly interpolated; |error| <= 2 LSB
    (6.1e-5) against the exact value (tests/test_fixtrig.c checks every
-   2^20-th angle against a double reference). */
+   2^20-th angle against a floating-point reference in the tests). */
 SSDA_INTERNAL int32_t ssda__cos_q15(uint32_t angle);
 SSDA_INTERNAL int32_t ssda__sin_q15(uint32_t angle);
 

@@ -66,7 +66,7 @@ typedef struct {
     uint16_t nuclei;        /* nuclei tried (0 = 100; the seed: "for example 30") */
     uint16_t min_pairs;     /* pairs a registration needs, >= 3 (the seed's
                                least); 0 = SSDA_SYMREG_DEFAULT_MIN_PAIRS */
-    uint32_t e2_nucleus_q16; /* [1] free-match E^2 of a nucleus (0 = 0.05) */
+    uint32_t e2_nucleus_q16; /* [1] unconstrained-match E^2 of a nucleus (0 = 0.05) */
     uint32_t e2_grow_q16;   /* [2.2] fixed-match E^2 to pair (0 = 0.25) */
     uint32_t e2_final_q16;  /* [2.5] fixed-match E^2 kept, <= e2_grow (0 = 0.15) */
     uint32_t scale_min_q16, scale_max_q16; /* [1] nucleus scales (0 = 0.5, 2.0) */
@@ -81,7 +81,7 @@ typedef struct {
 /* A matched pair in the winning registration. */
 typedef struct {
     uint16_t ref, mov;      /* loop indices */
-    uint32_t s_q16, phi;    /* free match of the pair (ssda_fd_match ref -> mov) */
+    uint32_t s_q16, phi;    /* unconstrained match of the pair (ssda_fd_match ref -> mov) */
     uint32_t e2_q16;        /* its E^2 */
     uint32_t e2_fixed_q16;  /* E^2 with the registration's scale and rotation */
     uint32_t resid_q8;      /* |MOV centroid - affine(REF centroid)|, Q8 px */
@@ -98,7 +98,7 @@ typedef struct {
                                e2_nucleus and below the lists' worst then) */
     uint32_t nuclei;        /* nuclei tried */
     uint32_t best_nucleus;  /* index of the winning nucleus among them */
-    uint32_t matches;       /* free matches run in [1] */
+    uint32_t matches;       /* unconstrained matches run in [1] */
     uint32_t skipped;       /* [1] pairs the E^2 bound skipped */
 } ssda_symreg_result_t;
 
