@@ -127,6 +127,13 @@ static void plan_strip(ssda_source_t *first, ssda_source_t *second,
    result depends on the order); any less would fetch rows through the
    plate as the tracker asks, re-reading them without bound. A row is
    enough when no window reads pixels. */
+/* Does s's arena hold a band of w x h px, w capped at the image width (a
+   grid's search width may exceed an image no area lies inside)? */
+static bool holds_band(const ssda_source_t *s, uint32_t w, uint32_t h)
+{
+    return ssda__stream_holds(s, w < s->cfg.width ? w : s->cfg.width, h, 0u);
+}
+
 static bool arenas_hold_bands(const ssda_track_plan_t *p, const ssda_source_t *first,
                               const ssda_source_t *second, bool full)
 {
@@ -134,11 +141,10 @@ static bool arenas_hold_bands(const ssda_track_plan_t *p, const ssda_source_t *f
     ssda_rect_t ar, wr;
     uint32_t lo, hi;
     if (!ssda__stream_grid_rects(g, p->first_w, p->first_h, 0u, g->cols, &ar, &wr, &lo, &hi)) {
-        return ssda__stream_holds(first, g->search_w, 1u, 0u) &&
-               ssda__stream_holds(second, g->win_w, 1u, 0u);
+        return holds_band(first, g->search_w, 1u) && holds_band(second, g->win_w, 1u);
     }
-    return ssda__stream_holds(first, full ? ar.width : g->search_w, g->search_h, 0u) &&
-           ssda__stream_holds(second, full ? wr.width : g->win_w, g->win_h, 0u);
+    return holds_band(first, full ? ar.width : g->search_w, g->search_h) &&
+           holds_band(second, full ? wr.width : g->win_w, g->win_h);
 }
 
 int ssda_stream_track(ssda_source_t *first, ssda_source_t *second,

@@ -432,6 +432,47 @@ static void test_short_arenas_and_bad_arguments(void)
     }
 }
 
+/* A FIRST narrower than a search area (no area lies inside it, every
+   window is an edge): the minimum is one row of FIRST's width, not of the
+   search width (the 5 s fuzz smoke found the library asking for 32 px of
+   an 8-px image); one byte less is refused before any read. */
+static void test_first_narrower_than_an_area(void)
+{
+    const size_t need = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 8u, 1u, 2u, 1u, 0u);
+    ssda_view_t fv, sv = view_of(false);
+    ssda_source_t f, s;
+    ssda_source_config_t cfg;
+    ssda_track_config_t c;
+    ssda_track_stats_t want, got;
+    ssda_track_grid_t grid;
+    uint32_t k, pass;
+    make_images(36u);
+    memset(&c, 0, sizeof c);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&fv, g_first, 8u, IH, IW * 2u, SSDA_PIX_U16));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&s, &sv));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &grid));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, &c, g_want, MAX_WIN, &want));
+    TEST_ASSERT_EQUAL_UINT32(grid.count, want.edge);
+    for (pass = 0; pass < 2u; pass++) {
+        test_source_init(&g_tf, g_fdev, (uint32_t)sizeof g_fdev, 1u);
+        cfg = test_source_config(&g_tf, &fv, SSDA_LAYOUT_RASTER, 0u, 0u, 0u, 16u, 0u, 1u,
+                                 g_farena, need - pass);
+        test_source_store(&g_tf, &cfg, &fv);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&f, &cfg));
+        memset(g_got, 0, sizeof g_got);
+        if (pass == 1u) {
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, &got));
+            TEST_ASSERT_EQUAL_UINT64(0, g_tf.reads);
+            break;
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, &got));
+        for (k = 0; k < grid.count; k++) {
+            TEST_ASSERT_TRUE(same_vector(&g_want[k], &g_got[k]));
+        }
+        TEST_ASSERT_EQUAL_UINT32(want.edge, got.edge);
+    }
+}
+
 /* FIRST and SECOND streamed with overlapping arenas would overwrite each
    other's plate: refused before any read, out and stats untouched; halves
    of one buffer that do not overlap give ssda_track's vectors. */
@@ -477,5 +518,6 @@ int main(void)
     RUN_TEST(test_failure_at_every_read);
     RUN_TEST(test_short_arenas_and_bad_arguments);
     RUN_TEST(test_overlapping_arenas_are_refused);
+    RUN_TEST(test_first_narrower_than_an_area);
     return UNITY_END();
 }

@@ -311,7 +311,8 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * SECOND; with MEDIAN prediction in an inexact mode a band of every column,
  * SSDA_STREAM_STRIP_W(cols, step_x, search_w) (at most FIRST's width) x
  * search_h and SSDA_STREAM_STRIP_W(cols, step_x, win_w) x win_h (a row is
- * enough when no window's area lies inside FIRST). Strips of n columns need
+ * enough when no window's area lies inside FIRST); no width above the
+ * image's. Strips of n columns need
  * SSDA_STREAM_STRIP_W(n, step_x, search_w) x search_h and
  * SSDA_STREAM_STRIP_W(n, step_x, win_w) x win_h (tiled sources also
  * (min(tile_h, step_y) - 1) * stride bytes more, so that the rows a band
