@@ -67,20 +67,19 @@ static uint32_t band_width(const ssda_source_t *s, uint32_t rows, uint32_t step_
                            : ssda__stream_plate_fit_w(s, rows, ssda__stream_run_extra(s, step_y));
 }
 
-/* Does the result depend on the order windows are solved in? MEDIAN
-   prediction in an inexact mode: then one full-width strip is used. */
+/* Does the result depend on the order windows are solved in? With MEDIAN
+   prediction, yes in every mode: the prediction needs the up-right
+   neighbour, which a strip's right-edge window lacks, and it steers the
+   scan (inexact modes) and picks among equal SADs (the tie rule, exact
+   modes too). Then one full-width strip is used. */
 static bool order_matters(const ssda_track_plan_t *p)
 {
-    const uint8_t mode = p->match.threshold;
-    const bool exact = (mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                        mode == (uint8_t)SSDA_THRESHOLD_NONE) &&
-                       p->match.scan != (uint8_t)SSDA_SCAN_COARSE;
-    return !exact && p->predict == (uint8_t)SSDA_TRACK_PREDICT_MEDIAN;
+    return p->predict == (uint8_t)SSDA_TRACK_PREDICT_MEDIAN;
 }
 
 /* Grid columns per strip: as many as keep the strip's areas (search_h rows)
    and windows (win_h rows) in the plates; the whole grid width when the
-   result could depend on the order (MEDIAN prediction in an inexact mode). */
+   result could depend on the order (MEDIAN prediction). */
 static uint32_t strip_cols(const ssda_track_plan_t *p, const ssda_source_t *first,
                            const ssda_source_t *second)
 {

@@ -249,7 +249,7 @@ static ssda_track_config_t track_config(void)
     c.search_h = 10;
     c.step_x = 5;
     c.step_y = 4;
-    c.predict = SSDA_TRACK_PREDICT_MEDIAN;
+    c.predict = SSDA_TRACK_PREDICT_LEFT; /* MEDIAN takes one full-width strip */
     /* a region where every search area fits: the push rings then need
        exactly the strips of SSDA_STREAM_STRIP_W (EDGE columns are not kept) */
     c.roi_x = 3;

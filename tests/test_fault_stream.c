@@ -127,7 +127,7 @@ static ssda_track_config_t track_config(void)
     c.search_h = 12;
     c.step_x = 6;
     c.step_y = 5;
-    c.predict = SSDA_TRACK_PREDICT_MEDIAN;
+    c.predict = SSDA_TRACK_PREDICT_LEFT; /* strips (MEDIAN would take one full-width strip) */
     c.match.flags = SSDA_MATCH_BOUNDS;
     c.match.work = g_work;
     c.match.work_size = sizeof g_work;

@@ -173,12 +173,12 @@ static void check_against_ram(ssda_source_t *f, ssda_source_t *s, const ssda_tra
     TEST_ASSERT_EQUAL_UINT64(0, g_tf.contract_violations + g_ts.contract_violations);
 }
 
-/* Does the result depend on the order of the windows (MEDIAN prediction in
-   an inexact mode)? Then the job needs a band of the whole grid width. */
+/* Does the result depend on the order of the windows (MEDIAN prediction:
+   it steers the scan and breaks ties, and a strip lacks up-right
+   neighbours)? Then the job needs a band of the whole grid width. */
 static bool order_matters(const ssda_track_config_t *c)
 {
-    return c->predict == SSDA_TRACK_PREDICT_MEDIAN && c->match.threshold != SSDA_THRESHOLD_AUTO &&
-           c->match.threshold != SSDA_THRESHOLD_NONE;
+    return c->predict == SSDA_TRACK_PREDICT_MEDIAN;
 }
 
 /* Arena sizes: the minimum (a band of one column's areas and windows),

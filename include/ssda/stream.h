@@ -296,19 +296,20 @@ int ssda_stream_match(ssda_source_t *area, const ssda_rect_t *area_rect,
  * each grid row is searched on the plates as on images in RAM. Within a
  * strip windows are solved in raster order. Strips change only the order
  * of the work, so:
- *   - vectors, statuses and exact flags equal ssda_track's whenever the
- *     result does not depend on the order: exact modes (AUTO, NONE without
- *     COARSE scan), or no prediction, or SSDA_TRACK_PREDICT_LEFT (whose
- *     neighbours are solved in both orders); otherwise (MEDIAN prediction
- *     with an inexact mode) one full-width strip is used, which gives
- *     ssda_track's result exactly and needs a band of the whole grid width;
+ *   - vectors, statuses and exact flags equal ssda_track's: with no
+ *     prediction or SSDA_TRACK_PREDICT_LEFT (whose neighbours are solved
+ *     in both orders) in strips; with SSDA_TRACK_PREDICT_MEDIAN in one
+ *     full-width strip, since its up-right neighbour is missing at a
+ *     strip's right edge and the prediction steers the scan and breaks
+ *     ties between equal SADs (the tie rule of track.h, in every mode):
+ *     that strip needs a band of the whole grid width;
  *   - the work counts (pixel_ops, positions, completed) may differ from
  *     ssda_track's when prediction is on, since a window at a strip's right
  *     edge has no solved up-right neighbour.
  * Arena (the minimum; below it SSDA_ERR_BUFFER before any read): a band of
  * one grid column, SSDA_SOURCE_SIZE(.., search_w, search_h, ..) for a
  * streamed FIRST and SSDA_SOURCE_SIZE(.., win_w, win_h, ..) for a streamed
- * SECOND; with MEDIAN prediction in an inexact mode a band of every column,
+ * SECOND; with MEDIAN prediction a band of every column,
  * SSDA_STREAM_STRIP_W(cols, step_x, search_w) (at most FIRST's width) x
  * search_h and SSDA_STREAM_STRIP_W(cols, step_x, win_w) x win_h (a row is
  * enough when no window's area lies inside FIRST); no width above the

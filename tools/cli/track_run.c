@@ -539,7 +539,7 @@ static size_t strip_bytes(const ssda_track_grid_t *g, uint8_t format, uint32_t n
 /* Split mem bytes into the two plates: read-once strips of as many grid
    columns as fit (SECOND gets its strip, FIRST the rest), at least one
    column, or all of them when the result depends on the order (`full`:
-   median prediction in an inexact mode). Returns 0, or -1 when mem is
+   median prediction). Returns 0, or -1 when mem is
    below that minimum (*need set: the library refuses less, issue 22, as
    it re-read rows without bound). More memory never gives fewer columns,
    so the amplification never grows with it (issue 14, item 4). */
@@ -594,17 +594,15 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
     void *arena_f = NULL, *arena_s = NULL;
     uint8_t format = r->first.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
     int e;
-    const uint8_t mode = r->cfg.match.threshold;
-    const bool full = r->cfg.predict == SSDA_TRACK_PREDICT_MEDIAN &&
-                      mode != SSDA_THRESHOLD_AUTO && mode != SSDA_THRESHOLD_NONE;
+    const bool full = r->cfg.predict == SSDA_TRACK_PREDICT_MEDIAN;
     if (split_arena(&r->grid, format, o->mem, full, r->first.width, r->second.width, &af, &as,
                     &need) != 0) {
         return cli_usage_error(cmd, "--mem %llu is below the useful minimum: %zu bytes, a band "
                                "of %s search areas and windows (%s)",
                                (unsigned long long)o->mem, need,
                                full ? "every grid column's" : "one grid column's",
-                               full ? "median prediction in an inexact mode needs the whole "
-                                      "grid width"
+                               full ? "--predict neighbour needs the whole grid width; "
+                                      "--predict left needs one column"
                                     : "less would re-read rows without bound");
     }
     /* A plate never needs more than its whole image: --mem 10G on a small

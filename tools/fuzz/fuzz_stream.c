@@ -337,11 +337,9 @@ static void job_track(fuzz_in_t *in, const ssda_view_t *v, store_t *st, int64_t 
     }
     {
         /* the minimum (issue 22): a band of one grid column's areas and
-           windows, or of all columns when the order matters (MEDIAN in an
-           inexact mode); at least what the library needs */
-        const bool full = c.predict == SSDA_TRACK_PREDICT_MEDIAN &&
-                          c.match.threshold != SSDA_THRESHOLD_AUTO &&
-                          c.match.threshold != SSDA_THRESHOLD_NONE;
+           windows, or of all columns when the order matters (MEDIAN
+           prediction: the tie rule); at least what the library needs */
+        const bool full = c.predict == SSDA_TRACK_PREDICT_MEDIAN;
         size_t fw = full ? SSDA_STREAM_STRIP_W(grid.cols, grid.step_x, grid.search_w) : grid.search_w;
         size_t sw = full ? SSDA_STREAM_STRIP_W(grid.cols, grid.step_x, grid.win_w) : grid.win_w;
         fw = fw < v[0].width ? fw : v[0].width;

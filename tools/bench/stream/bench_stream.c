@@ -391,7 +391,7 @@ static int parse_options(int argc, char **argv, bench_opts_t *o)
     o->n_arenas = 3;
     o->reps = 5;
     o->bounds = 1;
-    o->predict = SSDA_TRACK_PREDICT_MEDIAN;
+    o->predict = SSDA_TRACK_PREDICT_LEFT; /* median needs a band of the whole grid width */
     o->lay.read_size = 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--reps") && i + 1 < argc) {

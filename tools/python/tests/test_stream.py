@@ -34,7 +34,7 @@ def test_stream_track_equals_track(dtype):
     first, second = shifted_pair(120, 100, dx=2, dy=-3, seed=41, dtype=dtype)
     d1, s1 = device(first, offset=6, pad=2 * first.itemsize)
     d2, s2 = device(second)
-    mem = ssda.Source(reader(d1), 100, 120, dtype=dtype, offset=6, stride=s1, memory=6000)
+    mem = ssda.Source(reader(d1), 100, 120, dtype=dtype, offset=6, stride=s1, memory=8000)
     f = io.BytesIO(d2)
     fsrc = ssda.Source(f, 100, 120, dtype=dtype, stride=s2, memory=4000)
     for opts in ({}, {"predict": "none", "exclude": True}):
@@ -46,7 +46,7 @@ def test_stream_track_equals_track(dtype):
         # an array stands for an in-memory source on either side
         assert (ssda.stream_track(first, fsrc, **opts).vectors == want.vectors).all()
         assert (ssda.stream_track(mem, second, **opts).vectors == want.vectors).all()
-    assert mem.memory == 6000 and mem.stats.reads > 0 and fsrc.stats.bytes_read > 0
+    assert mem.memory == 8000 and mem.stats.reads > 0 and fsrc.stats.bytes_read > 0
 
 
 def test_stream_match_rects_file_and_read_size(tmp_path):
