@@ -473,6 +473,42 @@ static void test_first_narrower_than_an_area(void)
     }
 }
 
+/* A periodic pattern: every window's SAD ties at several placements, and
+   the tie rule (track.h) picks the one nearest the prediction. With MEDIAN
+   prediction that needs the up-right neighbour, so the job takes one
+   full-width strip even in the exact mode and refuses a narrower arena;
+   the fuzz smoke found strips settling a tie elsewhere. */
+static void test_median_ties_need_the_whole_grid_width(void)
+{
+    const size_t full_f = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, IW, 32u, 2u, 1u, 0u);
+    const size_t full_s = SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 112u, 16u, 2u, 1u, 0u);
+    ssda_source_t f, s;
+    ssda_track_config_t c;
+    ssda_track_stats_t st;
+    uint32_t x, y, pred;
+    for (y = 0; y < IH; y++) {
+        for (x = 0; x < IW; x++) {
+            g_first[y][x] = (uint16_t)(((x / 3u + y / 5u) % 4u) * 300u);
+            g_second[y][x] = (uint16_t)((((x + 1u) / 3u + y / 5u) % 4u) * 300u);
+        }
+    }
+    memset(&c, 0, sizeof c);
+    for (pred = 0; pred < 3u; pred++) {
+        c.predict = (uint8_t)pred;
+        make_source(&f, true, &k_raster, full_f);
+        make_source(&s, false, &k_raster, full_s);
+        check_against_ram(&f, &s, &c, true);
+        /* one column's band: strips of one column, or refused for MEDIAN */
+        make_source(&f, true, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 32u, 32u, 2u, 1u, 0u));
+        make_source(&s, false, &k_raster, SSDA_SOURCE_SIZE(SSDA_LAYOUT_RASTER, 16u, 16u, 2u, 1u, 0u));
+        if (pred == SSDA_TRACK_PREDICT_MEDIAN) {
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_stream_track(&f, &s, &c, g_got, MAX_WIN, &st));
+        } else {
+            check_against_ram(&f, &s, &c, false);
+        }
+    }
+}
+
 /* FIRST and SECOND streamed with overlapping arenas would overwrite each
    other's plate: refused before any read, out and stats untouched; halves
    of one buffer that do not overlap give ssda_track's vectors. */
@@ -519,5 +555,6 @@ int main(void)
     RUN_TEST(test_short_arenas_and_bad_arguments);
     RUN_TEST(test_overlapping_arenas_are_refused);
     RUN_TEST(test_first_narrower_than_an_area);
+    RUN_TEST(test_median_ties_need_the_whole_grid_width);
     return UNITY_END();
 }
