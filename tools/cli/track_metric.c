@@ -36,15 +36,24 @@ static int window_views(const track_result_t *r, const ssda_track_vector_t *v,
     if (gray_image_view(&r->first, &vf) != SSDA_OK || gray_image_view(&r->second, &vs) != SSDA_OK) {
         return SSDA_ERR_ARG;
     }
-    /* an OK window's area lies inside FIRST (else it would be EDGE) */
+    /* a searched window's area lies inside FIRST (else it would be EDGE) */
     e = ssda_view_roi(area, &vf, (uint16_t)(v->x - *hx), (uint16_t)(v->y - *hy), g->search_w,
                       g->search_h);
     return e != SSDA_OK ? e : ssda_view_roi(win, &vs, v->x, v->y, g->win_w, g->win_h);
 }
 
-/* One OK window: rho at SAD's placement, or the correlation search. */
+/* Whether a placement lies on the border of the range along an axis with
+   n placements: track.h's AT_LIMIT rule (one placement: no border). */
+static int on_border(uint32_t pos, uint32_t n)
+{
+    return n > 1u && (pos == 0u || pos == n - 1u);
+}
+
+/* One searched window: rho at SAD's placement (sad), or the correlation
+   search, which then decides the vector and the status (ok or at_limit). */
 static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_t *c, size_t k)
 {
+    const ssda_track_grid_t *g = &r->grid;
     ssda_track_vector_t *v = &r->vec[k];
     ssda_view_t area, win;
     ssda_ncc_result_t res;
@@ -56,7 +65,7 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
         return e;
     }
     if (o->metric == TRACK_METRIC_SAD) {
-        r->metric_ops += (uint64_t)r->grid.win_w * r->grid.win_h;
+        r->metric_ops += (uint64_t)g->win_w * g->win_h;
         return ssda_ncc_at(&area, &win, (uint16_t)px, (uint16_t)py, &r->rho_q30[k]);
     }
     c->predict_x = px;
@@ -66,10 +75,40 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
     }
     r->metric_ops += res.pixel_ops;
     r->rho_q30[k] = res.rho_q30;
-    v->dx = (int16_t)((int32_t)hx - (int32_t)res.x);
-    v->dy = (int16_t)((int32_t)hy - (int32_t)res.y);
+    v->dx = (int32_t)hx - (int32_t)res.x;
+    v->dy = (int32_t)hy - (int32_t)res.y;
+    /* whole pixels: no sub-pixel fit of rho here */
+    v->sub_dx_q8 = v->dx * 256;
+    v->sub_dy_q8 = v->dy * 256;
+    /* SAD's uniqueness does not describe this placement; not computed */
+    v->unique_q8 = SSDA_MATCH_UNIQUE_NONE;
     v->exact = true;
+    v->status = (uint8_t)(on_border(res.x, (uint32_t)g->search_w - g->win_w + 1u) ||
+                                  on_border(res.y, (uint32_t)g->search_h - g->win_h + 1u)
+                              ? SSDA_TRACK_AT_LIMIT
+                              : SSDA_TRACK_OK);
     return ssda_sad_at(&area, &win, res.x, res.y, &v->sad);
+}
+
+static int searched(uint8_t status)
+{
+    return status == SSDA_TRACK_OK || status == SSDA_TRACK_AMBIGUOUS ||
+           status == SSDA_TRACK_AT_LIMIT;
+}
+
+/* The counts of the searched statuses after the correlation search. */
+static void recount(track_result_t *r)
+{
+    size_t k;
+    r->stats.ok = r->stats.ambiguous = r->stats.at_limit = 0u;
+    for (k = 0; k < r->grid.count; k++) {
+        switch (r->vec[k].status) {
+        case SSDA_TRACK_OK: r->stats.ok++; break;
+        case SSDA_TRACK_AMBIGUOUS: r->stats.ambiguous++; break;
+        case SSDA_TRACK_AT_LIMIT: r->stats.at_limit++; break;
+        default: break;
+        }
+    }
 }
 
 int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r)
@@ -100,11 +139,14 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     t0 = progress_now();
     for (k = 0; k < g->count && e == SSDA_OK; k++) {
         r->rho_q30[k] = INT32_MIN;
-        if (r->vec[k].status == SSDA_TRACK_OK) {
+        if (searched(r->vec[k].status)) {
             e = one_window(o, r, &c, k);
         }
     }
     r->metric_secs = progress_now() - t0;
+    if (o->metric != TRACK_METRIC_SAD) {
+        recount(r);
+    }
     free(c.work);
     return e == SSDA_OK ? CLI_OK
                         : cli_input_error(cmd, "correlation search failed: %s", ssda_strerror(e));
@@ -145,7 +187,7 @@ void track_metric_print(const track_opts_t *o, const track_result_t *r)
         return;
     }
     for (k = 0; k < r->grid.count; k++) {
-        if (r->rho_q30[k] != INT32_MIN) {
+        if (r->rho_q30[k] != INT32_MIN && r->vec[k].status == SSDA_TRACK_OK) {
             v[n++] = r->rho_q30[k];
         }
     }

@@ -75,7 +75,7 @@ typedef struct {
     double secs;                  /* tracking time only */
     ssda_relax_vector_t *clean;   /* --relax / --relax-median: grid.count entries */
     uint32_t changed;             /* vectors the cleaning changed */
-    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN where not OK */
+    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN if not searched */
     uint64_t metric_ops;          /* --metric: pixel ops of the correlation part */
     double metric_secs;           /* --metric: its time */
 } track_result_t;

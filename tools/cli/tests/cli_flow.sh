@@ -97,6 +97,32 @@ track)
     fail "absncc on the inverse"
   run 0 track r.png ni.png --metric ncc --json t.json --quiet &&
     "$flowtool" track-check t.json 2 -3 0.5 && fail "ncc tracked the inverse"
+  # With ncc/absncc every searched window (not only SAD's ok ones) is
+  # searched again and takes its status from the correlation search: on the
+  # inverse SAD calls most windows ambiguous or at_limit, absncc finds the
+  # motion in all of them.
+  stat_of() { grep -o "\"$1\":[0-9]*" "$2" | tail -n 1 | cut -d: -f2; }
+  run 0 track r.png ni.png --json s.json --quiet
+  searched=$(($(stat_of ok s.json) + $(stat_of ambiguous s.json) + $(stat_of at_limit s.json)))
+  [ "$(stat_of ok s.json)" -lt "$searched" ] || fail "SAD left no window non-ok: no test"
+  run 0 track r.png ni.png --metric absncc --json t.json --quiet &&
+    "$flowtool" track-status t.json >st.txt && grep -qx "ok $searched at_limit 0" st.txt &&
+    "$flowtool" track-check t.json 2 -3 1.0 &&
+    "$flowtool" track-rho r.png ni.png t.json absncc "$searched" ||
+    fail "absncc on SAD's non-ok windows: $(cat st.txt)"
+  grep -q "^status:  $searched ok, 0 flat, 0 ambiguous, 0 at_limit" out.txt ||
+    fail "summary counts: $(cat out.txt)"
+  # the true motion (9, -3) lies beyond the range (-8..8): the correlation's
+  # best is on the border in every window, which is then at_limit
+  "$gen" texture far.png --size 120x100 --seed 7 --shift 9,-3
+  "$flowtool" gain far.png fari.png -1 255
+  run 0 track r.png fari.png --metric absncc --json t.json --overlay t.png &&
+    "$flowtool" track-status t.json >st.txt && grep -qx "ok 0 at_limit $searched" st.txt &&
+    "$flowtool" track-rho r.png fari.png t.json absncc 0 ||
+    fail "absncc beyond the range: $(cat st.txt)"
+  stderr_has "$searched of $searched searched windows are 'at_limit'"
+  grep -q "^status:  0 ok, 0 flat, 0 ambiguous, $searched at_limit" out.txt ||
+    fail "summary counts: $(cat out.txt)"
   # with cleaning and an overlay; without --metric no rho
   run 0 track r.png nb.png --metric ncc --relax 10 --json t.json --overlay t.png --quiet &&
     grep -q '"relax_dx":2.0000,"relax_dy":-3.0000' t.json && [ -s t.png ] || fail "ncc + relax"
