@@ -156,7 +156,8 @@ static int read_protected(png_reader_t *r, png_gray_depth_t depth)
     channels = png_get_channels(r->b.png, r->b.info);
     dec_bits = png_get_bit_depth(r->b.png, r->b.info);
     rowbytes = png_get_rowbytes(r->b.png, r->b.info);
-    if (direct && (channels != 1 || dec_bits != out_bits || rowbytes != (size_t)w * (size_t)(out_bits / 8))) {
+    if (direct && (channels != 1 || dec_bits != out_bits ||
+                   rowbytes != (size_t)w * (size_t)(out_bits / 8))) {
         snprintf(r->b.why, sizeof r->b.why, "unexpected decoded layout (%d channels, %d bits)",
                  channels, dec_bits); /* cannot happen for gray at its depth */
         return -1;
