@@ -361,8 +361,9 @@ static int take_output(cli_args_t *a, track_opts_t *o)
     return 1;
 }
 
-int track_opts_take(cli_args_t *a, track_opts_t *o)
+int track_opts_take(cli_args_t *a, void *opts)
 {
+    track_opts_t *o = opts;
     return take_grid(a, o) || take_search(a, o) || take_quality(a, o) || take_skip(a, o) ||
            take_output(a, o);
 }
@@ -383,20 +384,8 @@ int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
     int rc;
     track_opts_init(o);
     cli_args_begin(&a, cmd, argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            help();
-            return -1;
-        }
-        if (!track_opts_take(&a, o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
-    }
-    if (a.bad) {
-        return CLI_USAGE;
+    if ((rc = cli_scan_options(&a, help, track_opts_take, o)) != CLI_OK) {
+        return rc;
     }
     if ((rc = track_check_positionals(&a, o)) != CLI_OK) {
         return rc;

@@ -39,9 +39,10 @@ typedef struct {
    from neighbours (median), no exclusion, no mask. */
 void track_opts_init(track_opts_t *o);
 
-/* If the current option of a is a track option, take it and return 1
-   (a->bad set on a usage error, already reported); else return 0. */
-int track_opts_take(cli_args_t *a, track_opts_t *o);
+/* If the current option of a is a track option, take it into opts (a
+   track_opts_t) and return 1 (a->bad set on a usage error, already
+   reported); else return 0. For cli_scan_options. */
+int track_opts_take(cli_args_t *a, void *opts);
 
 /* After the loop: FIRST.png and SECOND.png, and nothing more (an extra
    argument is named; right after --exclude, its value syntax is said).
