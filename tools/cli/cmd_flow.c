@@ -145,10 +145,8 @@ static int parse(int argc, char **argv, flow_opts_t *o)
     if ((rc = cli_scan_options(&a, print_help, take_option, o)) != CLI_OK) {
         return rc;
     }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, a.npos < 2 ? "need REF.png and NEXT.png"
-                                                 : "unexpected argument '%s'",
-                               a.npos > 2 ? a.pos[2] : "");
+    if (cli_positionals(&a, 2, "need REF.png and NEXT.png") != CLI_OK) {
+        return CLI_USAGE;
     }
     if (o->keep && o->relax == 0u) {
         return cli_usage_error(a.cmd, "--relax-keep needs --relax N");
