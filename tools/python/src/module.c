@@ -17,6 +17,7 @@ static int (*const feature_inits[])(PyObject *) = {
     ssdapy_init_shape,  /* before symreg: FD_DTYPE */
     ssdapy_init_symreg,
     ssdapy_init_seg,
+    ssdapy_init_flow,
 };
 
 static const char error_doc[] =

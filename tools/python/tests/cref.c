@@ -20,8 +20,15 @@
                                              one line per component: weight mean sigma (Q16);
                                              then the lut (bins) and the band pixels (count)
    cref region LABELS W H OP                 the output labels (h w), then 256 counts
+   cref composite REF W H NEXT W H BPP [opts] totals line: cols rows count ok origin
+                                             mean_rho_q30 pixel_ops; then per template:
+                                             var dx dy rho_q30 x y status origin
+   cref relax  DX DY ST COLS ROWS FRAC [opts] (ST "-": all valid) one line per node:
+                                             dx_q8 dy_q8 p_q15 cls flags
+   cref median DX DY ST COLS ROWS FRAC [opts] the same for ssda_relax_median
    Files are raw native-order samples, rows packed. Exit 0, or 1 with the
    library's error code printed ("error N"). */
+#include "ssda/composite.h"
 #include "ssda/grad.h"
 #include "ssda/kl.h"
 #include "ssda/mixture.h"
@@ -29,6 +36,7 @@
 #include "ssda/match.h"
 #include "ssda/ncc.h"
 #include "ssda/pitch.h"
+#include "ssda/relax.h"
 #include "ssda/track.h"
 
 #include <stddef.h>
@@ -87,6 +95,22 @@ static const field_t mix_fields[] = {
     F(ssda_mix_config_t, fit, 1), F(ssda_mix_config_t, init, 1),
     F(ssda_mix_config_t, flags, 1), F(ssda_mix_config_t, max_iter, 2),
     F(ssda_mix_config_t, sigma_min_q16, 4), F(ssda_mix_config_t, tol_q24, 4), {NULL, 0, 0}};
+
+static const field_t composite_fields[] = {
+    F(ssda_composite_config_t, tp, 2), F(ssda_composite_config_t, step, 2),
+    F(ssda_composite_config_t, roi_x, 2), F(ssda_composite_config_t, roi_y, 2),
+    F(ssda_composite_config_t, roi_w, 2), F(ssda_composite_config_t, roi_h, 2),
+    F(ssda_composite_config_t, radius_q8, 2), F(ssda_composite_config_t, min_radius, 2),
+    F(ssda_composite_config_t, min_std_q8, 2), F(ssda_composite_config_t, metric, 1),
+    F(ssda_composite_config_t, flags, 1), {NULL, 0, 0}};
+
+static const field_t relax_fields[] = {
+    F(ssda_relax_config_t, iterations, 2), F(ssda_relax_config_t, len_step_q8, 2),
+    F(ssda_relax_config_t, flags, 1), {NULL, 0, 0}};
+
+static const field_t median_fields[] = {
+    F(ssda_relax_median_config_t, threshold_q8, 2), F(ssda_relax_median_config_t, eps_q8, 2),
+    {NULL, 0, 0}};
 
 /* name=value into the struct at base; prefix "m." addresses the match
    options inside a track config. Returns 0, or -1 for an unknown name. */
@@ -480,8 +504,115 @@ static int run_region(char **argv)
     return 0;
 }
 
+static int run_composite(int argc, char **argv)
+{
+    int bpp = atoi(argv[8]), i, e;
+    void *a = load(argv[2], bytes_of(argv[3], argv[4], bpp));
+    void *b = load(argv[5], bytes_of(argv[6], argv[7], bpp));
+    ssda_view_t vr, vn;
+    ssda_composite_config_t cfg;
+    ssda_composite_result_t r;
+    ssda_composite_tp_t *tp;
+    size_t n;
+    uint32_t k;
+    if ((e = view(&vr, a, argv[3], argv[4], bpp)) != SSDA_OK ||
+        (e = view(&vn, b, argv[6], argv[7], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 9; i < argc; i++) {
+        if (set_field(&cfg, composite_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    n = (size_t)vr.width * vr.height; /* more than any grid */
+    tp = malloc(n * sizeof *tp);
+    cfg.work_size = SSDA_COMPOSITE_WORK_SIZE(vn.width, cfg.tp != 0u ? cfg.tp : 20u);
+    cfg.work = malloc(cfg.work_size); /* malloc: aligned for any type */
+    if ((e = ssda_composite_match(&vr, &vn, &cfg, tp, n, &r)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %u %u %u %d %llu\n", r.cols, r.rows, r.count, r.ok, r.origin,
+           (int)r.mean_rho_q30, (unsigned long long)r.pixel_ops);
+    for (k = 0; k < r.count; k++) {
+        printf("%llu %d %d %d %u %u %u %u\n", (unsigned long long)tp[k].var, (int)tp[k].dx,
+               (int)tp[k].dy, (int)tp[k].rho_q30, tp[k].x, tp[k].y, tp[k].status, tp[k].origin);
+    }
+    return 0;
+}
+
+/* A node in another layout than the binding's (status between the two). */
+typedef struct {
+    int32_t dx;
+    uint8_t status;
+    int32_t dy;
+} cref_node_t;
+
+static int run_relax(int argc, char **argv)
+{
+    const size_t cols = strtoul(argv[5], NULL, 0), rows = strtoul(argv[6], NULL, 0);
+    const size_t n = cols * rows;
+    int32_t *dx = load(argv[2], n * 4u), *dy = load(argv[3], n * 4u);
+    uint8_t *st = strcmp(argv[4], "-") == 0 ? NULL : load(argv[4], n);
+    cref_node_t *node = malloc((n > 0 ? n : 1) * sizeof *node);
+    ssda_relax_vector_t *out = malloc((n > 0 ? n : 1) * sizeof *out);
+    ssda_relax_grid_t g;
+    size_t k;
+    int i, e;
+    for (k = 0; k < n; k++) {
+        node[k].dx = dx[k];
+        node[k].dy = dy[k];
+        node[k].status = st != NULL ? st[k] : 0u;
+    }
+    g.dx = &node[0].dx;
+    g.dy = &node[0].dy;
+    g.status = st != NULL ? &node[0].status : NULL;
+    g.stride = sizeof *node;
+    g.cols = (uint16_t)cols;
+    g.rows = (uint16_t)rows;
+    g.frac_bits = (uint8_t)atoi(argv[7]);
+    if (strcmp(argv[1], "relax") == 0) {
+        ssda_relax_config_t cfg;
+        memset(&cfg, 0, sizeof cfg);
+        for (i = 8; i < argc; i++) {
+            if (set_field(&cfg, relax_fields, argv[i]) != 0) {
+                fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+                return 2;
+            }
+        }
+        cfg.work_size = SSDA_RELAX_WORK_SIZE(cols, rows);
+        cfg.work = malloc(cfg.work_size);
+        e = ssda_relax_labels(&g, &cfg, out, n);
+    } else {
+        ssda_relax_median_config_t cfg;
+        memset(&cfg, 0, sizeof cfg);
+        for (i = 8; i < argc; i++) {
+            if (set_field(&cfg, median_fields, argv[i]) != 0) {
+                fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+                return 2;
+            }
+        }
+        e = ssda_relax_median(&g, &cfg, out, n);
+    }
+    if (e != SSDA_OK) {
+        return fail(e);
+    }
+    for (k = 0; k < n; k++) {
+        printf("%d %d %u %u %u\n", (int)out[k].dx_q8, (int)out[k].dy_q8, out[k].p_q15,
+               out[k].cls, out[k].flags);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 9 && strcmp(argv[1], "composite") == 0) {
+        return run_composite(argc, argv);
+    }
+    if (argc >= 8 && (strcmp(argv[1], "relax") == 0 || strcmp(argv[1], "median") == 0)) {
+        return run_relax(argc, argv);
+    }
     if (argc >= 7 && strcmp(argv[1], "kl") == 0) {
         return run_kl(argc, argv);
     }
