@@ -16,6 +16,7 @@ static int (*const feature_inits[])(PyObject *) = {
     ssdapy_init_ncc,
     ssdapy_init_shape,  /* before symreg: FD_DTYPE */
     ssdapy_init_symreg,
+    ssdapy_init_reg,
 };
 
 static const char error_doc[] =

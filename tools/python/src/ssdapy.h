@@ -166,6 +166,7 @@ int ssdapy_init_stream(PyObject *m);
 int ssdapy_init_ncc(PyObject *m);
 int ssdapy_init_shape(PyObject *m);
 int ssdapy_init_symreg(PyObject *m);
+int ssdapy_init_reg(PyObject *m);
 
 /* numpy dtype of ssda_fd_t (bind_shape.c), shared with bind_symreg.c. */
 extern PyObject *ssdapy_fd_dtype;
