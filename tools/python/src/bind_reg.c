@@ -4,9 +4,10 @@
    library calls of `ssda register`. */
 #include "ssdapy.h"
 #include "ssda/poly.h"
+#include "ssda/register.h"
 #include "ssda/shade.h"
 
-static PyObject *poly_dtype;
+static PyObject *poly_dtype, *point_dtype;
 static PyTypeObject *fit_type, *shade_type;
 
 static PyStructSequence_Field fit_fields[] = {
@@ -408,7 +409,108 @@ done:
     return out;
 }
 
+/* ---- control points ---- */
+
+static const ssdapy_name_t reg_metrics[] = {
+    {"absncc", SSDA_REGISTER_ABSNCC}, {"ncc", SSDA_REGISTER_NCC}, {"sad", SSDA_REGISTER_SAD},
+    {NULL, 0}};
+
+static const ssdapy_field_t reg_cfg_fields[] = {
+    {"grid_x", offsetof(ssda_register_config_t, grid_x), 2, 0, 65535},
+    {"grid_y", offsetof(ssda_register_config_t, grid_y), 2, 0, 65535},
+    {"window", offsetof(ssda_register_config_t, window), 2, 0, 65535},
+    {"search", offsetof(ssda_register_config_t, search), 2, 0, 65535},
+    {"step", offsetof(ssda_register_config_t, step), 2, 0, 65535},
+    {"min_rho_q30", offsetof(ssda_register_config_t, min_rho_q30), 4, INT32_MIN, INT32_MAX},
+    {"min_texture", offsetof(ssda_register_config_t, min_texture), 4, 0, 0xFFFFFFFFll},
+    {"offset_x", offsetof(ssda_register_config_t, offset_x), 4, INT32_MIN, INT32_MAX},
+    {"offset_y", offsetof(ssda_register_config_t, offset_y), 4, INT32_MIN, INT32_MAX},
+    {NULL, 0, 0, 0, 0}};
+
+static PyObject *py_register_points(PyObject *self, PyObject *args, PyObject *kw)
+{
+    PyObject *a[2], *kwc, *v, *pts = NULL, *out = NULL;
+    ssdapy_src_arg_t r, m;
+    ssda_register_config_t cfg;
+    ssda_register_point_t *p;
+    size_t accepted = 0, ws;
+    void *work = NULL;
+    int e = SSDA_OK, raised, have_r = 0, have_m = 0;
+    (void)self;
+    memset(&cfg, 0, sizeof cfg);
+    if (ssdapy_args(args, "register_points", 2, 2, a) != 0 || (kwc = ssdapy_kw_copy(kw)) == NULL) {
+        return NULL;
+    }
+    if (ssdapy_fields(kwc, &cfg, reg_cfg_fields) != 0) {
+        goto done;
+    }
+    if ((v = ssdapy_kw_take(kwc, "metric")) != NULL) {
+        int k, rc = ssdapy_enum(v, "metric", reg_metrics, &k);
+        Py_DECREF(v);
+        if (rc != 0) {
+            goto done;
+        }
+        cfg.metric = (uint8_t)k;
+    }
+    if (ssdapy_kw_done(kwc, "register_points") != 0 ||
+        ssdapy_src_arg_get(a[0], "ref", &r, NULL) != 0) {
+        goto done;
+    }
+    have_r = 1;
+    if (ssdapy_src_arg_get(a[1], "mov", &m, &r) != 0) {
+        goto done;
+    }
+    have_m = 1;
+    {
+        const Py_ssize_t shape[2] = {cfg.grid_y != 0u ? cfg.grid_y : SSDA_REGISTER_DEFAULT_GRID,
+                                     cfg.grid_x != 0u ? cfg.grid_x : SSDA_REGISTER_DEFAULT_GRID};
+        const size_t win = cfg.window != 0u ? cfg.window : SSDA_REGISTER_DEFAULT_WINDOW;
+        const size_t area = cfg.search != 0u ? cfg.search : SSDA_REGISTER_DEFAULT_SEARCH;
+        if ((pts = ssdapy_np_empty(2, shape, point_dtype)) == NULL ||
+            (p = ssdapy_np_data(pts)) == NULL) {
+            goto done;
+        }
+        /* a window wider than the area: the library names that error first */
+        ws = win <= area && area <= 4096u ? SSDA_REGISTER_WORK_SIZE(win, area, 2u) : 8u;
+        if ((work = PyMem_Malloc(ws)) == NULL) {
+            PyErr_NoMemory();
+            goto done;
+        }
+        SSDAPY_NOGIL(e = ssda_register_points(r.src, m.src, &cfg, p,
+                                              (size_t)(shape[0] * shape[1]), &accepted, work, ws));
+    }
+    raised = ssdapy_src_arg_release(&m);
+    raised |= ssdapy_src_arg_release(&r);
+    have_r = have_m = 0;
+    if (!raised) {
+        out = e == SSDA_OK ? Py_BuildValue("(On)", pts, (Py_ssize_t)accepted)
+                           : ssdapy_error(e, "ssda_register_points");
+    }
+done:
+    if (have_m) {
+        ssdapy_src_arg_release(&m);
+    }
+    if (have_r) {
+        ssdapy_src_arg_release(&r);
+    }
+    PyMem_Free(work);
+    Py_XDECREF(pts);
+    Py_DECREF(kwc);
+    return out;
+}
+
 static PyMethodDef methods[] = {
+    {"register_points", (PyCFunction)(void (*)(void))py_register_points,
+     METH_VARARGS | METH_KEYWORDS,
+     "register_points(ref, mov, /, *, grid_x=4, grid_y=4, window=20, search=40, step=0, "
+     "metric='absncc', min_rho_q30=0.65*2**30, min_texture=0, offset_x=0, offset_y=0)\n--\n\n"
+     "A control point in every cell of a grid over ref (seed 002;\n"
+     "ssda_register_points, ssda/register.h): the most textured window of the cell\n"
+     "searched in mov around the same place (plus offset). ref, mov: 2-D uint8 or\n"
+     "uint16 arrays or Sources of one format. Returns (points, accepted): points a\n"
+     "(grid_y, grid_x) REGISTER_POINT_DTYPE array (ref_x_q8, ref_y_q8, mov_x_q8,\n"
+     "mov_y_q8, rho_q30, sad, pixel_ops, texture, cell_x, cell_y, status); the OK\n"
+     "points' first four fields are poly_fit's pairs. The GIL is released."},
     {"poly_init", (PyCFunction)(void (*)(void))py_poly_init, METH_VARARGS | METH_KEYWORDS,
      "poly_init(size, /, *, order=2)\n--\n\n"
      "The identity map on a (w, h) reference grid (ssda_poly_init, ssda/poly.h): a\n"
@@ -444,6 +546,31 @@ int ssdapy_init_reg(PyObject *m)
         offsetof(ssda_poly_t, u_q24), offsetof(ssda_poly_t, v_q24), offsetof(ssda_poly_t, cx),
         offsetof(ssda_poly_t, cy),    offsetof(ssda_poly_t, kx),    offsetof(ssda_poly_t, ky),
         offsetof(ssda_poly_t, order), offsetof(ssda_poly_t, ref_w), offsetof(ssda_poly_t, ref_h)};
+    static const char *const pnames[] = {"ref_x_q8", "ref_y_q8", "mov_x_q8", "mov_y_q8",
+                                         "rho_q30", "sad", "pixel_ops", "texture", "cell_x",
+                                         "cell_y", "status"};
+    static const char *const pformats[] = {"i4", "i4", "i4", "i4", "i4", "u8",
+                                           "u8", "u4", "u2", "u2", "u1"};
+    static const size_t poffs[] = {
+        offsetof(ssda_register_point_t, pair.ref_x_q8), offsetof(ssda_register_point_t, pair.ref_y_q8),
+        offsetof(ssda_register_point_t, pair.mov_x_q8), offsetof(ssda_register_point_t, pair.mov_y_q8),
+        offsetof(ssda_register_point_t, rho_q30),       offsetof(ssda_register_point_t, sad),
+        offsetof(ssda_register_point_t, pixel_ops),     offsetof(ssda_register_point_t, texture),
+        offsetof(ssda_register_point_t, cell_x),        offsetof(ssda_register_point_t, cell_y),
+        offsetof(ssda_register_point_t, status)};
+    point_dtype = ssdapy_np_struct_dtype(11, pnames, pformats, poffs, sizeof(ssda_register_point_t));
+    if (point_dtype == NULL) {
+        return -1;
+    }
+    Py_INCREF(point_dtype);
+    if (PyModule_AddObject(m, "REGISTER_POINT_DTYPE", point_dtype) != 0 ||
+        PyModule_AddIntConstant(m, "REGISTER_OK", SSDA_REGISTER_OK) != 0 ||
+        PyModule_AddIntConstant(m, "REGISTER_FLAT", SSDA_REGISTER_FLAT) != 0 ||
+        PyModule_AddIntConstant(m, "REGISTER_LOW_RHO", SSDA_REGISTER_LOW_RHO) != 0 ||
+        PyModule_AddIntConstant(m, "REGISTER_BORDER", SSDA_REGISTER_BORDER) != 0 ||
+        PyModule_AddIntConstant(m, "REGISTER_OUTSIDE", SSDA_REGISTER_OUTSIDE) != 0) {
+        return -1;
+    }
     fit_type = ssdapy_struct_type(m, "ssda.PolyFit", "Result of poly_fit.", fit_fields, 10);
     shade_type = ssdapy_struct_type(m, "ssda.ShadeResult", "Result of shade.", shade_fields, 6);
     poly_dtype = ssdapy_np_struct_dtype(9, names, formats, offsets, sizeof(ssda_poly_t));

@@ -12,13 +12,14 @@ TypeError / ValueError. Searches release the GIL.
 from ._ssda import (  # noqa: F401  (the extension's whole API)
     ERR_ARG, ERR_BUFFER, ERR_FORMAT, ERR_IO, ERR_NULL, ERR_OVERFLOW, ERR_SIZE,
     ERR_STATE, ERR_STRIDE, ERR_UNSUPPORTED, FD_DTYPE, KERNEL, LOOP_DTYPE, NCC_MAX_PIXELS,
-    NCC_NONE, PAIR_DTYPE, POLY_DTYPE,
+    NCC_NONE, PAIR_DTYPE, POLY_DTYPE, REGISTER_BORDER, REGISTER_FLAT, REGISTER_LOW_RHO,
+    REGISTER_OK, REGISTER_OUTSIDE, REGISTER_POINT_DTYPE,
     NCC_ONE_Q30, PITCH_ESTIMATE_DTYPE,
     TRACK_EDGE, TRACK_EXCLUDED, TRACK_MASKED, TRACK_OK, TRACK_VECTOR_DTYPE,
     VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH, Contour, Edges, EdgeStats, Error,
     FdMatch, GradResult, Grid, LoopsResult, LoopStats, MatchResult, NccResult, Pitch,
     PitchInfo, PolyFit, ShadeResult, Source, SourceStats, SymregResult, TrackResult, TrackStats, __version__,
-    contour, edges, fd, fd_match, grad, loops, match, poly_eval, poly_fit, poly_init, shade, ncc_at, ncc_match, sad_at,
+    contour, edges, fd, fd_match, grad, loops, match, poly_eval, poly_fit, poly_init, register_points, shade, ncc_at, ncc_match, sad_at,
     stream_match, stream_track, strerror, symreg, track, track_grid,
 )
 from ._pitch_track import PitchTrack, pitch  # noqa: F401

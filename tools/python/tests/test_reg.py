@@ -122,3 +122,64 @@ def test_bad_inputs_raise():
     with pytest.raises(ssda.Error) as e:
         ssda.shade(np.zeros((10, 10), np.uint8), centre=(20, 2))
     assert e.value.code == ssda.ERR_SIZE
+
+
+def test_register_command_same_numbers(cli, tmp_path):
+    """ssda register's control points and fit are register_points at the
+    tool's offset, then poly_fit of the OK points."""
+    import json
+    from conftest import texture, write_png
+    ref = texture(160, 200, 6)
+    y, x = np.mgrid[0:160, 0:200]
+    # MOV: REF moved by (3.5, -2) px plus a slight turn (bilinear)
+    sx, sy = x - 3.5 + 0.01 * (y - 80), y + 2 - 0.01 * (x - 100)
+    x0, y0 = np.clip(np.floor(sx).astype(int), 0, 198), np.clip(np.floor(sy).astype(int), 0, 158)
+    fx, fy = np.clip(sx - x0, 0, 1), np.clip(sy - y0, 0, 1)
+    r = ref.astype(float)
+    mov = ((1 - fx) * (1 - fy) * r[y0, x0] + fx * (1 - fy) * r[y0, x0 + 1] +
+           (1 - fx) * fy * r[y0 + 1, x0] + fx * fy * r[y0 + 1, x0 + 1])
+    mov = np.round(mov).astype(np.uint8)
+    write_png(tmp_path / "r.png", ref)
+    write_png(tmp_path / "m.png", mov)
+    cli("register", "r.png", "m.png", "-o", "o.png", "--order", "1", "--json", "j.json", "-q")
+    doc = json.loads((tmp_path / "j.json").read_text())
+    pts, acc = ssda.register_points(ref, mov, offset_x=doc["offset_x"], offset_y=doc["offset_y"])
+    assert acc == doc["accepted"] > 8
+    ok = pts["status"].ravel() == ssda.REGISTER_OK
+    flat = pts.ravel()
+    for k, e in enumerate(doc["points"]):
+        assert (e["ref_x"] * 256, e["ref_y"] * 256) == (flat["ref_x_q8"][k], flat["ref_y_q8"][k])
+        if ok[k]:
+            assert (e["mov_x"] * 256, e["mov_y"] * 256) == (flat["mov_x_q8"][k],
+                                                            flat["mov_y_q8"][k])
+            assert round(e["rho"] * 2**30) == flat["rho_q30"][k]
+    pairs = np.stack([flat[n][ok] for n in ("ref_x_q8", "ref_y_q8", "mov_x_q8", "mov_y_q8")],
+                     axis=1).astype(np.int32)
+    f = ssda.poly_fit(pairs, (200, 160), order=1)
+    assert (f.n_used, f.rejected, f.cond) == (doc["used"], doc["rejected"], doc["cond"])
+    assert f.rms_q8 == doc["rms"] * 256
+    used = [e["used"] for e, o in zip(doc["points"], ok) if o]
+    assert used == f.used.tolist()
+
+
+def test_register_points_bad_inputs_raise():
+    from conftest import texture
+    a = texture(100, 100, 1)
+    with pytest.raises(ssda.Error) as e:
+        ssda.register_points(a, a.astype(np.uint16))
+    assert e.value.code == ssda.ERR_FORMAT
+    with pytest.raises(ssda.Error) as e:
+        ssda.register_points(a, a, window=50, search=40)
+    assert e.value.code == ssda.ERR_ARG
+    with pytest.raises(ssda.Error) as e:
+        ssda.register_points(a, a, grid_x=10, window=20)  # cells narrower than the window
+    assert e.value.code == ssda.ERR_SIZE
+    with pytest.raises(ValueError):
+        ssda.register_points(a, a, metric="ssd")
+    with pytest.raises(TypeError):
+        ssda.register_points(a, a.astype(np.float32))
+    pts, acc = ssda.register_points(a, a)  # itself: every accepted point in place
+    ok = pts["status"] == ssda.REGISTER_OK  # (to the sub-pixel parabola's 1/4 px)
+    assert acc == ok.sum() > 0
+    assert (abs(pts["mov_x_q8"][ok] - pts["ref_x_q8"][ok]) <= 64).all()
+    assert (abs(pts["mov_y_q8"][ok] - pts["ref_y_q8"][ok]) <= 64).all()
