@@ -6,6 +6,7 @@
 #include "ssda/poly.h"
 #include "ssda/register.h"
 #include "ssda/shade.h"
+#include "ssda/warp.h"
 
 static PyObject *poly_dtype, *point_dtype;
 static PyTypeObject *fit_type, *shade_type;
@@ -499,7 +500,112 @@ done:
     return out;
 }
 
+/* ---- warp ---- */
+
+static const ssdapy_name_t resamples[] = {
+    {"nearest", SSDA_WARP_NEAREST}, {"bilinear", SSDA_WARP_BILINEAR}, {NULL, 0}};
+
+/* The sink: segments into the output array (no Python call). */
+typedef struct {
+    uint8_t *out;
+    size_t stride; /* bytes per output row */
+    size_t bpp;
+} warp_out_t;
+
+static int warp_sink(void *context, uint32_t x, uint32_t y, uint32_t n, const void *pixels)
+{
+    const warp_out_t *o = context;
+    memcpy(o->out + (size_t)y * o->stride + (size_t)x * o->bpp, pixels, (size_t)n * o->bpp);
+    return 0;
+}
+
+static int warp_run(ssda_warp_config_t *wc, ssda_source_t *src, ssda_warp_stats_t *st)
+{
+    ssda_warp_t job;
+    int e = ssda_warp_init(&job, wc, src);
+    return e != SSDA_OK ? e : ssda_warp_run(&job, st);
+}
+
+static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
+{
+    static const ssdapy_field_t f[] = {
+        {"fill", offsetof(ssda_warp_config_t, fill), 2, 0, 65535},
+        {"tile_w", offsetof(ssda_warp_config_t, tile_w), 2, 0, 65535},
+        {"tile_h", offsetof(ssda_warp_config_t, tile_h), 2, 0, 65535},
+        {NULL, 0, 0, 0, 0}};
+    PyObject *a[2], *kwc, *v, *img = NULL, *out = NULL;
+    ssdapy_src_arg_t s;
+    ssda_warp_config_t wc;
+    ssda_warp_stats_t st;
+    ssda_poly_t map;
+    warp_out_t wo;
+    int e = SSDA_OK, have = 0, raised;
+    (void)self;
+    memset(&wc, 0, sizeof wc);
+    wc.resample = SSDA_WARP_BILINEAR;
+    if (ssdapy_args(args, "warp", 2, 2, a) != 0 || (kwc = ssdapy_kw_copy(kw)) == NULL) {
+        return NULL;
+    }
+    if (ssdapy_fields(kwc, &wc, f) != 0) {
+        goto done;
+    }
+    if ((v = ssdapy_kw_take(kwc, "resample")) != NULL) {
+        int k, rc = ssdapy_enum(v, "resample", resamples, &k);
+        Py_DECREF(v);
+        if (rc != 0) {
+            goto done;
+        }
+        wc.resample = (uint8_t)k;
+    }
+    if (ssdapy_kw_done(kwc, "warp") != 0 || poly_get(a[1], &map) != 0 ||
+        ssdapy_src_arg_get(a[0], "source", &s, NULL) != 0) {
+        goto done;
+    }
+    have = 1;
+    {
+        const Py_ssize_t shape[2] = {map.ref_h, map.ref_w};
+        const uint8_t fmt = s.format;
+        wo.bpp = fmt == SSDA_PIX_U16 ? 2u : 1u;
+        wo.stride = (size_t)map.ref_w * wo.bpp;
+        if ((img = typed_empty(2, shape, wo.bpp == 2u ? "uint16" : "uint8")) == NULL ||
+            (wo.out = ssdapy_np_data(img)) == NULL) {
+            goto done;
+        }
+        wc.row_size = (size_t)(map.ref_w > 0u ? map.ref_w : 1u) * wo.bpp;
+        if ((wc.row = PyMem_Malloc(wc.row_size)) == NULL) {
+            PyErr_NoMemory();
+            goto done;
+        }
+    }
+    wc.map = &map;
+    wc.sink = warp_sink;
+    wc.context = &wo;
+    SSDAPY_NOGIL(e = warp_run(&wc, s.src, &st));
+    raised = ssdapy_src_arg_release(&s);
+    have = 0;
+    if (!raised) {
+        out = e == SSDA_OK ? Py_BuildValue("(OKK)", img, (unsigned long long)st.filled,
+                                           (unsigned long long)st.moves)
+                           : ssdapy_error(e, "ssda_warp_run");
+    }
+done:
+    if (have) {
+        ssdapy_src_arg_release(&s);
+    }
+    PyMem_Free(wc.row);
+    Py_XDECREF(img);
+    Py_DECREF(kwc);
+    return out;
+}
+
 static PyMethodDef methods[] = {
+    {"warp", (PyCFunction)(void (*)(void))py_warp, METH_VARARGS | METH_KEYWORDS,
+     "warp(source, poly, /, *, resample='bilinear', fill=0, tile_w=0, tile_h=0)\n--\n\n"
+     "Resample source (a 2-D uint8 / uint16 array or a Source, streamed through\n"
+     "its arena) through the map poly onto poly's reference grid (ssda_warp_*,\n"
+     "ssda/warp.h): returns (image (ref_h, ref_w) of the source's dtype, filled,\n"
+     "moves). fill: the value where the source has no pixel; tiles as\n"
+     "ssda_warp_plan picks (0) or given. The GIL is released."},
     {"register_points", (PyCFunction)(void (*)(void))py_register_points,
      METH_VARARGS | METH_KEYWORDS,
      "register_points(ref, mov, /, *, grid_x=4, grid_y=4, window=20, search=40, step=0, "

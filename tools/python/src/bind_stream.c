@@ -404,6 +404,7 @@ static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_ar
         a->src = &s->src;
         a->width = s->width;
         a->height = s->height;
+        a->format = s->format;
         return 0;
     }
     if (ssdapy_image_get(o, what, &a->img) != 0) {
@@ -419,6 +420,7 @@ static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_ar
     a->src = &a->local;
     a->width = a->img.view.width;
     a->height = a->img.view.height;
+    a->format = a->img.view.format;
     return 0;
 }
 

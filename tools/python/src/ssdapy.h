@@ -169,6 +169,7 @@ typedef struct {
     int have_img;
     ssda_source_t *src;
     uint16_t width, height;
+    uint8_t format;         /* SSDA_PIX_U8 / _U16 */
 } ssdapy_src_arg_t;
 
 /* 0, or -1 with an exception (what names the argument). */

@@ -19,7 +19,7 @@ from ._ssda import (  # noqa: F401  (the extension's whole API)
     VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH, Contour, Edges, EdgeStats, Error,
     FdMatch, GradResult, Grid, LoopsResult, LoopStats, MatchResult, NccResult, Pitch,
     PitchInfo, PolyFit, ShadeResult, Source, SourceStats, SymregResult, TrackResult, TrackStats, __version__,
-    contour, edges, fd, fd_match, grad, loops, match, poly_eval, poly_fit, poly_init, register_points, shade, ncc_at, ncc_match, sad_at,
+    contour, edges, fd, fd_match, grad, loops, match, poly_eval, poly_fit, poly_init, register_points, shade, warp, ncc_at, ncc_match, sad_at,
     stream_match, stream_track, strerror, symreg, track, track_grid,
 )
 from ._pitch_track import PitchTrack, pitch  # noqa: F401

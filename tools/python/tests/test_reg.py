@@ -160,6 +160,31 @@ def test_register_command_same_numbers(cli, tmp_path):
     assert f.rms_q8 == doc["rms"] * 256
     used = [e["used"] for e, o in zip(doc["points"], ok) if o]
     assert used == f.used.tolist()
+    # the registered image: MOV warped through the map, bilinear, fill 0
+    from conftest import read_png
+    out, filled, _ = ssda.warp(mov, f.poly)
+    assert (out == read_png(tmp_path / "o.png")).all() and filled > 0
+    import io
+    streamed = ssda.Source(io.BytesIO(mov.tobytes()), 200, 160, memory=8192)
+    assert (ssda.warp(streamed, f.poly, tile_w=40)[0] == out).all()  # through 8 KB of plates
+
+
+def test_warp_known_shift_and_bad_inputs():
+    from conftest import texture
+    a = texture(60, 80, 2)
+    p = ssda.poly_init((80, 60), order=1)
+    p["u_q24"][0][0] += 3 << 24  # moving x = reference x + 3
+    out, filled, _ = ssda.warp(a, p, resample="nearest", fill=7)
+    assert (out[:, :77] == a[:, 3:]).all() and (out[:, 77:] == 7).all() and filled == 3 * 60
+    a16 = a.astype(np.uint16) * 200
+    assert (ssda.warp(a16, p, resample="nearest")[0][:, :77] == a16[:, 3:]).all()
+    with pytest.raises(ValueError):
+        ssda.warp(a, p, resample="cubic")
+    with pytest.raises(ssda.Error) as e:
+        ssda.warp(a, p, fill=300)
+    assert e.value.code == ssda.ERR_ARG
+    with pytest.raises(TypeError):
+        ssda.warp(a, np.zeros(3))
 
 
 def test_register_points_bad_inputs_raise():
