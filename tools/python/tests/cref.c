@@ -26,6 +26,11 @@
    cref relax  DX DY ST COLS ROWS FRAC [opts] (ST "-": all valid) one line per node:
                                              dx_q8 dy_q8 p_q15 cls flags
    cref median DX DY ST COLS ROWS FRAC [opts] the same for ssda_relax_median
+   cref polyfit PAIRS N W H ORDER MAXRES     line: rms max cond used rejected refinements within;
+                                             line: u_q24 (10) v_q24 (10) cx cy kx ky order;
+                                             then per pair: residual used; then u v at (W/3, H/4)
+   cref shade  IMGS N W H BPP MODE [CX CY]   line: k_q8 (9) centre_x centre_y centre_q8 images;
+                                             then the corrected images (N H rows of W)
    Files are raw native-order samples, rows packed. Exit 0, or 1 with the
    library's error code printed ("error N"). */
 #include "ssda/composite.h"
@@ -36,7 +41,9 @@
 #include "ssda/match.h"
 #include "ssda/ncc.h"
 #include "ssda/pitch.h"
+#include "ssda/poly.h"
 #include "ssda/relax.h"
+#include "ssda/shade.h"
 #include "ssda/track.h"
 
 #include <stddef.h>
@@ -605,8 +612,94 @@ static int run_relax(int argc, char **argv)
     return 0;
 }
 
+static int run_polyfit(char **argv)
+{
+    const size_t n = strtoul(argv[3], NULL, 0);
+    const ssda_poly_pair_t *pairs = load(argv[2], n * sizeof *pairs);
+    const uint16_t w = (uint16_t)strtoul(argv[4], NULL, 0), h = (uint16_t)strtoul(argv[5], NULL, 0);
+    ssda_poly_fit_config_t cfg = {(uint8_t)atoi(argv[6]), (uint32_t)strtoul(argv[7], NULL, 0)};
+    ssda_poly_t p;
+    ssda_poly_fit_result_t r;
+    uint32_t *res = malloc((n + 1u) * 4u);
+    uint8_t *used = malloc(n + 1u), *work = malloc(n + 1u);
+    int32_t u, v;
+    size_t k;
+    int e;
+    if ((e = ssda_poly_fit(pairs, n, w, h, &cfg, &p, res, used, &r, work, n)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %u %u %u %u %d\n", r.rms_q8, r.max_q8, r.cond, r.used, r.rejected,
+           r.refinements, r.within_bound ? 1 : 0);
+    for (k = 0; k < 10; k++) {
+        printf("%lld ", (long long)p.u_q24[k]);
+    }
+    for (k = 0; k < 10; k++) {
+        printf("%lld ", (long long)p.v_q24[k]);
+    }
+    printf("%d %d %u %u %u\n", (int)p.cx, (int)p.cy, p.kx, p.ky, p.order);
+    for (k = 0; k < n; k++) {
+        printf("%u %u\n", res[k], used[k]);
+    }
+    if ((e = ssda_poly_eval(&p, w / 3, h / 4, &u, &v)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%d %d\n", (int)u, (int)v);
+    return 0;
+}
+
+static int run_shade(int argc, char **argv)
+{
+    const size_t n = strtoul(argv[3], NULL, 0), w = strtoul(argv[4], NULL, 0);
+    const size_t h = strtoul(argv[5], NULL, 0), bpp = strtoul(argv[6], NULL, 0);
+    const uint8_t *in = load(argv[2], n * w * h * bpp);
+    uint8_t *out = malloc(n * w * h * bpp + 1u);
+    ssda_shade_t sh;
+    size_t i, y, x;
+    int e, k;
+    if ((e = ssda_shade_init(&sh, (uint16_t)w, (uint16_t)h,
+                             bpp == 1 ? SSDA_PIX_U8 : SSDA_PIX_U16)) != SSDA_OK) {
+        return fail(e);
+    }
+    for (i = 0; i < n * h; i++) {
+        if ((e = ssda_shade_add_row(&sh, in + i * w * bpp)) != SSDA_OK) {
+            return fail(e);
+        }
+    }
+    if ((e = ssda_shade_finish(&sh, (uint8_t)atoi(argv[7]))) != SSDA_OK ||
+        (argc == 10 && (e = ssda_shade_set_centre(&sh, (uint16_t)atoi(argv[8]),
+                                                  (uint16_t)atoi(argv[9]))) != SSDA_OK)) {
+        return fail(e);
+    }
+    for (i = 0; i < n; i++) {
+        for (y = 0; y < h; y++) {
+            const size_t at = (i * h + y) * w * bpp;
+            if ((e = ssda_shade_apply_row(&sh, (uint32_t)y, in + at, out + at)) != SSDA_OK) {
+                return fail(e);
+            }
+        }
+    }
+    for (k = 0; k < 9; k++) {
+        printf("%d ", (int)sh.k_q8[k]);
+    }
+    printf("%u %u %d %u\n", sh.centre_x, sh.centre_y, (int)sh.centre_q8, sh.images);
+    for (i = 0; i < n * h; i++) {
+        for (x = 0; x < w; x++) {
+            const uint8_t *p = out + (i * w + x) * bpp;
+            printf("%u%c", bpp == 1 ? *p : (unsigned)(*(const uint16_t *)(const void *)p),
+                   x + 1 == w ? '\n' : ' ');
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 8 && strcmp(argv[1], "polyfit") == 0) {
+        return run_polyfit(argv);
+    }
+    if ((argc == 8 || argc == 10) && strcmp(argv[1], "shade") == 0) {
+        return run_shade(argc, argv);
+    }
     if (argc >= 9 && strcmp(argv[1], "composite") == 0) {
         return run_composite(argc, argv);
     }
