@@ -40,8 +40,8 @@ static const char help[] =
     "  --relax-median     clean by the normalised median test (Westerweel & Scarano) instead\n"
     "  --json FILE        every template as JSON (\"-\" = stdout): x, y, status, dx, dy,\n"
     "                     rho, std; with cleaning also relax_dx, relax_dy, changed\n"
-    "  --overlay FILE.png REF with the vectors: yellow as matched, cyan as cleaned, red\n"
-    "                     those the cleaning changed\n"
+    "  --overlay FILE.png REF with the vectors: yellow as matched, pink those the\n"
+    "                     cleaning changed, cyan as cleaned\n"
     "  -h, --help         this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
@@ -332,7 +332,7 @@ static cJSON *json_doc(const flow_opts_t *o, const flow_run_t *r)
     return doc;
 }
 
-/* The overlay: matched vectors (yellow; red where the cleaning changed
+/* The overlay: matched vectors (yellow; pink where the cleaning changed
    them) and the cleaned ones as the second set of arrows (cyan). */
 static int write_overlay(FILE *fp, const flow_opts_t *o, const flow_run_t *r)
 {

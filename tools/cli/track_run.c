@@ -992,7 +992,9 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     return rc;
 }
 
-/* --relax N or --relax-median on the tracked grid (integer px vectors). */
+/* --relax N or --relax-median on the tracked grid: the sub-pixel vectors
+   (Q8; whole pixels with --no-subpixel), so that a vector the cleaning
+   keeps keeps its fraction. */
 static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r)
 {
     ssda_relax_grid_t g;
@@ -1006,10 +1008,11 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
         return cli_input_error(cmd, "out of memory");
     }
     memset(&g, 0, sizeof g);
-    g.dx = &r->vec[0].dx;
-    g.dy = &r->vec[0].dy;
+    g.dx = &r->vec[0].sub_dx_q8;
+    g.dy = &r->vec[0].sub_dy_q8;
     g.status = &r->vec[0].status; /* SSDA_TRACK_OK = 0: valid */
     g.stride = sizeof r->vec[0];
+    g.frac_bits = 8;
     g.cols = r->grid.cols;
     g.rows = r->grid.rows;
     if (o->relax_median) {
@@ -1176,8 +1179,11 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     } else {
         cJSON_AddNullToObject(opt, "unique");
     }
+    /* the correlation search fits its own peak in every mode */
     cJSON_AddBoolToObject(opt, "subpixel", !(r->cfg.flags & SSDA_TRACK_NO_SUBPIXEL) &&
-                                               exact_mode(&r->cfg.match));
+                                               (exact_mode(&r->cfg.match) ||
+                                                o->metric == TRACK_METRIC_NCC ||
+                                                o->metric == TRACK_METRIC_ABSNCC));
     return opt;
 }
 

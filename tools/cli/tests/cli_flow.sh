@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The correlation parts of the tool (issue 16): `ssda match --metric` and
-# `ssda flow`, `ssda track --metric`. Three CTest groups:
-#   cli_flow.sh match|flow|track SSDA GEN CHECK WORKDIR FLOWTOOL
+# `ssda flow`, `ssda track --metric`. Four CTest groups:
+#   cli_flow.sh match|flow|track|subpixel SSDA GEN CHECK WORKDIR FLOWTOOL
 . "$(dirname "$0")/cli_lib.sh" "$@"
 flowtool=$6
 
@@ -60,6 +60,8 @@ flow)
   run 2 flow r.png nb.png --relax-keep && stderr_has "--relax-keep needs --relax N"
   run 2 flow r.png nb.png --relax 5 --relax-median && stderr_has "not both"
   run 0 flow --help && grep -q "composite template" out.txt || fail "help"
+  # the overlay's colours as draw.c draws them (red is track's at_limit)
+  grep -q "yellow as matched, pink those the" out.txt || fail "help: overlay colours"
   # ssda track cleans its grid too (same fields)
   "$gen" texture n2.png --size 120x100 --seed 7 --shift 2,-3
   run 0 track r.png n2.png --relax 30 --json t.json --quiet &&
@@ -91,8 +93,9 @@ track)
     "$flowtool" track-check t.json 2 -3 1.0 || fail "ncc vectors under gain"
   grep -q "^metric:  ncc" out.txt || fail "summary line: $(cat out.txt)"
   # inverted contrast: absncc tracks it (rho = -1 at the motion), ncc does not
+  # inverted (a trough of rho; SAD calls the windows ambiguous: --unique off)
   "$flowtool" gain n.png ni.png -1 255
-  run 0 track r.png ni.png --metric absncc --json t.json --quiet &&
+  run 0 track r.png ni.png --metric absncc --unique off --json t.json --quiet &&
     "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"rho":-1.000000' t.json ||
     fail "absncc on the inverse"
   run 0 track r.png ni.png --metric ncc --json t.json --quiet &&
@@ -107,6 +110,36 @@ track)
   run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
     stderr_has "at most 65536 pixels"
   run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
+  ;;
+
+subpixel)
+  # track's sub-pixel vectors with --metric and with cleaning. A texture
+  # moved by (9, -5) px and shrunk 4 x: a motion of (2.25, -1.25) px.
+  "$gen" texture r4.png --size 480x400 --seed 7
+  "$gen" texture n4.png --size 480x400 --seed 7 --shift 9,-5
+  "$flowtool" shrink r4.png r.png 4 && "$flowtool" shrink n4.png n.png 4
+  # the plain SAD tracking: sub-pixel vectors near the motion
+  run 0 track r.png n.png --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "SAD sub-pixel vectors"
+  # the correlation's vectors replace SAD's, their fractions too: under a
+  # gain and offset change SAD's fractions belong to other placements
+  "$flowtool" gain n.png nb.png 0.6 60
+  run 0 track r.png nb.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "ncc: sub_dx, sub_dy are not rho's"
+  # inverted (a trough of rho; SAD calls the windows ambiguous: --unique off)
+  "$flowtool" gain n.png ni.png -1 255
+  run 0 track r.png ni.png --metric absncc --unique off --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "absncc: sub_dx, sub_dy are not rho's"
+  run 0 track r.png nb.png --metric ncc --no-subpixel --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -1 0.9 && "$flowtool" track-sub t.json 2 -1 0 0.9 &&
+    grep -q '"subpixel":false' t.json || fail "ncc --no-subpixel: whole pixels"
+  # the cleaning reads the sub-pixel vectors: a vector it keeps keeps its fraction
+  for clean in "--relax 30" "--relax-median"; do
+    run 0 track r.png n.png $clean --json t.json &&
+      "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 --relaxed ||
+      fail "track $clean: cleaned vectors lost their fraction"
+    grep -q "^cleaning: .* of the [0-9]* ok vectors changed" out.txt || fail "summary: $(cat out.txt)"
+  done
   ;;
 esac
 finish
