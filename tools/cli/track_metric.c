@@ -43,6 +43,30 @@ static int window_views(const track_result_t *r, const ssda_track_vector_t *v,
     return e != SSDA_OK ? e : ssda_view_roi(win, &vs, v->x, v->y, g->win_w, g->win_h);
 }
 
+/* Placements along x (axis 0) or y of the search area, less one: the
+   largest top-left coordinate of a window in it. */
+static uint32_t g_free(const track_result_t *r, int axis)
+{
+    return axis == 0 ? (uint32_t)(r->grid.search_w - r->grid.win_w)
+                     : (uint32_t)(r->grid.search_h - r->grid.win_h);
+}
+
+/* Window v's status becomes st (OK or AT_LIMIT), the counts follow. */
+static void set_status(track_result_t *r, ssda_track_vector_t *v, uint8_t st)
+{
+    if (v->status == st) {
+        return;
+    }
+    if (v->status == SSDA_TRACK_OK) {
+        r->stats.ok--;
+        r->stats.at_limit++;
+    } else {
+        r->stats.at_limit--;
+        r->stats.ok++;
+    }
+    v->status = st;
+}
+
 /* Sub-pixel offset, Q8 in [-128, 128], of the vertex of the parabola through
    r_m, r_0, r_p (Q2.30 at -1, 0, +1; r_0 the best, a trough of rho for
    absncc's negative peaks): 0 where a neighbour lies outside the area or
@@ -99,6 +123,13 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
         v->sub_dy_q8 -= peak_q8(res.around_q30[1], res.rho_q30, res.around_q30[7], res.rho_q30 < 0);
     }
     v->exact = true;
+    /* the status of the correlation's own best: on the area's border it may
+       lie beyond (track.h's AT_LIMIT rule); SAD's at_limit may be nothing
+       but a brightness change, which rho does not see */
+    set_status(r, v, res.x == 0u || res.y == 0u || res.x == g_free(r, 0) ||
+                         res.y == g_free(r, 1)
+                         ? SSDA_TRACK_AT_LIMIT
+                         : SSDA_TRACK_OK);
     return ssda_sad_at(&area, &win, res.x, res.y, &v->sad);
 }
 
@@ -133,7 +164,9 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     t0 = progress_now();
     for (k = 0; k < g->count && e == SSDA_OK; k++) {
         r->rho_q30[k] = INT32_MIN;
-        if (r->vec[k].status == SSDA_TRACK_OK) {
+        /* ncc, absncc: SAD's at_limit windows are searched too */
+        if (r->vec[k].status == SSDA_TRACK_OK ||
+            (o->metric != TRACK_METRIC_SAD && r->vec[k].status == SSDA_TRACK_AT_LIMIT)) {
             e = one_window(o, r, &c, k);
         }
     }
@@ -178,7 +211,7 @@ void track_metric_print(const track_opts_t *o, const track_result_t *r)
         return;
     }
     for (k = 0; k < r->grid.count; k++) {
-        if (r->rho_q30[k] != INT32_MIN) {
+        if (r->rho_q30[k] != INT32_MIN && r->vec[k].status == SSDA_TRACK_OK) {
             v[n++] = r->rho_q30[k];
         }
     }

@@ -59,8 +59,9 @@ const char track_opts_help[] =
     "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
     "                    coefficient at their placement; with ncc (largest rho) or\n"
     "                    absncc (largest |rho|) the vectors come from the exact\n"
-    "                    correlation search over each OK window's area, which a\n"
-    "                    gain or offset between the images does not change\n"
+    "                    correlation search over each ok and at_limit window's\n"
+    "                    area, which a gain or offset between the images does not\n"
+    "                    change; it decides ok or at_limit (best on the border)\n"
     "  --quiet           no progress bar\n";
 
 void track_opts_init(track_opts_t *o)
@@ -922,19 +923,21 @@ static int run_in_ram(const track_opts_t *o, track_result_t *r)
 /* More than a quarter of the searched windows at the limit: the motion is
    likely larger than the search reaches (or the brightness changed, which
    pulls SAD's minima to the border). */
-static void warn_at_limit(const char *cmd, const track_result_t *r)
+static void warn_at_limit(const char *cmd, const track_opts_t *o, const track_result_t *r)
 {
     const ssda_track_stats_t *s = &r->stats;
     const uint32_t searched = s->ok + s->ambiguous + s->at_limit;
+    const int sad = o->metric != TRACK_METRIC_NCC && o->metric != TRACK_METRIC_ABSNCC;
     if (searched == 0u || 4u * (uint64_t)s->at_limit <= searched) {
         return;
     }
     fprintf(stderr, "ssda %s: warning: %u of %u searched windows are 'at_limit' (best match "
             "on the border of the %ux%u search area): the motion may be larger than it "
-            "reaches, try --search %ux%u; or the brightness changed between the images, "
-            "try --grad\n",
+            "reaches, try --search %ux%u%s\n",
             cmd, s->at_limit, searched, r->grid.search_w, r->grid.search_h,
-            2u * r->grid.search_w - r->grid.win_w, 2u * r->grid.search_h - r->grid.win_h);
+            2u * r->grid.search_w - r->grid.win_w, 2u * r->grid.search_h - r->grid.win_h,
+            sad ? "; or the brightness changed between the images, try --metric ncc or --grad"
+                : "");
 }
 
 /* No window is ok: say why (the run itself is valid). */
@@ -985,10 +988,6 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     r->secs = progress_now() - t0;
     free(work);
     r->cfg.match.work = NULL;
-    if (rc == CLI_OK) {
-        warn_at_limit(cmd, r);
-        warn_nothing_tracked(cmd, r);
-    }
     return rc;
 }
 
@@ -1060,6 +1059,10 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
     }
     if (rc == CLI_OK) {
         rc = track_metric_apply(cmd, o, r);
+    }
+    if (rc == CLI_OK) { /* on the final statuses (--metric may change them) */
+        warn_at_limit(cmd, o, r);
+        warn_nothing_tracked(cmd, r);
     }
     if (rc == CLI_OK) {
         rc = clean_field(cmd, o, r);

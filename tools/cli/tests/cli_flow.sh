@@ -110,6 +110,22 @@ track)
   run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
     stderr_has "at most 65536 pixels"
   run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
+  # a stronger change (x 0.5 + 100): SAD leaves most windows at_limit; the
+  # correlation searches those too and decides their status itself
+  "$flowtool" gain n.png nh.png 0.5 100
+  run 0 track r.png nh.png --json t.json --quiet && grep -q '"at_limit":1[0-9],' t.json ||
+    fail "SAD under x 0.5 + 100: expected 10-19 at_limit: $(grep -o '"ok":.*' t.json)"
+  run 0 track r.png nh.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"ok":1[2-9],' t.json &&
+    grep -q '"at_limit":0,' t.json || fail "ncc: SAD's at_limit windows: $(grep -o '"ok":.*' t.json)"
+  # a motion beyond the range (9 px, range +-8): the correlation's best on
+  # the border is at_limit, never ok
+  "$gen" texture n9.png --size 120x100 --seed 7 --shift 9,0
+  run 0 track r.png n9.png --metric ncc --json t.json --quiet &&
+    grep -q '"at_limit":[1-9]' t.json && ! grep -q '"dx":8,.*"status":"ok"' t.json ||
+    fail "ncc on the border: $(grep -o '"ok":.*' t.json)"
+  # its warning does not blame a brightness change, which rho does not see
+  stderr_has "'at_limit'" && grep -qF "brightness" err.txt && fail "ncc warning: $(cat err.txt)"
   ;;
 
 subpixel)
