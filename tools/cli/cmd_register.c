@@ -730,7 +730,11 @@ static cJSON *json_of(const reg_one_t *r, const gray_image_t *ref, const reg_opt
         }
         cJSON_AddBoolToObject(e, "used", r->used[k] != 0);
         cJSON_AddStringToObject(e, "status", status_name(p->status));
-        cJSON_AddNumberToObject(e, "sad", (double)p->sad);
+        if (o->reg.metric == SSDA_REGISTER_SAD && matched) {
+            cJSON_AddNumberToObject(e, "sad", (double)p->sad);
+        } else { /* not measured: 0 would read as a perfect match */
+            cJSON_AddNullToObject(e, "sad");
+        }
         cJSON_AddNumberToObject(e, "texture", p->texture);
         cJSON_AddItemToArray(pts, e);
     }

@@ -56,6 +56,9 @@ run 0 register ref.png inv.png --json inv.json -q && {
 run 1 register ref.png inv.png --metric ncc -o x.png && { stderr_has "order 2 needs at least 6"; absent x.png; }
 # SSDA (the seed's fast alternative) on the same-gain pair
 run 0 register ref.png mov.png --metric sad --json sad.json -q && chk map sad.json truth.txt 0.5
+# "sad" is measured by the sad metric only: null, never 0, under the correlation
+grep -q '"status":"ok","sad":[1-9]' sad.json && grep -q '"status":"ok","sad":null' reg.json &&
+  ! grep -q '"sad":0[,}]' reg.json || fail "sad in the points: $(grep -o '"status[^}]*' reg.json | head -3)"
 # streamed in 4 KB: the same output as in RAM
 run 0 register ref.png mov.png -o m.png --mem 4K -q && chk same m.png out.png
 run 0 register ref.png mov.png -o m256.png --mem 256 -q && chk same m256.png out.png
