@@ -281,6 +281,27 @@ static int make_source(ssda_source_t *s, const gray_image_t *img, mem_dev_t *dev
     }
 }
 
+/* Every cell must hold a window (the library's SSDA_ERR_SIZE, which alone
+   would read "bad dimensions"): say which grid or window fits REF. Returns
+   CLI_OK, CLI_INPUT (REF smaller than a window) or CLI_USAGE (printed). */
+static int check_cells(const char *cmd, const char *path, const gray_image_t *ref,
+                       const reg_opts_t *o)
+{
+    const uint32_t win = o->reg.window ? o->reg.window : 20u;
+    const uint32_t gx = o->reg.grid_x ? o->reg.grid_x : 4u, gy = o->reg.grid_y ? o->reg.grid_y : 4u;
+    if (ref->width < win || ref->height < win) { /* an image too small: bad input, 1 */
+        return cli_input_error(cmd, "'%s' (%u x %u) is smaller than the %u px window (--window)",
+                               path, ref->width, ref->height, win);
+    }
+    if (ref->width / gx < win || ref->height / gy < win) {
+        return cli_usage_error(cmd, "--grid %ux%u: cells of %u x %u px in '%s' (%u x %u) are "
+                               "smaller than the %u px window; at most %ux%u cells, or a smaller "
+                               "--window", gx, gy, ref->width / gx, ref->height / gy, path,
+                               ref->width, ref->height, win, ref->width / win, ref->height / win);
+    }
+    return CLI_OK;
+}
+
 /* ---- shading ---- */
 
 static int remove_shading(gray_image_t *img)
@@ -972,6 +993,10 @@ int cmd_register(int argc, char **argv)
     cli_warn_png_name(a.cmd, "--diff", o.diff);
     if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &ref) != 0) {
         return CLI_INPUT;
+    }
+    if ((i = check_cells(a.cmd, a.pos[0], &ref, &o)) != CLI_OK) {
+        gray_image_free(&ref);
+        return i;
     }
     for (i = 0; i < n; i++) {
         r[i].path = a.pos[i + 1];
