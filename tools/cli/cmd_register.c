@@ -235,6 +235,15 @@ static int parse_opts(cli_args_t *a, reg_opts_t *o)
             return CLI_USAGE;
         }
     }
+    if (!a->bad) { /* the library's bare "argument out of range" otherwise */
+        const unsigned win = o->reg.window ? o->reg.window : 20u;
+        const unsigned search = o->reg.search ? o->reg.search : 40u;
+        if (search < win) {
+            return cli_usage_error(a->cmd, "--search %u is smaller than the %u px window "
+                                   "(--window): the area must hold it; e.g. --search %u "
+                                   "for +-10 px", search, win, win + 20u);
+        }
+    }
     return a->bad ? CLI_USAGE : 0;
 }
 

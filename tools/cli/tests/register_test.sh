@@ -97,9 +97,12 @@ run 2 register ref.png mov.png && stderr_has "no output"
 run 2 register ref.png mov.png -o x.png --order 4
 run 2 register ref.png mov.png -o x.png --grid 0x3
 # a grid too fine for the window (320 x 240, 20 px windows): usage, naming what fits
+run 2 register ref.png mov.png -o x.png --search 10 && absent x.png &&
+  stderr_has "--search 10 is smaller than the 20 px window"
+run 2 register ref.png mov.png -o x.png --window 50 && stderr_has "--search 40 is smaller than the 50 px window"
 run 2 register ref.png mov.png -o x.png --grid 17x4 && absent x.png &&
   stderr_has "cells of 18 x 60 px" && stderr_has "at most 16x12 cells"
-run 1 register ref.png mov.png -o x.png --window 250 && absent x.png && stderr_has "smaller than the 250 px window"
+run 1 register ref.png mov.png -o x.png --window 250 --search 300 && absent x.png && stderr_has "smaller than the 250 px window"
 run 2 register ref.png mov.png -o x.png --metric foo
 run 2 register ref.png mov.png -o x.png --min-rho 0
 run 2 register ref.png mov.png -o x.png --resample cubic
