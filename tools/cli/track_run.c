@@ -4,6 +4,7 @@
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
+#include "ssda/ncc.h"
 #include "ssda/stream.h"
 
 #include <errno.h>
@@ -1052,6 +1053,15 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
                                    "none, --scan raster or predict): the test needs exact SADs");
         }
         r->cfg.flags &= (uint8_t)~SSDA_TRACK_UNIQUE; /* the default: not in this mode */
+    }
+    if (o->metric != TRACK_METRIC_NONE) { /* refused before the tracking, not after it */
+        const uint32_t ww = o->cfg.win_w ? o->cfg.win_w : SSDA_TRACK_DEFAULT_WIN;
+        const uint32_t wh = o->cfg.win_h ? o->cfg.win_h : SSDA_TRACK_DEFAULT_WIN;
+        if (ww * wh > SSDA_NCC_MAX_PIXELS) {
+            return cli_usage_error(cmd, "--metric: window %ux%u; the correlation coefficient "
+                                   "takes windows of at most %u pixels", ww, wh,
+                                   SSDA_NCC_MAX_PIXELS);
+        }
     }
     rc = load_inputs(cmd, first_path, second_path, o, r);
     if (rc == CLI_OK) {

@@ -108,7 +108,8 @@ track)
   run 2 track r.png nb.png --metric l1 && stderr_has "bad --metric 'l1'"
   "$gen" texture big.png --size 260x260 --seed 3
   run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
-    stderr_has "at most 65536 pixels"
+    stderr_has "at most 65536 pixels" && grep -q "warning" err.txt &&
+    fail "refused only after the grid and the tracking: $(cat err.txt)"
   run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
   # a stronger change (x 0.5 + 100): SAD leaves most windows at_limit; the
   # correlation searches those too and decides their status itself
