@@ -33,6 +33,11 @@ match)
   run 2 match a.png w.png --metric ncc --threshold none && stderr_has "are SAD options"
   run 2 match a.png w.png --metric ncc --scan coarse && stderr_has "are SAD options"
   run 0 match a.png w.png --metric ncc --predict 3,4 --json && chk match-json out.txt 37 32 0 true
+  # a flat window has no rho: refused by name, not placed at (0, 0) as "exact"
+  "$flowtool" gain w.png flat.png 0 77
+  run 1 match a.png flat.png --metric ncc --json && stderr_has "window 'flat.png' is flat" &&
+    [ ! -s out.txt ] || fail "flat window: $(cat out.txt)"
+  run 0 match a.png flat.png --json || fail "flat window by SAD"
   ;;
 
 flow)
