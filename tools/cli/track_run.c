@@ -56,6 +56,9 @@ const char track_opts_help[] =
     "  --relax N         clean the field by relaxation labelling (the seed 003's\n"
     "                    section 4), N iterations: JSON windows gain relax_dx,\n"
     "                    relax_dy (px) and changed\n"
+    "  --relax-keep      with --relax: keep vectors whose most likely class is their\n"
+    "                    own (without it those are smoothed too: changed is false,\n"
+    "                    yet relax_dx, relax_dy may differ from sub_dx, sub_dy)\n"
     "  --relax-median    clean by the normalised median test instead (same fields)\n"
     "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
     "                    coefficient at their placement; with ncc (largest rho) or\n"
@@ -347,6 +350,8 @@ static int take_output(cli_args_t *a, track_opts_t *o)
         }
     } else if (cli_flag(a, "--relax-median")) {
         o->relax_median = 1;
+    } else if (cli_flag(a, "--relax-keep")) {
+        o->relax_keep = 1;
     } else if (cli_opt(a, "--metric", &v)) {
         if (v != NULL && (o->metric = track_metric_parse(v)) < 0) {
             o->metric = 0;
@@ -1021,6 +1026,7 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
         ssda_relax_config_t c;
         memset(&c, 0, sizeof c);
         c.iterations = (uint16_t)o->relax;
+        c.flags = o->relax_keep ? SSDA_RELAX_KEEP : 0u;
         c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
         c.work = malloc(c.work_size);
         e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->grid.count);
@@ -1053,6 +1059,9 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
                                    "none, --scan raster or predict): the test needs exact SADs");
         }
         r->cfg.flags &= (uint8_t)~SSDA_TRACK_UNIQUE; /* the default: not in this mode */
+    }
+    if (o->relax_keep && o->relax == 0u) {
+        return cli_usage_error(cmd, "--relax-keep needs --relax N");
     }
     if (o->metric != TRACK_METRIC_NONE) { /* refused before the tracking, not after it */
         const uint32_t ww = o->cfg.win_w ? o->cfg.win_w : SSDA_TRACK_DEFAULT_WIN;
@@ -1163,6 +1172,7 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     cJSON_AddStringToObject(opt, "cleaning", o->relax_median ? "median" : o->relax ? "relax" : "none");
     if (o->relax != 0u) {
         cJSON_AddNumberToObject(opt, "relax_iterations", o->relax);
+        cJSON_AddBoolToObject(opt, "relax_keep", o->relax_keep != 0);
     }
     track_metric_json_options(opt, o);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {

@@ -162,6 +162,11 @@ subpixel)
       fail "track $clean: cleaned vectors lost their fraction"
     grep -q "^cleaning: .* of the [0-9]* ok vectors changed" out.txt || fail "summary: $(cat out.txt)"
   done
+  # --relax-keep: a vector whose class stays its own is its input exactly
+  run 0 track r.png n.png --relax 30 --relax-keep --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 --relaxed --kept &&
+    grep -q '"relax_keep":true' t.json || fail "track --relax-keep"
+  run 2 track r.png n.png --relax-keep && stderr_has "--relax-keep needs --relax N"
   ;;
 esac
 finish

@@ -18,10 +18,12 @@
  *     exactly (dx, dy) = (DX, DY).
  *   flow_tool shrink IN.png OUT.png N       OUT = IN averaged over N x N blocks
  *     (8-bit, rounded): a pair shifted by k px shrinks to a k / N px motion
- *   flow_tool track-sub FILE.json DX DY TOL MINFRAC [--relaxed]
+ *   flow_tool track-sub FILE.json DX DY TOL MINFRAC [--relaxed [--kept]]
  *     `ssda track --json`: every "ok" window's sub_dx, sub_dy lie within
  *     0.5 px of its dx, dy, and at least MINFRAC of them within TOL px of
- *     (DX, DY) on each axis (relax_dx, relax_dy with --relaxed).
+ *     (DX, DY) on each axis (relax_dx, relax_dy with --relaxed); with
+ *     --kept every window not "changed" has relax_dx, relax_dy equal to
+ *     sub_dx, sub_dy (to the 4 decimals printed).
  */
 #include <jansson.h>
 #include <math.h>
@@ -305,9 +307,12 @@ static int track_sub(int argc, char **argv)
     json_error_t je;
     json_t *doc, *list;
     size_t i, ok = 0, good = 0, torn = 0;
-    const int relaxed = argc == 6 && !strcmp(argv[5], "--relaxed");
+    const int relaxed = argc >= 6 && !strcmp(argv[5], "--relaxed");
+    const int kept = relaxed && argc == 7 && !strcmp(argv[6], "--kept");
+    size_t moved = 0;
     double tol;
-    if ((argc != 5 && !relaxed) || (doc = json_load_file(argv[0], 0, &je)) == NULL) {
+    if ((argc != 5 && !(relaxed && (argc == 6 || kept))) ||
+        (doc = json_load_file(argv[0], 0, &je)) == NULL) {
         fprintf(stderr, "flow_tool track-sub: usage or unreadable JSON\n");
         return 2;
     }
@@ -324,16 +329,21 @@ static int track_sub(int argc, char **argv)
         sy = json_number_value(json_object_get(t, "sub_dy"));
         torn += fabs(sx - (double)jint(t, "dx")) > 0.5 || fabs(sy - (double)jint(t, "dy")) > 0.5;
         if (relaxed) {
-            sx = json_number_value(json_object_get(t, "relax_dx"));
-            sy = json_number_value(json_object_get(t, "relax_dy"));
+            const double rx = json_number_value(json_object_get(t, "relax_dx"));
+            const double ry = json_number_value(json_object_get(t, "relax_dy"));
+            moved += kept && !json_is_true(json_object_get(t, "changed")) &&
+                     (fabs(rx - sx) > 6e-5 || fabs(ry - sy) > 6e-5);
+            sx = rx;
+            sy = ry;
         }
         good += fabs(sx - atof(argv[1])) <= tol && fabs(sy - atof(argv[2])) <= tol;
     }
     json_decref(doc);
-    if (ok == 0 || torn > 0 || (double)good < atof(argv[4]) * (double)ok) {
+    if (ok == 0 || torn > 0 || moved > 0 || (double)good < atof(argv[4]) * (double)ok) {
         fprintf(stderr, "flow_tool track-sub: %zu of %zu ok windows within %g px of (%s, %s)%s; "
-                        "%zu with sub_dx, sub_dy more than 0.5 px from dx, dy\n",
-                good, ok, tol, argv[1], argv[2], relaxed ? " (relaxed)" : "", torn);
+                        "%zu with sub_dx, sub_dy more than 0.5 px from dx, dy; %zu kept "
+                        "vectors moved\n",
+                good, ok, tol, argv[1], argv[2], relaxed ? " (relaxed)" : "", torn, moved);
         return 1;
     }
     return 0;
@@ -365,6 +375,6 @@ int main(int argc, char **argv)
     fprintf(stderr, "usage: flow_tool gain IN OUT G O | crop IN OUT X Y W H | "
                     "check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
                     "track-check FILE DX DY MINFRAC | shrink IN OUT N | "
-                    "track-sub FILE DX DY TOL MINFRAC [--relaxed]\n");
+                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]]\n");
     return 2;
 }
