@@ -54,6 +54,12 @@ flow)
     grep -q '"cleaning":"median"' out.txt || fail "median cleaning: $(head -c 300 out.txt)"
   run 0 flow r.png nb.png --region 20,20,70,60 --metric absncc --radius 0.5 --min-radius 2 \
       --min-std 5 --relax 10 --relax-keep --json f.json && "$flowtool" check f.json 2 -3 0.9
+  grep -q "note:" err.txt && fail "a note on a small run: $(cat err.txt)"
+  # a long job says so before it starts (killed here after the note: the
+  # whole of a 1200 x 1000 image at the defaults is 46 000 templates)
+  "$gen" texture big.png --size 1200x1000 --seed 3
+  timeout 3 "$ssda" flow big.png big.png >/dev/null 2>err.txt
+  stderr_has "templates, up to " && stderr_has "--region X,Y,W,H, a larger --tp-step"
   # errors leave no output
   run 1 flow r.png nb.png --region 110,90,30,30 --json e.json --overlay e.png &&
     stderr_has "must lie inside REF" && absent e.json e.png
