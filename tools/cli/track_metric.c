@@ -1,6 +1,7 @@
 /* track_metric.c - the correlation metric of grid tracking (track_metric.h). */
 #include "track_metric.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -49,8 +50,51 @@ static int on_border(uint32_t pos, uint32_t n)
     return n > 1u && (pos == 0u || pos == n - 1u);
 }
 
+static int searched(uint8_t status)
+{
+    return status == SSDA_TRACK_OK || status == SSDA_TRACK_AMBIGUOUS ||
+           status == SSDA_TRACK_AT_LIMIT;
+}
+
+/* The counts of the searched statuses after the correlation search. */
+static void recount(track_result_t *r)
+{
+    size_t k;
+    r->stats.ok = r->stats.ambiguous = r->stats.at_limit = 0u;
+    for (k = 0; k < r->grid.count; k++) {
+        switch (r->vec[k].status) {
+        case SSDA_TRACK_OK: r->stats.ok++; break;
+        case SSDA_TRACK_AMBIGUOUS: r->stats.ambiguous++; break;
+        case SSDA_TRACK_AT_LIMIT: r->stats.at_limit++; break;
+        default: break;
+        }
+    }
+}
+
+/* Sub-pixel offset, Q8 in [-128, 128], of the vertex of the parabola through
+   r_m, r_0, r_p (Q2.30 at -1, 0, +1; r_0 the best, a trough of rho for
+   absncc's negative peaks): 0 where a neighbour lies outside the area or
+   the three make no peak. The tool's float twin of composite.c's fit. */
+static int32_t peak_q8(int32_t rm, int32_t r0, int32_t rp, int neg)
+{
+    const double s = neg ? -1.0 : 1.0;
+    double den, off;
+    if (rm == SSDA_NCC_NONE || rp == SSDA_NCC_NONE) {
+        return 0;
+    }
+    den = s * ((double)rm - 2.0 * r0 + rp);
+    if (!(den < 0.0)) {
+        return 0;
+    }
+    off = 0.5 * s * ((double)rm - rp) / den;
+    off = off > 0.5 ? 0.5 : (off < -0.5 ? -0.5 : off);
+    return (int32_t)floor(off * 256.0 + 0.5);
+}
+
 /* One searched window: rho at SAD's placement (sad), or the correlation
-   search, which then decides the vector and the status (ok or at_limit). */
+   search, whose vector replaces SAD's, its sub-pixel motion too (from rho
+   at the 8 neighbours; whole pixels with --no-subpixel), and which decides
+   the status (ok or at_limit). */
 static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_t *c, size_t k)
 {
     const ssda_track_grid_t *g = &r->grid;
@@ -77,38 +121,25 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
     r->rho_q30[k] = res.rho_q30;
     v->dx = (int32_t)hx - (int32_t)res.x;
     v->dy = (int32_t)hy - (int32_t)res.y;
-    /* whole pixels: no sub-pixel fit of rho here */
+    /* the placement x + d is the motion dx - d */
     v->sub_dx_q8 = v->dx * 256;
     v->sub_dy_q8 = v->dy * 256;
+    if ((c->flags & SSDA_NCC_AROUND) != 0u) {
+        v->sub_dx_q8 -= peak_q8(res.around_q30[3], res.rho_q30, res.around_q30[5], res.rho_q30 < 0);
+        v->sub_dy_q8 -= peak_q8(res.around_q30[1], res.rho_q30, res.around_q30[7], res.rho_q30 < 0);
+    }
+    v->exact = true;
     /* SAD's uniqueness does not describe this placement; not computed */
     v->unique_q8 = SSDA_MATCH_UNIQUE_NONE;
-    v->exact = true;
+    /* the status of the correlation's own best: on the range's border it
+       may lie beyond (track.h's AT_LIMIT rule); SAD's at_limit and
+       ambiguous may be nothing but a brightness change, which rho does not
+       see */
     v->status = (uint8_t)(on_border(res.x, (uint32_t)g->search_w - g->win_w + 1u) ||
                                   on_border(res.y, (uint32_t)g->search_h - g->win_h + 1u)
                               ? SSDA_TRACK_AT_LIMIT
                               : SSDA_TRACK_OK);
     return ssda_sad_at(&area, &win, res.x, res.y, &v->sad);
-}
-
-static int searched(uint8_t status)
-{
-    return status == SSDA_TRACK_OK || status == SSDA_TRACK_AMBIGUOUS ||
-           status == SSDA_TRACK_AT_LIMIT;
-}
-
-/* The counts of the searched statuses after the correlation search. */
-static void recount(track_result_t *r)
-{
-    size_t k;
-    r->stats.ok = r->stats.ambiguous = r->stats.at_limit = 0u;
-    for (k = 0; k < r->grid.count; k++) {
-        switch (r->vec[k].status) {
-        case SSDA_TRACK_OK: r->stats.ok++; break;
-        case SSDA_TRACK_AMBIGUOUS: r->stats.ambiguous++; break;
-        case SSDA_TRACK_AT_LIMIT: r->stats.at_limit++; break;
-        default: break;
-        }
-    }
 }
 
 int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r)
@@ -129,6 +160,9 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     memset(&c, 0, sizeof c);
     c.metric = (uint8_t)(o->metric == TRACK_METRIC_ABSNCC ? SSDA_NCC_ABS : SSDA_NCC_RHO);
     c.flags = SSDA_NCC_PREDICT;
+    if ((r->cfg.flags & SSDA_TRACK_NO_SUBPIXEL) == 0u) {
+        c.flags |= SSDA_NCC_AROUND;
+    }
     c.work_size = SSDA_NCC_WORK_SIZE(g->search_w, g->win_w, g->win_h);
     r->rho_q30 = malloc((g->count + 1u) * sizeof *r->rho_q30);
     c.work = malloc(c.work_size);

@@ -28,14 +28,15 @@ int track_metric_parse(const char *name);
 const char *track_metric_name(int metric);
 
 /* After the tracking: rho of every searched window at its placement; with
-   ncc or absncc each searched window's dx, dy, sad (SAD at the new
-   placement), sub_dx_q8, sub_dy_q8 (256 dx, 256 dy: whole pixels),
-   unique_q8 (SSDA_MATCH_UNIQUE_NONE), exact (true) and status (at_limit or
-   ok) from the correlation search, and r->stats' ok, ambiguous (0) and
-   at_limit counted again. Fills r->rho_q30 (grid.count entries, INT32_MIN
-   where not searched), r->metric_secs, r->metric_ops. Nothing without
-   --metric. Returns CLI_OK, CLI_USAGE (a window too large for the
-   correlation search) or CLI_INPUT (out of memory, a refused search). */
+   ncc or absncc each searched window's dx, dy, sub_dx_q8, sub_dy_q8, sad
+   (SAD at the new placement), unique_q8 (SSDA_MATCH_UNIQUE_NONE), exact
+   (true) and status (AT_LIMIT when the correlation's best is on the border
+   of the range, else OK) from the correlation search, and r->stats' ok,
+   ambiguous (0) and at_limit counted again. Fills r->rho_q30 (grid.count
+   entries, INT32_MIN where not searched), r->metric_secs, r->metric_ops.
+   Nothing without --metric. Returns CLI_OK, CLI_USAGE (a window too large
+   for the correlation search) or CLI_INPUT (out of memory, a refused
+   search). */
 int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r);
 
 /* JSON: the window's "rho" (number, 6 decimals) when computed. */
