@@ -137,6 +137,13 @@ track)
   stderr_has "$searched of $searched searched windows are 'at_limit'"
   grep -q "^status:  0 ok, 0 flat, 0 ambiguous, $searched at_limit" out.txt ||
     fail "summary counts: $(cat out.txt)"
+  # an axis with one placement has no border (track.h): --search 16x32 over
+  # a vertical motion is ok, not at_limit, in every window
+  "$gen" texture n0.png --size 120x100 --seed 7 --shift 0,-3
+  "$flowtool" gain n0.png n0b.png 0.6 60
+  run 0 track r.png n0b.png --search 16x32 --metric ncc --json t.json --quiet &&
+    "$flowtool" track-status t.json >st.txt && grep -q "at_limit 0$" st.txt &&
+    "$flowtool" track-check t.json 0 -3 1.0 || fail "one placement along x: $(cat st.txt)"
   # with cleaning and an overlay; without --metric no rho
   # (sub-pixel vectors relaxed: every ok window within 0.05 px of the motion)
   run 0 track r.png nb.png --metric ncc --relax 10 --json t.json --overlay t.png --quiet &&
