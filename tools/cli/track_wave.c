@@ -50,14 +50,14 @@ static void solve_row(worker_t *k, uint32_t r, ssda_track_config_t *cfg)
     wave_t *w = k->w;
     uint32_t col = 0u;
     while (col < w->g->cols) {
-        uint32_t lim, end;
+        uint32_t lim = 0u, end;
         int e;
         pthread_mutex_lock(&w->lock);
-        while (w->err == SSDA_OK && (lim = limit_of(w, r)) <= col) {
+        while ((e = w->err) == SSDA_OK && (lim = limit_of(w, r)) <= col) {
             pthread_cond_wait(&w->moved, &w->lock);
         }
         pthread_mutex_unlock(&w->lock);
-        if (w->err != SSDA_OK) {
+        if (e != SSDA_OK) {
             return;
         }
         end = lim - col > WAVE_CHUNK ? col + WAVE_CHUNK : lim;
