@@ -112,6 +112,13 @@ static void same_vector(const ssda_track_vector_t *a, const ssda_track_vector_t 
     TEST_ASSERT_EQUAL_UINT8(a->exact, b->exact);
 }
 
+/* An entry still holding the poison bytes (compared as bytes: the poison
+   is not a valid bool). */
+static void untouched(const ssda_track_vector_t *poison, const ssda_track_vector_t *v)
+{
+    TEST_ASSERT_EQUAL_MEMORY(poison, v, sizeof *v);
+}
+
 static void same_stats(const ssda_track_stats_t *a, const ssda_track_stats_t *b)
 {
     TEST_ASSERT_EQUAL_UINT64(a->pixel_ops, b->pixel_ops);
@@ -206,9 +213,9 @@ static void test_whole_rows_and_untouched_entries(void)
     memset(g_got, 0x5A, sizeof g_got);
     /* one part in the middle of row 0 writes only its entries */
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_row(&a, &b, NULL, 0u, 1u, 2u, g_got, MAX_WIN, NULL));
-    same_vector(&poison, &g_got[0]);
+    untouched(&poison, &g_got[0]);
     for (k = 2; k < MAX_WIN; k++) {
-        same_vector(&poison, &g_got[k]);
+        untouched(&poison, &g_got[k]);
     }
     for (row = 0; row < g.rows; row++) {
         TEST_ASSERT_EQUAL_INT(SSDA_OK,
@@ -218,7 +225,7 @@ static void test_whole_rows_and_untouched_entries(void)
         same_vector(&g_want[k], &g_got[k]);
     }
     for (; k < MAX_WIN; k++) {
-        same_vector(&poison, &g_got[k]);
+        untouched(&poison, &g_got[k]);
     }
 }
 
@@ -264,7 +271,7 @@ static void test_bad_arguments_change_nothing(void)
         uint32_t k;
         memset(&pv, 0x5A, sizeof pv);
         for (k = 0; k < MAX_WIN; k++) {
-            same_vector(&pv, &g_got[k]);
+            untouched(&pv, &g_got[k]);
         }
     }
 }
