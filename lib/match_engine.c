@@ -59,6 +59,11 @@ typedef struct {
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
+    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
+                              modulo 2^32 (block_bound) */
+    const uint32_t *wblk;  /* blocks: the window's block sums, level after level */
+    uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
+                               lev_lo > lev_hi */
 #endif
     cand_t best, second; /* best two completed, by the tie rule */
 #ifdef ENGINE_FALLBACK
@@ -244,6 +249,69 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 }
 #endif
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The smallest side of a block of the multilevel bound (SSDA_MATCH_BLOCKS):
+   below it a term costs about as much as the absolute differences it spares
+   (docs/benchmarks.md, issue 18). */
+#define BLOCK_MIN_SIDE 8u
+
+/* Bound of position (x, y) at block level l (match.h: SSDA_MATCH_BLOCKS):
+   sum over the 2^l x 2^l blocks of bw x bh = (L >> l) x (M >> l) pixels of
+   |area block sum - window block sum| <= SAD. A block sum is a difference of
+   four integral-image entries modulo 2^32, exact since the level is used
+   only when bw * bh * maxval < 2^32 (build_blocks). The bound <= 256 terms of
+   < 2^32 each < 2^40. Stops after a row of blocks once the bound reaches
+   cut_at (a lower bound still). One op per term. */
+static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uint64_t cut_at)
+{
+    const uint32_t nb = 1u << l;
+    const uint32_t bw = e->L >> l;
+    const size_t is = (size_t)e->area->width + 1u;
+    const size_t down = (size_t)(e->M >> l) * is;
+    const uint32_t *w = e->wblk + (((1u << (2u * l)) - 4u) / 3u); /* after levels 1..l-1 */
+    const uint32_t *r0 = e->integ + (size_t)y * is + x;
+    uint64_t b = 0u;
+    uint32_t i, j;
+    for (j = 0u; j < nb; j++) {
+        const uint32_t *r1 = r0 + down;
+        uint32_t left = r1[0] - r0[0]; /* column sums modulo 2^32 */
+        uint32_t u = 0u;
+        for (i = 0u; i < nb; i++) {
+            uint32_t right, s, t;
+            u += bw;
+            right = r1[u] - r0[u];
+            s = right - left; /* the block's sum, exact */
+            t = w[i];
+            b += s > t ? s - t : t - s;
+            left = right;
+        }
+        w += nb;
+        r0 = r1;
+        if (b >= cut_at) {
+            e->ops += (j + 1u) * nb; /* <= 256 */
+            return b;
+        }
+    }
+    e->ops += nb * nb;
+    return b;
+}
+
+/* Position (x, y) rejected by a block level, coarsest first: the bound in
+   *low (for the fallback) and true; else false. */
+static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t *low)
+{
+    uint32_t l;
+    for (l = e->lev_lo; l <= e->lev_hi; l++) {
+        const uint64_t b = block_bound(e, l, x, y, cut_at);
+        if (b >= cut_at) {
+            *low = b;
+            return true;
+        }
+    }
+    return false;
+}
+#endif
+
 /* The level at which position (x, y) is cut (partial + rest >= it): the
    plan's fixed cut, lowered to what can still beat the reference. */
 static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
@@ -292,6 +360,10 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         return 0;
     }
 #ifndef SSDA_CFG_NO_BOUNDS
+    if (e->lev_lo <= e->lev_hi && blocks_reject(e, x, y, cut_at, &rest)) {
+        NOTE_CUT(e, x, y, rest, 0u);
+        return 0;
+    }
     if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
@@ -433,12 +505,51 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
     return err < 0 ? err : SSDA_OK;
 }
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* SSDA_MATCH_BLOCKS with AUTO: the position of the smallest coarsest-level
+   bound (the first in raster order among equal ones), summed first so that
+   the threshold is low from the start (the raster scan's result does not
+   depend on the order in the exact modes). */
+static void seed_position(engine_t *e, uint32_t *sx, uint32_t *sy)
+{
+    uint64_t low = UINT64_MAX;
+    uint32_t x, y;
+    *sx = 0u;
+    *sy = 0u;
+    for (y = 0u; y < e->ny; y++) {
+        for (x = 0u; x < e->nx; x++) {
+            const uint64_t b = block_bound(e, e->lev_lo, x, y, low);
+            if (b < low) {
+                low = b;
+                *sx = x;
+                *sy = y;
+            }
+        }
+    }
+}
+#endif
+
 static int scan_raster(engine_t *e)
 {
     uint32_t x, y;
+    uint32_t sx = UINT32_MAX, sy = UINT32_MAX; /* the seed, visited first */
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (e->lev_lo <= e->lev_hi && e->plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO) {
+        int err;
+        seed_position(e, &sx, &sy);
+        err = consider_best(e, sx, sy);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+#endif
     for (y = 0u; y < e->ny; y++) {
         for (x = 0u; x < e->nx; x++) {
-            int err = consider_best(e, x, y);
+            int err;
+            if (x == sx && y == sy) {
+                continue;
+            }
+            err = consider_best(e, x, y);
             if (err != SSDA_OK) {
                 return err;
             }
@@ -730,6 +841,114 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     return err;
 }
 
+/* SSDA_MATCH_BLOCKS: the area's integral image in uint32_t modulo 2^32,
+   I(x, y) = sum of the pixels left of x and above y, (aw + 1) x (ah + 1)
+   entries at `integ`. A row's running sum <= 65535 * 65535 < 2^32; the
+   entries wrap, and a block sum taken from four of them is exact whenever
+   the block's true sum < 2^32. Two ops per pixel. */
+static SSDA_NOINLINE int build_integral(engine_t *e, uint32_t *integ)
+{
+    const bool u8 = e->u8;
+    const uint32_t aw = e->area->width, ah = e->area->height;
+    const size_t is = (size_t)aw + 1u;
+    uint32_t x, y;
+    for (x = 0u; x <= aw; x++) {
+        integ[x] = 0u;
+    }
+    for (y = 0u; y < ah; y++) {
+        const uint8_t *p;
+        const uint32_t *up = integ + (size_t)y * is;
+        uint32_t *row = integ + (size_t)(y + 1u) * is;
+        uint32_t s = 0u; /* <= aw * 65535 < 2^32 */
+        int err = ssda__rows_get(e->area, 0u, y, aw, &p);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        row[0] = 0u;
+        for (x = 0u; x < aw; x++) {
+            s += u8 ? p[x] : ((const uint16_t *)(const void *)p)[x];
+            row[x + 1u] = up[x + 1u] + s; /* modulo 2^32 */
+        }
+    }
+    e->ops += 2u * (uint64_t)(aw * ah); /* aw * ah < 2^32 */
+    return SSDA_OK;
+}
+
+/* SSDA_MATCH_BLOCKS: the window's block sums of levels lev_lo..lev_hi,
+   each summed from its pixels (< 2^32: the level's condition), stored at
+   the level's offset (4 + 16 + ... entries before it). L * M ops a level. */
+static SSDA_NOINLINE int window_blocks(engine_t *e, uint32_t *wblk)
+{
+    uint32_t l;
+    for (l = e->lev_lo; l <= e->lev_hi; l++) {
+        const uint32_t nb = 1u << l, bw = e->L >> l, bh = e->M >> l;
+        uint32_t *w = wblk + (((1u << (2u * l)) - 4u) / 3u);
+        uint32_t i, j, yy, c;
+        for (i = 0u; i < nb * nb; i++) {
+            w[i] = 0u;
+        }
+        for (j = 0u; j < nb; j++) {
+            for (yy = j * bh; yy < (j + 1u) * bh; yy++) {
+                const uint8_t *p;
+                int err = ssda__rows_get(e->win, 0u, yy, nb * bw, &p);
+                if (err != SSDA_OK) {
+                    return err;
+                }
+                for (c = 0u; c < nb * bw; c++) {
+                    /* a block's sum <= bw * bh * maxval < 2^32 */
+                    w[j * nb + c / bw] += e->u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+                }
+            }
+        }
+        e->ops += (nb * bw) * (nb * bh); /* <= L * M < 2^32 */
+    }
+    return SSDA_OK;
+}
+
+/*
+ * SSDA_MATCH_BLOCKS: choose the levels and build their tables after the
+ * bounds tables and the uniqueness list (match.h's layout). Level l splits
+ * the window into 2^l x 2^l blocks of (L >> l) x (M >> l) pixels, l = 1 ..
+ * SSDA_MATCH_BLOCK_LEVELS; it is used when both sides are at least
+ * BLOCK_MIN_SIDE and a block's sum fits 32 bits (bw * bh * maxval < 2^32).
+ * With no level usable, the search runs as with SSDA_MATCH_BOUNDS alone.
+ */
+static SSDA_NOINLINE int build_blocks(engine_t *e)
+{
+    const uint32_t max_px = e->u8 ? 16843009u : 65537u; /* floor((2^32 - 1) / maxval) */
+    const uint64_t tables = ((((uint64_t)e->nx * e->area->height) + 2u * (uint64_t)e->M) *
+                                 sizeof(uint32_t) + 7u) & ~(uint64_t)7u;
+    uint32_t *integ = (uint32_t *)(void *)((uint8_t *)e->plan->work + (size_t)tables +
+                                           SSDA_MATCH_UNIQUE_WORK);
+    uint32_t *wblk;
+    uint32_t l;
+    int err;
+    e->lev_lo = 1u;
+    e->lev_hi = 0u;
+    for (l = 1u; l <= SSDA_MATCH_BLOCK_LEVELS; l++) {
+        const uint32_t bw = e->L >> l, bh = e->M >> l; /* <= 32767 */
+        if (bw < BLOCK_MIN_SIDE || bh < BLOCK_MIN_SIDE) {
+            break;
+        }
+        if (bw * bh > max_px) {
+            e->lev_lo = (uint8_t)(l + 1u);
+        } else {
+            e->lev_hi = (uint8_t)l;
+        }
+    }
+    if (e->lev_lo > e->lev_hi) {
+        return SSDA_OK;
+    }
+    wblk = integ + ((size_t)e->area->width + 1u) * ((size_t)e->area->height + 1u);
+    e->integ = integ;
+    e->wblk = wblk;
+    err = build_integral(e, integ);
+    if (err == SSDA_OK) {
+        err = window_blocks(e, wblk);
+    }
+    return err;
+}
+
 #endif
 
 /* The result of a finished scan, with the quality the plan asks for
@@ -842,8 +1061,12 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
                  (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
+    e.lev_lo = 1u; /* no block levels */
     if (e.bounds) {
         err = build_bounds(&e);
+        if (err == SSDA_OK && (plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
+            err = build_blocks(&e);
+        }
         if (err != SSDA_OK) {
             return err;
         }
