@@ -61,9 +61,12 @@ typedef struct {
     uint32_t *term;      /* bounds: group terms of the current position */
     const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
                               modulo 2^32 (block_bound) */
-    const uint32_t *wblk;  /* blocks: the window's block sums, level after level */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
     uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
                                lev_lo > lev_hi */
+    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
+                            bound, saturated to 32 bits (a lower bound still),
+                            nx per row in the group tables' place; else NULL */
 #endif
     cand_t best, second; /* best two completed, by the tie rule */
 #ifdef ENGINE_FALLBACK
@@ -253,7 +256,7 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 /* The smallest side of a block of the multilevel bound (SSDA_MATCH_BLOCKS):
    below it a term costs about as much as the absolute differences it spares
    (docs/benchmarks.md, issue 18). */
-#define BLOCK_MIN_SIDE 8u
+#define BLOCK_MIN_SIDE 16u
 
 /* Bound of position (x, y) at block level l (match.h: SSDA_MATCH_BLOCKS):
    sum over the 2^l x 2^l blocks of bw x bh = (L >> l) x (M >> l) pixels of
@@ -506,49 +509,128 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
 }
 
 #ifndef SSDA_CFG_NO_BOUNDS
-/* SSDA_MATCH_BLOCKS with AUTO: the position of the smallest coarsest-level
-   bound (the first in raster order among equal ones), summed first so that
-   the threshold is low from the start (the raster scan's result does not
-   depend on the order in the exact modes). */
-static void seed_position(engine_t *e, uint32_t *sx, uint32_t *sy)
+/* SSDA_MATCH_BLOCKS with AUTO raster: candidates summed first so that the
+   threshold is low from the start (the raster scan's result does not depend
+   on the order in the exact modes). The range of positions is cut into
+   SEED_TILES x SEED_TILES tiles and each tile's position of the smallest
+   coarsest-level bound (the first in raster order among equal ones) is a
+   candidate: spread over the image, so one misleading bound does not
+   decide. The pass also stores every position's bound in the table. */
+#define SEED_TILES 4u
+#define SEED_CANDS (SEED_TILES * SEED_TILES)
+
+static void seed_pass(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
 {
-    uint64_t low = UINT64_MAX;
-    uint32_t x, y;
-    *sx = 0u;
-    *sy = 0u;
+    uint32_t x, y, i;
+    uint32_t *tab = e->low;
+    for (i = 0u; i < SEED_CANDS; i++) {
+        cb[i] = UINT32_MAX;
+        cx[i] = UINT32_MAX; /* no candidate */
+        cy[i] = UINT32_MAX;
+    }
     for (y = 0u; y < e->ny; y++) {
+        /* tile row and column: t * n / SEED_TILES <= p; n < 2^16 */
+        const uint32_t ty = SSDA_DIV32(y * SEED_TILES, e->ny);
+        uint32_t tx = 0u, next_x = SSDA_DIV32(e->nx + SEED_TILES - 1u, SEED_TILES);
         for (x = 0u; x < e->nx; x++) {
-            const uint64_t b = block_bound(e, e->lev_lo, x, y, low);
-            if (b < low) {
-                low = b;
-                *sx = x;
-                *sy = y;
+            const uint64_t b = block_bound(e, e->lev_lo, x, y, UINT64_MAX);
+            const uint32_t v = b > UINT32_MAX ? UINT32_MAX : (uint32_t)b;
+            if (x == next_x) {
+                tx++;
+                next_x = SSDA_DIV32((tx + 1u) * e->nx + SEED_TILES - 1u, SEED_TILES);
+            }
+            *tab++ = v;
+            i = ty * SEED_TILES + tx;
+            if (v < cb[i] || cx[i] == UINT32_MAX) {
+                cb[i] = v;
+                cx[i] = x;
+                cy[i] = y;
             }
         }
     }
+    e->lev_lo++; /* the positions' pre-check reads this level from the table */
+}
+
+/* Sum the candidates first, smallest bound first (insertion sort of 16). */
+static int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+{
+    uint32_t i, j;
+    for (i = 1u; i < SEED_CANDS; i++) {
+        for (j = i; j > 0u && cb[j] < cb[j - 1u]; j--) {
+            uint32_t t = cb[j];
+            cb[j] = cb[j - 1u];
+            cb[j - 1u] = t;
+            t = cx[j];
+            cx[j] = cx[j - 1u];
+            cx[j - 1u] = t;
+            t = cy[j];
+            cy[j] = cy[j - 1u];
+            cy[j - 1u] = t;
+        }
+    }
+    for (i = 0u; i < SEED_CANDS; i++) {
+        if (cx[i] != UINT32_MAX) {
+            int err = consider_best(e, cx[i], cy[i]);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            e->low[(size_t)cy[i] * e->nx + cx[i]] = UINT32_MAX; /* visited */
+        }
+    }
+    return SSDA_OK;
+}
+
+/* Position (x, y) with a table entry UINT32_MAX: a candidate visited
+   already? (else a bound that saturated) */
+static bool seed_visited(const uint32_t *cx, const uint32_t *cy, uint32_t x, uint32_t y)
+{
+    uint32_t i;
+    for (i = 0u; i < SEED_CANDS; i++) {
+        if (cx[i] == x && cy[i] == y) {
+            return true;
+        }
+    }
+    return false;
 }
 #endif
 
 static int scan_raster(engine_t *e)
 {
     uint32_t x, y;
-    uint32_t sx = UINT32_MAX, sy = UINT32_MAX; /* the seed, visited first */
+    const uint32_t *low = NULL; /* the table of coarsest bounds */
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (e->lev_lo <= e->lev_hi && e->plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO) {
+    uint32_t *cx = NULL, *cy = NULL;
+    if (e->low != NULL) {
+        /* the candidates in the work buffer, after the window's block sums */
+        uint32_t *cb = e->wblk + SSDA_MATCH_BLOCK_SUMS - 3u * SEED_CANDS;
         int err;
-        seed_position(e, &sx, &sy);
-        err = consider_best(e, sx, sy);
+        cx = cb + SEED_CANDS;
+        cy = cx + SEED_CANDS;
+        seed_pass(e, cx, cy, cb);
+        err = seed_visit(e, cx, cy, cb);
         if (err != SSDA_OK) {
             return err;
         }
+        low = e->low;
     }
 #endif
     for (y = 0u; y < e->ny; y++) {
         for (x = 0u; x < e->nx; x++) {
             int err;
-            if (x == sx && y == sy) {
-                continue;
+#ifndef SSDA_CFG_NO_BOUNDS
+            if (low != NULL) {
+                /* a position whose coarsest bound reaches its cut level is
+                   rejected here, its terms counted in the seed's pass */
+                const uint32_t v = low[(size_t)y * e->nx + x];
+                if (v == UINT32_MAX && seed_visited(cx, cy, x, y)) {
+                    continue;
+                }
+                if ((uint64_t)v >= cut_level(e, x, y)) {
+                    e->positions++;
+                    continue;
+                }
             }
+#endif
             err = consider_best(e, x, y);
             if (err != SSDA_OK) {
                 return err;
@@ -1063,9 +1145,20 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
 #ifndef SSDA_CFG_NO_BOUNDS
     e.lev_lo = 1u; /* no block levels */
     if (e.bounds) {
-        err = build_bounds(&e);
-        if (err == SSDA_OK && (plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
+        err = SSDA_OK;
+        if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
             err = build_blocks(&e);
+        }
+        if (e.lev_lo <= e.lev_hi && mode == (uint8_t)SSDA_THRESHOLD_AUTO &&
+            plan->scan == (uint8_t)SSDA_SCAN_RASTER) {
+            /* the levels and the seed's table take the row groups' place:
+               the few positions that pass every level are summed without them */
+            e.low = (uint32_t *)plan->work;
+            e.bounds = false;
+        } else if (err == SSDA_OK) {
+            err = build_bounds(&e);
+        } else {
+            /* a fetch error: returned below */
         }
         if (err != SSDA_OK) {
             return err;

@@ -192,8 +192,9 @@ typedef enum {
 #define SSDA_MATCH_BLOCKS 0x10u
 /* The finest block level: 2^4 x 2^4 = 256 blocks. */
 #define SSDA_MATCH_BLOCK_LEVELS 4u
-/* The window's block sums of levels 1..4: 4 + 16 + 64 + 256 entries. */
-#define SSDA_MATCH_BLOCK_SUMS 340u
+/* The window's block sums of levels 1..4 (4 + 16 + 64 + 256 entries) and
+   the 16 first candidates of the raster scan (3 entries each), uint32_t. */
+#define SSDA_MATCH_BLOCK_SUMS 388u
 
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
    area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
