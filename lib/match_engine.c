@@ -265,7 +265,8 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
    only when bw * bh * maxval < 2^32 (build_blocks). The bound <= 256 terms of
    < 2^32 each < 2^40. Stops after a row of blocks once the bound reaches
    cut_at (a lower bound still). One op per term. */
-static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uint64_t cut_at)
+static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uint64_t cut_at,
+                            uint32_t *rows)
 {
     const uint32_t nb = 1u << l;
     const uint32_t bw = e->L >> l;
@@ -277,6 +278,7 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
     uint32_t i, j;
     for (j = 0u; j < nb; j++) {
         const uint32_t *r1 = r0 + down;
+        const uint64_t before = b;
         uint32_t left = r1[0] - r0[0]; /* column sums modulo 2^32 */
         uint32_t u = 0u;
         for (i = 0u; i < nb; i++) {
@@ -290,6 +292,9 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
         }
         w += nb;
         r0 = r1;
+        if (rows != NULL) { /* the row of blocks' terms, saturated */
+            rows[j] = b - before > UINT32_MAX ? UINT32_MAX : (uint32_t)(b - before);
+        }
         if (b >= cut_at) {
             e->ops += (j + 1u) * nb; /* <= 256 */
             return b;
@@ -300,16 +305,29 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
 }
 
 /* Position (x, y) rejected by a block level, coarsest first: the bound in
-   *low (for the fallback) and true; else false. */
+   *low (for the fallback) and true; else false, and without row groups
+   (the seeded raster scan) the finest level's rows of blocks become the
+   groups of the row loop: their terms (saturated to 32 bits) in e->term,
+   their sum in *low, e->group rows each. */
 static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t *low)
 {
-    uint32_t l;
+    uint32_t *rows = e->bounds ? NULL : e->term;
+    uint32_t l, j;
+    uint64_t rest = 0u;
     for (l = e->lev_lo; l <= e->lev_hi; l++) {
-        const uint64_t b = block_bound(e, l, x, y, cut_at);
+        const uint64_t b = block_bound(e, l, x, y, cut_at, rows);
         if (b >= cut_at) {
             *low = b;
             return true;
         }
+    }
+    if (rows != NULL) {
+        e->group = e->M >> e->lev_hi;
+        e->ngroups = 1u << e->lev_hi;
+        for (j = 0u; j < e->ngroups; j++) {
+            rest += rows[j];
+        }
+        *low = rest;
     }
     return false;
 }
@@ -366,6 +384,9 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     if (e->lev_lo <= e->lev_hi && blocks_reject(e, x, y, cut_at, &rest)) {
         NOTE_CUT(e, x, y, rest, 0u);
         return 0;
+    }
+    if (e->row_step != 1u) {
+        rest = 0u; /* spread order: the levels serve as a pre-check only */
     }
     if (e->bounds) {
         rest = group_bound(e, x, y);
@@ -533,7 +554,7 @@ static void seed_pass(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
         const uint32_t ty = SSDA_DIV32(y * SEED_TILES, e->ny);
         uint32_t tx = 0u, next_x = SSDA_DIV32(e->nx + SEED_TILES - 1u, SEED_TILES);
         for (x = 0u; x < e->nx; x++) {
-            const uint64_t b = block_bound(e, e->lev_lo, x, y, UINT64_MAX);
+            const uint64_t b = block_bound(e, e->lev_lo, x, y, UINT64_MAX, NULL);
             const uint32_t v = b > UINT32_MAX ? UINT32_MAX : (uint32_t)b;
             if (x == next_x) {
                 tx++;
@@ -602,7 +623,7 @@ static int scan_raster(engine_t *e)
     uint32_t *cx = NULL, *cy = NULL;
     if (e->low != NULL) {
         /* the candidates in the work buffer, after the window's block sums */
-        uint32_t *cb = e->wblk + SSDA_MATCH_BLOCK_SUMS - 3u * SEED_CANDS;
+        uint32_t *cb = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS - 3u * SEED_CANDS;
         int err;
         cx = cb + SEED_CANDS;
         cy = cx + SEED_CANDS;
@@ -1154,6 +1175,7 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
             /* the levels and the seed's table take the row groups' place:
                the few positions that pass every level are summed without them */
             e.low = (uint32_t *)plan->work;
+            e.term = e.wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS;
             e.bounds = false;
         } else if (err == SSDA_OK) {
             err = build_bounds(&e);

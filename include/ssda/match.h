@@ -171,30 +171,38 @@ typedef enum {
  * bottom remainders left out), l = 1 .. SSDA_MATCH_BLOCK_LEVELS; with B_b(x, y)
  * the sum of the area pixels under block b and W_b the window's,
  *     sum_b |B_b(x, y) - W_b| <= SAD(x, y),
- * and each level's bound is at least as tight as the coarser one's when the
- * block sides are even. A position is tested level after level, coarsest
- * first (2^(2l) operations), before the row groups and its pixels; a level
- * is used when both block sides are at least 8 px and a block's sum fits in
- * 32 bits (16-bit windows: (L >> l) * (M >> l) <= 65537), so windows
- * smaller than 16 x 16 use none (the search is then SSDA_MATCH_BOUNDS's).
- * Block sums come from the area's integral image in the work buffer
- * (uint32_t modulo 2^32: a block's sum is exact when it fits 32 bits). With
- * AUTO and the raster scan, the position with the smallest coarsest-level
- * bound is summed first, so the threshold is low from the start; the
- * others follow in raster order (each visited once). Exact as
- * SSDA_MATCH_BOUNDS: results are those of brute force. pixel_ops counts the
- * work: 2 per area pixel for the integral image, L * M per level for the
- * window's block sums, 1 per block term of a bound (also for the seed's
- * pass over every position). Needs SSDA_MATCH_WORK_SIZE_BLOCKS(...) bytes
- * of work buffer. Costs time on small windows and saves most of it on large
- * ones (docs/benchmarks.md, issue 18).
+ * and a finer level's bound is at least as tight when the block sides are
+ * even. A position is tested level after level, coarsest first (2^(2l)
+ * operations each), before its pixels; a level is used when both block
+ * sides are at least 16 px and a block's sum fits in 32 bits (16-bit
+ * windows: (L >> l) * (M >> l) <= 65537), so windows narrower or lower than
+ * 32 px use none (the search is then SSDA_MATCH_BOUNDS's). Block sums come
+ * from the area's integral image in the work buffer (uint32_t modulo 2^32:
+ * a block's sum is exact when it fits 32 bits).
+ * With AUTO and the raster scan: a first pass computes every position's
+ * coarsest bound into the work buffer (in place of the row groups), and in
+ * each of 4 x 4 tiles of the positions the one with the smallest bound is
+ * summed first, best first, so the threshold is low from the start; then
+ * the raster scan visits the others (each position once), rejecting from
+ * the stored bound, then the finer levels, and in row order the finest
+ * level's rows of blocks serve as the row groups of SSDA_MATCH_BOUNDS.
+ * Other scans and modes test the levels before the row groups.
+ * Exact as SSDA_MATCH_BOUNDS: every result field but pixel_ops, positions
+ * and completed is that of the search without the flag (FIXED and RAMP's
+ * all-cut fallback: the bound at a rejection is the level's). pixel_ops
+ * counts the work: 2 per area pixel for the integral image, L * M per level
+ * for the window's block sums, 1 per block term of a bound (the coarsest
+ * level once per position, in the first pass). Needs
+ * SSDA_MATCH_WORK_SIZE_BLOCKS(...) bytes of work buffer.
  */
 #define SSDA_MATCH_BLOCKS 0x10u
 /* The finest block level: 2^4 x 2^4 = 256 blocks. */
 #define SSDA_MATCH_BLOCK_LEVELS 4u
-/* The window's block sums of levels 1..4 (4 + 16 + 64 + 256 entries) and
-   the 16 first candidates of the raster scan (3 entries each), uint32_t. */
-#define SSDA_MATCH_BLOCK_SUMS 388u
+/* The window's block sums of levels 1..4 (4 + 16 + 64 + 256 entries), the
+   16 first candidates of the raster scan (3 entries each) and the terms of
+   the finest level's 16 rows of blocks, uint32_t. */
+#define SSDA_MATCH_BLOCK_SUMS 404u
+#define SSDA_MATCH_BLOCK_ROWS 16u
 
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
    area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
