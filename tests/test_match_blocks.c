@@ -11,7 +11,9 @@
 #include <string.h>
 #include "unity.h"
 #include "ssda/match.h"
+#include "ssda/stream.h"
 #include "test_image.h"
+#include "test_source.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -264,6 +266,76 @@ static void test_blocks_worst_case_16bit(void)
 }
 #endif
 
+/* Images behind a read callback (ssda_stream_match: rows fetched one at a
+   time, the engine's general row loop with the levels' rows of blocks as
+   row groups) give the result of ssda_match in RAM, 8 and 16-bit, for a
+   window with two levels (64 x 64: 2 x 2 and 4 x 4 blocks). */
+#define SW 96u
+#define SH 80u
+static uint16_t g_simg[SW * SH], g_swin[64u * 64u];
+static uint8_t g_sdev[2][SW * SH * 2u];
+static uint32_t g_sarena[2][(SW * SH * 2u) / 4u + 64u];
+static uint64_t g_swork[(SSDA_MATCH_WORK_SIZE_BLOCKS(SW, SH, 64u, 64u) + 7u) / 8u];
+
+static void stream_source(ssda_source_t *src, test_source_t *dev, uint32_t k,
+                          const ssda_view_t *v)
+{
+    ssda_source_config_t c;
+    test_source_init(dev, g_sdev[k], (uint32_t)sizeof g_sdev[k], 1u);
+    c = test_source_config(dev, v, SSDA_LAYOUT_RASTER, 0u, 0u, 0u, v->width * v->format, 0u, 1u,
+                           g_sarena[k], sizeof g_sarena[k]);
+    test_source_store(dev, &c, v);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(src, &c));
+}
+
+static void test_blocks_streamed_rows(void)
+{
+    test_rng_t r;
+    uint32_t f, x, y, n;
+    test_rng_seed(&r, 3131u);
+    for (n = 0u; n < 6u; n++) {
+        const ssda_pixfmt_t fmt = (n & 1u) ? SSDA_PIX_U16 : SSDA_PIX_U8;
+        const uint32_t maxv = fmt == SSDA_PIX_U8 ? 255u : 65535u;
+        const uint32_t wx = test_rng_range(&r, 0, SW - 64u), wy = test_rng_range(&r, 0, SH - 64u);
+        ssda_view_t av, wv;
+        ssda_source_t as, ws;
+        test_source_t ad, wd;
+        ssda_rect_t ar = {0u, 0u, SW, SH}, wr = {0u, 0u, 64u, 64u};
+        ssda_match_config_t cfg;
+        ssda_match_result_t ram, streamed;
+        for (y = 0u; y < SH; y++) {
+            for (x = 0u; x < SW; x++) {
+                put(g_simg, fmt, y * SW + x,
+                    ((x / 7u + y / 5u) * 41u + test_rng_range(&r, 0, maxv / 8u)) % (maxv + 1u));
+            }
+        }
+        for (y = 0u; y < 64u; y++) {
+            for (x = 0u; x < 64u; x++) {
+                uint32_t v = get(g_simg, fmt, (wy + y) * SW + wx + x);
+                put(g_swin, fmt, y * 64u + x, v < maxv ? v + (n / 2u) : v);
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&av, g_simg, SW, SH, SW * fmt, fmt));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&wv, g_swin, 64u, 64u, 64u * fmt, fmt));
+        for (f = 0u; f < 2u; f++) { /* rows order, then spread */
+            memset(&cfg, 0, sizeof cfg);
+            cfg.order = (uint8_t)f;
+            cfg.flags = SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS;
+            cfg.work = g_swork;
+            cfg.work_size = sizeof g_swork;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&av, &wv, &cfg, &ram));
+            stream_source(&as, &ad, 0u, &av);
+            stream_source(&ws, &wd, 1u, &wv);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &ar, &ws, &wr, &cfg, &streamed));
+            TEST_ASSERT_EQUAL_UINT64(ram.sad, streamed.sad);
+            TEST_ASSERT_EQUAL_UINT32(ram.x, streamed.x);
+            TEST_ASSERT_EQUAL_UINT32(ram.y, streamed.y);
+            TEST_ASSERT_TRUE(streamed.exact);
+            TEST_ASSERT_EQUAL_UINT64(test_sad(&av, &wv, ram.x, ram.y), ram.sad);
+        }
+    }
+}
+
 /* Errors: BLOCKS without BOUNDS, a buffer one byte short; nothing written. */
 static void test_blocks_errors(void)
 {
@@ -302,6 +374,7 @@ int main(void)
 #ifndef SSDA_TEST_SMALL
     RUN_TEST(test_blocks_worst_case_16bit);
 #endif
+    RUN_TEST(test_blocks_streamed_rows);
     RUN_TEST(test_blocks_errors);
     return UNITY_END();
 }
