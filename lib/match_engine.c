@@ -306,7 +306,7 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
 
 /* Position (x, y) rejected by a block level, coarsest first: the bound in
    *low (for the fallback) and true; else false, and without row groups
-   (the seeded raster scan) the finest level's rows of blocks become the
+   (the seeded raster scan) the last level's rows of blocks become the
    groups of the row loop: their terms (saturated to 32 bits) in e->term,
    their sum in *low, e->group rows each. */
 static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t *low)
@@ -357,7 +357,7 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
    rows in memory): eval_position's loop without what this case does not
    need (fetches, the spread order, the ramp, the fallback, the first-row
    chunks), about 20 % less time on searches that sum many rows (camera.png,
-   128 x 128; issue 18). rest is the bound of the finest level's rows of
+   128 x 128; issue 18). rest is the bound of the last level's rows of
    blocks (groups of e->group rows, terms in e->term), or 0. Returns 1 and
    sets *sad, or 0 when cut. */
 static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t rest,
@@ -585,15 +585,65 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
    decide. The pass also stores every position's bound in the table. */
 #define SEED_TILES 4u
 #define SEED_CANDS (SEED_TILES * SEED_TILES)
+#define SEED_KEEP 8u /* per tile, the positions of the smallest coarsest bounds */
 
-static void seed_pass(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+/* Keep (v, x, y) among a tile's SEED_KEEP smallest coarsest bounds,
+   ascending, the first in raster order first among equal ones; an unused
+   entry has x == UINT32_MAX. */
+static SSDA_ALWAYS_INLINE void seed_keep(uint32_t *kb, uint32_t *kx, uint32_t *ky, uint32_t v,
+                                         uint32_t x, uint32_t y)
 {
-    uint32_t x, y, i;
-    uint32_t *tab = e->low;
+    uint32_t j = SEED_KEEP - 1u;
+    if (kx[j] != UINT32_MAX && v >= kb[j]) {
+        return;
+    }
+    while (j > 0u && (kx[j - 1u] == UINT32_MAX || kb[j - 1u] > v)) {
+        kb[j] = kb[j - 1u];
+        kx[j] = kx[j - 1u];
+        ky[j] = ky[j - 1u];
+        j--;
+    }
+    kb[j] = v;
+    kx[j] = x;
+    ky[j] = y;
+}
+
+/* The candidates: in each tile, of the kept positions the one with the
+   smallest bound at the finest level (the first kept among equal ones). */
+static void seed_rank(engine_t *e, const uint32_t *keep, uint32_t *cx, uint32_t *cy,
+                      uint32_t *cb)
+{
+    uint32_t i, j;
     for (i = 0u; i < SEED_CANDS; i++) {
+        const uint32_t *kx = keep + SEED_CANDS * SEED_KEEP + i * SEED_KEEP;
+        const uint32_t *ky = kx + SEED_CANDS * SEED_KEEP;
         cb[i] = UINT32_MAX;
         cx[i] = UINT32_MAX; /* no candidate */
         cy[i] = UINT32_MAX;
+        for (j = 0u; j < SEED_KEEP && kx[j] != UINT32_MAX; j++) {
+            const uint64_t b = block_bound(e, e->lev_hi, kx[j], ky[j], UINT64_MAX, NULL);
+            const uint32_t v = b > UINT32_MAX ? UINT32_MAX : (uint32_t)b;
+            if (cx[i] == UINT32_MAX || v < cb[i]) {
+                cb[i] = v;
+                cx[i] = kx[j];
+                cy[i] = ky[j];
+            }
+        }
+    }
+}
+
+/* The first pass: every position's coarsest bound into the table, and each
+   tile's SEED_KEEP smallest in keep (bounds, then x, then y; SEED_CANDS *
+   SEED_KEEP entries each). */
+static void seed_pass(engine_t *e, uint32_t *keep)
+{
+    uint32_t x, y, i;
+    uint32_t *tab = e->low;
+    uint32_t *kx = keep + SEED_CANDS * SEED_KEEP, *ky = kx + SEED_CANDS * SEED_KEEP;
+    for (i = 0u; i < SEED_CANDS * SEED_KEEP; i++) {
+        keep[i] = UINT32_MAX;
+        kx[i] = UINT32_MAX;
+        ky[i] = UINT32_MAX;
     }
     for (y = 0u; y < e->ny; y++) {
         /* tile row and column: t * n / SEED_TILES <= p; n < 2^16 */
@@ -607,15 +657,10 @@ static void seed_pass(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
                 next_x = SSDA_DIV32((tx + 1u) * e->nx + SEED_TILES - 1u, SEED_TILES);
             }
             *tab++ = v;
-            i = ty * SEED_TILES + tx;
-            if (v < cb[i] || cx[i] == UINT32_MAX) {
-                cb[i] = v;
-                cx[i] = x;
-                cy[i] = y;
-            }
+            i = (ty * SEED_TILES + tx) * SEED_KEEP;
+            seed_keep(keep + i, kx + i, ky + i, v, x, y);
         }
     }
-    e->lev_lo++; /* the positions' pre-check reads this level from the table */
 }
 
 /* Sum the candidates first, smallest bound first (insertion sort of 16). */
@@ -669,11 +714,21 @@ static int scan_raster(engine_t *e)
     uint32_t *cx = NULL, *cy = NULL;
     if (e->low != NULL) {
         /* the candidates in the work buffer, after the window's block sums */
-        uint32_t *cb = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS - 3u * SEED_CANDS;
+        uint32_t *keep = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS -
+                         3u * SEED_CANDS * (SEED_KEEP + 1u);
+        uint32_t *cb = keep + 3u * SEED_CANDS * SEED_KEEP;
         int err;
         cx = cb + SEED_CANDS;
         cy = cx + SEED_CANDS;
-        seed_pass(e, cx, cy, cb);
+        seed_pass(e, keep);
+        seed_rank(e, keep, cx, cy, cb);
+        /* the positions' pre-check reads the coarsest level from the table;
+           then one level more: finer ones cost more than they reject
+           (camera.png 128x128 in ssda-peers-match, issue 18) */
+        e->lev_lo++;
+        if (e->lev_hi > e->lev_lo) {
+            e->lev_hi = e->lev_lo;
+        }
         err = seed_visit(e, cx, cy, cb);
         if (err != SSDA_OK) {
             return err;

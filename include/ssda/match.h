@@ -180,12 +180,14 @@ typedef enum {
  * from the area's integral image in the work buffer (uint32_t modulo 2^32:
  * a block's sum is exact when it fits 32 bits).
  * With AUTO and the raster scan: a first pass computes every position's
- * coarsest bound into the work buffer (in place of the row groups), and in
- * each of 4 x 4 tiles of the positions the one with the smallest bound is
- * summed first, best first, so the threshold is low from the start; then
- * the raster scan visits the others (each position once), rejecting from
- * the stored bound, then the finer levels, and in row order the finest
- * level's rows of blocks serve as the row groups of SSDA_MATCH_BOUNDS.
+ * coarsest bound into the work buffer (in place of the row groups) and
+ * keeps, in each of 4 x 4 tiles of the positions, the 8 smallest; of
+ * these, the one with the smallest finest-level bound is a candidate, and
+ * the 16 candidates are summed first, best first, so the threshold is low
+ * from the start; then the raster scan visits the others (each position
+ * once), rejecting from the stored bound, then by the next level only
+ * (finer ones cost more than they reject), and in row order that level's
+ * rows of blocks serve as the row groups of SSDA_MATCH_BOUNDS.
  * Other scans and modes test the levels before the row groups.
  * Exact as SSDA_MATCH_BOUNDS: every result field but pixel_ops, positions
  * and completed is that of the search without the flag (FIXED and RAMP's
@@ -199,9 +201,10 @@ typedef enum {
 /* The finest block level: 2^4 x 2^4 = 256 blocks. */
 #define SSDA_MATCH_BLOCK_LEVELS 4u
 /* The window's block sums of levels 1..4 (4 + 16 + 64 + 256 entries), the
-   16 first candidates of the raster scan (3 entries each) and the terms of
-   the finest level's 16 rows of blocks, uint32_t. */
-#define SSDA_MATCH_BLOCK_SUMS 404u
+   raster scan's kept positions (16 tiles x 8, 3 entries each) and 16 first
+   candidates (3 entries each), and the terms of up to 16 rows of blocks,
+   uint32_t. */
+#define SSDA_MATCH_BLOCK_SUMS 788u
 #define SSDA_MATCH_BLOCK_ROWS 16u
 
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
