@@ -610,7 +610,7 @@ static SSDA_ALWAYS_INLINE void seed_keep(uint32_t *kb, uint32_t *kx, uint32_t *k
 
 /* The candidates: in each tile, of the kept positions the one with the
    smallest bound at the finest level (the first kept among equal ones). */
-static void seed_rank(engine_t *e, const uint32_t *keep, uint32_t *cx, uint32_t *cy,
+static SSDA_NOINLINE void seed_rank(engine_t *e, const uint32_t *keep, uint32_t *cx, uint32_t *cy,
                       uint32_t *cb)
 {
     uint32_t i, j;
@@ -635,7 +635,7 @@ static void seed_rank(engine_t *e, const uint32_t *keep, uint32_t *cx, uint32_t 
 /* The first pass: every position's coarsest bound into the table, and each
    tile's SEED_KEEP smallest in keep (bounds, then x, then y; SEED_CANDS *
    SEED_KEEP entries each). */
-static void seed_pass(engine_t *e, uint32_t *keep)
+static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
 {
     uint32_t x, y, i;
     uint32_t *tab = e->low;
@@ -664,7 +664,7 @@ static void seed_pass(engine_t *e, uint32_t *keep)
 }
 
 /* Sum the candidates first, smallest bound first (insertion sort of 16). */
-static int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+static SSDA_NOINLINE int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
 {
     uint32_t i, j;
     for (i = 1u; i < SEED_CANDS; i++) {
@@ -709,51 +709,9 @@ static bool seed_visited(const uint32_t *cx, const uint32_t *cy, uint32_t x, uin
 static int scan_raster(engine_t *e)
 {
     uint32_t x, y;
-    const uint32_t *low = NULL; /* the table of coarsest bounds */
-#ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t *cx = NULL, *cy = NULL;
-    if (e->low != NULL) {
-        /* the candidates in the work buffer, after the window's block sums */
-        uint32_t *keep = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS -
-                         3u * SEED_CANDS * (SEED_KEEP + 1u);
-        uint32_t *cb = keep + 3u * SEED_CANDS * SEED_KEEP;
-        int err;
-        cx = cb + SEED_CANDS;
-        cy = cx + SEED_CANDS;
-        seed_pass(e, keep);
-        seed_rank(e, keep, cx, cy, cb);
-        /* the positions' pre-check reads the coarsest level from the table;
-           then one level more: finer ones cost more than they reject
-           (camera.png 128x128 in ssda-peers-match, issue 18) */
-        e->lev_lo++;
-        if (e->lev_hi > e->lev_lo) {
-            e->lev_hi = e->lev_lo;
-        }
-        err = seed_visit(e, cx, cy, cb);
-        if (err != SSDA_OK) {
-            return err;
-        }
-        low = e->low;
-    }
-#endif
     for (y = 0u; y < e->ny; y++) {
         for (x = 0u; x < e->nx; x++) {
-            int err;
-#ifndef SSDA_CFG_NO_BOUNDS
-            if (low != NULL) {
-                /* a position whose coarsest bound reaches its cut level is
-                   rejected here, its terms counted in the seed's pass */
-                const uint32_t v = low[(size_t)y * e->nx + x];
-                if (v == UINT32_MAX && seed_visited(cx, cy, x, y)) {
-                    continue;
-                }
-                if ((uint64_t)v >= cut_level(e, x, y)) {
-                    e->positions++;
-                    continue;
-                }
-            }
-#endif
-            err = consider_best(e, x, y);
+            int err = consider_best(e, x, y);
             if (err != SSDA_OK) {
                 return err;
             }
@@ -761,6 +719,49 @@ static int scan_raster(engine_t *e)
     }
     return SSDA_OK;
 }
+
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The seeded raster scan (SSDA_MATCH_BLOCKS, AUTO): the table and the
+   candidates, the candidates summed, then the raster scan rejecting from
+   the table. Out of line: its locals stay off the frame of the others. */
+static SSDA_NOINLINE int scan_seeded(engine_t *e)
+{
+    /* the candidates in the work buffer, after the window's block sums */
+    uint32_t *keep = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS -
+                     3u * SEED_CANDS * (SEED_KEEP + 1u);
+    uint32_t *cb = keep + 3u * SEED_CANDS * SEED_KEEP;
+    uint32_t *cx = cb + SEED_CANDS, *cy = cx + SEED_CANDS;
+    const uint32_t *low = e->low;
+    uint32_t x, y;
+    int err;
+    seed_pass(e, keep);
+    seed_rank(e, keep, cx, cy, cb);
+    /* the positions' pre-check reads the coarsest level from the table;
+       then one level more: finer ones cost more than they reject
+       (camera.png 128x128 in ssda-peers-match, issue 18) */
+    e->lev_lo++;
+    if (e->lev_hi > e->lev_lo) {
+        e->lev_hi = e->lev_lo;
+    }
+    err = seed_visit(e, cx, cy, cb);
+    for (y = 0u; y < e->ny && err == SSDA_OK; y++) {
+        for (x = 0u; x < e->nx && err == SSDA_OK; x++) {
+            /* a position whose coarsest bound reaches its cut level is
+               rejected here, its terms counted in the first pass */
+            const uint32_t v = low[(size_t)y * e->nx + x];
+            if (v == UINT32_MAX && seed_visited(cx, cy, x, y)) {
+                continue;
+            }
+            if ((uint64_t)v >= cut_level(e, x, y)) {
+                e->positions++;
+                continue;
+            }
+            err = consider_best(e, x, y);
+        }
+    }
+    return err;
+}
+#endif
 
 #ifndef SSDA_CFG_NO_PREDICT
 
@@ -1287,6 +1288,11 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
             return err;
         }
     }
+#endif
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (e.low != NULL) {
+        err = scan_seeded(&e);
+    } else
 #endif
 #ifndef SSDA_CFG_NO_PREDICT
     if (plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {
