@@ -296,11 +296,15 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
             rows[j] = b - before > UINT32_MAX ? UINT32_MAX : (uint32_t)(b - before);
         }
         if (b >= cut_at) {
-            e->ops += (j + 1u) * nb; /* <= 256 */
+            const uint32_t terms = (j + 1u) * nb; /* <= 256 */
+            e->ops += terms;
             return b;
         }
     }
-    e->ops += nb * nb;
+    {
+        const uint32_t terms = nb * nb; /* <= 256 */
+        e->ops += terms;
+    }
     return b;
 }
 
@@ -312,8 +316,7 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
 static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t *low)
 {
     uint32_t *rows = e->bounds ? NULL : e->term;
-    uint32_t l, j;
-    uint64_t rest = 0u;
+    uint32_t l;
     for (l = e->lev_lo; l <= e->lev_hi; l++) {
         const uint64_t b = block_bound(e, l, x, y, cut_at, rows);
         if (b >= cut_at) {
@@ -322,6 +325,8 @@ static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, 
         }
     }
     if (rows != NULL) {
+        uint64_t rest = 0u; /* <= 16 terms < 2^32 each */
+        uint32_t j;
         e->group = e->M >> e->lev_hi;
         e->ngroups = 1u << e->lev_hi;
         for (j = 0u; j < e->ngroups; j++) {
@@ -364,31 +369,32 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
                        uint64_t *sad)
 {
     const size_t as = e->area->stride, ws = e->win->stride;
-    const uint8_t *ap = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
-    const uint8_t *wp = e->win->base;
+    const uint8_t *a0 = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
+    const uint8_t *w0 = e->win->base;
     const uint32_t L = e->L, M = e->M;
-    uint64_t partial = 0u; /* <= 65535^3 */
+    const uint32_t pixels = L * M; /* <= 65535^2 */
+    uint64_t partial = 0u;         /* <= 65535^3 */
+    uint64_t left = rest;          /* the groups not started */
     uint32_t k = 0u, g = 0u;
     while (k < M) {
         uint32_t end = M;
-        if (rest != 0u) {
-            /* group g starts: its term leaves the bound. rest is the sum of
-               term[g .. ngroups - 1], so rest != 0 implies g < ngroups */
-            rest -= e->term[g];
+        if (left != 0u) {
+            /* group g starts: its term leaves the bound. left is the sum of
+               term[g .. ngroups - 1], so left != 0 implies g < ngroups */
+            left -= e->term[g];
             g++;
             end = k + e->group;
         }
         for (; k < end; k++) {
-            partial += row_sad(e, ap, wp, L);
-            ap += as;
-            wp += ws;
-            if (partial + rest >= cut_at) {
-                e->ops += (k + 1u) * L; /* <= 65535^2 */
+            partial += row_sad(e, a0 + (size_t)k * as, w0 + (size_t)k * ws, L);
+            if (partial + left >= cut_at) {
+                const uint32_t summed = (k + 1u) * L; /* <= 65535^2 */
+                e->ops += summed;
                 return 0;
             }
         }
     }
-    e->ops += M * L;
+    e->ops += pixels;
     *sad = partial;
     return 1;
 }
@@ -584,8 +590,11 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
    candidate: spread over the image, so one misleading bound does not
    decide. The pass also stores every position's bound in the table. */
 #define SEED_TILES 4u
-#define SEED_CANDS (SEED_TILES * SEED_TILES)
-#define SEED_KEEP 8u /* per tile, the positions of the smallest coarsest bounds */
+#define SEED_CANDS 16u /* SEED_TILES^2 */
+#define SEED_KEEP 8u   /* per tile, the positions of the smallest coarsest bounds */
+#define SEED_KEPT 128u /* SEED_CANDS * SEED_KEEP */
+#define SEED_KEPT_WORDS 384u /* 3 * SEED_KEPT: bounds, x, y of the kept positions */
+#define SEED_WORDS 432u /* SEED_KEPT_WORDS + 3 * SEED_CANDS: kept, then candidates */
 
 /* Keep (v, x, y) among a tile's SEED_KEEP smallest coarsest bounds,
    ascending, the first in raster order first among equal ones; an unused
@@ -615,8 +624,8 @@ static SSDA_NOINLINE void seed_rank(engine_t *e, const uint32_t *keep, uint32_t 
 {
     uint32_t i, j;
     for (i = 0u; i < SEED_CANDS; i++) {
-        const uint32_t *kx = keep + SEED_CANDS * SEED_KEEP + i * SEED_KEEP;
-        const uint32_t *ky = kx + SEED_CANDS * SEED_KEEP;
+        const uint32_t *kx = keep + SEED_KEPT + ((size_t)i * SEED_KEEP);
+        const uint32_t *ky = kx + SEED_KEPT;
         cb[i] = UINT32_MAX;
         cx[i] = UINT32_MAX; /* no candidate */
         cy[i] = UINT32_MAX;
@@ -639,7 +648,7 @@ static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
 {
     uint32_t x, y, i;
     uint32_t *tab = e->low;
-    uint32_t *kx = keep + SEED_CANDS * SEED_KEEP, *ky = kx + SEED_CANDS * SEED_KEEP;
+    uint32_t *kx = keep + SEED_KEPT, *ky = kx + SEED_KEPT;
     for (i = 0u; i < SEED_CANDS * SEED_KEEP; i++) {
         keep[i] = UINT32_MAX;
         kx[i] = UINT32_MAX;
@@ -656,7 +665,8 @@ static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
                 tx++;
                 next_x = SSDA_DIV32((tx + 1u) * e->nx + SEED_TILES - 1u, SEED_TILES);
             }
-            *tab++ = v;
+            *tab = v;
+            tab++;
             i = (ty * SEED_TILES + tx) * SEED_KEEP;
             seed_keep(keep + i, kx + i, ky + i, v, x, y);
         }
@@ -727,9 +737,8 @@ static int scan_raster(engine_t *e)
 static SSDA_NOINLINE int scan_seeded(engine_t *e)
 {
     /* the candidates in the work buffer, after the window's block sums */
-    uint32_t *keep = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS -
-                     3u * SEED_CANDS * (SEED_KEEP + 1u);
-    uint32_t *cb = keep + 3u * SEED_CANDS * SEED_KEEP;
+    uint32_t *keep = e->wblk + ((size_t)SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS - SEED_WORDS);
+    uint32_t *cb = keep + SEED_KEPT_WORDS;
     uint32_t *cx = cb + SEED_CANDS, *cy = cx + SEED_CANDS;
     const uint32_t *low = e->low;
     uint32_t x, y;
@@ -1063,7 +1072,7 @@ static SSDA_NOINLINE int build_integral(engine_t *e, uint32_t *integ)
     for (y = 0u; y < ah; y++) {
         const uint8_t *p;
         const uint32_t *up = integ + (size_t)y * is;
-        uint32_t *row = integ + (size_t)(y + 1u) * is;
+        uint32_t *row = integ + ((size_t)y + 1u) * is;
         uint32_t s = 0u; /* <= aw * 65535 < 2^32 */
         int err = ssda__rows_get(e->area, 0u, y, aw, &p);
         if (err != SSDA_OK) {
@@ -1075,7 +1084,11 @@ static SSDA_NOINLINE int build_integral(engine_t *e, uint32_t *integ)
             row[x + 1u] = up[x + 1u] + s; /* modulo 2^32 */
         }
     }
-    e->ops += 2u * (uint64_t)(aw * ah); /* aw * ah < 2^32 */
+    {
+        const uint32_t pixels = aw * ah; /* < 2^32 */
+        e->ops += pixels;
+        e->ops += pixels; /* two ops a pixel */
+    }
     return SSDA_OK;
 }
 
@@ -1105,7 +1118,10 @@ static SSDA_NOINLINE int window_blocks(engine_t *e, uint32_t *wblk)
                 }
             }
         }
-        e->ops += (nb * bw) * (nb * bh); /* <= L * M < 2^32 */
+        {
+            const uint32_t pixels = (nb * bw) * (nb * bh); /* <= L * M < 2^32 */
+            e->ops += pixels;
+        }
     }
     return SSDA_OK;
 }
