@@ -200,6 +200,13 @@ static int run_ncc(const match_opts_t *o, const ssda_view_t *area, const ssda_vi
     e = ssda_ncc_match(area, win, &c, &r);
     j->secs = progress_now() - t0;
     free(c.work);
+    if (e == SSDA_OK && (r.flags & SSDA_NCC_FLAT_WINDOW) != 0u) {
+        /* rho is 0 / 0 at every placement: the library's (0, 0) is no answer */
+        return cli_input_error("match", "window '%s' is flat (all %u x %u pixels equal): its "
+                               "correlation coefficient is undefined, so it fits nowhere "
+                               "better than anywhere; --metric sad compares levels",
+                               o->window_path, win->width, win->height);
+    }
     if (e == SSDA_OK) {
         j->res.x = r.x;
         j->res.y = r.y;

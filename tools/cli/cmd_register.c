@@ -235,6 +235,15 @@ static int parse_opts(cli_args_t *a, reg_opts_t *o)
             return CLI_USAGE;
         }
     }
+    if (!a->bad) { /* the library's bare "argument out of range" otherwise */
+        const unsigned win = o->reg.window ? o->reg.window : 20u;
+        const unsigned search = o->reg.search ? o->reg.search : 40u;
+        if (search < win) {
+            return cli_usage_error(a->cmd, "--search %u is smaller than the %u px window "
+                                   "(--window): the area must hold it; e.g. --search %u "
+                                   "for +-10 px", search, win, win + 20u);
+        }
+    }
     return a->bad ? CLI_USAGE : 0;
 }
 
@@ -279,6 +288,27 @@ static int make_source(ssda_source_t *s, const gray_image_t *img, mem_dev_t *dev
         c.arena_size = arena_size;
         return ssda_source_init(s, &c);
     }
+}
+
+/* Every cell must hold a window (the library's SSDA_ERR_SIZE, which alone
+   would read "bad dimensions"): say which grid or window fits REF. Returns
+   CLI_OK, CLI_INPUT (REF smaller than a window) or CLI_USAGE (printed). */
+static int check_cells(const char *cmd, const char *path, const gray_image_t *ref,
+                       const reg_opts_t *o)
+{
+    const uint32_t win = o->reg.window ? o->reg.window : 20u;
+    const uint32_t gx = o->reg.grid_x ? o->reg.grid_x : 4u, gy = o->reg.grid_y ? o->reg.grid_y : 4u;
+    if (ref->width < win || ref->height < win) { /* an image too small: bad input, 1 */
+        return cli_input_error(cmd, "'%s' (%u x %u) is smaller than the %u px window (--window)",
+                               path, ref->width, ref->height, win);
+    }
+    if (ref->width / gx < win || ref->height / gy < win) {
+        return cli_usage_error(cmd, "--grid %ux%u: cells of %u x %u px in '%s' (%u x %u) are "
+                               "smaller than the %u px window; at most %ux%u cells, or a smaller "
+                               "--window", gx, gy, ref->width / gx, ref->height / gy, path,
+                               ref->width, ref->height, win, ref->width / win, ref->height / win);
+    }
+    return CLI_OK;
 }
 
 /* ---- shading ---- */
@@ -730,7 +760,11 @@ static cJSON *json_of(const reg_one_t *r, const gray_image_t *ref, const reg_opt
         }
         cJSON_AddBoolToObject(e, "used", r->used[k] != 0);
         cJSON_AddStringToObject(e, "status", status_name(p->status));
-        cJSON_AddNumberToObject(e, "sad", (double)p->sad);
+        if (o->reg.metric == SSDA_REGISTER_SAD && matched) {
+            cJSON_AddNumberToObject(e, "sad", (double)p->sad);
+        } else { /* not measured: 0 would read as a perfect match */
+            cJSON_AddNullToObject(e, "sad");
+        }
         cJSON_AddNumberToObject(e, "texture", p->texture);
         cJSON_AddItemToArray(pts, e);
     }
@@ -968,6 +1002,10 @@ int cmd_register(int argc, char **argv)
     cli_warn_png_name(a.cmd, "--diff", o.diff);
     if (cli_load_png(a.cmd, a.pos[0], PNG_GRAY_NATIVE, &ref) != 0) {
         return CLI_INPUT;
+    }
+    if ((i = check_cells(a.cmd, a.pos[0], &ref, &o)) != CLI_OK) {
+        gray_image_free(&ref);
+        return i;
     }
     for (i = 0; i < n; i++) {
         r[i].path = a.pos[i + 1];

@@ -101,6 +101,11 @@ static void print_summary(const track_opts_t *o, const track_result_t *r)
                (unsigned long long)r->bytes_read, (unsigned long long)r->reads,
                images ? (double)r->bytes_read / (double)images : 0.0);
     }
+    if (r->clean != NULL) {
+        printf("cleaning: %s: %u of the %u ok vectors changed (JSON: relax_dx, relax_dy, "
+               "changed)\n", o->relax_median ? "normalised median test" : "relaxation labelling",
+               r->changed, r->stats.ok);
+    }
     if (o->json_path != NULL) {
         printf("wrote:   %s\n", o->json_path);
     }

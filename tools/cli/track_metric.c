@@ -1,6 +1,7 @@
 /* track_metric.c - the correlation metric of grid tracking (track_metric.h). */
 #include "track_metric.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -42,7 +43,53 @@ static int window_views(const track_result_t *r, const ssda_track_vector_t *v,
     return e != SSDA_OK ? e : ssda_view_roi(win, &vs, v->x, v->y, g->win_w, g->win_h);
 }
 
-/* One OK window: rho at SAD's placement, or the correlation search. */
+/* Placements along x (axis 0) or y of the search area, less one: the
+   largest top-left coordinate of a window in it. */
+static uint32_t g_free(const track_result_t *r, int axis)
+{
+    return axis == 0 ? (uint32_t)(r->grid.search_w - r->grid.win_w)
+                     : (uint32_t)(r->grid.search_h - r->grid.win_h);
+}
+
+/* Window v's status becomes st (OK or AT_LIMIT), the counts follow. */
+static void set_status(track_result_t *r, ssda_track_vector_t *v, uint8_t st)
+{
+    if (v->status == st) {
+        return;
+    }
+    if (v->status == SSDA_TRACK_OK) {
+        r->stats.ok--;
+        r->stats.at_limit++;
+    } else {
+        r->stats.at_limit--;
+        r->stats.ok++;
+    }
+    v->status = st;
+}
+
+/* Sub-pixel offset, Q8 in [-128, 128], of the vertex of the parabola through
+   r_m, r_0, r_p (Q2.30 at -1, 0, +1; r_0 the best, a trough of rho for
+   absncc's negative peaks): 0 where a neighbour lies outside the area or
+   the three make no peak. The tool's float twin of composite.c's fit. */
+static int32_t peak_q8(int32_t rm, int32_t r0, int32_t rp, int neg)
+{
+    const double s = neg ? -1.0 : 1.0;
+    double den, off;
+    if (rm == SSDA_NCC_NONE || rp == SSDA_NCC_NONE) {
+        return 0;
+    }
+    den = s * ((double)rm - 2.0 * r0 + rp);
+    if (!(den < 0.0)) {
+        return 0;
+    }
+    off = 0.5 * s * ((double)rm - rp) / den;
+    off = off > 0.5 ? 0.5 : (off < -0.5 ? -0.5 : off);
+    return (int32_t)floor(off * 256.0 + 0.5);
+}
+
+/* One OK window: rho at SAD's placement, or the correlation search. The
+   correlation's vector replaces SAD's, its sub-pixel motion too (from rho
+   at the 8 neighbours; whole pixels with --no-subpixel). */
 static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_t *c, size_t k)
 {
     ssda_track_vector_t *v = &r->vec[k];
@@ -68,7 +115,21 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
     r->rho_q30[k] = res.rho_q30;
     v->dx = (int16_t)((int32_t)hx - (int32_t)res.x);
     v->dy = (int16_t)((int32_t)hy - (int32_t)res.y);
+    /* the placement x + d is the motion dx - d */
+    v->sub_dx_q8 = v->dx * 256;
+    v->sub_dy_q8 = v->dy * 256;
+    if ((c->flags & SSDA_NCC_AROUND) != 0u) {
+        v->sub_dx_q8 -= peak_q8(res.around_q30[3], res.rho_q30, res.around_q30[5], res.rho_q30 < 0);
+        v->sub_dy_q8 -= peak_q8(res.around_q30[1], res.rho_q30, res.around_q30[7], res.rho_q30 < 0);
+    }
     v->exact = true;
+    /* the status of the correlation's own best: on the area's border it may
+       lie beyond (track.h's AT_LIMIT rule); SAD's at_limit may be nothing
+       but a brightness change, which rho does not see */
+    set_status(r, v, res.x == 0u || res.y == 0u || res.x == g_free(r, 0) ||
+                         res.y == g_free(r, 1)
+                         ? SSDA_TRACK_AT_LIMIT
+                         : SSDA_TRACK_OK);
     return ssda_sad_at(&area, &win, res.x, res.y, &v->sad);
 }
 
@@ -90,6 +151,9 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     memset(&c, 0, sizeof c);
     c.metric = (uint8_t)(o->metric == TRACK_METRIC_ABSNCC ? SSDA_NCC_ABS : SSDA_NCC_RHO);
     c.flags = SSDA_NCC_PREDICT;
+    if ((r->cfg.flags & SSDA_TRACK_NO_SUBPIXEL) == 0u) {
+        c.flags |= SSDA_NCC_AROUND;
+    }
     c.work_size = SSDA_NCC_WORK_SIZE(g->search_w, g->win_w, g->win_h);
     r->rho_q30 = malloc((g->count + 1u) * sizeof *r->rho_q30);
     c.work = malloc(c.work_size);
@@ -100,7 +164,9 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     t0 = progress_now();
     for (k = 0; k < g->count && e == SSDA_OK; k++) {
         r->rho_q30[k] = INT32_MIN;
-        if (r->vec[k].status == SSDA_TRACK_OK) {
+        /* ncc, absncc: SAD's at_limit windows are searched too */
+        if (r->vec[k].status == SSDA_TRACK_OK ||
+            (o->metric != TRACK_METRIC_SAD && r->vec[k].status == SSDA_TRACK_AT_LIMIT)) {
             e = one_window(o, r, &c, k);
         }
     }
@@ -145,7 +211,7 @@ void track_metric_print(const track_opts_t *o, const track_result_t *r)
         return;
     }
     for (k = 0; k < r->grid.count; k++) {
-        if (r->rho_q30[k] != INT32_MIN) {
+        if (r->rho_q30[k] != INT32_MIN && r->vec[k].status == SSDA_TRACK_OK) {
             v[n++] = r->rho_q30[k];
         }
     }

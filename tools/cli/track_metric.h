@@ -22,9 +22,11 @@ int track_metric_parse(const char *name);
 const char *track_metric_name(int metric);
 
 /* After the tracking: rho of every OK window at its placement; with ncc or
-   absncc each OK window's dx, dy, sad (SAD at the new placement) and exact
-   (true) from the correlation search. Fills r->rho_q30 (grid.count
-   entries, INT32_MIN where not OK), r->metric_secs, r->metric_ops. Nothing
+   absncc each OK and AT_LIMIT window's dx, dy, sub_dx_q8, sub_dy_q8, sad
+   (SAD at the new placement) and exact (true) from the correlation search,
+   and its status (AT_LIMIT when the correlation's best is on the border of
+   the area, else OK; r->stats follow). Fills r->rho_q30 (grid.count
+   entries, INT32_MIN where not searched), r->metric_secs, r->metric_ops. Nothing
    without --metric. Returns CLI_OK, CLI_USAGE (a window too large for the
    correlation search) or CLI_INPUT (out of memory, a refused search). */
 int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r);

@@ -4,6 +4,7 @@
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
+#include "ssda/ncc.h"
 #include "ssda/stream.h"
 
 #include <errno.h>
@@ -55,12 +56,16 @@ const char track_opts_help[] =
     "  --relax N         clean the field by relaxation labelling (the seed 003's\n"
     "                    section 4), N iterations: JSON windows gain relax_dx,\n"
     "                    relax_dy (px) and changed\n"
+    "  --relax-keep      with --relax: keep vectors whose most likely class is their\n"
+    "                    own (without it those are smoothed too: changed is false,\n"
+    "                    yet relax_dx, relax_dy may differ from sub_dx, sub_dy)\n"
     "  --relax-median    clean by the normalised median test instead (same fields)\n"
     "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
     "                    coefficient at their placement; with ncc (largest rho) or\n"
     "                    absncc (largest |rho|) the vectors come from the exact\n"
-    "                    correlation search over each OK window's area, which a\n"
-    "                    gain or offset between the images does not change\n"
+    "                    correlation search over each ok and at_limit window's\n"
+    "                    area, which a gain or offset between the images does not\n"
+    "                    change; it decides ok or at_limit (best on the border)\n"
     "  --quiet           no progress bar\n";
 
 void track_opts_init(track_opts_t *o)
@@ -345,6 +350,8 @@ static int take_output(cli_args_t *a, track_opts_t *o)
         }
     } else if (cli_flag(a, "--relax-median")) {
         o->relax_median = 1;
+    } else if (cli_flag(a, "--relax-keep")) {
+        o->relax_keep = 1;
     } else if (cli_opt(a, "--metric", &v)) {
         if (v != NULL && (o->metric = track_metric_parse(v)) < 0) {
             o->metric = 0;
@@ -922,19 +929,21 @@ static int run_in_ram(const track_opts_t *o, track_result_t *r)
 /* More than a quarter of the searched windows at the limit: the motion is
    likely larger than the search reaches (or the brightness changed, which
    pulls SAD's minima to the border). */
-static void warn_at_limit(const char *cmd, const track_result_t *r)
+static void warn_at_limit(const char *cmd, const track_opts_t *o, const track_result_t *r)
 {
     const ssda_track_stats_t *s = &r->stats;
     const uint32_t searched = s->ok + s->ambiguous + s->at_limit;
+    const int sad = o->metric != TRACK_METRIC_NCC && o->metric != TRACK_METRIC_ABSNCC;
     if (searched == 0u || 4u * (uint64_t)s->at_limit <= searched) {
         return;
     }
     fprintf(stderr, "ssda %s: warning: %u of %u searched windows are 'at_limit' (best match "
             "on the border of the %ux%u search area): the motion may be larger than it "
-            "reaches, try --search %ux%u; or the brightness changed between the images, "
-            "try --grad\n",
+            "reaches, try --search %ux%u%s\n",
             cmd, s->at_limit, searched, r->grid.search_w, r->grid.search_h,
-            2u * r->grid.search_w - r->grid.win_w, 2u * r->grid.search_h - r->grid.win_h);
+            2u * r->grid.search_w - r->grid.win_w, 2u * r->grid.search_h - r->grid.win_h,
+            sad ? "; or the brightness changed between the images, try --metric ncc or --grad"
+                : "");
 }
 
 /* No window is ok: say why (the run itself is valid). */
@@ -985,14 +994,12 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     r->secs = progress_now() - t0;
     free(work);
     r->cfg.match.work = NULL;
-    if (rc == CLI_OK) {
-        warn_at_limit(cmd, r);
-        warn_nothing_tracked(cmd, r);
-    }
     return rc;
 }
 
-/* --relax N or --relax-median on the tracked grid (integer px vectors). */
+/* --relax N or --relax-median on the tracked grid: the sub-pixel vectors
+   (Q8; whole pixels with --no-subpixel), so that a vector the cleaning
+   keeps keeps its fraction. */
 static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r)
 {
     ssda_relax_grid_t g;
@@ -1006,10 +1013,11 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
         return cli_input_error(cmd, "out of memory");
     }
     memset(&g, 0, sizeof g);
-    g.dx = &r->vec[0].dx;
-    g.dy = &r->vec[0].dy;
+    g.dx = &r->vec[0].sub_dx_q8;
+    g.dy = &r->vec[0].sub_dy_q8;
     g.status = &r->vec[0].status; /* SSDA_TRACK_OK = 0: valid */
     g.stride = sizeof r->vec[0];
+    g.frac_bits = 8;
     g.cols = r->grid.cols;
     g.rows = r->grid.rows;
     if (o->relax_median) {
@@ -1018,6 +1026,7 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
         ssda_relax_config_t c;
         memset(&c, 0, sizeof c);
         c.iterations = (uint16_t)o->relax;
+        c.flags = o->relax_keep ? SSDA_RELAX_KEEP : 0u;
         c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
         c.work = malloc(c.work_size);
         e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->grid.count);
@@ -1051,12 +1060,28 @@ int track_run(const char *cmd, const char *first_path, const char *second_path,
         }
         r->cfg.flags &= (uint8_t)~SSDA_TRACK_UNIQUE; /* the default: not in this mode */
     }
+    if (o->relax_keep && o->relax == 0u) {
+        return cli_usage_error(cmd, "--relax-keep needs --relax N");
+    }
+    if (o->metric != TRACK_METRIC_NONE) { /* refused before the tracking, not after it */
+        const uint32_t ww = o->cfg.win_w ? o->cfg.win_w : SSDA_TRACK_DEFAULT_WIN;
+        const uint32_t wh = o->cfg.win_h ? o->cfg.win_h : SSDA_TRACK_DEFAULT_WIN;
+        if (ww * wh > SSDA_NCC_MAX_PIXELS) {
+            return cli_usage_error(cmd, "--metric: window %ux%u; the correlation coefficient "
+                                   "takes windows of at most %u pixels", ww, wh,
+                                   SSDA_NCC_MAX_PIXELS);
+        }
+    }
     rc = load_inputs(cmd, first_path, second_path, o, r);
     if (rc == CLI_OK) {
         rc = prepare_and_track(cmd, o, r);
     }
     if (rc == CLI_OK) {
         rc = track_metric_apply(cmd, o, r);
+    }
+    if (rc == CLI_OK) { /* on the final statuses (--metric may change them) */
+        warn_at_limit(cmd, o, r);
+        warn_nothing_tracked(cmd, r);
     }
     if (rc == CLI_OK) {
         rc = clean_field(cmd, o, r);
@@ -1147,6 +1172,7 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     cJSON_AddStringToObject(opt, "cleaning", o->relax_median ? "median" : o->relax ? "relax" : "none");
     if (o->relax != 0u) {
         cJSON_AddNumberToObject(opt, "relax_iterations", o->relax);
+        cJSON_AddBoolToObject(opt, "relax_keep", o->relax_keep != 0);
     }
     track_metric_json_options(opt, o);
     if (r->cfg.flags & SSDA_TRACK_EXCLUDE) {
@@ -1176,8 +1202,11 @@ static cJSON *json_options(const track_result_t *r, const track_opts_t *o)
     } else {
         cJSON_AddNullToObject(opt, "unique");
     }
+    /* the correlation search fits its own peak in every mode */
     cJSON_AddBoolToObject(opt, "subpixel", !(r->cfg.flags & SSDA_TRACK_NO_SUBPIXEL) &&
-                                               exact_mode(&r->cfg.match));
+                                               (exact_mode(&r->cfg.match) ||
+                                                o->metric == TRACK_METRIC_NCC ||
+                                                o->metric == TRACK_METRIC_ABSNCC));
     return opt;
 }
 

@@ -32,6 +32,7 @@ typedef struct {
     int quiet;
     uint32_t relax;           /* --relax N: relaxation labelling iterations, 0 = none */
     int relax_median;         /* --relax-median: the normalised median test */
+    int relax_keep;           /* --relax-keep: SSDA_RELAX_KEEP */
     int metric;               /* --metric: TRACK_METRIC_* (track_metric.h), 0 = not given */
 } track_opts_t;
 

@@ -13,8 +13,10 @@ uniform noise of +-2 grey levels on both. Each pair is tracked by the tool's
 defaults (16x16 windows in 32x32 areas, step 16) with each metric; a window
 counts as right when its (dx, dy) is within 1 px of the motion in both
 components. Printed: the share of `ok` windows that are right, min / mean
-over the 15 settings, and the tool's time (the SAD tracking plus, for ncc
-and absncc, the correlation search; medians over the settings).
+over the 15 settings, the mean number of `ok` windows (of the 196 the grid
+searches; with ncc and absncc the correlation decides ok or at_limit), and
+the tool's time (the SAD tracking plus, for ncc and absncc, the correlation
+search; medians over the settings).
 """
 import argparse
 import json
@@ -82,14 +84,16 @@ def main():
     print(f"load average {os.getloadavg()[0]:.2f} {os.getloadavg()[1]:.2f} {os.getloadavg()[2]:.2f}"
           f" (start); {args.size}x{args.size} pairs, motion {motion}, 15 gain/offset settings\n")
     print("| image | " + " | ".join(f"`--metric {m}`: within 1 px, min / mean" for m in METRICS) +
+          " | " + " | ".join(f"{m}: ok windows" for m in METRICS) +
           " | " + " | ".join(f"{m}: ms" for m in METRICS) + " |")
-    print("|---|" + "---:|" * (2 * len(METRICS)))
+    print("|---|" + "---:|" * (3 * len(METRICS)))
     rng = np.random.default_rng(1)
     with tempfile.TemporaryDirectory() as tmp:
         a, b = os.path.join(tmp, "a.png"), os.path.join(tmp, "b.png")
         for name, img in images:
             shares = {m: [] for m in METRICS}
             times = {m: [] for m in METRICS}
+            oks = {m: [] for m in METRICS}
             for gain in GAINS:
                 for offset in OFFSETS:
                     first, second = pair(img, args.size, motion, gain, offset, rng)
@@ -101,10 +105,12 @@ def main():
                         right = sum(abs(w["dx"] - motion[0]) <= 1 and abs(w["dy"] - motion[1]) <= 1
                                     for w in ok)
                         shares[m].append(100.0 * right / max(1, len(ok)))
+                        oks[m].append(len(ok))
                         times[m].append(1e3 * (st["time_s"] + st.get("metric_time_s", 0.0)))
             print(f"| {name} | " +
                   " | ".join(f"{min(shares[m]):.1f} % / {statistics.mean(shares[m]):.1f} %"
                              for m in METRICS) + " | " +
+                  " | ".join(f"{statistics.mean(oks[m]):.0f}" for m in METRICS) + " | " +
                   " | ".join(f"{statistics.median(times[m]):.2f}" for m in METRICS) + " |")
     print(f"\nload average {os.getloadavg()[0]:.2f} (end)")
 

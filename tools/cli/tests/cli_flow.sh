@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The correlation parts of the tool (issue 16): `ssda match --metric` and
-# `ssda flow`, `ssda track --metric`. Three CTest groups:
-#   cli_flow.sh match|flow|track SSDA GEN CHECK WORKDIR FLOWTOOL
+# `ssda flow`, `ssda track --metric`. Four CTest groups:
+#   cli_flow.sh match|flow|track|subpixel SSDA GEN CHECK WORKDIR FLOWTOOL
 . "$(dirname "$0")/cli_lib.sh" "$@"
 flowtool=$6
 
@@ -33,6 +33,11 @@ match)
   run 2 match a.png w.png --metric ncc --threshold none && stderr_has "are SAD options"
   run 2 match a.png w.png --metric ncc --scan coarse && stderr_has "are SAD options"
   run 0 match a.png w.png --metric ncc --predict 3,4 --json && chk match-json out.txt 37 32 0 true
+  # a flat window has no rho: refused by name, not placed at (0, 0) as "exact"
+  "$flowtool" gain w.png flat.png 0 77
+  run 1 match a.png flat.png --metric ncc --json && stderr_has "window 'flat.png' is flat" &&
+    [ ! -s out.txt ] || fail "flat window: $(cat out.txt)"
+  run 0 match a.png flat.png --json || fail "flat window by SAD"
   ;;
 
 flow)
@@ -49,6 +54,12 @@ flow)
     grep -q '"cleaning":"median"' out.txt || fail "median cleaning: $(head -c 300 out.txt)"
   run 0 flow r.png nb.png --region 20,20,70,60 --metric absncc --radius 0.5 --min-radius 2 \
       --min-std 5 --relax 10 --relax-keep --json f.json && "$flowtool" check f.json 2 -3 0.9
+  grep -q "note:" err.txt && fail "a note on a small run: $(cat err.txt)"
+  # a long job says so before it starts (killed here after the note: the
+  # whole of a 1200 x 1000 image at the defaults is 46 000 templates)
+  "$gen" texture big.png --size 1200x1000 --seed 3
+  timeout 3 "$ssda" flow big.png big.png >/dev/null 2>err.txt
+  stderr_has "templates, up to " && stderr_has "--region X,Y,W,H, a larger --tp-step"
   # errors leave no output
   run 1 flow r.png nb.png --region 110,90,30,30 --json e.json --overlay e.png &&
     stderr_has "must lie inside REF" && absent e.json e.png
@@ -60,6 +71,8 @@ flow)
   run 2 flow r.png nb.png --relax-keep && stderr_has "--relax-keep needs --relax N"
   run 2 flow r.png nb.png --relax 5 --relax-median && stderr_has "not both"
   run 0 flow --help && grep -q "composite template" out.txt || fail "help"
+  # the overlay's colours as draw.c draws them (red is track's at_limit)
+  grep -q "yellow as matched, pink those the" out.txt || fail "help: overlay colours"
   # ssda track cleans its grid too (same fields)
   "$gen" texture n2.png --size 120x100 --seed 7 --shift 2,-3
   run 0 track r.png n2.png --relax 30 --json t.json --quiet &&
@@ -91,8 +104,9 @@ track)
     "$flowtool" track-check t.json 2 -3 1.0 || fail "ncc vectors under gain"
   grep -q "^metric:  ncc" out.txt || fail "summary line: $(cat out.txt)"
   # inverted contrast: absncc tracks it (rho = -1 at the motion), ncc does not
+  # inverted (a trough of rho; SAD calls the windows ambiguous: --unique off)
   "$flowtool" gain n.png ni.png -1 255
-  run 0 track r.png ni.png --metric absncc --json t.json --quiet &&
+  run 0 track r.png ni.png --metric absncc --unique off --json t.json --quiet &&
     "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"rho":-1.000000' t.json ||
     fail "absncc on the inverse"
   run 0 track r.png ni.png --metric ncc --json t.json --quiet &&
@@ -105,8 +119,60 @@ track)
   run 2 track r.png nb.png --metric l1 && stderr_has "bad --metric 'l1'"
   "$gen" texture big.png --size 260x260 --seed 3
   run 2 track big.png big.png --window 257x256 --search 258x258 --metric ncc &&
-    stderr_has "at most 65536 pixels"
+    stderr_has "at most 65536 pixels" && grep -q "warning" err.txt &&
+    fail "refused only after the grid and the tracking: $(cat err.txt)"
   run 0 track --help && grep -q -- "--metric M" out.txt || fail "help"
+  # a stronger change (x 0.5 + 100): SAD leaves most windows at_limit; the
+  # correlation searches those too and decides their status itself
+  "$flowtool" gain n.png nh.png 0.5 100
+  run 0 track r.png nh.png --json t.json --quiet && grep -q '"at_limit":1[0-9],' t.json ||
+    fail "SAD under x 0.5 + 100: expected 10-19 at_limit: $(grep -o '"ok":.*' t.json)"
+  run 0 track r.png nh.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -3 1.0 && grep -q '"ok":1[2-9],' t.json &&
+    grep -q '"at_limit":0,' t.json || fail "ncc: SAD's at_limit windows: $(grep -o '"ok":.*' t.json)"
+  # a motion beyond the range (9 px, range +-8): the correlation's best on
+  # the border is at_limit, never ok
+  "$gen" texture n9.png --size 120x100 --seed 7 --shift 9,0
+  run 0 track r.png n9.png --metric ncc --json t.json --quiet &&
+    grep -q '"at_limit":[1-9]' t.json && ! grep -q '"dx":8,.*"status":"ok"' t.json ||
+    fail "ncc on the border: $(grep -o '"ok":.*' t.json)"
+  # its warning does not blame a brightness change, which rho does not see
+  stderr_has "'at_limit'" && grep -qF "brightness" err.txt && fail "ncc warning: $(cat err.txt)"
+  ;;
+
+subpixel)
+  # track's sub-pixel vectors with --metric and with cleaning. A texture
+  # moved by (9, -5) px and shrunk 4 x: a motion of (2.25, -1.25) px.
+  "$gen" texture r4.png --size 480x400 --seed 7
+  "$gen" texture n4.png --size 480x400 --seed 7 --shift 9,-5
+  "$flowtool" shrink r4.png r.png 4 && "$flowtool" shrink n4.png n.png 4
+  # the plain SAD tracking: sub-pixel vectors near the motion
+  run 0 track r.png n.png --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "SAD sub-pixel vectors"
+  # the correlation's vectors replace SAD's, their fractions too: under a
+  # gain and offset change SAD's fractions belong to other placements
+  "$flowtool" gain n.png nb.png 0.6 60
+  run 0 track r.png nb.png --metric ncc --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "ncc: sub_dx, sub_dy are not rho's"
+  # inverted (a trough of rho; SAD calls the windows ambiguous: --unique off)
+  "$flowtool" gain n.png ni.png -1 255
+  run 0 track r.png ni.png --metric absncc --unique off --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 || fail "absncc: sub_dx, sub_dy are not rho's"
+  run 0 track r.png nb.png --metric ncc --no-subpixel --json t.json --quiet &&
+    "$flowtool" track-check t.json 2 -1 0.9 && "$flowtool" track-sub t.json 2 -1 0 0.9 &&
+    grep -q '"subpixel":false' t.json || fail "ncc --no-subpixel: whole pixels"
+  # the cleaning reads the sub-pixel vectors: a vector it keeps keeps its fraction
+  for clean in "--relax 30" "--relax-median"; do
+    run 0 track r.png n.png $clean --json t.json &&
+      "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 --relaxed ||
+      fail "track $clean: cleaned vectors lost their fraction"
+    grep -q "^cleaning: .* of the [0-9]* ok vectors changed" out.txt || fail "summary: $(cat out.txt)"
+  done
+  # --relax-keep: a vector whose class stays its own is its input exactly
+  run 0 track r.png n.png --relax 30 --relax-keep --json t.json --quiet &&
+    "$flowtool" track-sub t.json 2.25 -1.25 0.2 0.9 --relaxed --kept &&
+    grep -q '"relax_keep":true' t.json || fail "track --relax-keep"
+  run 2 track r.png n.png --relax-keep && stderr_has "--relax-keep needs --relax N"
   ;;
 esac
 finish

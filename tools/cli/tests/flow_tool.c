@@ -16,6 +16,14 @@
  *   flow_tool track-check FILE.json DX DY MINFRAC
  *     at least MINFRAC of the "ok" windows of `ssda track --json` have
  *     exactly (dx, dy) = (DX, DY).
+ *   flow_tool shrink IN.png OUT.png N       OUT = IN averaged over N x N blocks
+ *     (8-bit, rounded): a pair shifted by k px shrinks to a k / N px motion
+ *   flow_tool track-sub FILE.json DX DY TOL MINFRAC [--relaxed [--kept]]
+ *     `ssda track --json`: every "ok" window's sub_dx, sub_dy lie within
+ *     0.5 px of its dx, dy, and at least MINFRAC of them within TOL px of
+ *     (DX, DY) on each axis (relax_dx, relax_dy with --relaxed); with
+ *     --kept every window not "changed" has relax_dx, relax_dy equal to
+ *     sub_dx, sub_dy (to the 4 decimals printed).
  */
 #include <jansson.h>
 #include <math.h>
@@ -262,8 +270,93 @@ static int track_check(int argc, char **argv)
     return 0;
 }
 
+static int shrink(int argc, char **argv)
+{
+    gray_image_t img = {0}, out = {0};
+    char err[256];
+    uint32_t n, x, y, i, j;
+    if (argc != 3 || png_read_gray(argv[0], PNG_GRAY_8, &img, NULL, err, sizeof err) != 0 ||
+        (n = (uint32_t)atoi(argv[2])) == 0 || img.width < n || img.height < n ||
+        gray_image_alloc(&out, img.width / n, img.height / n, 8) != 0) {
+        fprintf(stderr, "flow_tool shrink: %s\n", argc == 3 ? err : "usage");
+        return 2;
+    }
+    for (y = 0; y < out.height; y++) {
+        for (x = 0; x < out.width; x++) {
+            uint32_t sum = 0;
+            for (j = 0; j < n; j++) {
+                for (i = 0; i < n; i++) {
+                    sum += gray_image_get(&img, x * n + i, y * n + j);
+                }
+            }
+            ((uint8_t *)out.pixels)[(size_t)y * out.stride + x] =
+                (uint8_t)((sum + n * n / 2u) / (n * n));
+        }
+    }
+    if (png_write_gray(argv[1], &out, err, sizeof err) != 0) {
+        fprintf(stderr, "flow_tool shrink: %s\n", err);
+        return 1;
+    }
+    gray_image_free(&img);
+    gray_image_free(&out);
+    return 0;
+}
+
+static int track_sub(int argc, char **argv)
+{
+    json_error_t je;
+    json_t *doc, *list;
+    size_t i, ok = 0, good = 0, torn = 0;
+    const int relaxed = argc >= 6 && !strcmp(argv[5], "--relaxed");
+    const int kept = relaxed && argc == 7 && !strcmp(argv[6], "--kept");
+    size_t moved = 0;
+    double tol;
+    if ((argc != 5 && !(relaxed && (argc == 6 || kept))) ||
+        (doc = json_load_file(argv[0], 0, &je)) == NULL) {
+        fprintf(stderr, "flow_tool track-sub: usage or unreadable JSON\n");
+        return 2;
+    }
+    tol = atof(argv[3]);
+    list = json_object_get(doc, "windows");
+    for (i = 0; i < json_array_size(list); i++) {
+        json_t *t = json_array_get(list, i);
+        double sx, sy;
+        if (strcmp(json_string_value(json_object_get(t, "status")), "ok") != 0) {
+            continue;
+        }
+        ok++;
+        sx = json_number_value(json_object_get(t, "sub_dx"));
+        sy = json_number_value(json_object_get(t, "sub_dy"));
+        torn += fabs(sx - (double)jint(t, "dx")) > 0.5 || fabs(sy - (double)jint(t, "dy")) > 0.5;
+        if (relaxed) {
+            const double rx = json_number_value(json_object_get(t, "relax_dx"));
+            const double ry = json_number_value(json_object_get(t, "relax_dy"));
+            moved += kept && !json_is_true(json_object_get(t, "changed")) &&
+                     (fabs(rx - sx) > 6e-5 || fabs(ry - sy) > 6e-5);
+            sx = rx;
+            sy = ry;
+        }
+        good += fabs(sx - atof(argv[1])) <= tol && fabs(sy - atof(argv[2])) <= tol;
+    }
+    json_decref(doc);
+    if (ok == 0 || torn > 0 || moved > 0 || (double)good < atof(argv[4]) * (double)ok) {
+        fprintf(stderr, "flow_tool track-sub: %zu of %zu ok windows within %g px of (%s, %s)%s; "
+                        "%zu with sub_dx, sub_dy more than 0.5 px from dx, dy; %zu kept "
+                        "vectors moved\n",
+                good, ok, tol, argv[1], argv[2], relaxed ? " (relaxed)" : "", torn, moved);
+        return 1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 2 && !strcmp(argv[1], "shrink")) {
+        return shrink(argc - 2, argv + 2);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "track-sub")) {
+        return track_sub(argc - 2, argv + 2);
+    }
     if (argc >= 2 && !strcmp(argv[1], "gain")) {
         return gain(argc - 2, argv + 2);
     }
@@ -281,6 +374,7 @@ int main(int argc, char **argv)
     }
     fprintf(stderr, "usage: flow_tool gain IN OUT G O | crop IN OUT X Y W H | "
                     "check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
-                    "track-check FILE DX DY MINFRAC\n");
+                    "track-check FILE DX DY MINFRAC | shrink IN OUT N | "
+                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]]\n");
     return 2;
 }

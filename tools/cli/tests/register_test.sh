@@ -56,6 +56,9 @@ run 0 register ref.png inv.png --json inv.json -q && {
 run 1 register ref.png inv.png --metric ncc -o x.png && { stderr_has "order 2 needs at least 6"; absent x.png; }
 # SSDA (the seed's fast alternative) on the same-gain pair
 run 0 register ref.png mov.png --metric sad --json sad.json -q && chk map sad.json truth.txt 0.5
+# "sad" is measured by the sad metric only: null, never 0, under the correlation
+grep -q '"status":"ok","sad":[1-9]' sad.json && grep -q '"status":"ok","sad":null' reg.json &&
+  ! grep -q '"sad":0[,}]' reg.json || fail "sad in the points: $(grep -o '"status[^}]*' reg.json | head -3)"
 # streamed in 4 KB: the same output as in RAM
 run 0 register ref.png mov.png -o m.png --mem 4K -q && chk same m.png out.png
 run 0 register ref.png mov.png -o m256.png --mem 256 -q && chk same m256.png out.png
@@ -87,12 +90,19 @@ run 1 register ref.png flat.png -o x.png --order 3 --grid 3x3 && {
 }
 # bad input and usage
 run 1 register ref.png nothere.png -o x.png && absent x.png
-run 1 register tiny.png tiny.png -o x.png && absent x.png
+run 1 register tiny.png tiny.png -o x.png && absent x.png && stderr_has "smaller than the 20 px window"
 run 2 register ref.png mov.png -o x.png --mem 255 && absent x.png
 run 2 register ref.png -o x.png && absent x.png
 run 2 register ref.png mov.png && stderr_has "no output"
 run 2 register ref.png mov.png -o x.png --order 4
 run 2 register ref.png mov.png -o x.png --grid 0x3
+# a grid too fine for the window (320 x 240, 20 px windows): usage, naming what fits
+run 2 register ref.png mov.png -o x.png --search 10 && absent x.png &&
+  stderr_has "--search 10 is smaller than the 20 px window"
+run 2 register ref.png mov.png -o x.png --window 50 && stderr_has "--search 40 is smaller than the 50 px window"
+run 2 register ref.png mov.png -o x.png --grid 17x4 && absent x.png &&
+  stderr_has "cells of 18 x 60 px" && stderr_has "at most 16x12 cells"
+run 1 register ref.png mov.png -o x.png --window 250 --search 300 && absent x.png && stderr_has "smaller than the 250 px window"
 run 2 register ref.png mov.png -o x.png --metric foo
 run 2 register ref.png mov.png -o x.png --min-rho 0
 run 2 register ref.png mov.png -o x.png --resample cubic

@@ -367,14 +367,21 @@ static PyObject *source_get_memory(PyObject *self_o, void *closure)
 
 /* ---- sources as job arguments: a Source, or an array viewed in place ---- */
 
-typedef struct {
-    SourceObject *obj;      /* a Source, marked busy; or NULL */
-    ssda_source_t local;    /* an array's in-RAM source */
-    ssdapy_image_t img;
-    int have_img;
-    ssda_source_t *src;
-    uint16_t width, height;
-} src_arg_t;
+typedef ssdapy_src_arg_t src_arg_t;
+
+static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_arg_t *other);
+static int src_arg_release(src_arg_t *a);
+
+int ssdapy_src_arg_get(PyObject *o, const char *what, ssdapy_src_arg_t *a,
+                       const ssdapy_src_arg_t *other)
+{
+    return src_arg_get(o, what, a, other);
+}
+
+int ssdapy_src_arg_release(ssdapy_src_arg_t *a)
+{
+    return src_arg_release(a);
+}
 
 static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_arg_t *other)
 {
@@ -397,6 +404,7 @@ static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_ar
         a->src = &s->src;
         a->width = s->width;
         a->height = s->height;
+        a->format = s->format;
         return 0;
     }
     if (ssdapy_image_get(o, what, &a->img) != 0) {
@@ -412,6 +420,7 @@ static int src_arg_get(PyObject *o, const char *what, src_arg_t *a, const src_ar
     a->src = &a->local;
     a->width = a->img.view.width;
     a->height = a->img.view.height;
+    a->format = a->img.view.format;
     return 0;
 }
 

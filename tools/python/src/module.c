@@ -17,6 +17,8 @@ static int (*const feature_inits[])(PyObject *) = {
     ssdapy_init_shape,  /* before symreg: FD_DTYPE */
     ssdapy_init_symreg,
     ssdapy_init_seg,
+    ssdapy_init_flow,
+    ssdapy_init_reg,
 };
 
 static const char error_doc[] =

@@ -21,6 +21,7 @@
 
 #include "ssda/ssda.h"
 #include "ssda/match.h"
+#include "ssda/stream.h"
 #include "ssda/track.h"
 #include "ssda/view.h"
 
@@ -156,6 +157,28 @@ int ssdapy_records(PyObject *obj, const char *what, PyObject *dtype, Py_buffer *
 PyTypeObject *ssdapy_struct_type(PyObject *module, const char *name, const char *doc,
                                  PyStructSequence_Field *fields, int n_in_sequence);
 
+/* ---- sources as job arguments (bind_stream.c) ---- */
+
+/* A Source object (marked busy until released) or an array viewed in
+   place as an in-RAM source. other: the job's other argument (a Source
+   given twice is the library's to judge), or NULL. */
+typedef struct {
+    void *obj;              /* the Source object, or NULL */
+    ssda_source_t local;    /* an array's in-RAM source */
+    ssdapy_image_t img;
+    int have_img;
+    ssda_source_t *src;
+    uint16_t width, height;
+    uint8_t format;         /* SSDA_PIX_U8 / _U16 */
+} ssdapy_src_arg_t;
+
+/* 0, or -1 with an exception (what names the argument). */
+int ssdapy_src_arg_get(PyObject *o, const char *what, ssdapy_src_arg_t *a,
+                       const ssdapy_src_arg_t *other);
+/* Release; 1 when the Source's read() raised (that exception is restored
+   unless another is set), else 0. */
+int ssdapy_src_arg_release(ssdapy_src_arg_t *a);
+
 /* ---- feature inits (module.c calls these) ---- */
 
 int ssdapy_init_match(PyObject *m);
@@ -167,6 +190,8 @@ int ssdapy_init_ncc(PyObject *m);
 int ssdapy_init_shape(PyObject *m);
 int ssdapy_init_symreg(PyObject *m);
 int ssdapy_init_seg(PyObject *m);
+int ssdapy_init_flow(PyObject *m);
+int ssdapy_init_reg(PyObject *m);
 
 /* numpy dtype of ssda_fd_t (bind_shape.c), shared with bind_symreg.c. */
 extern PyObject *ssdapy_fd_dtype;

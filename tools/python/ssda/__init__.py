@@ -10,19 +10,22 @@ ssda.Error (code, message, function); wrong dtypes and shapes raise
 TypeError / ValueError. Searches release the GIL.
 """
 from ._ssda import (  # noqa: F401  (the extension's whole API)
-    ERR_ARG, ERR_BUFFER, ERR_FORMAT, ERR_IO, ERR_NULL, ERR_OVERFLOW, ERR_SIZE,
-    ERR_STATE, ERR_STRIDE, ERR_UNSUPPORTED, FD_DTYPE, KERNEL, KL_NODATA, LOOP_DTYPE,
-    MIX_COMPONENT_DTYPE, NCC_MAX_PIXELS,
-    NCC_NONE, PAIR_DTYPE,
-    NCC_ONE_Q30, PITCH_ESTIMATE_DTYPE,
-    MATCH_UNIQUE_NONE, TRACK_AMBIGUOUS, TRACK_AT_LIMIT, TRACK_EDGE, TRACK_EXCLUDED, TRACK_FLAT,
-    TRACK_MASKED, TRACK_OK, TRACK_VECTOR_DTYPE,
-    VERSION_MAJOR, VERSION_MINOR, VERSION_PATCH, Contour, Edges, EdgeStats, Error,
-    FdMatch, GradResult, Grid, KlResult, LoopsResult, LoopStats, MatchResult, MixModel, NccResult, Pitch,
-    PitchInfo, Source, SourceStats, SymregResult, TrackResult, TrackStats, __version__,
-    contour, edges, fd, fd_match, grad, kl, loops, match, mix_band_pixels, mix_fit, mix_hist,
-    mix_label, mix_lut, ncc_at, ncc_match, sad_at,
-    region, stream_match, stream_track, strerror, symreg, track, track_grid,
+    COMPOSITE_DTYPE, COMPOSITE_EDGE, COMPOSITE_FLAT, COMPOSITE_OK, ERR_ARG, ERR_BUFFER,
+    ERR_FORMAT, ERR_IO, ERR_NULL, ERR_OVERFLOW, ERR_SIZE, ERR_STATE, ERR_STRIDE,
+    ERR_UNSUPPORTED, FD_DTYPE, KERNEL, KL_NODATA, LOOP_DTYPE, MATCH_UNIQUE_NONE,
+    MIX_COMPONENT_DTYPE, NCC_MAX_PIXELS, NCC_NONE, NCC_ONE_Q30, PAIR_DTYPE,
+    PITCH_ESTIMATE_DTYPE, POLY_DTYPE, REGISTER_BORDER, REGISTER_FLAT, REGISTER_LOW_RHO,
+    REGISTER_OK, REGISTER_OUTSIDE, REGISTER_POINT_DTYPE, RELAX_CHANGED, RELAX_CLASSES,
+    RELAX_DTYPE, RELAX_VALID, TRACK_AMBIGUOUS, TRACK_AT_LIMIT, TRACK_EDGE, TRACK_EXCLUDED,
+    TRACK_FLAT, TRACK_MASKED, TRACK_OK, TRACK_VECTOR_DTYPE, VERSION_MAJOR, VERSION_MINOR,
+    VERSION_PATCH,
+    CompositeResult, Contour, EdgeStats, Edges, Error, FdMatch, GradResult, Grid, KlResult,
+    LoopStats, LoopsResult, MatchResult, MixModel, NccResult, Pitch, PitchInfo, PolyFit,
+    ShadeResult, Source, SourceStats, SymregResult, TrackResult, TrackStats, __version__,
+    composite, contour, edges, fd, fd_match, grad, kl, loops, match, mix_band_pixels, mix_fit,
+    mix_hist, mix_label, mix_lut, ncc_at, ncc_match, poly_eval, poly_fit, poly_init, region,
+    register_points, relax, relax_median, sad_at, shade, stream_match, stream_track, strerror,
+    symreg, track, track_grid, warp,
 )
 from ._pitch_track import PitchTrack, pitch  # noqa: F401
 

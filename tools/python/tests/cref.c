@@ -20,8 +20,20 @@
                                              one line per component: weight mean sigma (Q16);
                                              then the lut (bins) and the band pixels (count)
    cref region LABELS W H OP                 the output labels (h w), then 256 counts
+   cref composite REF W H NEXT W H BPP [opts] totals line: cols rows count ok origin
+                                             mean_rho_q30 pixel_ops; then per template:
+                                             var dx dy rho_q30 x y status origin
+   cref relax  DX DY ST COLS ROWS FRAC [opts] (ST "-": all valid) one line per node:
+                                             dx_q8 dy_q8 p_q15 cls flags
+   cref median DX DY ST COLS ROWS FRAC [opts] the same for ssda_relax_median
+   cref polyfit PAIRS N W H ORDER MAXRES     line: rms max cond used rejected refinements within;
+                                             line: u_q24 (10) v_q24 (10) cx cy kx ky order;
+                                             then per pair: residual used; then u v at (W/3, H/4)
+   cref shade  IMGS N W H BPP MODE [CX CY]   line: k_q8 (9) centre_x centre_y centre_q8 images;
+                                             then the corrected images (N H rows of W)
    Files are raw native-order samples, rows packed. Exit 0, or 1 with the
    library's error code printed ("error N"). */
+#include "ssda/composite.h"
 #include "ssda/grad.h"
 #include "ssda/kl.h"
 #include "ssda/mixture.h"
@@ -29,6 +41,9 @@
 #include "ssda/match.h"
 #include "ssda/ncc.h"
 #include "ssda/pitch.h"
+#include "ssda/poly.h"
+#include "ssda/relax.h"
+#include "ssda/shade.h"
 #include "ssda/track.h"
 
 #include <stddef.h>
@@ -87,6 +102,22 @@ static const field_t mix_fields[] = {
     F(ssda_mix_config_t, fit, 1), F(ssda_mix_config_t, init, 1),
     F(ssda_mix_config_t, flags, 1), F(ssda_mix_config_t, max_iter, 2),
     F(ssda_mix_config_t, sigma_min_q16, 4), F(ssda_mix_config_t, tol_q24, 4), {NULL, 0, 0}};
+
+static const field_t composite_fields[] = {
+    F(ssda_composite_config_t, tp, 2), F(ssda_composite_config_t, step, 2),
+    F(ssda_composite_config_t, roi_x, 2), F(ssda_composite_config_t, roi_y, 2),
+    F(ssda_composite_config_t, roi_w, 2), F(ssda_composite_config_t, roi_h, 2),
+    F(ssda_composite_config_t, radius_q8, 2), F(ssda_composite_config_t, min_radius, 2),
+    F(ssda_composite_config_t, min_std_q8, 2), F(ssda_composite_config_t, metric, 1),
+    F(ssda_composite_config_t, flags, 1), {NULL, 0, 0}};
+
+static const field_t relax_fields[] = {
+    F(ssda_relax_config_t, iterations, 2), F(ssda_relax_config_t, len_step_q8, 2),
+    F(ssda_relax_config_t, flags, 1), {NULL, 0, 0}};
+
+static const field_t median_fields[] = {
+    F(ssda_relax_median_config_t, threshold_q8, 2), F(ssda_relax_median_config_t, eps_q8, 2),
+    {NULL, 0, 0}};
 
 /* name=value into the struct at base; prefix "m." addresses the match
    options inside a track config. Returns 0, or -1 for an unknown name. */
@@ -480,8 +511,201 @@ static int run_region(char **argv)
     return 0;
 }
 
+static int run_composite(int argc, char **argv)
+{
+    int bpp = atoi(argv[8]), i, e;
+    void *a = load(argv[2], bytes_of(argv[3], argv[4], bpp));
+    void *b = load(argv[5], bytes_of(argv[6], argv[7], bpp));
+    ssda_view_t vr, vn;
+    ssda_composite_config_t cfg;
+    ssda_composite_result_t r;
+    ssda_composite_tp_t *tp;
+    size_t n;
+    uint32_t k;
+    if ((e = view(&vr, a, argv[3], argv[4], bpp)) != SSDA_OK ||
+        (e = view(&vn, b, argv[6], argv[7], bpp)) != SSDA_OK) {
+        return fail(e);
+    }
+    memset(&cfg, 0, sizeof cfg);
+    for (i = 9; i < argc; i++) {
+        if (set_field(&cfg, composite_fields, argv[i]) != 0) {
+            fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+            return 2;
+        }
+    }
+    n = (size_t)vr.width * vr.height; /* more than any grid */
+    tp = malloc(n * sizeof *tp);
+    cfg.work_size = SSDA_COMPOSITE_WORK_SIZE(vn.width, cfg.tp != 0u ? cfg.tp : 20u);
+    cfg.work = malloc(cfg.work_size); /* malloc: aligned for any type */
+    if ((e = ssda_composite_match(&vr, &vn, &cfg, tp, n, &r)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %u %u %u %d %llu\n", r.cols, r.rows, r.count, r.ok, r.origin,
+           (int)r.mean_rho_q30, (unsigned long long)r.pixel_ops);
+    for (k = 0; k < r.count; k++) {
+        printf("%llu %d %d %d %u %u %u %u\n", (unsigned long long)tp[k].var, (int)tp[k].dx,
+               (int)tp[k].dy, (int)tp[k].rho_q30, tp[k].x, tp[k].y, tp[k].status, tp[k].origin);
+    }
+    return 0;
+}
+
+/* A node in another layout than the binding's (status between the two). */
+typedef struct {
+    int32_t dx;
+    uint8_t status;
+    int32_t dy;
+} cref_node_t;
+
+static int run_relax(int argc, char **argv)
+{
+    const size_t cols = strtoul(argv[5], NULL, 0), rows = strtoul(argv[6], NULL, 0);
+    const size_t n = cols * rows;
+    int32_t *dx = load(argv[2], n * 4u), *dy = load(argv[3], n * 4u);
+    uint8_t *st = strcmp(argv[4], "-") == 0 ? NULL : load(argv[4], n);
+    cref_node_t *node = malloc((n > 0 ? n : 1) * sizeof *node);
+    ssda_relax_vector_t *out = malloc((n > 0 ? n : 1) * sizeof *out);
+    ssda_relax_grid_t g;
+    size_t k;
+    int i, e;
+    for (k = 0; k < n; k++) {
+        node[k].dx = dx[k];
+        node[k].dy = dy[k];
+        node[k].status = st != NULL ? st[k] : 0u;
+    }
+    g.dx = &node[0].dx;
+    g.dy = &node[0].dy;
+    g.status = st != NULL ? &node[0].status : NULL;
+    g.stride = sizeof *node;
+    g.cols = (uint16_t)cols;
+    g.rows = (uint16_t)rows;
+    g.frac_bits = (uint8_t)atoi(argv[7]);
+    if (strcmp(argv[1], "relax") == 0) {
+        ssda_relax_config_t cfg;
+        memset(&cfg, 0, sizeof cfg);
+        for (i = 8; i < argc; i++) {
+            if (set_field(&cfg, relax_fields, argv[i]) != 0) {
+                fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+                return 2;
+            }
+        }
+        cfg.work_size = SSDA_RELAX_WORK_SIZE(cols, rows);
+        cfg.work = malloc(cfg.work_size);
+        e = ssda_relax_labels(&g, &cfg, out, n);
+    } else {
+        ssda_relax_median_config_t cfg;
+        memset(&cfg, 0, sizeof cfg);
+        for (i = 8; i < argc; i++) {
+            if (set_field(&cfg, median_fields, argv[i]) != 0) {
+                fprintf(stderr, "cref: unknown option %s\n", argv[i]);
+                return 2;
+            }
+        }
+        e = ssda_relax_median(&g, &cfg, out, n);
+    }
+    if (e != SSDA_OK) {
+        return fail(e);
+    }
+    for (k = 0; k < n; k++) {
+        printf("%d %d %u %u %u\n", (int)out[k].dx_q8, (int)out[k].dy_q8, out[k].p_q15,
+               out[k].cls, out[k].flags);
+    }
+    return 0;
+}
+
+static int run_polyfit(char **argv)
+{
+    const size_t n = strtoul(argv[3], NULL, 0);
+    const ssda_poly_pair_t *pairs = load(argv[2], n * sizeof *pairs);
+    const uint16_t w = (uint16_t)strtoul(argv[4], NULL, 0), h = (uint16_t)strtoul(argv[5], NULL, 0);
+    ssda_poly_fit_config_t cfg = {(uint8_t)atoi(argv[6]), (uint32_t)strtoul(argv[7], NULL, 0)};
+    ssda_poly_t p;
+    ssda_poly_fit_result_t r;
+    uint32_t *res = malloc((n + 1u) * 4u);
+    uint8_t *used = malloc(n + 1u), *work = malloc(n + 1u);
+    int32_t u, v;
+    size_t k;
+    int e;
+    if ((e = ssda_poly_fit(pairs, n, w, h, &cfg, &p, res, used, &r, work, n)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%u %u %u %u %u %u %d\n", r.rms_q8, r.max_q8, r.cond, r.used, r.rejected,
+           r.refinements, r.within_bound ? 1 : 0);
+    for (k = 0; k < 10; k++) {
+        printf("%lld ", (long long)p.u_q24[k]);
+    }
+    for (k = 0; k < 10; k++) {
+        printf("%lld ", (long long)p.v_q24[k]);
+    }
+    printf("%d %d %u %u %u\n", (int)p.cx, (int)p.cy, p.kx, p.ky, p.order);
+    for (k = 0; k < n; k++) {
+        printf("%u %u\n", res[k], used[k]);
+    }
+    if ((e = ssda_poly_eval(&p, w / 3, h / 4, &u, &v)) != SSDA_OK) {
+        return fail(e);
+    }
+    printf("%d %d\n", (int)u, (int)v);
+    return 0;
+}
+
+static int run_shade(int argc, char **argv)
+{
+    const size_t n = strtoul(argv[3], NULL, 0), w = strtoul(argv[4], NULL, 0);
+    const size_t h = strtoul(argv[5], NULL, 0), bpp = strtoul(argv[6], NULL, 0);
+    const uint8_t *in = load(argv[2], n * w * h * bpp);
+    uint8_t *out = malloc(n * w * h * bpp + 1u);
+    ssda_shade_t sh;
+    size_t i, y, x;
+    int e, k;
+    if ((e = ssda_shade_init(&sh, (uint16_t)w, (uint16_t)h,
+                             bpp == 1 ? SSDA_PIX_U8 : SSDA_PIX_U16)) != SSDA_OK) {
+        return fail(e);
+    }
+    for (i = 0; i < n * h; i++) {
+        if ((e = ssda_shade_add_row(&sh, in + i * w * bpp)) != SSDA_OK) {
+            return fail(e);
+        }
+    }
+    if ((e = ssda_shade_finish(&sh, (uint8_t)atoi(argv[7]))) != SSDA_OK ||
+        (argc == 10 && (e = ssda_shade_set_centre(&sh, (uint16_t)atoi(argv[8]),
+                                                  (uint16_t)atoi(argv[9]))) != SSDA_OK)) {
+        return fail(e);
+    }
+    for (i = 0; i < n; i++) {
+        for (y = 0; y < h; y++) {
+            const size_t at = (i * h + y) * w * bpp;
+            if ((e = ssda_shade_apply_row(&sh, (uint32_t)y, in + at, out + at)) != SSDA_OK) {
+                return fail(e);
+            }
+        }
+    }
+    for (k = 0; k < 9; k++) {
+        printf("%d ", (int)sh.k_q8[k]);
+    }
+    printf("%u %u %d %u\n", sh.centre_x, sh.centre_y, (int)sh.centre_q8, sh.images);
+    for (i = 0; i < n * h; i++) {
+        for (x = 0; x < w; x++) {
+            const uint8_t *p = out + (i * w + x) * bpp;
+            printf("%u%c", bpp == 1 ? *p : (unsigned)(*(const uint16_t *)(const void *)p),
+                   x + 1 == w ? '\n' : ' ');
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 8 && strcmp(argv[1], "polyfit") == 0) {
+        return run_polyfit(argv);
+    }
+    if ((argc == 8 || argc == 10) && strcmp(argv[1], "shade") == 0) {
+        return run_shade(argc, argv);
+    }
+    if (argc >= 9 && strcmp(argv[1], "composite") == 0) {
+        return run_composite(argc, argv);
+    }
+    if (argc >= 8 && (strcmp(argv[1], "relax") == 0 || strcmp(argv[1], "median") == 0)) {
+        return run_relax(argc, argv);
+    }
     if (argc >= 7 && strcmp(argv[1], "kl") == 0) {
         return run_kl(argc, argv);
     }
