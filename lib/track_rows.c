@@ -389,33 +389,56 @@ static void stats_zero(ssda_track_stats_t *st)
     st->at_limit = 0u;
 }
 
+/* Solve columns col0 .. col1-1 of one grid row; up-right neighbours at
+   columns >= ur_end are not solved yet. Same returns as ssda__track_part. */
+static int solve_run(const ssda__rows_t *first, const ssda__rows_t *second,
+                     const ssda_track_plan_t *plan, uint32_t row, uint32_t col0, uint32_t col1,
+                     uint32_t ur_end, const ssda__track_origin_t *origin,
+                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+{
+    uint32_t col;
+    for (col = col0; col < col1; col++) {
+        ssda_track_vector_t v;
+        int err = solve_window(first, second, plan, out, col, row, ur_end, origin, &v, acc);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        out[(size_t)row * plan->grid.cols + col] = v;
+        acc->windows++;
+        switch (v.status) {
+        case SSDA_TRACK_OK: acc->ok++; break;
+        case SSDA_TRACK_EXCLUDED: acc->excluded++; break;
+        case SSDA_TRACK_MASKED: acc->masked++; break;
+        case SSDA_TRACK_FLAT: acc->flat++; break;
+        case SSDA_TRACK_AMBIGUOUS: acc->ambiguous++; break;
+        case SSDA_TRACK_AT_LIMIT: acc->at_limit++; break;
+        default: acc->edge++; break;
+        }
+    }
+    return SSDA_OK;
+}
+
 int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
                      const ssda_track_plan_t *plan, uint32_t col0, uint32_t col1,
                      uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    uint32_t row, col;
+    uint32_t row;
     for (row = row0; row < row1; row++) {
-        for (col = col0; col < col1; col++) {
-            ssda_track_vector_t v;
-            int err = solve_window(first, second, plan, out, col, row, col1, origin, &v, acc);
-            if (err != SSDA_OK) {
-                return err;
-            }
-            out[(size_t)row * plan->grid.cols + col] = v;
-            acc->windows++;
-            switch (v.status) {
-            case SSDA_TRACK_OK: acc->ok++; break;
-            case SSDA_TRACK_EXCLUDED: acc->excluded++; break;
-            case SSDA_TRACK_MASKED: acc->masked++; break;
-            case SSDA_TRACK_FLAT: acc->flat++; break;
-            case SSDA_TRACK_AMBIGUOUS: acc->ambiguous++; break;
-            case SSDA_TRACK_AT_LIMIT: acc->at_limit++; break;
-            default: acc->edge++; break;
-            }
+        int err = solve_run(first, second, plan, row, col0, col1, col1, origin, out, acc);
+        if (err != SSDA_OK) {
+            return err;
         }
     }
     return SSDA_OK;
+}
+
+int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
+                     const ssda_track_plan_t *plan, uint32_t row, uint32_t col0, uint32_t col1,
+                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+{
+    return solve_run(first, second, plan, row, col0, col1, plan->grid.cols,
+                     &ssda__track_origin_whole, out, acc);
 }
 
 int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,

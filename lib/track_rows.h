@@ -106,6 +106,18 @@ SSDA_INTERNAL int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t
                                    const ssda__track_origin_t *origin, ssda_track_vector_t *out,
                                    ssda_track_stats_t *acc);
 
+/*
+ * Solve columns col0 .. col1-1 of grid row `row` of whole images (the
+ * identity origin) for ssda_track_row: every window the prediction reads is
+ * taken as solved, up-right neighbours in columns col1 and beyond too (the
+ * caller's promise). Counts are added to *acc. Returns SSDA_OK or a fetch
+ * error unchanged (none for views in RAM).
+ */
+SSDA_INTERNAL int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
+                                   const ssda_track_plan_t *plan, uint32_t row, uint32_t col0,
+                                   uint32_t col1, ssda_track_vector_t *out,
+                                   ssda_track_stats_t *acc);
+
 /* ssda__track_part over every grid row of whole images (the identity
    origin): one vertical strip. */
 static inline int ssda__track_strip(const ssda__rows_t *first, const ssda__rows_t *second,

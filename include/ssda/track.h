@@ -228,7 +228,6 @@ typedef struct {
     uint8_t flags;              /* SSDA_TRACK_* flags */
 } ssda_track_plan_t;
 
-/* Result for one window. */
 /* Result for one window. "Searched": OK, AMBIGUOUS, AT_LIMIT. */
 typedef struct {
     uint64_t sad;    /* searched: SAD at the match (< 2^48); else 0 */
@@ -331,6 +330,39 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
 int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
                const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                size_t out_count, ssda_track_stats_t *stats);
+
+/*
+ * Track columns col0 .. col1-1 of grid row `row` only: a grid shared among
+ * threads (or spread over time) with ssda_track's result. ssda_track solves
+ * windows in raster order and window (row, col)'s prediction reads its
+ * solved neighbours (row, col-1), (row-1, col-1), (row-1, col) and
+ * (row-1, col+1). This call takes every one of them as solved: when it
+ * starts, out must hold (row, col0-1) and, in row-1, columns col0-1 .. col1
+ * (those inside the grid). Then the part's vectors, statuses, exact flags
+ * and work counts are those of ssda_track, and so are the counts summed
+ * over parts covering the grid. A wavefront keeps the promise: one worker
+ * per grid row (or rows taken in turn), row r solving column c once row
+ * r-1 has solved column c+1 (with SSDA_TRACK_PREDICT_NONE every window is
+ * independent; with SSDA_TRACK_PREDICT_LEFT only (row, col-1) and, for
+ * col 0, (row-1, 0) are read).
+ *   first, second, cfg: as ssda_track (cfg NULL = defaults). The work
+ *             buffer cfg->match.work is written: each concurrent caller
+ *             needs its own. Each call checks its arguments as ssda_track
+ *             does (a few hundred operations; a window's search costs far
+ *             more).
+ *   out:      the whole grid's array (out_count >= the grid count); only
+ *             the part's entries row * cols + col0 .. row * cols + col1-1
+ *             are written; the neighbours above are read. Concurrent
+ *             calls must write disjoint parts.
+ *   stats:    the part's counts are ADDED to *stats (zero it first; fields
+ *             that add saturate as ssda_track's), or NULL.
+ * Returns SSDA_OK, or without writing out or stats: every error of
+ * ssda_track, and SSDA_ERR_ARG for row >= grid rows, col0 >= col1 or
+ * col1 > grid cols.
+ */
+int ssda_track_row(const ssda_view_t *first, const ssda_view_t *second,
+                   const ssda_track_config_t *cfg, uint32_t row, uint32_t col0, uint32_t col1,
+                   ssda_track_vector_t *out, size_t out_count, ssda_track_stats_t *stats);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 /* cmd_track.c - `ssda track FIRST.png SECOND.png`: the seed's cloud tracking. */
 #include "track_metric.h"
 #include "track_run.h"
+#include "parallel.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -17,7 +18,11 @@ static void help(void)
           "\n",
           stdout);
     fputs(track_opts_help, stdout);
-    fputs("  -h, --help        this text\n"
+    fputs("  --threads N       decode the images and track on N threads (default: every\n"
+          "                    core, 0 too): grid rows as a wavefront, each window\n"
+          "                    solved after its neighbours, so the output is the same\n"
+          "                    for any N (not with --mem: one thread)\n"
+          "  -h, --help        this text\n"
           "\n"
           "JSON: {\"windows\":[{\"x\",\"y\",\"dx\",\"dy\",\"sub_dx\",\"sub_dy\",\"sad\",\"texture\",\n"
           "       \"unique\",\"status\",\"exact\"}...], \"stats\":{\"pixel_ops\",\"check_pixels\",\n"
@@ -119,7 +124,13 @@ int cmd_track(int argc, char **argv)
     track_opts_t o;
     track_result_t r;
     const char *first, *second;
-    int rc = track_parse_args("track", argc, argv, help, &o, &first, &second);
+    unsigned threads;
+    int rc = parallel_take_threads("track", &argc, argv, &threads);
+    if (rc != 0) {
+        return CLI_USAGE;
+    }
+    cli_set_threads(threads);
+    rc = track_parse_args("track", argc, argv, help, &o, &first, &second);
     if (rc != CLI_OK) {
         return rc < 0 ? CLI_OK : rc; /* -1: --help */
     }

@@ -1,6 +1,7 @@
 /* track_run.c - options, run, JSON and overlay of grid tracking (track, compare). */
 #include "track_run.h"
 #include "track_metric.h"
+#include "track_wave.h"
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
@@ -661,22 +662,6 @@ void track_result_free(track_result_t *r)
     memset(r, 0, sizeof *r);
 }
 
-static void stats_add(ssda_track_stats_t *t, const ssda_track_stats_t *s)
-{
-    t->pixel_ops += s->pixel_ops;
-    t->positions += s->positions;
-    t->completed += s->completed;
-    t->check_pixels += s->check_pixels;
-    t->windows += s->windows;
-    t->ok += s->ok;
-    t->excluded += s->excluded;
-    t->masked += s->masked;
-    t->edge += s->edge;
-    t->flat += s->flat;
-    t->ambiguous += s->ambiguous;
-    t->at_limit += s->at_limit;
-}
-
 /* AUTO or NONE with the raster or predict scan: the modes whose SADs are
    exact, where uniqueness and the sub-pixel fit run. */
 static int exact_mode(const ssda_match_config_t *m)
@@ -887,37 +872,23 @@ static int alloc_run(const char *cmd, const track_opts_t *o, track_result_t *r, 
     return CLI_OK;
 }
 
-/* Track from the images in memory. Without prediction and with a progress
-   bar, the grid runs in bands of rows (every window is independent):
-   vectors and counts equal those of one call. Returns an ssda error code. */
+/* Track from the images in memory: one ssda_track call, or with several
+   threads (--threads, default every core) or a progress bar a wavefront of
+   grid rows over ssda_track_row (track_wave.c), whose vectors and counts
+   equal the one call's. Returns an ssda error code. */
 static int run_in_ram(const track_opts_t *o, track_result_t *r)
 {
     ssda_view_t vf, vs;
     progress_t prog;
-    uint32_t row = 0, band = r->grid.rows / 50u + 1u;
-    int e = SSDA_OK;
+    const unsigned threads = cli_threads();
+    int e;
     gray_image_view(&r->first, &vf);
     gray_image_view(&r->second, &vs);
     progress_begin(&prog, "tracking", r->grid.rows, o->quiet);
-    if (!(prog.enabled && r->cfg.predict == SSDA_TRACK_PREDICT_NONE && r->grid.rows > 1)) {
+    if ((threads > 1u || prog.enabled) && r->grid.rows > 1u) {
+        e = track_wave(&vf, &vs, &r->cfg, &r->grid, threads, r->vec, &r->stats, &prog);
+    } else {
         e = ssda_track(&vf, &vs, &r->cfg, r->vec, r->grid.count, &r->stats);
-        row = r->grid.rows;
-    }
-    while (row < r->grid.rows && e == SSDA_OK) {
-        ssda_track_config_t c = r->cfg;
-        ssda_track_stats_t s;
-        uint32_t n = r->grid.rows - row < band ? r->grid.rows - row : band;
-        c.roi_x = r->grid.roi_x;
-        c.roi_w = r->grid.roi_w;
-        c.roi_y = (uint16_t)(r->grid.roi_y + row * r->grid.step_y);
-        c.roi_h = (uint16_t)((n - 1u) * r->grid.step_y + r->grid.win_h);
-        e = ssda_track(&vf, &vs, &c, r->vec + (size_t)row * r->grid.cols,
-                       (size_t)n * r->grid.cols, &s);
-        if (e == SSDA_OK) {
-            stats_add(&r->stats, &s);
-        }
-        row += n;
-        progress_update(&prog, row);
     }
     progress_end(&prog);
     /* RAM sources: every pixel of both images was loaded once. */

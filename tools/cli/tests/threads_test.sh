@@ -26,6 +26,31 @@ run 0 compare --threads=2 a.png b.png --window 8 --search 24 --step 8 --json c8a
   { cmp -s <(untimed c8a.json) <(untimed c8b.json) || fail "compare --threads=2, 8x8: JSON differs"; }
 run 0 compare a.png b.png --threads 2 && grep -q "on 2 threads" out.txt || fail "compare summary: thread count"
 
+# track: a wavefront of grid rows over ssda_track_row (tools/cli/track_wave.c);
+# --threads 1 --quiet is one ssda_track call. Unrelated images give vectors
+# that differ from window to window, so every prediction reads neighbours
+# that disagree (and ties go to the prediction): any window solved before
+# its neighbours would show. Small steps give many rows.
+"$gen" texture c.png --size 160x128 --seed 12
+for pred in neighbour left none; do
+  for pair in "a.png b.png" "a.png c.png"; do
+    # shellcheck disable=SC2086
+    run 0 track $pair --predict "$pred" --window 8 --search 24 --step 4 --threads 1 --json t1.json --quiet ||
+      continue
+    for t in 2 3 7 0; do
+      # shellcheck disable=SC2086
+      run 0 track $pair --predict "$pred" --window 8 --search 24 --step 4 --threads "$t" --json "t$t.json" \
+        --overlay "to$t.png" --quiet || continue
+      cmp -s <(untimed t1.json) <(untimed "t$t.json") ||
+        fail "track $pair --predict $pred --threads $t: JSON differs from one ssda_track call"
+    done
+  done
+done
+run 0 track a.png b.png --threads 1 --json tq.json --quiet && run 0 track a.png b.png --threads 2 --json tp.json &&
+  { cmp -s <(untimed tq.json) <(untimed tp.json) || fail "track with a progress bar: JSON differs"; }
+run 0 track --help && grep -q -- "--threads N" out.txt || fail "track --help: --threads"
+run 2 track a.png b.png --threads x && stderr_has "--threads needs a count"
+
 # bad counts: usage errors, nothing written
 for bad in "" x -1 2x 257 99999999999999999999; do
   run 2 compare a.png b.png --json bad.json --threads "$bad" && stderr_has "--threads needs a count" && absent bad.json
