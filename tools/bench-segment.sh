@@ -11,14 +11,19 @@
 #      scikit-image).
 #   tools/bench-segment.sh [--reps R] [IMAGE:NODATA:K1,K2,K3 ...]
 # Without images it uses the data folder given as SSDA_DATA (default
-# ../shared/data beside the repository) when present: the Landsat scene
+# ../shared/data beside the repository, found from this script's folder
+# wherever it is run from) when present: the Landsat scene
 # (nodata 0; the seed's 6, 5, 4 components), the graffiti wall img1 (RGB,
 # 6, 5, 4), camera and moon (gray, 4 and 3),
 # and band 3 of the MicaSense capture (16-bit gray, 4). Data is read where it
-# is, never copied. SSDA_BENCH_DIR sets the build directory (default
-# build/bench-segment).
+# is, never copied. Relative IMAGE and SSDA_DATA paths are taken from the
+# folder it is run in. SSDA_BENCH_DIR sets the build directory (default
+# build/bench-segment, in the repository).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+caller=$PWD
+# a path given by the caller, made absolute before the cd below
+from_caller() { case $1 in /*) printf '%s' "$1" ;; *) printf '%s/%s' "$caller" "$1" ;; esac; }
 cd "$root"
 dir=${SSDA_BENCH_DIR:-build/bench-segment}
 reps=5
@@ -29,8 +34,13 @@ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
       -DSSDA_BUILD_TOOLS=ON -DSSDA_BUILD_BENCH=ON >&2
 cmake --build "$dir" --target ssda_cli ssda-bench-segment -j "$(nproc 2>/dev/null || echo 2)" >&2
 
-images=("$@")
-data=${SSDA_DATA:-$root/../shared/data}
+images=()
+for spec in "$@"; do # PATH:NODATA:K1,K2: only PATH is a path
+  path=${spec%%:*}
+  images+=("$(from_caller "$path")${spec#"$path"}")
+done
+data=$root/../shared/data
+[ -n "${SSDA_DATA:-}" ] && data=$(from_caller "$SSDA_DATA")
 if [ ${#images[@]} -eq 0 ] && [ -d "$data" ]; then
   for spec in "aerial/RGB.byte.png:0:6,5,4" "homography/graf/img1.png::6,5,4" \
               "classic/camera.png::4" "classic/moon.png::3" \

@@ -59,6 +59,14 @@ int cli_flag(cli_args_t *a, const char *name);
 int cli_opt(cli_args_t *a, const char *name, const char **value);
 /* Report the current option as unknown; returns CLI_USAGE. */
 int cli_unknown(cli_args_t *a);
+/* The whole option loop of a subcommand whose options one function
+   takes (after cli_args_begin): --help and -h call help() and return -1;
+   every other option goes to take(a, opts), which returns 1 when it took
+   it (a->bad set on a bad value, already said) and 0 when it does not
+   know it (then said as unknown). Returns CLI_OK (the positionals
+   collected in *a), CLI_USAGE, or -1 after the help. */
+int cli_scan_options(cli_args_t *a, void (*help)(void), int (*take)(cli_args_t *a, void *opts),
+                     void *opts);
 /* After the loop: exactly n positionals? More: "unexpected argument 'X'"
    naming the first extra one (after "--" every argument is a file: said
    when X looks like an option); fewer: need (e.g. "need FIRST.png and

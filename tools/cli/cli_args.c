@@ -91,6 +91,24 @@ int cli_unknown(cli_args_t *a)
     return cli_usage_error(a->cmd, "unknown option '%.*s'", (int)a->name_len, a->name);
 }
 
+int cli_scan_options(cli_args_t *a, void (*help)(void), int (*take)(cli_args_t *a, void *opts),
+                     void *opts)
+{
+    while (cli_next(a)) {
+        if (cli_flag(a, "--help") || cli_flag(a, "-h")) {
+            help();
+            return -1;
+        }
+        if (!take(a, opts)) {
+            return cli_unknown(a);
+        }
+        if (a->bad) {
+            return CLI_USAGE;
+        }
+    }
+    return a->bad ? CLI_USAGE : CLI_OK;
+}
+
 int cli_positionals(const cli_args_t *a, int n, const char *need)
 {
     if (a->npos > n) {

@@ -64,9 +64,16 @@ typedef struct {
     double secs;
 } flow_run_t;
 
-/* The current option into o: 1 taken (a->bad set on a bad value), 0 unknown. */
-static int take_option(cli_args_t *a, flow_opts_t *o)
+static void print_help(void)
 {
+    fputs(help, stdout);
+}
+
+/* The current option into opts (a flow_opts_t): 1 taken (a->bad set on a
+   bad value), 0 unknown. */
+static int take_option(cli_args_t *a, void *opts)
+{
+    flow_opts_t *o = opts;
     const char *v;
     uint32_t u, r[4];
     double d;
@@ -132,27 +139,14 @@ static int take_option(cli_args_t *a, flow_opts_t *o)
 static int parse(int argc, char **argv, flow_opts_t *o)
 {
     cli_args_t a;
+    int rc;
     memset(o, 0, sizeof *o);
     cli_args_begin(&a, "flow", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            fputs(help, stdout);
-            return -1;
-        }
-        if (!take_option(&a, o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
+    if ((rc = cli_scan_options(&a, print_help, take_option, o)) != CLI_OK) {
+        return rc;
     }
-    if (a.bad) {
+    if (cli_positionals(&a, 2, "need REF.png and NEXT.png") != CLI_OK) {
         return CLI_USAGE;
-    }
-    if (a.npos != 2) {
-        return cli_usage_error(a.cmd, a.npos < 2 ? "need REF.png and NEXT.png"
-                                                 : "unexpected argument '%s'",
-                               a.npos > 2 ? a.pos[2] : "");
     }
     if (o->keep && o->relax == 0u) {
         return cli_usage_error(a.cmd, "--relax-keep needs --relax N");

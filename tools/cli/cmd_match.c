@@ -64,10 +64,16 @@ typedef struct {
     double secs;
 } match_job_t;
 
-/* The current option into o: 1 taken (a->bad set on a bad value, said), 0
-   unknown. */
-static int take_option(cli_args_t *a, match_opts_t *o)
+static void print_help(void)
 {
+    fputs(help, stdout);
+}
+
+/* The current option into opts (a match_opts_t): 1 taken (a->bad set on a bad
+   value, said), 0 unknown. */
+static int take_option(cli_args_t *a, void *opts)
+{
+    match_opts_t *o = opts;
     const char *v;
     uint32_t u;
     if (cli_opt(a, "--metric", &v)) {
@@ -154,22 +160,14 @@ static int check_args(const cli_args_t *a, match_opts_t *o)
 static int parse_args(int argc, char **argv, match_opts_t *o)
 {
     cli_args_t a;
+    int rc;
     memset(o, 0, sizeof *o);
     o->cfg.flags = SSDA_MATCH_BOUNDS; /* exact, and the least work on a host */
     cli_args_begin(&a, "match", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            fputs(help, stdout);
-            return -1;
-        }
-        if (!take_option(&a, o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
+    if ((rc = cli_scan_options(&a, print_help, take_option, o)) != CLI_OK) {
+        return rc;
     }
-    return a.bad ? CLI_USAGE : check_args(&a, o);
+    return check_args(&a, o);
 }
 
 /* The correlation search (--metric ncc/absncc); the place, its SAD and the

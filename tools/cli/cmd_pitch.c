@@ -128,9 +128,16 @@ static int opt_double(cli_args_t *a, const char *name, double lo, double hi, con
     return 1;
 }
 
-/* The current option into o: 1 taken (a->bad on a bad value), 0 unknown. */
-static int take_option(cli_args_t *a, pitch_opts_t *o)
+static void print_help(void)
 {
+    fputs(help, stdout);
+}
+
+/* The current option into opts (a pitch_opts_t): 1 taken (a->bad set on a bad
+   value, said), 0 unknown. */
+static int take_option(cli_args_t *a, void *opts)
+{
+    pitch_opts_t *o = opts;
     const char *v;
     if (opt_double(a, "--fmin", 10, 12000, "10..12000 Hz", &o->fmin) ||
         opt_double(a, "--fmax", 11, 12000, "11..12000 Hz", &o->fmax) ||
@@ -196,22 +203,14 @@ static int check_options(const char *cmd, const pitch_opts_t *o)
 static int parse_args(int argc, char **argv, pitch_opts_t *o)
 {
     cli_args_t a;
+    int rc;
     memset(o, 0, sizeof *o);
     o->hop_ms = 10.0;
     cli_args_begin(&a, "pitch", argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            fputs(help, stdout);
-            return -1;
-        }
-        if (!take_option(&a, o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
+    if ((rc = cli_scan_options(&a, print_help, take_option, o)) != CLI_OK) {
+        return rc;
     }
-    if (a.bad || cli_positionals(&a, 1, "need one sound file") != CLI_OK) {
+    if (cli_positionals(&a, 1, "need one sound file") != CLI_OK) {
         return CLI_USAGE;
     }
     o->sound = a.pos[0];

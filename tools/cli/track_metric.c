@@ -37,34 +37,38 @@ static int window_views(const track_result_t *r, const ssda_track_vector_t *v,
     if (gray_image_view(&r->first, &vf) != SSDA_OK || gray_image_view(&r->second, &vs) != SSDA_OK) {
         return SSDA_ERR_ARG;
     }
-    /* an OK window's area lies inside FIRST (else it would be EDGE) */
+    /* a searched window's area lies inside FIRST (else it would be EDGE) */
     e = ssda_view_roi(area, &vf, (uint16_t)(v->x - *hx), (uint16_t)(v->y - *hy), g->search_w,
                       g->search_h);
     return e != SSDA_OK ? e : ssda_view_roi(win, &vs, v->x, v->y, g->win_w, g->win_h);
 }
 
-/* Placements along x (axis 0) or y of the search area, less one: the
-   largest top-left coordinate of a window in it. */
-static uint32_t g_free(const track_result_t *r, int axis)
+/* Whether a placement lies on the border of the range along an axis with
+   n placements: track.h's AT_LIMIT rule (one placement: no border). */
+static int on_border(uint32_t pos, uint32_t n)
 {
-    return axis == 0 ? (uint32_t)(r->grid.search_w - r->grid.win_w)
-                     : (uint32_t)(r->grid.search_h - r->grid.win_h);
+    return n > 1u && (pos == 0u || pos == n - 1u);
 }
 
-/* Window v's status becomes st (OK or AT_LIMIT), the counts follow. */
-static void set_status(track_result_t *r, ssda_track_vector_t *v, uint8_t st)
+static int searched(uint8_t status)
 {
-    if (v->status == st) {
-        return;
+    return status == SSDA_TRACK_OK || status == SSDA_TRACK_AMBIGUOUS ||
+           status == SSDA_TRACK_AT_LIMIT;
+}
+
+/* The counts of the searched statuses after the correlation search. */
+static void recount(track_result_t *r)
+{
+    size_t k;
+    r->stats.ok = r->stats.ambiguous = r->stats.at_limit = 0u;
+    for (k = 0; k < r->grid.count; k++) {
+        switch (r->vec[k].status) {
+        case SSDA_TRACK_OK: r->stats.ok++; break;
+        case SSDA_TRACK_AMBIGUOUS: r->stats.ambiguous++; break;
+        case SSDA_TRACK_AT_LIMIT: r->stats.at_limit++; break;
+        default: break;
+        }
     }
-    if (v->status == SSDA_TRACK_OK) {
-        r->stats.ok--;
-        r->stats.at_limit++;
-    } else {
-        r->stats.at_limit--;
-        r->stats.ok++;
-    }
-    v->status = st;
 }
 
 /* Sub-pixel offset, Q8 in [-128, 128], of the vertex of the parabola through
@@ -87,11 +91,13 @@ static int32_t peak_q8(int32_t rm, int32_t r0, int32_t rp, int neg)
     return (int32_t)floor(off * 256.0 + 0.5);
 }
 
-/* One OK window: rho at SAD's placement, or the correlation search. The
-   correlation's vector replaces SAD's, its sub-pixel motion too (from rho
-   at the 8 neighbours; whole pixels with --no-subpixel). */
+/* One searched window: rho at SAD's placement (sad), or the correlation
+   search, whose vector replaces SAD's, its sub-pixel motion too (from rho
+   at the 8 neighbours; whole pixels with --no-subpixel), and which decides
+   the status (ok or at_limit). */
 static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_t *c, size_t k)
 {
+    const ssda_track_grid_t *g = &r->grid;
     ssda_track_vector_t *v = &r->vec[k];
     ssda_view_t area, win;
     ssda_ncc_result_t res;
@@ -103,7 +109,7 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
         return e;
     }
     if (o->metric == TRACK_METRIC_SAD) {
-        r->metric_ops += (uint64_t)r->grid.win_w * r->grid.win_h;
+        r->metric_ops += (uint64_t)g->win_w * g->win_h;
         return ssda_ncc_at(&area, &win, (uint16_t)px, (uint16_t)py, &r->rho_q30[k]);
     }
     c->predict_x = px;
@@ -113,8 +119,8 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
     }
     r->metric_ops += res.pixel_ops;
     r->rho_q30[k] = res.rho_q30;
-    v->dx = (int16_t)((int32_t)hx - (int32_t)res.x);
-    v->dy = (int16_t)((int32_t)hy - (int32_t)res.y);
+    v->dx = (int32_t)hx - (int32_t)res.x;
+    v->dy = (int32_t)hy - (int32_t)res.y;
     /* the placement x + d is the motion dx - d */
     v->sub_dx_q8 = v->dx * 256;
     v->sub_dy_q8 = v->dy * 256;
@@ -123,13 +129,16 @@ static int one_window(const track_opts_t *o, track_result_t *r, ssda_ncc_config_
         v->sub_dy_q8 -= peak_q8(res.around_q30[1], res.rho_q30, res.around_q30[7], res.rho_q30 < 0);
     }
     v->exact = true;
-    /* the status of the correlation's own best: on the area's border it may
-       lie beyond (track.h's AT_LIMIT rule); SAD's at_limit may be nothing
-       but a brightness change, which rho does not see */
-    set_status(r, v, res.x == 0u || res.y == 0u || res.x == g_free(r, 0) ||
-                         res.y == g_free(r, 1)
-                         ? SSDA_TRACK_AT_LIMIT
-                         : SSDA_TRACK_OK);
+    /* SAD's uniqueness does not describe this placement; not computed */
+    v->unique_q8 = SSDA_MATCH_UNIQUE_NONE;
+    /* the status of the correlation's own best: on the range's border it
+       may lie beyond (track.h's AT_LIMIT rule); SAD's at_limit and
+       ambiguous may be nothing but a brightness change, which rho does not
+       see */
+    v->status = (uint8_t)(on_border(res.x, (uint32_t)g->search_w - g->win_w + 1u) ||
+                                  on_border(res.y, (uint32_t)g->search_h - g->win_h + 1u)
+                              ? SSDA_TRACK_AT_LIMIT
+                              : SSDA_TRACK_OK);
     return ssda_sad_at(&area, &win, res.x, res.y, &v->sad);
 }
 
@@ -164,13 +173,14 @@ int track_metric_apply(const char *cmd, const track_opts_t *o, track_result_t *r
     t0 = progress_now();
     for (k = 0; k < g->count && e == SSDA_OK; k++) {
         r->rho_q30[k] = INT32_MIN;
-        /* ncc, absncc: SAD's at_limit windows are searched too */
-        if (r->vec[k].status == SSDA_TRACK_OK ||
-            (o->metric != TRACK_METRIC_SAD && r->vec[k].status == SSDA_TRACK_AT_LIMIT)) {
+        if (searched(r->vec[k].status)) {
             e = one_window(o, r, &c, k);
         }
     }
     r->metric_secs = progress_now() - t0;
+    if (o->metric != TRACK_METRIC_SAD) {
+        recount(r);
+    }
     free(c.work);
     return e == SSDA_OK ? CLI_OK
                         : cli_input_error(cmd, "correlation search failed: %s", ssda_strerror(e));

@@ -64,9 +64,10 @@ const char track_opts_help[] =
     "  --metric M        sad, ncc or absncc: JSON windows gain rho, the correlation\n"
     "                    coefficient at their placement; with ncc (largest rho) or\n"
     "                    absncc (largest |rho|) the vectors come from the exact\n"
-    "                    correlation search over each ok and at_limit window's\n"
-    "                    area, which a gain or offset between the images does not\n"
-    "                    change; it decides ok or at_limit (best on the border)\n"
+    "                    correlation search over each searched window's area\n"
+    "                    (SAD's ok, ambiguous, at_limit), which a gain or offset\n"
+    "                    between the images does not change; it decides ok or\n"
+    "                    at_limit (best on the border; no ambiguous test)\n"
     "  --quiet           no progress bar\n";
 
 void track_opts_init(track_opts_t *o)
@@ -367,8 +368,9 @@ static int take_output(cli_args_t *a, track_opts_t *o)
     return 1;
 }
 
-int track_opts_take(cli_args_t *a, track_opts_t *o)
+int track_opts_take(cli_args_t *a, void *opts)
 {
+    track_opts_t *o = opts;
     return take_grid(a, o) || take_search(a, o) || take_quality(a, o) || take_skip(a, o) ||
            take_output(a, o);
 }
@@ -389,20 +391,8 @@ int track_parse_args(const char *cmd, int argc, char **argv, void (*help)(void),
     int rc;
     track_opts_init(o);
     cli_args_begin(&a, cmd, argc, argv);
-    while (cli_next(&a)) {
-        if (cli_flag(&a, "--help") || cli_flag(&a, "-h")) {
-            help();
-            return -1;
-        }
-        if (!track_opts_take(&a, o)) {
-            return cli_unknown(&a);
-        }
-        if (a.bad) {
-            return CLI_USAGE;
-        }
-    }
-    if (a.bad) {
-        return CLI_USAGE;
+    if ((rc = cli_scan_options(&a, help, track_opts_take, o)) != CLI_OK) {
+        return rc;
     }
     if ((rc = track_check_positionals(&a, o)) != CLI_OK) {
         return rc;

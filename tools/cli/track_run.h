@@ -40,9 +40,10 @@ typedef struct {
    from neighbours (median), no exclusion, no mask. */
 void track_opts_init(track_opts_t *o);
 
-/* If the current option of a is a track option, take it and return 1
-   (a->bad set on a usage error, already reported); else return 0. */
-int track_opts_take(cli_args_t *a, track_opts_t *o);
+/* If the current option of a is a track option, take it into opts (a
+   track_opts_t) and return 1 (a->bad set on a usage error, already
+   reported); else return 0. For cli_scan_options. */
+int track_opts_take(cli_args_t *a, void *opts);
 
 /* After the loop: FIRST.png and SECOND.png, and nothing more (an extra
    argument is named; right after --exclude, its value syntax is said).
@@ -76,7 +77,7 @@ typedef struct {
     double secs;                  /* tracking time only */
     ssda_relax_vector_t *clean;   /* --relax / --relax-median: grid.count entries */
     uint32_t changed;             /* vectors the cleaning changed */
-    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN where not OK */
+    int32_t *rho_q30;             /* --metric: rho per window (Q2.30), INT32_MIN if not searched */
     uint64_t metric_ops;          /* --metric: pixel ops of the correlation part */
     double metric_secs;           /* --metric: its time */
 } track_result_t;

@@ -1,4 +1,5 @@
-# cli_lib.sh - shared by the CLI test scripts (cli_test.sh, cli_outputs.sh):
+# cli_lib.sh - shared by the CLI test scripts (cli_test.sh, cli_outputs.sh,
+# cli_flow.sh, segment_test.sh, register_test.sh, symreg_test.sh, ...):
 # sourced as
 #   . cli_lib.sh GROUP SSDA GEN CHECK WORKDIR [EXTRA...]
 # It empties WORKDIR, enters it and defines the helpers below; the script

@@ -8,8 +8,9 @@
  *     header's counts agree with the list; with --changed-min, at least N
  *     templates say "changed". JSON read with jansson (not the writer's cJSON).
  *   flow_tool track-rho FIRST.png SECOND.png FILE.json sad|ncc|absncc MINOK
- *     FILE is `ssda track --metric ... --json` (8-bit images): every "ok"
- *     window's rho and sad equal a double-precision recomputation at its
+ *     FILE is `ssda track --metric ... --json` (8-bit images): every
+ *     searched ("ok", "ambiguous", "at_limit") window's rho and sad equal a
+ *     double-precision recomputation at its
  *     placement (rho within 1e-6); with ncc/absncc its placement has the
  *     largest rho (|rho|) of the whole search area (brute force in double,
  *     within 1e-9); at least MINOK windows are ok.
@@ -24,6 +25,12 @@
  *     (DX, DY) on each axis (relax_dx, relax_dy with --relaxed); with
  *     --kept every window not "changed" has relax_dx, relax_dy equal to
  *     sub_dx, sub_dy (to the 4 decimals printed).
+ *   flow_tool track-status FILE.json
+ *     FILE is `ssda track --metric ncc|absncc --json`: every searched window
+ *     is "at_limit" exactly when its placement lies on the border of the
+ *     search range (dx or dy at an extreme of an axis with more than one
+ *     placement, track.h's rule), else "ok" (never "ambiguous"); the
+ *     "stats" counts equal the windows'. Prints "ok N at_limit N".
  */
 #include <jansson.h>
 #include <math.h>
@@ -200,10 +207,11 @@ static int rho_windows(const pair_t *p, json_t *doc, const char *mode, long min_
         json_t *t = json_array_get(list, i);
         long x = jint(t, "x"), y = jint(t, "y"), dx = jint(t, "dx"), dy = jint(t, "dy");
         double sad, r, got = json_real_value(json_object_get(t, "rho"));
-        if (strcmp(json_string_value(json_object_get(t, "status")), "ok") != 0) {
+        const char *st = json_string_value(json_object_get(t, "status"));
+        if (strcmp(st, "ok") != 0 && strcmp(st, "ambiguous") != 0 && strcmp(st, "at_limit") != 0) {
             continue;
         }
-        ok++;
+        ok += strcmp(st, "ok") == 0;
         r = rho_at(p, x, y, x - dx, y - dy, &sad);
         if (json_object_get(t, "rho") == NULL || fabs(r - got) > 1e-6 ||
             (double)jint(t, "sad") != sad ||
@@ -349,8 +357,58 @@ static int track_sub(int argc, char **argv)
     return 0;
 }
 
+/* Whether motion d lies at an extreme of the range hx - (n - 1) .. hx of
+   an axis with n placements (track.h's GEOMETRY and AT_LIMIT). */
+static int at_border(long d, long search, long win)
+{
+    long n = search - win + 1, h = (search - win) / 2;
+    return n > 1 && (d == h || d == h - (n - 1));
+}
+
+static int track_status(int argc, char **argv)
+{
+    json_error_t je;
+    json_t *doc, *list, *grid, *st;
+    size_t i;
+    long ok = 0, lim = 0, bad = 0;
+    if (argc != 1 || (doc = json_load_file(argv[0], 0, &je)) == NULL) {
+        fprintf(stderr, "flow_tool track-status: usage or unreadable JSON\n");
+        return 2;
+    }
+    list = json_object_get(doc, "windows");
+    grid = json_object_get(doc, "grid");
+    st = json_object_get(doc, "stats");
+    for (i = 0; i < json_array_size(list); i++) {
+        json_t *t = json_array_get(list, i);
+        const char *s = json_string_value(json_object_get(t, "status"));
+        int border = at_border(jint(t, "dx"), jint(grid, "search_w"), jint(grid, "window_w")) ||
+                     at_border(jint(t, "dy"), jint(grid, "search_h"), jint(grid, "window_h"));
+        if (!strcmp(s, "ok") || !strcmp(s, "at_limit") || !strcmp(s, "ambiguous")) {
+            ok += !strcmp(s, "ok");
+            lim += !strcmp(s, "at_limit");
+            if (strcmp(s, border ? "at_limit" : "ok") != 0) {
+                fprintf(stderr, "flow_tool track-status: window (%ld, %ld) dx %ld dy %ld: %s\n",
+                        jint(t, "x"), jint(t, "y"), jint(t, "dx"), jint(t, "dy"), s);
+                bad++;
+            }
+        }
+    }
+    if (jint(st, "ok") != ok || jint(st, "at_limit") != lim || jint(st, "ambiguous") != 0) {
+        fprintf(stderr, "flow_tool track-status: stats ok %ld at_limit %ld ambiguous %ld, "
+                "windows %ld, %ld, 0\n", jint(st, "ok"), jint(st, "at_limit"),
+                jint(st, "ambiguous"), ok, lim);
+        bad++;
+    }
+    json_decref(doc);
+    printf("ok %ld at_limit %ld\n", ok, lim);
+    return bad != 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 2 && !strcmp(argv[1], "track-status")) {
+        return track_status(argc - 2, argv + 2);
+    }
     if (argc >= 2 && !strcmp(argv[1], "shrink")) {
         return shrink(argc - 2, argv + 2);
     }
@@ -375,6 +433,6 @@ int main(int argc, char **argv)
     fprintf(stderr, "usage: flow_tool gain IN OUT G O | crop IN OUT X Y W H | "
                     "check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
                     "track-check FILE DX DY MINFRAC | shrink IN OUT N | "
-                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]]\n");
+                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]] | track-status FILE\n");
     return 2;
 }

@@ -4,27 +4,7 @@
 # GEN (gen_register.c) makes a pair with a known 2nd-order map, CHECK
 # (check_register.c) reads the outputs back with jansson, giflib and libpng.
 # Every case states its expected exit code; failed runs leave no output.
-set -u
-ssda=$1 gen=$2 check=$3 work=$4
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
-run() {
-  local want=$1; shift
-  "$ssda" "$@" >out.txt 2>err.txt
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
-    return 1
-  fi
-}
-chk() { "$check" "$@" >/dev/null || fail "check $*"; }
-absent() {
-  local f
-  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
-  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left"; fi
-}
-stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+. "$(dirname "$0")/cli_lib.sh" register "$@"
 
 "$gen" . || { echo "FAIL: gen_register" >&2; exit 1; }
 
@@ -110,5 +90,4 @@ run 2 register ref.png mov.png -o x.png -o y.png && absent x.png y.png
 run 2 register ref.png mov.png mov.png mov.png mov.png --stack x.png && absent x.png
 run 0 register --help && grep -q "usage: ssda register" out.txt || fail "no --help"
 
-if [ "$failures" -ne 0 ]; then echo "register: $failures failure(s)" >&2; exit 1; fi
-echo "register: all cases passed"
+finish

@@ -6,29 +6,7 @@
 # known mixture; CHECK (seg_check.c) measures labels against the truth
 # (adjusted Rand index) and checks the JSON. Every case states its expected
 # exit code; failed runs must leave no output.
-set -u
-ssda=$1 gen=$2 check=$3 work=$4
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
-run() {
-  local want=$1; shift
-  "$ssda" "$@" >out.txt 2>err.txt
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
-    return 1
-  fi
-  return 0
-}
-chk() { "$check" "$@" || { fail "check $*"; return 1; }; }
-absent() {
-  local f
-  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
-  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left: $(ls ./*.tmp.*)"; fi
-}
-stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+. "$(dirname "$0")/cli_lib.sh" segment "$@"
 
 "$gen" scene brightness bright.png bright-truth.png || exit 1
 "$gen" scene hue hue.png hue-truth.png || exit 1
@@ -108,8 +86,4 @@ absent x.png
 run 1 segment bright.png --components 3 -o no/such/dir/x.png --json x.json
 absent x.json x-z1.png
 
-if [ "$failures" -ne 0 ]; then
-  echo "segment: $failures failure(s)" >&2
-  exit 1
-fi
-echo "segment: all cases passed"
+finish

@@ -3,26 +3,8 @@
 #   symreg_test.sh SSDA GEN WORKDIR
 # GEN (gen_symreg.c) renders scene pairs with a known similarity and gain,
 # silhouettes with a known turn and scale, and checks the JSON outputs.
-set -u
-ssda=$1 gen=$2 work=$3
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
-run() { # EXPECTED_EXIT ARGS...
-  local want=$1; shift
-  "$ssda" "$@" >out.txt 2>err.txt
-  local got=$?
-  if [ "$got" -ne "$want" ]; then
-    fail "ssda $* exited $got, expected $want"; sed 's/^/  stderr: /' err.txt >&2
-    return 1
-  fi
-}
-absent() {
-  local f
-  for f in "$@"; do [ -e "$f" ] && fail "output '$f' exists after a failed run"; done
-  if ls ./*.tmp.* >/dev/null 2>&1; then fail "temp files left: $(ls ./*.tmp.*)"; fi
-}
-stderr_has() { grep -qF -- "$1" err.txt || fail "stderr lacks '$1': $(cat err.txt)"; }
+# cli_lib.sh takes GROUP SSDA GEN CHECK WORKDIR: no CHECK here.
+. "$(dirname "$0")/cli_lib.sh" symreg "$1" "$2" "" "$3"
 is_png() { [ "$(head -c 8 "$1" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "'$1' is not a PNG"; }
 
 # usage
@@ -85,8 +67,4 @@ run 1 shape a.png e.png --json f.json && stderr_has "no object pixel"
 absent f.json
 run 0 shape a.png a.png --invert --json inv.json -q  # the black ground as the object
 
-if [ "$failures" -ne 0 ]; then
-  echo "symreg_test.sh: $failures failure(s)" >&2
-  exit 1
-fi
-echo "symreg_test.sh: ok"
+finish
