@@ -72,6 +72,19 @@ static uint64_t bounds_bytes(uint32_t area_w, uint32_t area_h, uint32_t win_w, u
            sizeof(uint32_t);
 }
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* Bytes for SSDA_MATCH_BLOCKS (SSDA_MATCH_WORK_SIZE_BLOCKS in 64 bits):
+   the bounds tables rounded to 8, the list, the integral image and the
+   window's block sums; < 2^36. */
+static uint64_t blocks_bytes(uint32_t area_w, uint32_t area_h, uint32_t win_w, uint32_t win_h)
+{
+    return ((bounds_bytes(area_w, area_h, win_w, win_h) + 7u) & ~(uint64_t)7u) +
+           SSDA_MATCH_UNIQUE_WORK +
+           (((uint64_t)area_w + 1u) * ((uint64_t)area_h + 1u) + SSDA_MATCH_BLOCK_SUMS) *
+               sizeof(uint32_t);
+}
+#endif
+
 /* The quality options (match.h: SSDA_MATCH_UNIQUE, SSDA_MATCH_SUBPIXEL):
    exact modes only, the ratio and radius in range, the list's room after
    the bounds tables. SSDA_OK or the error ssda_match documents. */
@@ -127,7 +140,9 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
     if (cfg->threshold > (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
         cfg->scan > (uint8_t)SSDA_SCAN_COARSE || cfg->order > (uint8_t)SSDA_ORDER_SPREAD ||
         (cfg->flags & (uint8_t)~(SSDA_MATCH_BOUNDS | SSDA_MATCH_TIE_NEAREST |
-                                 SSDA_MATCH_UNIQUE | SSDA_MATCH_SUBPIXEL)) != 0u) {
+                                 SSDA_MATCH_UNIQUE | SSDA_MATCH_SUBPIXEL |
+                                 SSDA_MATCH_BLOCKS)) != 0u ||
+        (cfg->flags & (SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS)) == SSDA_MATCH_BLOCKS) {
         return SSDA_ERR_ARG;
     }
     if (cfg->threshold == (uint8_t)SSDA_THRESHOLD_RAMP && cfg->lambda_q8 == 0u) {
@@ -175,6 +190,10 @@ static int check_config(const ssda_match_config_t *cfg, uint32_t area_w, uint32_
         }
         if ((uint64_t)cfg->work_size < bounds_bytes(area_w, area_h, win_w, win_h) ||
             (((uintptr_t)cfg->work) & (sizeof(uint32_t) - 1u)) != 0u) {
+            return SSDA_ERR_BUFFER;
+        }
+        if ((cfg->flags & SSDA_MATCH_BLOCKS) != 0u &&
+            (uint64_t)cfg->work_size < blocks_bytes(area_w, area_h, win_w, win_h)) {
             return SSDA_ERR_BUFFER;
         }
     }

@@ -59,6 +59,14 @@ typedef struct {
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
+    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
+                              modulo 2^32 (block_bound) */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
+    uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
+                               lev_lo > lev_hi */
+    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
+                            bound, saturated to 32 bits (a lower bound still),
+                            nx per row in the group tables' place; else NULL */
 #endif
     cand_t best, second; /* best two completed, by the tie rule */
 #ifdef ENGINE_FALLBACK
@@ -244,6 +252,92 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 }
 #endif
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The smallest side of a block of the multilevel bound (SSDA_MATCH_BLOCKS):
+   below it a term costs about as much as the absolute differences it spares
+   (docs/benchmarks.md, issue 18). */
+#define BLOCK_MIN_SIDE 16u
+
+/* Bound of position (x, y) at block level l (match.h: SSDA_MATCH_BLOCKS):
+   sum over the 2^l x 2^l blocks of bw x bh = (L >> l) x (M >> l) pixels of
+   |area block sum - window block sum| <= SAD. A block sum is a difference of
+   four integral-image entries modulo 2^32, exact since the level is used
+   only when bw * bh * maxval < 2^32 (build_blocks). The bound <= 256 terms of
+   < 2^32 each < 2^40. Stops after a row of blocks once the bound reaches
+   cut_at (a lower bound still). One op per term. */
+static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uint64_t cut_at,
+                            uint32_t *rows)
+{
+    const uint32_t nb = 1u << l;
+    const uint32_t bw = e->L >> l;
+    const size_t is = (size_t)e->area->width + 1u;
+    const size_t down = (size_t)(e->M >> l) * is;
+    const uint32_t *w = e->wblk + (((1u << (2u * l)) - 4u) / 3u); /* after levels 1..l-1 */
+    const uint32_t *r0 = e->integ + (size_t)y * is + x;
+    uint64_t b = 0u;
+    uint32_t i, j;
+    for (j = 0u; j < nb; j++) {
+        const uint32_t *r1 = r0 + down;
+        const uint64_t before = b;
+        uint32_t left = r1[0] - r0[0]; /* column sums modulo 2^32 */
+        uint32_t u = 0u;
+        for (i = 0u; i < nb; i++) {
+            uint32_t right, s, t;
+            u += bw;
+            right = r1[u] - r0[u];
+            s = right - left; /* the block's sum, exact */
+            t = w[i];
+            b += s > t ? s - t : t - s;
+            left = right;
+        }
+        w += nb;
+        r0 = r1;
+        if (rows != NULL) { /* the row of blocks' terms, saturated */
+            rows[j] = b - before > UINT32_MAX ? UINT32_MAX : (uint32_t)(b - before);
+        }
+        if (b >= cut_at) {
+            const uint32_t terms = (j + 1u) * nb; /* <= 256 */
+            e->ops += terms;
+            return b;
+        }
+    }
+    {
+        const uint32_t terms = nb * nb; /* <= 256 */
+        e->ops += terms;
+    }
+    return b;
+}
+
+/* Position (x, y) rejected by a block level, coarsest first: the bound in
+   *low (for the fallback) and true; else false, and without row groups
+   (the seeded raster scan) the last level's rows of blocks become the
+   groups of the row loop: their terms (saturated to 32 bits) in e->term,
+   their sum in *low, e->group rows each. */
+static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t *low)
+{
+    uint32_t *rows = e->bounds ? NULL : e->term;
+    uint32_t l;
+    for (l = e->lev_lo; l <= e->lev_hi; l++) {
+        const uint64_t b = block_bound(e, l, x, y, cut_at, rows);
+        if (b >= cut_at) {
+            *low = b;
+            return true;
+        }
+    }
+    if (rows != NULL) {
+        uint64_t rest = 0u; /* <= 16 terms < 2^32 each */
+        uint32_t j;
+        e->group = e->M >> e->lev_hi;
+        e->ngroups = 1u << e->lev_hi;
+        for (j = 0u; j < e->ngroups; j++) {
+            rest += rows[j];
+        }
+        *low = rest;
+    }
+    return false;
+}
+#endif
+
 /* The level at which position (x, y) is cut (partial + rest >= it): the
    plan's fixed cut, lowered to what can still beat the reference. */
 static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
@@ -262,6 +356,49 @@ static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint
     }
     return cut_at;
 }
+
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The rows of position (x, y) in the seeded raster scan (AUTO, row order,
+   rows in memory): eval_position's loop without what this case does not
+   need (fetches, the spread order, the ramp, the fallback, the first-row
+   chunks), about 20 % less time on searches that sum many rows (camera.png,
+   128 x 128; issue 18). rest is the bound of the last level's rows of
+   blocks (groups of e->group rows, terms in e->term), or 0. Returns 1 and
+   sets *sad, or 0 when cut. */
+static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uint64_t rest,
+                       uint64_t *sad)
+{
+    const size_t as = e->area->stride, ws = e->win->stride;
+    const uint8_t *a0 = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
+    const uint8_t *w0 = e->win->base;
+    const uint32_t L = e->L, M = e->M;
+    const uint32_t pixels = L * M; /* <= 65535^2 */
+    uint64_t partial = 0u;         /* <= 65535^3 */
+    uint64_t left = rest;          /* the groups not started */
+    uint32_t k = 0u, g = 0u;
+    while (k < M) {
+        uint32_t end = M;
+        if (left != 0u) {
+            /* group g starts: its term leaves the bound. left is the sum of
+               term[g .. ngroups - 1], so left != 0 implies g < ngroups */
+            left -= e->term[g];
+            g++;
+            end = k + e->group;
+        }
+        for (; k < end; k++) {
+            partial += row_sad(e, a0 + (size_t)k * as, w0 + (size_t)k * ws, L);
+            if (partial + left >= cut_at) {
+                const uint32_t summed = (k + 1u) * L; /* <= 65535^2 */
+                e->ops += summed;
+                return 0;
+            }
+        }
+    }
+    e->ops += pixels;
+    *sad = partial;
+    return 1;
+}
+#endif
 
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
@@ -292,6 +429,17 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
         return 0;
     }
 #ifndef SSDA_CFG_NO_BOUNDS
+    if (e->lev_lo <= e->lev_hi && blocks_reject(e, x, y, cut_at, &rest)) {
+        NOTE_CUT(e, x, y, rest, 0u);
+        return 0;
+    }
+    if (e->row_step != 1u) {
+        rest = 0u; /* spread order: the levels serve as a pre-check only */
+    } else if (e->low != NULL && e->area->base != NULL && e->win->base != NULL) {
+        return seeded_rows(e, x, y, cut_at, rest, sad);
+    } else {
+        /* the general loop below */
+    }
     if (e->bounds) {
         rest = group_bound(e, x, y);
         if (rest >= cut_at) {
@@ -433,6 +581,141 @@ static int consider_best(engine_t *e, uint32_t x, uint32_t y)
     return err < 0 ? err : SSDA_OK;
 }
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* SSDA_MATCH_BLOCKS with AUTO raster: candidates summed first so that the
+   threshold is low from the start (the raster scan's result does not depend
+   on the order in the exact modes). The range of positions is cut into
+   SEED_TILES x SEED_TILES tiles and each tile's position of the smallest
+   coarsest-level bound (the first in raster order among equal ones) is a
+   candidate: spread over the image, so one misleading bound does not
+   decide. The pass also stores every position's bound in the table. */
+#define SEED_TILES 4u
+#define SEED_CANDS 16u /* SEED_TILES^2 */
+#define SEED_KEEP 8u   /* per tile, the positions of the smallest coarsest bounds */
+#define SEED_KEPT 128u /* SEED_CANDS * SEED_KEEP */
+#define SEED_KEPT_WORDS 384u /* 3 * SEED_KEPT: bounds, x, y of the kept positions */
+#define SEED_WORDS 432u /* SEED_KEPT_WORDS + 3 * SEED_CANDS: kept, then candidates */
+
+/* Keep (v, x, y) among a tile's SEED_KEEP smallest coarsest bounds,
+   ascending, the first in raster order first among equal ones; an unused
+   entry has x == UINT32_MAX. */
+static SSDA_ALWAYS_INLINE void seed_keep(uint32_t *kb, uint32_t *kx, uint32_t *ky, uint32_t v,
+                                         uint32_t x, uint32_t y)
+{
+    uint32_t j = SEED_KEEP - 1u;
+    if (kx[j] != UINT32_MAX && v >= kb[j]) {
+        return;
+    }
+    while (j > 0u && (kx[j - 1u] == UINT32_MAX || kb[j - 1u] > v)) {
+        kb[j] = kb[j - 1u];
+        kx[j] = kx[j - 1u];
+        ky[j] = ky[j - 1u];
+        j--;
+    }
+    kb[j] = v;
+    kx[j] = x;
+    ky[j] = y;
+}
+
+/* The candidates: in each tile, of the kept positions the one with the
+   smallest bound at the finest level (the first kept among equal ones). */
+static SSDA_NOINLINE void seed_rank(engine_t *e, const uint32_t *keep, uint32_t *cx, uint32_t *cy,
+                      uint32_t *cb)
+{
+    uint32_t i, j;
+    for (i = 0u; i < SEED_CANDS; i++) {
+        const uint32_t *kx = keep + SEED_KEPT + ((size_t)i * SEED_KEEP);
+        const uint32_t *ky = kx + SEED_KEPT;
+        cb[i] = UINT32_MAX;
+        cx[i] = UINT32_MAX; /* no candidate */
+        cy[i] = UINT32_MAX;
+        for (j = 0u; j < SEED_KEEP && kx[j] != UINT32_MAX; j++) {
+            const uint64_t b = block_bound(e, e->lev_hi, kx[j], ky[j], UINT64_MAX, NULL);
+            const uint32_t v = b > UINT32_MAX ? UINT32_MAX : (uint32_t)b;
+            if (cx[i] == UINT32_MAX || v < cb[i]) {
+                cb[i] = v;
+                cx[i] = kx[j];
+                cy[i] = ky[j];
+            }
+        }
+    }
+}
+
+/* The first pass: every position's coarsest bound into the table, and each
+   tile's SEED_KEEP smallest in keep (bounds, then x, then y; SEED_CANDS *
+   SEED_KEEP entries each). */
+static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
+{
+    uint32_t x, y, i;
+    uint32_t *tab = e->low;
+    uint32_t *kx = keep + SEED_KEPT, *ky = kx + SEED_KEPT;
+    for (i = 0u; i < SEED_CANDS * SEED_KEEP; i++) {
+        keep[i] = UINT32_MAX;
+        kx[i] = UINT32_MAX;
+        ky[i] = UINT32_MAX;
+    }
+    for (y = 0u; y < e->ny; y++) {
+        /* tile row and column: t * n / SEED_TILES <= p; n < 2^16 */
+        const uint32_t ty = SSDA_DIV32(y * SEED_TILES, e->ny);
+        uint32_t tx = 0u, next_x = SSDA_DIV32(e->nx + SEED_TILES - 1u, SEED_TILES);
+        for (x = 0u; x < e->nx; x++) {
+            const uint64_t b = block_bound(e, e->lev_lo, x, y, UINT64_MAX, NULL);
+            const uint32_t v = b > UINT32_MAX ? UINT32_MAX : (uint32_t)b;
+            if (x == next_x) {
+                tx++;
+                next_x = SSDA_DIV32((tx + 1u) * e->nx + SEED_TILES - 1u, SEED_TILES);
+            }
+            *tab = v;
+            tab++;
+            i = (ty * SEED_TILES + tx) * SEED_KEEP;
+            seed_keep(keep + i, kx + i, ky + i, v, x, y);
+        }
+    }
+}
+
+/* Sum the candidates first, smallest bound first (insertion sort of 16). */
+static SSDA_NOINLINE int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+{
+    uint32_t i, j;
+    for (i = 1u; i < SEED_CANDS; i++) {
+        for (j = i; j > 0u && cb[j] < cb[j - 1u]; j--) {
+            uint32_t t = cb[j];
+            cb[j] = cb[j - 1u];
+            cb[j - 1u] = t;
+            t = cx[j];
+            cx[j] = cx[j - 1u];
+            cx[j - 1u] = t;
+            t = cy[j];
+            cy[j] = cy[j - 1u];
+            cy[j - 1u] = t;
+        }
+    }
+    for (i = 0u; i < SEED_CANDS; i++) {
+        if (cx[i] != UINT32_MAX) {
+            int err = consider_best(e, cx[i], cy[i]);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            e->low[(size_t)cy[i] * e->nx + cx[i]] = UINT32_MAX; /* visited */
+        }
+    }
+    return SSDA_OK;
+}
+
+/* Position (x, y) with a table entry UINT32_MAX: a candidate visited
+   already? (else a bound that saturated) */
+static bool seed_visited(const uint32_t *cx, const uint32_t *cy, uint32_t x, uint32_t y)
+{
+    uint32_t i;
+    for (i = 0u; i < SEED_CANDS; i++) {
+        if (cx[i] == x && cy[i] == y) {
+            return true;
+        }
+    }
+    return false;
+}
+#endif
+
 static int scan_raster(engine_t *e)
 {
     uint32_t x, y;
@@ -446,6 +729,48 @@ static int scan_raster(engine_t *e)
     }
     return SSDA_OK;
 }
+
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The seeded raster scan (SSDA_MATCH_BLOCKS, AUTO): the table and the
+   candidates, the candidates summed, then the raster scan rejecting from
+   the table. Out of line: its locals stay off the frame of the others. */
+static SSDA_NOINLINE int scan_seeded(engine_t *e)
+{
+    /* the candidates in the work buffer, after the window's block sums */
+    uint32_t *keep = e->wblk + ((size_t)SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS - SEED_WORDS);
+    uint32_t *cb = keep + SEED_KEPT_WORDS;
+    uint32_t *cx = cb + SEED_CANDS, *cy = cx + SEED_CANDS;
+    const uint32_t *low = e->low;
+    uint32_t x, y;
+    int err;
+    seed_pass(e, keep);
+    seed_rank(e, keep, cx, cy, cb);
+    /* the positions' pre-check reads the coarsest level from the table;
+       then one level more: finer ones cost more than they reject
+       (camera.png 128x128 in ssda-peers-match, issue 18) */
+    e->lev_lo++;
+    if (e->lev_hi > e->lev_lo) {
+        e->lev_hi = e->lev_lo;
+    }
+    err = seed_visit(e, cx, cy, cb);
+    for (y = 0u; y < e->ny && err == SSDA_OK; y++) {
+        for (x = 0u; x < e->nx && err == SSDA_OK; x++) {
+            /* a position whose coarsest bound reaches its cut level is
+               rejected here, its terms counted in the first pass */
+            const uint32_t v = low[(size_t)y * e->nx + x];
+            if (v == UINT32_MAX && seed_visited(cx, cy, x, y)) {
+                continue;
+            }
+            if ((uint64_t)v >= cut_level(e, x, y)) {
+                e->positions++;
+                continue;
+            }
+            err = consider_best(e, x, y);
+        }
+    }
+    return err;
+}
+#endif
 
 #ifndef SSDA_CFG_NO_PREDICT
 
@@ -730,6 +1055,121 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     return err;
 }
 
+/* SSDA_MATCH_BLOCKS: the area's integral image in uint32_t modulo 2^32,
+   I(x, y) = sum of the pixels left of x and above y, (aw + 1) x (ah + 1)
+   entries at `integ`. A row's running sum <= 65535 * 65535 < 2^32; the
+   entries wrap, and a block sum taken from four of them is exact whenever
+   the block's true sum < 2^32. Two ops per pixel. */
+static SSDA_NOINLINE int build_integral(engine_t *e, uint32_t *integ)
+{
+    const bool u8 = e->u8;
+    const uint32_t aw = e->area->width, ah = e->area->height;
+    const size_t is = (size_t)aw + 1u;
+    uint32_t x, y;
+    for (x = 0u; x <= aw; x++) {
+        integ[x] = 0u;
+    }
+    for (y = 0u; y < ah; y++) {
+        const uint8_t *p;
+        const uint32_t *up = integ + (size_t)y * is;
+        uint32_t *row = integ + ((size_t)y + 1u) * is;
+        uint32_t s = 0u; /* <= aw * 65535 < 2^32 */
+        int err = ssda__rows_get(e->area, 0u, y, aw, &p);
+        if (err != SSDA_OK) {
+            return err;
+        }
+        row[0] = 0u;
+        for (x = 0u; x < aw; x++) {
+            s += u8 ? p[x] : ((const uint16_t *)(const void *)p)[x];
+            row[x + 1u] = up[x + 1u] + s; /* modulo 2^32 */
+        }
+    }
+    {
+        const uint32_t pixels = aw * ah; /* < 2^32 */
+        e->ops += pixels;
+        e->ops += pixels; /* two ops a pixel */
+    }
+    return SSDA_OK;
+}
+
+/* SSDA_MATCH_BLOCKS: the window's block sums of levels lev_lo..lev_hi,
+   each summed from its pixels (< 2^32: the level's condition), stored at
+   the level's offset (4 + 16 + ... entries before it). L * M ops a level. */
+static SSDA_NOINLINE int window_blocks(engine_t *e, uint32_t *wblk)
+{
+    uint32_t l;
+    for (l = e->lev_lo; l <= e->lev_hi; l++) {
+        const uint32_t nb = 1u << l, bw = e->L >> l, bh = e->M >> l;
+        uint32_t *w = wblk + (((1u << (2u * l)) - 4u) / 3u);
+        uint32_t i, j, yy, c;
+        for (i = 0u; i < nb * nb; i++) {
+            w[i] = 0u;
+        }
+        for (j = 0u; j < nb; j++) {
+            for (yy = j * bh; yy < (j + 1u) * bh; yy++) {
+                const uint8_t *p;
+                int err = ssda__rows_get(e->win, 0u, yy, nb * bw, &p);
+                if (err != SSDA_OK) {
+                    return err;
+                }
+                for (c = 0u; c < nb * bw; c++) {
+                    /* a block's sum <= bw * bh * maxval < 2^32 */
+                    w[j * nb + c / bw] += e->u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+                }
+            }
+        }
+        {
+            const uint32_t pixels = (nb * bw) * (nb * bh); /* <= L * M < 2^32 */
+            e->ops += pixels;
+        }
+    }
+    return SSDA_OK;
+}
+
+/*
+ * SSDA_MATCH_BLOCKS: choose the levels and build their tables after the
+ * bounds tables and the uniqueness list (match.h's layout). Level l splits
+ * the window into 2^l x 2^l blocks of (L >> l) x (M >> l) pixels, l = 1 ..
+ * SSDA_MATCH_BLOCK_LEVELS; it is used when both sides are at least
+ * BLOCK_MIN_SIDE and a block's sum fits 32 bits (bw * bh * maxval < 2^32).
+ * With no level usable, the search runs as with SSDA_MATCH_BOUNDS alone.
+ */
+static SSDA_NOINLINE int build_blocks(engine_t *e)
+{
+    const uint32_t max_px = e->u8 ? 16843009u : 65537u; /* floor((2^32 - 1) / maxval) */
+    const uint64_t tables = ((((uint64_t)e->nx * e->area->height) + 2u * (uint64_t)e->M) *
+                                 sizeof(uint32_t) + 7u) & ~(uint64_t)7u;
+    uint32_t *integ = (uint32_t *)(void *)((uint8_t *)e->plan->work + (size_t)tables +
+                                           SSDA_MATCH_UNIQUE_WORK);
+    uint32_t *wblk;
+    uint32_t l;
+    int err;
+    e->lev_lo = 1u;
+    e->lev_hi = 0u;
+    for (l = 1u; l <= SSDA_MATCH_BLOCK_LEVELS; l++) {
+        const uint32_t bw = e->L >> l, bh = e->M >> l; /* <= 32767 */
+        if (bw < BLOCK_MIN_SIDE || bh < BLOCK_MIN_SIDE) {
+            break;
+        }
+        if (bw * bh > max_px) {
+            e->lev_lo = (uint8_t)(l + 1u);
+        } else {
+            e->lev_hi = (uint8_t)l;
+        }
+    }
+    if (e->lev_lo > e->lev_hi) {
+        return SSDA_OK;
+    }
+    wblk = integ + ((size_t)e->area->width + 1u) * ((size_t)e->area->height + 1u);
+    e->integ = integ;
+    e->wblk = wblk;
+    err = build_integral(e, integ);
+    if (err == SSDA_OK) {
+        err = window_blocks(e, wblk);
+    }
+    return err;
+}
+
 #endif
 
 /* The result of a finished scan, with the quality the plan asks for
@@ -842,12 +1282,33 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
                  (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
+    e.lev_lo = 1u; /* no block levels */
     if (e.bounds) {
-        err = build_bounds(&e);
+        err = SSDA_OK;
+        if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
+            err = build_blocks(&e);
+        }
+        if (e.lev_lo <= e.lev_hi && mode == (uint8_t)SSDA_THRESHOLD_AUTO &&
+            plan->scan == (uint8_t)SSDA_SCAN_RASTER) {
+            /* the levels and the seed's table take the row groups' place:
+               the few positions that pass every level are summed without them */
+            e.low = (uint32_t *)plan->work;
+            e.term = e.wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS;
+            e.bounds = false;
+        } else if (err == SSDA_OK) {
+            err = build_bounds(&e);
+        } else {
+            /* a fetch error: returned below */
+        }
         if (err != SSDA_OK) {
             return err;
         }
     }
+#endif
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (e.low != NULL) {
+        err = scan_seeded(&e);
+    } else
 #endif
 #ifndef SSDA_CFG_NO_PREDICT
     if (plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {

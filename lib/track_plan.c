@@ -112,7 +112,7 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
     if (cfg->predict > (uint8_t)SSDA_TRACK_PREDICT_MEDIAN ||
         (cfg->flags & (uint8_t)~(SSDA_TRACK_EXCLUDE | SSDA_TRACK_MASK | SSDA_TRACK_NO_FLAT |
                                  SSDA_TRACK_UNIQUE | SSDA_TRACK_NO_SUBPIXEL)) != 0u ||
-        cfg->flat_q8 > 65535u * 256u) {
+        cfg->flat_q8 > 65535u * 256u || (cfg->match.flags & SSDA_MATCH_BLOCKS) != 0u) {
         return SSDA_ERR_ARG;
     }
     plan->predict = cfg->predict;

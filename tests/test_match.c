@@ -336,7 +336,7 @@ static void test_invalid_arguments_write_nothing(void)
     cfg.order = 2;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_match(&g_av, &g_wv, &cfg, &res));
     cfg.order = 0;
-    cfg.flags = 0x10;
+    cfg.flags = 0x20; /* no such flag */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_match(&g_av, &g_wv, &cfg, &res));
     cfg = config(SSDA_THRESHOLD_RAMP, SSDA_SCAN_RASTER); /* lambda 0 */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_match(&g_av, &g_wv, &cfg, &res));

@@ -717,6 +717,11 @@ static void test_bad_arguments_write_nothing(void)
     expect_error(SSDA_ERR_ARG, &a, &b, &cfg, NWIN);
     seed_config(&cfg); cfg.flat_q8 = 65535u * 256u + 1u;
     expect_error(SSDA_ERR_ARG, &a, &b, &cfg, NWIN);
+    seed_config(&cfg); /* the block levels: single searches only */
+    cfg.match.flags = SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS;
+    cfg.match.work = g_work;
+    cfg.match.work_size = sizeof g_work;
+    expect_error(SSDA_ERR_ARG, &a, &b, &cfg, NWIN);
     seed_config(&cfg); cfg.flags = SSDA_TRACK_UNIQUE; /* no work buffer */
     expect_error(SSDA_ERR_NULL, &a, &b, &cfg, NWIN);
     cfg.match.work = g_work;

@@ -164,6 +164,49 @@ typedef enum {
  */
 #define SSDA_MATCH_SUBPIXEL 0x08u
 
+/*
+ * Flag: multilevel block bounds (Gao et al.'s multilevel successive
+ * elimination), with SSDA_MATCH_BOUNDS (alone: SSDA_ERR_ARG). Level l splits
+ * the window into 2^l x 2^l blocks of (L >> l) x (M >> l) pixels (right and
+ * bottom remainders left out), l = 1 .. SSDA_MATCH_BLOCK_LEVELS; with B_b(x, y)
+ * the sum of the area pixels under block b and W_b the window's,
+ *     sum_b |B_b(x, y) - W_b| <= SAD(x, y),
+ * and a finer level's bound is at least as tight when the block sides are
+ * even. A position is tested level after level, coarsest first (2^(2l)
+ * operations each), before its pixels; a level is used when both block
+ * sides are at least 16 px and a block's sum fits in 32 bits (16-bit
+ * windows: (L >> l) * (M >> l) <= 65537), so windows narrower or lower than
+ * 32 px use none (the search is then SSDA_MATCH_BOUNDS's). Block sums come
+ * from the area's integral image in the work buffer (uint32_t modulo 2^32:
+ * a block's sum is exact when it fits 32 bits).
+ * With AUTO and the raster scan: a first pass computes every position's
+ * coarsest bound into the work buffer (in place of the row groups) and
+ * keeps, in each of 4 x 4 tiles of the positions, the 8 smallest; of
+ * these, the one with the smallest finest-level bound is a candidate, and
+ * the 16 candidates are summed first, best first, so the threshold is low
+ * from the start; then the raster scan visits the others (each position
+ * once), rejecting from the stored bound, then by the next level only
+ * (finer ones cost more than they reject), and in row order that level's
+ * rows of blocks serve as the row groups of SSDA_MATCH_BOUNDS.
+ * Other scans and modes test the levels before the row groups.
+ * Exact as SSDA_MATCH_BOUNDS: every result field but pixel_ops, positions
+ * and completed is that of the search without the flag (FIXED and RAMP's
+ * all-cut fallback: the bound at a rejection is the level's). pixel_ops
+ * counts the work: 2 per area pixel for the integral image, L * M per level
+ * for the window's block sums, 1 per block term of a bound (the coarsest
+ * level once per position, in the first pass). Needs
+ * SSDA_MATCH_WORK_SIZE_BLOCKS(...) bytes of work buffer.
+ */
+#define SSDA_MATCH_BLOCKS 0x10u
+/* The finest block level: 2^4 x 2^4 = 256 blocks. */
+#define SSDA_MATCH_BLOCK_LEVELS 4u
+/* The window's block sums of levels 1..4 (4 + 16 + 64 + 256 entries), the
+   raster scan's kept positions (16 tiles x 8, 3 entries each) and 16 first
+   candidates (3 entries each), and the terms of up to 16 rows of blocks,
+   uint32_t. */
+#define SSDA_MATCH_BLOCK_SUMS 788u
+#define SSDA_MATCH_BLOCK_ROWS 16u
+
 /* Bytes of work buffer that SSDA_MATCH_BOUNDS needs for an area of
    area_w x area_h and a window of win_w x win_h (win_* <= area_*). Where
    size_t is 32 bits the macro wraps for jobs needing 4 GB or more (areas
@@ -180,6 +223,15 @@ typedef enum {
     (((SSDA_MATCH_WORK_SIZE(area_w, area_h, win_w, win_h) + 7u) & ~(size_t)7u) + \
      (size_t)SSDA_MATCH_UNIQUE_WORK)
 
+/* Bytes of work buffer for SSDA_MATCH_BLOCKS (with SSDA_MATCH_BOUNDS, and
+   SSDA_MATCH_UNIQUE if wanted): the bounds tables and the list as above,
+   then the area's integral image, (area_w + 1) x (area_h + 1) uint32_t,
+   and the window's block sums. Wraps like SSDA_MATCH_WORK_SIZE. */
+#define SSDA_MATCH_WORK_SIZE_BLOCKS(area_w, area_h, win_w, win_h)            \
+    (SSDA_MATCH_WORK_SIZE_UNIQUE(area_w, area_h, win_w, win_h) +             \
+     (((size_t)(area_w) + 1u) * ((size_t)(area_h) + 1u) +                    \
+      (size_t)SSDA_MATCH_BLOCK_SUMS) * sizeof(uint32_t))
+
 /* Default K (safety factor of eqs. 3 and 4) in Q8.8: 2.0, the seed's value. */
 #define SSDA_DEFAULT_K_Q8 512u
 /* Default coarse grid step in pixels (the seed's 8). */
@@ -193,7 +245,7 @@ typedef struct {
     uint8_t threshold;        /* ssda_threshold_t */
     uint8_t scan;             /* ssda_scan_t */
     uint8_t order;            /* ssda_order_t */
-    uint8_t flags;            /* SSDA_MATCH_BOUNDS | _TIE_NEAREST | _UNIQUE | _SUBPIXEL */
+    uint8_t flags;            /* SSDA_MATCH_BOUNDS | _TIE_NEAREST | _UNIQUE | _SUBPIXEL | _BLOCKS */
     uint16_t k_q8;            /* K of eqs. 3/4, Q8.8, 0..65535 (0 = SSDA_DEFAULT_K_Q8) */
     uint16_t coarse_step;     /* SSDA_SCAN_COARSE grid step, px (0 = 8) */
     uint32_t lambda_q8;       /* RAMP: lambda of eq. 3, SAD units per pixel, Q24.8 */
@@ -205,7 +257,8 @@ typedef struct {
     void *work;               /* BOUNDS: caller buffer, 4-byte aligned, >=
                                  SSDA_MATCH_WORK_SIZE(...) bytes; UNIQUE: 8-byte
                                  aligned, >= SSDA_MATCH_UNIQUE_WORK bytes, or with
-                                 BOUNDS >= SSDA_MATCH_WORK_SIZE_UNIQUE(...) */
+                                 BOUNDS >= SSDA_MATCH_WORK_SIZE_UNIQUE(...);
+                                 BLOCKS: >= SSDA_MATCH_WORK_SIZE_BLOCKS(...) */
     size_t work_size;         /* bytes of work; else unused */
 } ssda_match_config_t;
 
@@ -262,8 +315,9 @@ typedef struct {
  *   SSDA_ERR_ARG      unknown threshold/scan/order/flags value, or RAMP with
  *                     lambda_q8 == 0; UNIQUE or SUBPIXEL with a threshold
  *                     other than AUTO and NONE or with the COARSE scan;
- *                     unique_q8 not 0 and outside 257 .. 1024; unique_radius > 2
- *   SSDA_ERR_BUFFER   bounds or uniqueness requested with work_size below
+ *                     unique_q8 not 0 and outside 257 .. 1024; unique_radius > 2;
+ *                     BLOCKS without BOUNDS
+ *   SSDA_ERR_BUFFER   bounds, blocks or uniqueness requested with work_size below
  *                     what they need (macros above), or a misaligned work buffer
  *   SSDA_ERR_UNSUPPORTED  UNIQUE or SUBPIXEL in a build without them
  *                     (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL)

@@ -194,7 +194,9 @@ typedef struct {
        SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need work >=
        SSDA_TRACK_WORK_SIZE(...) bytes, 8-byte aligned. The quality flags
        of the search are set by tracking: TIE_NEAREST always, SUBPIXEL and
-       UNIQUE from the flags above (flags given here are kept). */
+       UNIQUE from the flags above (flags given here are kept).
+       SSDA_MATCH_BLOCKS is refused (SSDA_ERR_ARG): it pays on single
+       large searches, not on the small areas of a grid. */
     ssda_match_config_t match;
 } ssda_track_config_t;
 
@@ -313,7 +315,8 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
  *                     2 * texture_min_count > win_w * win_h; flat_q8 >
  *                     65535 * 256; COARSE scan with prediction;
  *                     SSDA_TRACK_UNIQUE with a threshold other than AUTO and
- *                     NONE or the COARSE scan; and every SSDA_ERR_ARG of
+ *                     NONE or the COARSE scan; SSDA_MATCH_BLOCKS in
+ *                     match.flags; and every SSDA_ERR_ARG of
  *                     ssda_match (unique_q8, unique_radius)
  *   SSDA_ERR_BUFFER   out_count below the grid count; bounds or uniqueness
  *                     work buffer below SSDA_TRACK_WORK_SIZE or misaligned

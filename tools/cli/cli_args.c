@@ -524,6 +524,19 @@ static void *png_job(void *arg)
     return NULL;
 }
 
+/* The largest sample of a 16-bit image. */
+static uint32_t largest_sample(const gray_image_t *img)
+{
+    uint32_t x, y, top = 0;
+    for (y = 0; y < img->height; y++) {
+        for (x = 0; x < img->width; x++) {
+            const uint32_t v = gray_image_get(img, x, y);
+            top = v > top ? v : top;
+        }
+    }
+    return top;
+}
+
 /* *img (8-bit) replaced by its 16-bit copy, v * 257: what png_read_gray
    gives for PNG_GRAY_16 from any source it decodes to 8 bits. */
 static int widen_to_16(gray_image_t *img)
@@ -572,6 +585,18 @@ int cli_load_png_pair(const char *cmd, const char *p1, const char *p2, gray_imag
             gray_image_free(&j[1].img);
         }
         return -1;
+    }
+    if (j[0].img.bits != j[1].img.bits) {
+        /* v x 257 matches a 16-bit image of the full range; raw counts of
+           fewer bits (12-bit satellite data) then sit far below it */
+        const gray_image_t *wide = j[0].img.bits == 16 ? &j[0].img : &j[1].img;
+        const uint32_t top = largest_sample(wide);
+        if (top < 32768u) {
+            fprintf(stderr, "ssda %s: note: '%s' is 8-bit, widened to 16 (v x 257), but the "
+                    "16-bit '%s' reaches only %u: their levels differ (SAD compares levels; "
+                    "the correlation, --metric ncc, does not mind)\n", cmd,
+                    wide == &j[0].img ? p2 : p1, wide == &j[0].img ? p1 : p2, top);
+        }
     }
     if ((j[0].img.bits != j[1].img.bits) &&
         widen_to_16(j[0].img.bits == 8 ? &j[0].img : &j[1].img) != 0) {

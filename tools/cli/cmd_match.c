@@ -32,8 +32,9 @@ static const char help[] =
     "                    coarse (8 px grid, then 1 px descent; may miss the minimum)\n"
     "  --predict X,Y     predicted top-left (implies --scan predict)\n"
     "  --order ROWS      rows (default) or spread (decorrelated row order)\n"
-    "  --no-bounds       no successive-elimination bounds (default: bounds on;\n"
-    "                    exact either way, bounds skip more work)\n"
+    "  --no-bounds       no successive-elimination bounds (default: bounds on, with\n"
+    "                    the multilevel block bounds under auto; exact either way,\n"
+    "                    bounds skip more work)\n"
     "  --coarse-step N   grid step of --scan coarse, px (default 8)\n"
     "  --json            print one JSON object instead of text (stdout; no FILE:\n"
     "                    redirect it):\n"
@@ -242,6 +243,13 @@ static int run_match(match_opts_t *o, match_job_t *j)
     if (o->cfg.flags & SSDA_MATCH_BOUNDS) {
         o->cfg.work_size = SSDA_MATCH_WORK_SIZE(j->s_img.width, j->s_img.height, j->w_img.width,
                                                 j->w_img.height);
+        if (o->cfg.threshold == SSDA_THRESHOLD_AUTO) {
+            /* the block levels too (issue 18): the same result, less work on
+               large templates, for an integral image of the scene */
+            o->cfg.flags |= SSDA_MATCH_BLOCKS;
+            o->cfg.work_size = SSDA_MATCH_WORK_SIZE_BLOCKS(j->s_img.width, j->s_img.height,
+                                                           j->w_img.width, j->w_img.height);
+        }
         if ((work = malloc(o->cfg.work_size)) == NULL) {
             return cli_input_error("match", "out of memory for the bounds buffer (%zu bytes)",
                                    o->cfg.work_size);

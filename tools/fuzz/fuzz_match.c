@@ -20,7 +20,7 @@
 
 static uint32_t g_area[BUF_BYTES / 4u];
 static uint32_t g_win[BUF_BYTES / 4u];
-static uint32_t g_work[(MAX_DIM + 1u) * MAX_DIM + 2u * MAX_DIM + 2u];
+static uint32_t g_work[SSDA_MATCH_WORK_SIZE_BLOCKS(MAX_DIM, MAX_DIM, 1u, MAX_DIM) / 4u + 2u];
 
 /* A simple generator for pixels beyond the input's bytes. */
 static uint32_t next_rand(uint32_t *s)
@@ -126,7 +126,10 @@ static void read_config(fuzz_in_t *in, case_t *c)
     cfg->threshold = (uint8_t)fuzz_range(in, 0, SSDA_THRESHOLD_AUTO_RAMP);
     cfg->scan = (uint8_t)fuzz_range(in, 0, SSDA_SCAN_COARSE);
     cfg->order = (uint8_t)fuzz_range(in, 0, SSDA_ORDER_SPREAD);
-    cfg->flags = (uint8_t)(fuzz_u8(in) & SSDA_MATCH_BOUNDS);
+    cfg->flags = (uint8_t)(fuzz_u8(in) & (SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS));
+    if (cfg->flags == SSDA_MATCH_BLOCKS) {
+        cfg->flags = 0u; /* the block levels need the bounds */
+    }
     cfg->k_q8 = (uint16_t)fuzz_u16(in);
     cfg->coarse_step = (uint16_t)(fuzz_u8(in) & 1u ? fuzz_range(in, 0, 12) : fuzz_u16(in));
     cfg->lambda_q8 = fuzz_u8(in) & 1u ? fuzz_range(in, 1, 0x10000u) : fuzz_u32(in);
@@ -145,7 +148,9 @@ static void read_config(fuzz_in_t *in, case_t *c)
         cfg->predict_y = cfg->predict_y % (int32_t)(c->ah + 4u);
     }
     cfg->work = g_work;
-    cfg->work_size = SSDA_MATCH_WORK_SIZE(c->aw, c->ah, c->ww, c->wh);
+    cfg->work_size = (cfg->flags & SSDA_MATCH_BLOCKS) != 0u
+                         ? SSDA_MATCH_WORK_SIZE_BLOCKS(c->aw, c->ah, c->ww, c->wh)
+                         : SSDA_MATCH_WORK_SIZE(c->aw, c->ah, c->ww, c->wh);
 }
 
 /* Pixels: the area, then a window that is a (perturbed) copy of a placement
@@ -243,7 +248,7 @@ static int break_rule(case_t *c, uint32_t brk, uint32_t sub, ssda_view_t **pa, s
         case 0: cfg->threshold = (uint8_t)(5u + sub % 251u); break;
         case 1: cfg->scan = (uint8_t)(3u + sub % 253u); break;
         case 2: cfg->order = (uint8_t)(2u + sub % 254u); break;
-        default: cfg->flags = (uint8_t)(cfg->flags | (0x10u << (sub % 4u))); break; /* no flag */
+        default: cfg->flags = (uint8_t)(cfg->flags | (0x20u << (sub % 3u))); break; /* no flag */
         }
         return SSDA_ERR_ARG;
     case BREAK_RAMP_LAMBDA:
@@ -255,7 +260,10 @@ static int break_rule(case_t *c, uint32_t brk, uint32_t sub, ssda_view_t **pa, s
         cfg->work = NULL;
         return SSDA_ERR_NULL;
     case BREAK_WORK_SHORT:
-        cfg->flags = SSDA_MATCH_BOUNDS;
+        if ((cfg->flags & SSDA_MATCH_BLOCKS) == 0u || (sub & 2u) != 0u) {
+            cfg->flags = SSDA_MATCH_BOUNDS;
+            cfg->work_size = SSDA_MATCH_WORK_SIZE(c->aw, c->ah, c->ww, c->wh);
+        }
         if (sub & 1u) cfg->work_size -= 1u; else cfg->work = (uint8_t *)g_work + 1u + sub % 3u;
         return SSDA_ERR_BUFFER;
     default:

@@ -5,7 +5,7 @@
  *
  * usage: ssda-peers-match [--reps N] [--search-reps N] [--ratios FILE]
  *            [--pair FIRST.png SECOND.png] [--pair-name NAME] [--mask V]
- *            [--image PNG] [--size N] [--quick]
+ *            [--image PNG] [--size N] [--quick] [--searches-only]
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +19,7 @@
 #include "synth_texture.h"
 
 typedef struct {
-    int reps, search_reps, size, quick, use_mask;
+    int reps, search_reps, size, quick, use_mask, searches_only;
     uint16_t mask;
     const char *ratios, *pair[2], *pair_name, *image;
 } options_t;
@@ -42,7 +42,8 @@ static int usage(void)
             "  --mask V            fill value of the pair: windows touching it are left out\n"
             "  --image PNG         an 8-bit image for single searches (e.g. camera.png)\n"
             "  --size N            side of the synthetic tracking pair (1024)\n"
-            "  --quick             3 repetitions, fewer template sizes (a smoke run)\n");
+            "  --quick             3 repetitions, fewer template sizes (a smoke run)\n"
+            "  --searches-only     single searches only, no grid tracking\n");
     return 2;
 }
 
@@ -62,6 +63,9 @@ static int make_pair(int w, int h, unsigned seed, uint8_t **a, uint8_t **b)
 static int track_both(peers_pair_t *p, const options_t *o, FILE *ratios)
 {
     int rc = 0;
+    if (o->searches_only) {
+        return 0;
+    }
     p->cv_first = cv_peer_image_new(&p->first);
     p->cv_second = cv_peer_image_new(&p->second);
     if (p->cv_first == NULL || p->cv_second == NULL) {
@@ -119,6 +123,7 @@ static int parse_options(int argc, char **argv, options_t *o)
         else if (!strcmp(a, "--image") && i + 1 < argc) o->image = argv[++i];
         else if (!strcmp(a, "--size") && i + 1 < argc) o->size = atoi(argv[++i]);
         else if (!strcmp(a, "--quick")) o->quick = 1;
+        else if (!strcmp(a, "--searches-only")) o->searches_only = 1;
         else return usage();
     }
     if (o->quick) {
@@ -287,7 +292,7 @@ static int run_image_scene(const options_t *o, FILE *ratios, int *fatal)
 
 int main(int argc, char **argv)
 {
-    options_t o = {7, 5, 1024, 0, 0, 0, NULL, {NULL, NULL}, "real pair", NULL};
+    options_t o = {7, 5, 1024, 0, 0, 0, 0, NULL, {NULL, NULL}, "real pair", NULL};
     FILE *ratios = NULL;
     char info[256];
     int rc = parse_options(argc, argv, &o), fatal = 0;
@@ -306,7 +311,7 @@ int main(int argc, char **argv)
     if (o.pair[0] != NULL) {
         rc |= run_real_pair(&o, ratios, &fatal);
     }
-    rc |= fatal ? 0 : run_synthetic_pair(&o, ratios, &fatal);
+    rc |= fatal || o.searches_only ? 0 : run_synthetic_pair(&o, ratios, &fatal);
     rc |= fatal ? 0 : run_synthetic_scene(&o, ratios, &fatal);
     if (o.image != NULL && !fatal) {
         rc |= run_image_scene(&o, ratios, &fatal);

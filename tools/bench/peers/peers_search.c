@@ -8,17 +8,18 @@
 #include "ssda/match.h"
 #include "synth_texture.h"
 
-enum { M_BOUNDS, M_AUTO, M_NONE, M_SQDIFF, M_CCOEFF, M_COUNT };
-static const char *const k_short[M_COUNT] = {"ssda auto + bounds", "ssda auto", "ssda none",
-                                             "TM_SQDIFF", "TM_CCOEFF_NORMED"};
+enum { M_BLOCKS, M_BOUNDS, M_AUTO, M_NONE, M_SQDIFF, M_CCOEFF, M_COUNT };
+static const char *const k_short[M_COUNT] = {"ssda auto + blocks", "ssda auto + bounds",
+                                             "ssda auto", "ssda none", "TM_SQDIFF",
+                                             "TM_CCOEFF_NORMED"};
 #define NPOS 4
 
 typedef struct {
     ssda_view_t tmpl[NPOS];
     cv_peer_job_t jobs[NPOS];
-    ssda_match_config_t cfg[3]; /* M_BOUNDS, M_AUTO, M_NONE */
+    ssda_match_config_t cfg[4]; /* M_BLOCKS, M_BOUNDS, M_AUTO, M_NONE */
     uint16_t bx[M_COUNT][NPOS], by[M_COUNT][NPOS];
-    uint64_t ops[3];            /* pixel ops of the NPOS searches */
+    uint64_t ops[4];            /* pixel ops of the NPOS searches */
 } search_run_t;
 
 static double run_method(const peers_scene_t *s, search_run_t *r, int m, unsigned size)
@@ -53,7 +54,7 @@ static double run_method(const peers_scene_t *s, search_run_t *r, int m, unsigne
 static int one_size(const peers_scene_t *s, unsigned size, int reps, FILE *ratios)
 {
     search_run_t r;
-    size_t work_size = SSDA_MATCH_WORK_SIZE(s->image.width, s->image.height, size, size);
+    size_t work_size = SSDA_MATCH_WORK_SIZE_BLOCKS(s->image.width, s->image.height, size, size);
     void *work = malloc(work_size);
     double *times = calloc((size_t)reps * M_COUNT, sizeof *times), med[M_COUNT];
     int m, best = 0, same_sq = 0, same_cc = 0, truth_ok[M_COUNT] = {0}, exact = 1;
@@ -73,6 +74,10 @@ static int one_size(const peers_scene_t *s, unsigned size, int reps, FILE *ratio
         ssda_view_roi(&r.tmpl[k], &s->moved, r.jobs[k].wx, r.jobs[k].wy, (uint16_t)size,
                       (uint16_t)size);
     }
+    r.cfg[M_BLOCKS].threshold = SSDA_THRESHOLD_AUTO;
+    r.cfg[M_BLOCKS].flags = SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS;
+    r.cfg[M_BLOCKS].work = work;
+    r.cfg[M_BLOCKS].work_size = work_size;
     r.cfg[M_BOUNDS].threshold = SSDA_THRESHOLD_AUTO;
     r.cfg[M_BOUNDS].flags = SSDA_MATCH_BOUNDS;
     r.cfg[M_BOUNDS].work = work;
@@ -96,7 +101,8 @@ static int one_size(const peers_scene_t *s, unsigned size, int reps, FILE *ratio
         best = med[m] < med[best] ? m : best;
     }
     for (int k = 0; k < NPOS; k++) {
-        exact &= r.bx[M_BOUNDS][k] == r.bx[M_NONE][k] && r.by[M_BOUNDS][k] == r.by[M_NONE][k] &&
+        exact &= r.bx[M_BLOCKS][k] == r.bx[M_NONE][k] && r.by[M_BLOCKS][k] == r.by[M_NONE][k] &&
+                 r.bx[M_BOUNDS][k] == r.bx[M_NONE][k] && r.by[M_BOUNDS][k] == r.by[M_NONE][k] &&
                  r.bx[M_AUTO][k] == r.bx[M_NONE][k] && r.by[M_AUTO][k] == r.by[M_NONE][k];
         same_sq += r.bx[M_SQDIFF][k] == r.bx[M_NONE][k] && r.by[M_SQDIFF][k] == r.by[M_NONE][k];
         same_cc += r.bx[M_CCOEFF][k] == r.bx[M_NONE][k] && r.by[M_CCOEFF][k] == r.by[M_NONE][k];
@@ -111,19 +117,21 @@ static int one_size(const peers_scene_t *s, unsigned size, int reps, FILE *ratio
             }
         }
     }
-    printf("| %ux%u | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %.2fx | %.2fx | %.1fx | %d/%d, %d/%d |",
-           size, size, 1e3 * med[M_BOUNDS], 1e3 * med[M_AUTO], 1e3 * med[M_NONE],
-           1e3 * med[M_SQDIFF], 1e3 * med[M_CCOEFF], k_short[best], med[M_SQDIFF] / med[M_BOUNDS],
-           med[M_CCOEFF] / med[M_BOUNDS], (double)r.ops[M_NONE] / (double)r.ops[M_BOUNDS],
-           same_sq, NPOS, same_cc, NPOS);
+    printf("| %ux%u | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %s | %.2fx | %.2fx | %.2fx | "
+           "%.1fx | %.1fx | %d/%d, %d/%d |",
+           size, size, 1e3 * med[M_BLOCKS], 1e3 * med[M_BOUNDS], 1e3 * med[M_AUTO],
+           1e3 * med[M_NONE], 1e3 * med[M_SQDIFF], 1e3 * med[M_CCOEFF], k_short[best],
+           med[M_SQDIFF] / med[M_BLOCKS], med[M_CCOEFF] / med[M_BLOCKS],
+           med[M_SQDIFF] / med[M_BOUNDS], (double)r.ops[M_NONE] / (double)r.ops[M_BLOCKS],
+           (double)r.ops[M_NONE] / (double)r.ops[M_BOUNDS], same_sq, NPOS, same_cc, NPOS);
     if (s->synthetic_truth) {
-        printf(" %d/%d, %d/%d, %d/%d |", truth_ok[M_BOUNDS], NPOS, truth_ok[M_SQDIFF], NPOS,
+        printf(" %d/%d, %d/%d, %d/%d |", truth_ok[M_BLOCKS], NPOS, truth_ok[M_SQDIFF], NPOS,
                truth_ok[M_CCOEFF], NPOS);
     }
     printf("%s\n", exact ? "" : " **ssda auto differs from brute force: bug** |");
     snprintf(label, sizeof label, "%s %ux%u: vs TM_SQDIFF", s->name, size, size);
-    peers_ratio(ratios, "Single search over a whole image (ssda auto + bounds)", label,
-                med[M_SQDIFF] / med[M_BOUNDS]);
+    peers_ratio(ratios, "Single search over a whole image (ssda auto + blocks)", label,
+                med[M_SQDIFF] / med[M_BLOCKS]);
     free(work);
     free(times);
     return exact ? 0 : -1;
@@ -138,12 +146,13 @@ int peers_search(const peers_scene_t *s, const unsigned *sizes, size_t n, int re
            "interleaved runs. ssda `auto` is the raster scan with no prediction (a single "
            "search has none).\n\n",
            s->description, reps);
-    printf("| template | ssda `auto` + bounds ms | ssda `auto` ms | ssda `none` ms | `TM_SQDIFF` ms "
-           "| `TM_CCOEFF_NORMED` ms | fastest | `auto` + bounds vs `TM_SQDIFF` | vs "
-           "`TM_CCOEFF_NORMED` | fewer pixel ops than `none` | OpenCV at brute force's place "
+    printf("| template | ssda `auto` + blocks ms | `auto` + bounds ms | ssda `auto` ms | ssda "
+           "`none` ms | `TM_SQDIFF` ms | `TM_CCOEFF_NORMED` ms | fastest | `auto` + blocks vs "
+           "`TM_SQDIFF` | vs `TM_CCOEFF_NORMED` | `auto` + bounds vs `TM_SQDIFF` | fewer pixel "
+           "ops than `none`: blocks | bounds | OpenCV at brute force's place "
            "(SQDIFF, CCOEFF) |%s\n",
            s->synthetic_truth ? " within 1 px of known motion (ssda, SQDIFF, CCOEFF) |" : "");
-    printf("|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|%s\n",
+    printf("|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|%s\n",
            s->synthetic_truth ? "---:|" : "");
     for (size_t k = 0; k < n; k++) {
         if (sizes[k] * 2 > s->image.width || sizes[k] * 2 > s->image.height) {

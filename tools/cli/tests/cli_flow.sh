@@ -166,6 +166,15 @@ track)
     "$flowtool" track-check t.json 2 -3 1.0 && "$flowtool" track-status t.json >st.txt &&
     grep -qx "ok $searched at_limit 0" st.txt ||
     fail "ncc: SAD's at_limit and ambiguous windows: $(grep -o '"ok":.*' t.json)"
+  # an 8-bit image against raw 12-bit counts in a 16-bit PNG: said, since
+  # the widened levels (v x 257) are 16 times the counts'
+  "$gen" texture h12.png --size 120x100 --seed 7 --shift 2,-3 --kind gray16 --max 4000
+  run 0 track r.png h12.png --metric ncc --json t.json --quiet &&
+    stderr_has "'r.png' is 8-bit, widened to 16 (v x 257), but the 16-bit 'h12.png' reaches only" &&
+    "$flowtool" track-check t.json 2 -3 1.0 || fail "8-bit against 12-bit counts"
+  "$gen" texture h16.png --size 120x100 --seed 7 --shift 2,-3 --kind gray16
+  run 0 track r.png h16.png --json t.json --quiet && grep -q "note" err.txt &&
+    fail "a note on a full-range pair: $(cat err.txt)"
   # a motion beyond the range (9 px, range +-8): the correlation's best on
   # the border is at_limit, never ok
   "$gen" texture n9.png --size 120x100 --seed 7 --shift 9,0
