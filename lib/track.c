@@ -4,11 +4,11 @@
 
 #include "track_rows.h"
 
-int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
-               const ssda_track_config_t *cfg, ssda_track_vector_t *out,
-               size_t out_count, ssda_track_stats_t *stats)
+/* The views' checks of both entries (out NULL counts as an argument
+   error too), then the views as row sources. */
+static int rows_of_views(const ssda_view_t *first, const ssda_view_t *second,
+                         const ssda_track_vector_t *out, ssda__rows_t *a, ssda__rows_t *b)
 {
-    ssda__rows_t a, b;
     int err;
     if (first == NULL || second == NULL || out == NULL) {
         return SSDA_ERR_NULL;
@@ -17,11 +17,22 @@ int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
     if (err == SSDA_OK) {
         err = ssda_view_check(second);
     }
+    if (err == SSDA_OK) {
+        ssda__rows_view(a, first);
+        ssda__rows_view(b, second);
+    }
+    return err;
+}
+
+int ssda_track(const ssda_view_t *first, const ssda_view_t *second,
+               const ssda_track_config_t *cfg, ssda_track_vector_t *out,
+               size_t out_count, ssda_track_stats_t *stats)
+{
+    ssda__rows_t a, b;
+    int err = rows_of_views(first, second, out, &a, &b);
     if (err != SSDA_OK) {
         return err;
     }
-    ssda__rows_view(&a, first);
-    ssda__rows_view(&b, second);
     /* checked views: no second check of the row sources. RAM sources never
        fail a fetch: an error here is an argument error, found before
        anything is written. */
@@ -35,33 +46,16 @@ int ssda_track_row(const ssda_view_t *first, const ssda_view_t *second,
     ssda__rows_t a, b;
     ssda_track_plan_t plan;
     ssda_track_stats_t unused;
-    int err;
-    if (first == NULL || second == NULL || out == NULL) {
-        return SSDA_ERR_NULL;
-    }
-    err = ssda_view_check(first);
+    int err = rows_of_views(first, second, out, &a, &b);
     if (err == SSDA_OK) {
-        err = ssda_view_check(second);
+        err = ssda__track_prepare(&a, &b, cfg, out_count, &plan);
     }
     if (err != SSDA_OK) {
         return err;
-    }
-    if (first->format != second->format) {
-        return SSDA_ERR_FORMAT;
-    }
-    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->format,
-                           first->width, first->height, second->width, second->height, &plan);
-    if (err != SSDA_OK) {
-        return err;
-    }
-    if (!ssda__track_out_fits(plan.grid.count, out_count)) {
-        return SSDA_ERR_BUFFER;
     }
     if (row >= plan.grid.rows || col0 >= col1 || col1 > plan.grid.cols) {
         return SSDA_ERR_ARG;
     }
-    ssda__rows_view(&a, first);
-    ssda__rows_view(&b, second);
     if (stats == NULL) {
         (void)memset(&unused, 0, sizeof unused);
         stats = &unused;

@@ -441,23 +441,31 @@ int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
                      &ssda__track_origin_whole, out, acc);
 }
 
+int ssda__track_prepare(const ssda__rows_t *first, const ssda__rows_t *second,
+                        const ssda_track_config_t *cfg, size_t out_count,
+                        ssda_track_plan_t *plan)
+{
+    int err;
+    if (first->format != second->format) {
+        return SSDA_ERR_FORMAT;
+    }
+    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->format,
+                           first->width, first->height, second->width, second->height, plan);
+    if (err == SSDA_OK && !ssda__track_out_fits(plan->grid.count, out_count)) {
+        err = SSDA_ERR_BUFFER;
+    }
+    return err;
+}
+
 int ssda__track_run(const ssda__rows_t *first, const ssda__rows_t *second,
                     const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                     size_t out_count, ssda_track_stats_t *stats)
 {
     ssda_track_plan_t plan;
     ssda_track_stats_t st;
-    int err;
-    if (first->format != second->format) {
-        return SSDA_ERR_FORMAT;
-    }
-    err = ssda__track_plan(cfg != NULL ? cfg : &ssda__track_defaults, second->format,
-                           first->width, first->height, second->width, second->height, &plan);
+    int err = ssda__track_prepare(first, second, cfg, out_count, &plan);
     if (err != SSDA_OK) {
         return err;
-    }
-    if (!ssda__track_out_fits(plan.grid.count, out_count)) {
-        return SSDA_ERR_BUFFER;
     }
     stats_zero(&st);
     err = ssda__track_strip(first, second, &plan, 0u, plan.grid.cols, out, &st);

@@ -58,6 +58,14 @@ SSDA_INTERNAL int ssda__track_rows(const ssda__rows_t *first, const ssda__rows_t
                                    const ssda_track_config_t *cfg, ssda_track_vector_t *out,
                                    size_t out_count, ssda_track_stats_t *stats);
 
+/* The checks of every whole-image tracking entry after its sources':
+   equal formats, cfg (NULL = defaults) resolved into *plan for these
+   sizes, out_count at least the grid count. Returns SSDA_OK or the error
+   ssda_track documents (SSDA_ERR_FORMAT, the plan's, SSDA_ERR_BUFFER). */
+SSDA_INTERNAL int ssda__track_prepare(const ssda__rows_t *first, const ssda__rows_t *second,
+                                      const ssda_track_config_t *cfg, size_t out_count,
+                                      ssda_track_plan_t *plan);
+
 /* ssda__track_rows after its checks of the row sources, for callers whose
    sources are valid already (ssda_track's views): formats, the plan, the
    whole grid. Same returns. */
