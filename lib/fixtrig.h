@@ -3,7 +3,7 @@
  * symbolic registration (edge directions, Fourier descriptors, affine
  * angles). Angles are "turns": uint32_t, 2^32 per full turn (so angle
  * arithmetic wraps exactly modulo one turn); 0 = +x, a quarter turn
- * (2^30) = +y. No float, no division.
+ * (2^30) = +y. Integers only, no division.
  */
 #ifndef SSDA_FIXTRIG_H
 #define SSDA_FIXTRIG_H

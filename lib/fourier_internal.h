@@ -13,7 +13,7 @@ SSDA_INTERNAL uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den)
 /* floor(a * b / 2^s) saturated at UINT32_MAX. */
 SSDA_INTERNAL uint32_t ssda__mulshr_sat(uint32_t a, uint32_t b, uint32_t s);
 
-/* A lower bound of the free match's E^2 (Q16) without the search:
+/* A lower bound of the unconstrained match's E^2 (Q16) without the search:
    |Z(alpha)| <= sum |a_n| |b_n| (Cauchy-Schwarz per term). Same orders. */
 SSDA_INTERNAL uint32_t ssda__fd_e2_bound(const ssda_fd_t *a, const ssda_fd_t *b);
 

@@ -128,7 +128,7 @@ static bool rising_real(const zval_t *v)
     return v->wi < 0;
 }
 
-/* Score of a value: |Z|^2 (free) or Re Z (fixed, offset to stay unsigned). */
+/* Score of a value: |Z|^2 (unconstrained) or Re Z (fixed, offset to stay unsigned). */
 static uint64_t rank(const zval_t *v, bool fixed)
 {
     if (fixed) {

@@ -70,7 +70,7 @@ static bool best_bound(const lag_value_t *best, bool after, uint32_t s, uint32_t
     return true;
 }
 
-/* Sum one lag into *v, cut above bound. Rejected for free when the lower
+/* Sum one lag into *v, cut above bound. Rejected at no cost when the lower
    bound |A - B(lag)| <= d(lag) is already above bound. Writes through v
    (no returned struct: each call site would keep a temporary on the
    stack). */

@@ -20,7 +20,7 @@ static int64_t mul_q30(int64_t a, int64_t b)
 
 /* sin(2 pi phase / 2^32) in Q15 ([-32768, 32768]): quarter-wave symmetry
    and an odd 7th-order polynomial in t (t = 1: a quarter turn), fitted
-   minimax on [0, 1] (0.02 LSB of Q15 off in double; the rounding of the
+   minimax on [0, 1] (0.02 LSB of Q15 off in 64-bit reference arithmetic; the rounding of the
    Q30 Horner steps adds under 0.01). */
 static int32_t sin_q15(uint32_t phase)
 {

@@ -1,4 +1,4 @@
-/* symreg.c - ssda_symreg (symreg.h): nuclei from free matches, growth of
+/* symreg.c - ssda_symreg (symreg.h): nuclei from unconstrained matches, growth of
    each nucleus by the seed's steps [2.1]-[2.5], the largest final set. */
 #include "symreg_internal.h"
 #include "fourier_internal.h"
@@ -76,7 +76,7 @@ static void nuclei_insert(nucleus_t *list, uint32_t *n, uint32_t k, const nucleu
     *n = *n < k ? *n + 1u : k;
 }
 
-/* [1]: the k best pairs by free-match E^2, at most PER_REF of them from
+/* [1]: the k best pairs by unconstrained-match E^2, at most PER_REF of them from
    any one REF loop (the seed: the same loops recur in many pairs; without
    the cap, a few round loops that match everything fill the list).
    Returns how many. */
@@ -379,7 +379,7 @@ static int plan_init(const ssda_loop_t *ref, const ssda_fd_t *fd_ref, uint32_t n
     return SSDA_OK;
 }
 
-/* The winner's pairs: the free match of each, the fixed E^2, residuals. */
+/* The winner's pairs: the unconstrained match of each, the fixed E^2, residuals. */
 static uint32_t write_pairs(const plan_t *p, const best_t *b, ssda_symreg_pair_t *pairs,
                             uint32_t max_pairs)
 {

@@ -31,7 +31,7 @@
  * +-2 LSB), arg by CORDIC (error < 2^-22 turn). Products c_n = conj(b_n) a_n
  * are scaled to 27 bits before the sums (relative error < 2^-26), so s, phi
  * and alpha are limited by the table, not by the word sizes: on the test
- * shapes s agrees with a double-precision reference within 2^-12 and phi
+ * shapes s agrees with a 64-bit reference within 2^-12 and phi
  * within 0.01 degree (tests/test_fourier.c). s is Q16, E^2 Q16.
  */
 #ifndef SSDA_FOURIER_H

@@ -43,7 +43,7 @@
  * each row's largest-magnitude component is made positive (ties: the first),
  * which is the sign convention of the seed's eq. 2.3. The seed prints each
  * row scaled to unit L1 norm (sum of |v| = 1); vec_q30 rows have unit L2
- * norm. Precision (tests/test_kl.c, against a double-precision closed-form
+ * norm. Precision (tests/test_kl.c, against a 64-bit reference closed-form
  * eigen-solver on 20 000 random matrices of rank 1 to 3 and on degenerate
  * ones, the matrix taken as exact): eigenvalues within 2^-26 of the
  * largest; eigenvector components within 2^-26 lambda_1 / gap, gap the
@@ -67,12 +67,12 @@
  * g_k is capped so that g_k max_j |v_kj| <= gain_max: a step of one sample
  * in any one band moves z_k by at most gain_max steps (default and largest
  * 4096: a nearly constant feature). With 8-bit input a cap of 1 keeps
- * feature histograms free of combs: the features of integer samples take
+ * feature histograms without combs: the features of integer samples take
  * values on a lattice, and bins finer than one band's step leave regular
  * gaps that a mixture fit reads as spikes (ssda segment's default). The weights are integers (|w| <= 2^20 for 8-bit input, int32
  * arithmetic, 9 multiply-adds per pixel; 16-bit input uses int64
  * multiply-adds), and every z_k is within 1 of the formula above
- * (tests/test_kl.c, against the formula in double).
+ * (tests/test_kl.c, against the formula in 64-bit reference arithmetic).
  * Masked pixels (nodata, below) are written as SSDA_KL_NODATA.
  *
  * NODATA: with SSDA_KL_MASK_NODATA a pixel whose three samples all equal

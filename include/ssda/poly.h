@@ -131,7 +131,7 @@ typedef struct {
  * exact integer sums plus refinement recover what squaring the condition
  * number costs: the coefficients equal the exact least-squares solution to
  * within a few units of Q24 while cond * 2^-28 << 1 (tests: against a
- * double-precision QR fit, order 3, cond up to 10^4).
+ * QR fit in 64-bit reference arithmetic, order 3, cond up to 10^4).
  *
  * REJECTION. After each fit the residual of every used pair (distance
  * between the mapped reference position and the moving position) is

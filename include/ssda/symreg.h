@@ -8,7 +8,7 @@
  *
  * METHOD (seed [1]-[3]).
  * [1] Every (ref, mov) pair whose areas fit the scale range is matched
- *     with s, phi and alpha free (ssda_fd_match; a pair whose E^2 lower
+ *     with s, phi and alpha unconstrained (ssda_fd_match; a pair whose E^2 lower
  *     bound cannot enter the lists below is skipped without the search).
  *     The `nuclei` pairs of smallest E^2 (<= e2_nucleus), at most two from
  *     any one REF loop, are the nuclei (ties: the earlier pair).
@@ -131,7 +131,7 @@ typedef struct {
  *   res:     receives the outcome. res->pairs = 0 when no nucleus reached
  *            min_pairs (too few loops or matches: res->candidates and
  *            res->nuclei say how far it got); that is SSDA_OK too.
- * Cost: n_ref * n_mov bounds, at most that many free matches, then per
+ * Cost: n_ref * n_mov bounds, at most that many unconstrained matches, then per
  * nucleus a few passes of n_ref * n_mov distance tests and fixed matches.
  * Returns SSDA_OK, or without writing outputs: SSDA_ERR_NULL,
  * SSDA_ERR_ARG (a count above the maximum, descriptor orders that differ,
