@@ -47,6 +47,8 @@ typedef struct {
     bool bounds;         /* successive elimination active */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
     bool tie_near;       /* SSDA_MATCH_TIE_NEAREST */
+    bool fast;           /* positions are evaluated by eval_fast (see there) */
+    bool plain_ref;      /* use_ref, no uniqueness list, no TIE_NEAREST */
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
@@ -59,6 +61,8 @@ typedef struct {
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
+    uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
+                            (<= positions < 2^32), added to ops by finish */
     const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
                               modulo 2^32 (block_bound) */
     uint32_t *wblk;        /* blocks: the window's block sums, level after level */
@@ -400,6 +404,152 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 }
 #endif
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
+   SAD < 2^32 - 1 (triangle inequality), each term likewise. The terms are
+   stored only when the position passes (a second pass): most do not. */
+static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
+{
+    const uint32_t *g0 = e->gsum + (size_t)y * e->nx + x;
+    const uint32_t *g = g0;
+    const size_t down = (size_t)e->group * e->nx;
+    const uint32_t *w = e->wgrp;
+    const uint32_t n = e->ngroups;
+    uint32_t rest = 0u, k;
+    e->nbound++; /* n ops each, added by finish */
+    for (k = 0u; k < n; k++) {
+        const uint32_t a = *g, b = w[k];
+        rest += a > b ? a - b : b - a;
+        g += down;
+    }
+    if (rest < cut_at) {
+        uint32_t *t = e->term;
+        g = g0;
+        for (k = 0u; k < n; k++) {
+            const uint32_t a = *g, b = w[k];
+            t[k] = a > b ? a - b : b - a;
+            g += down;
+        }
+    }
+    return rest;
+}
+#endif
+
+/* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
+   (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
+   at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it). */
+static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y)
+{
+    const cand_t *ref = e->ref;
+    if (e->plain_ref && ref != NULL) { /* the usual case, tested first */
+        return (uint32_t)ref->sad + ((y < ref->y || (y == ref->y && x < ref->x)) ? 1u : 0u);
+    }
+    if (!e->use_ref || ref == NULL) {
+        return UINT32_MAX;
+    }
+    if (e->list != NULL) {
+        return e->loose > UINT32_MAX ? UINT32_MAX : (uint32_t)e->loose;
+    }
+    return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
+}
+
+/* The rows of a position that passed eval_fast's checks: partial + rest
+   against cut_at after each row (the first row in chunks), as in
+   eval_position. Returns 1 and sets *sad, or 0 when cut. */
+static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
+                                   uint32_t rest, uint64_t *sad)
+{
+    const uint32_t L = e->L;
+    const size_t as = e->area->stride, ws = e->win->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
+    const uint8_t *w = e->win->base;
+    uint32_t partial = 0u; /* < 2^32 - 1: e->fast */
+    uint32_t k, g = 0u, next_start = 0u;
+    if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
+        /* the first row in chunks: most positions are cut there. Group 0
+           starts with it when rest != 0, as in eval_position */
+        const uint32_t fmt = e->area->format;
+        uint32_t done = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u) {
+            rest -= e->term[0];
+            g = 1u;
+            next_start = e->group;
+        }
+#endif
+        while (done < L) {
+            const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
+            partial += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
+            done += n;
+            if (done < L && partial + rest >= cut_at) {
+                e->ops += done;
+                return 0;
+            }
+        }
+        if (partial + rest >= cut_at) {
+            e->ops += L;
+            return 0;
+        }
+        a += as;
+        w += ws;
+        k = 1u;
+    } else {
+        k = 0u;
+    }
+    for (; k < e->M; k++) {
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u && k == next_start) { /* as in eval_position */
+            rest -= e->term[g];
+            g++;
+            next_start += e->group;
+        }
+#endif
+        partial += row_sad(e, a, w, L);
+        if (partial + rest >= cut_at) {
+            const uint32_t summed = (k + 1u) * L; /* <= L * M < 2^32 */
+            e->ops += summed;
+            return 0;
+        }
+        a += as;
+        w += ws;
+    }
+    {
+        const uint32_t summed = e->M * L; /* < 2^32 */
+        e->ops += summed;
+    }
+    *sad = partial;
+    return 1;
+}
+
+/*
+ * eval_position for the common exact case (e->fast, set once per search):
+ * rows in memory, row order, no ramp, no all-cut fallback, no block levels,
+ * and every SAD of the window below 2^32 - 1 (L * M * maxval), so that the
+ * partial sum plus the bound of the rows not summed fits 32 bits, and a cut
+ * level saturated to 2^32 - 1 decides as the 64-bit one does (a sum that
+ * never reaches it). The same steps as eval_position, so the same results
+ * and pixel_ops, in fewer instructions: most positions stop at the bound
+ * (issue 18: tools/budget.sh, match.auto_predict_bounds on the Cortex-M4).
+ */
+static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
+{
+    const uint32_t cut_at = cut_level32(e, x, y);
+    uint32_t rest = 0u; /* the bound, < 2^32 - 1 */
+    e->positions++;
+    if (cut_at == 0u) {
+        return 0;
+    }
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (e->bounds) {
+        rest = group_bound32(e, x, y, cut_at);
+        if (rest >= cut_at) {
+            return 0;
+        }
+    }
+#endif
+    return fast_rows(e, x, y, cut_at, rest, sad);
+}
+
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
  * summed over all pixels without being cut, 0 when cut, or a fetch error.
@@ -539,7 +689,7 @@ static void list_insert(engine_t *e, const cand_t *c)
    *c filled when the position completed, 0 when cut, or a fetch error. */
 static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
 {
-    int done = eval_position(e, x, y, &c->sad);
+    int done = e->fast ? eval_fast(e, x, y, &c->sad) : eval_position(e, x, y, &c->sad);
     if (done <= 0) {
         return done;
     }
@@ -674,7 +824,7 @@ static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
 }
 
 /* Sum the candidates first, smallest bound first (insertion sort of 16). */
-static SSDA_NOINLINE int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+static int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
 {
     uint32_t i, j;
     for (i = 1u; i < SEED_CANDS; i++) {
@@ -938,13 +1088,21 @@ static SSDA_ALWAYS_INLINE int area_row_sums(const engine_t *e, uint32_t *gsum, b
             return err;
         }
         if (u8) {
-            for (i = 0u; i < L; i++) {
+            for (i = 0u; i + 4u <= L; i += 4u) {
+                s += (uint32_t)p[i] + p[i + 1u] + p[i + 2u] + p[i + 3u];
+            }
+            for (; i < L; i++) {
                 s += p[i];
             }
             h[0] = s;
-            for (i = 1u; i < nx; i++) {
+            for (i = 1u; i + 2u <= nx; i += 2u) { /* two a step: fewer branches */
                 s = s + p[i + L - 1u] - p[i - 1u];
                 h[i] = s;
+                s = s + p[i + L] - p[i];
+                h[i + 1u] = s;
+            }
+            if (i < nx) {
+                h[i] = s + p[i + L - 1u] - p[i - 1u];
             }
         } else {
             const uint16_t *q = (const uint16_t *)(const void *)p;
@@ -976,14 +1134,21 @@ static SSDA_ALWAYS_INLINE void group_rows(uint32_t *gsum, uint32_t nx, uint32_t 
         for (yy = 0u; yy < group; yy++) {
             s += c[(size_t)yy * nx];
         }
-        for (yy = 0u; yy + group <= ah; yy++) {
-            const uint32_t below = yy + group; /* <= ah */
-            uint32_t top = c[(size_t)yy * nx];
-            c[(size_t)yy * nx] = s;
-            if (below < ah) {
-                s = s - top + c[(size_t)below * nx];
-            }
+        for (yy = 0u; yy + group + 1u < ah; yy += 2u) { /* group <= M <= ah; two a step */
+            const uint32_t top0 = c[0], top1 = c[nx];
+            c[0] = s;
+            s = s - top0 + c[(size_t)group * nx];
+            c[nx] = s;
+            s = s - top1 + c[((size_t)group + 1u) * nx];
+            c += 2u * (size_t)nx;
         }
+        if (yy + group < ah) {
+            const uint32_t top = *c;
+            *c = s;
+            s = s - top + c[(size_t)group * nx];
+            c += nx;
+        }
+        *c = s; /* row ah - group */
         *ops += group + 2u * ((uint64_t)ah - group);
     }
 }
@@ -1004,8 +1169,14 @@ static SSDA_ALWAYS_INLINE int window_groups(const engine_t *e, uint32_t *wgrp, u
             if (err != SSDA_OK) {
                 return err;
             }
-            for (c = 0u; c < L; c++) {
-                s += u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+            if (u8) {
+                for (c = 0u; c < L; c++) {
+                    s += p[c];
+                }
+            } else {
+                for (c = 0u; c < L; c++) {
+                    s += ((const uint16_t *)(const void *)p)[c];
+                }
             }
         }
         wgrp[i] = s;
@@ -1180,6 +1351,9 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     const ssda_match_plan_t *plan = e->plan;
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
+#ifndef SSDA_CFG_NO_BOUNDS
+    e->ops += (uint64_t)e->nbound * e->ngroups;
+#endif
 #ifdef ENGINE_FALLBACK
     uint64_t fb_sad = 0u; /* the fallback's full SAD: <= 65535^3 */
     if (e->n_best == 0u) { /* FIXED/RAMP, every position cut: have_fb */
@@ -1305,7 +1479,14 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
         }
     }
 #endif
+    e.plain_ref = e.use_ref && e.list == NULL && !e.tie_near;
+    e.fast = !e.ramp_mode && e.row_step == 1u && area->base != NULL && window->base != NULL &&
+             (uint64_t)e.L * e.M * (e.u8 ? 255u : 65535u) < UINT32_MAX;
+#ifdef ENGINE_FALLBACK
+    e.fast = e.fast && !e.need_fb;
+#endif
 #ifndef SSDA_CFG_NO_BOUNDS
+    e.fast = e.fast && e.low == NULL && e.lev_lo > e.lev_hi;
     if (e.low != NULL) {
         err = scan_seeded(&e);
     } else
