@@ -24,22 +24,54 @@ typedef ssda__cand_t cand_t;
 #endif
 
 /* The search state, kept small: it lives on the caller's stack under the
-   deepest call chain (hill_climb > consider > note_cut). */
+   deepest call chain (hill_climb > consider > block_bound). Fields by
+   alignment, 8 bytes first, so that none pads. */
 typedef struct {
+    cand_t best, second; /* best two completed, by the tie rule */
+#ifdef ENGINE_FALLBACK
+    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
+                            sad is the lower bound known at the cut */
+#endif
+    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
     const ssda__rows_t *area;
     const ssda__rows_t *win;
     const ssda_match_plan_t *plan; /* the resolved options (match_rows.h) */
-    uint32_t L, M;       /* window width and height */
-    uint32_t nx, ny;     /* positions per row and per column */
-    int32_t px, py;      /* SSDA_SCAN_PREDICT: the predicted position */
-    uint32_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
-    uint64_t fixed_cut;  /* the plan's: FIXED: T + 1; else UINT64_MAX */
     const cand_t *ref;   /* what the current position must beat; NULL: nothing */
     cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
-    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
+                            row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
+    uint32_t *wgrp;      /* bounds: window sums per group, same range */
+    uint32_t *term;      /* bounds: group terms of the current position */
+    uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
+                            (<= positions < 2^32), added to ops by finish */
+    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
+                              modulo 2^32 (block_bound) */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
+    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
+                            bound, saturated to 32 bits (a lower bound still),
+                            nx per row in the group tables' place; else NULL */
+#endif
+#ifdef ENGINE_FALLBACK
+    uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
+#endif
+    uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
+    uint32_t completed;
+    uint16_t L, M;       /* window width and height */
+    uint16_t nx, ny;     /* positions per row and per column */
+    uint16_t tx, ty;     /* the predicted position clamped into the range */
+    uint16_t row_step;   /* row order: r -> r + row_step (mod M) (plan's) */
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint16_t group;      /* bounds: rows per group (1..4; blocks: M >> level) */
+    uint16_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
+    uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
+                               lev_lo > lev_hi */
+#endif
 #ifndef SSDA_CFG_NO_UNIQUE
     uint8_t nlist, cap;  /* entries in list, its capacity (2R+1)^2 + 1 <= 26 */
 #endif
+    uint8_t n_best;      /* 0, 1 or 2 valid entries */
     bool u8;             /* 8-bit samples (else 16-bit) */
     /* the plan's flags the per-position path tests, copied at the start
        (one load from the engine, not two through the plan) */
@@ -53,34 +85,6 @@ typedef struct {
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
 #endif
-    uint8_t n_best;      /* 0, 1 or 2 valid entries */
-#ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t group;      /* bounds: rows per group (1..4) */
-    uint32_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
-    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
-                            row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
-    uint32_t *wgrp;      /* bounds: window sums per group, same range */
-    uint32_t *term;      /* bounds: group terms of the current position */
-    uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
-                            (<= positions < 2^32), added to ops by finish */
-    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
-                              modulo 2^32 (block_bound) */
-    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
-    uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
-                               lev_lo > lev_hi */
-    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
-                            bound, saturated to 32 bits (a lower bound still),
-                            nx per row in the group tables' place; else NULL */
-#endif
-    cand_t best, second; /* best two completed, by the tie rule */
-#ifdef ENGINE_FALLBACK
-    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
-                            sad is the lower bound known at the cut */
-    uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
-#endif
-    uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
-    uint32_t completed;
-    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
 static uint32_t clamp_pos(int32_t v, uint32_t n)
@@ -95,7 +99,7 @@ static uint32_t clamp_pos(int32_t v, uint32_t n)
    < 2 * 2^32 (clamped here: ties are rare, the engine stays small). */
 static SSDA_ALWAYS_INLINE uint64_t dist2(const engine_t *e, uint32_t x, uint32_t y)
 {
-    const uint32_t tx = clamp_pos(e->px, e->nx), ty = clamp_pos(e->py, e->ny);
+    const uint32_t tx = e->tx, ty = e->ty;
     const uint32_t dx = x > tx ? x - tx : tx - x; /* < 2^16 */
     const uint32_t dy = y > ty ? y - ty : ty - y;
     const uint32_t sx = dx * dx; /* < 2^32: no 64-bit multiply on the M0+ */
@@ -282,22 +286,24 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
     uint32_t i, j;
     for (j = 0u; j < nb; j++) {
         const uint32_t *r1 = r0 + down;
-        const uint64_t before = b;
+        uint64_t rb = 0u; /* this row of blocks: <= 16 terms < 2^32 */
         uint32_t left = r1[0] - r0[0]; /* column sums modulo 2^32 */
-        uint32_t u = 0u;
+        const uint32_t *c0 = r0, *c1 = r1;
         for (i = 0u; i < nb; i++) {
             uint32_t right, s, t;
-            u += bw;
-            right = r1[u] - r0[u];
+            c0 += bw;
+            c1 += bw;
+            right = *c1 - *c0;
             s = right - left; /* the block's sum, exact */
             t = w[i];
-            b += s > t ? s - t : t - s;
+            rb += s > t ? s - t : t - s;
             left = right;
         }
+        b += rb;
         w += nb;
         r0 = r1;
         if (rows != NULL) { /* the row of blocks' terms, saturated */
-            rows[j] = b - before > UINT32_MAX ? UINT32_MAX : (uint32_t)(b - before);
+            rows[j] = rb > UINT32_MAX ? UINT32_MAX : (uint32_t)rb;
         }
         if (b >= cut_at) {
             const uint32_t terms = (j + 1u) * nb; /* <= 256 */
@@ -331,8 +337,8 @@ static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, 
     if (rows != NULL) {
         uint64_t rest = 0u; /* <= 16 terms < 2^32 each */
         uint32_t j;
-        e->group = e->M >> e->lev_hi;
-        e->ngroups = 1u << e->lev_hi;
+        e->group = (uint16_t)(e->M >> e->lev_hi);
+        e->ngroups = (uint16_t)(1u << e->lev_hi);
         for (j = 0u; j < e->ngroups; j++) {
             rest += rows[j];
         }
@@ -346,7 +352,7 @@ static bool blocks_reject(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, 
    plan's fixed cut, lowered to what can still beat the reference. */
 static SSDA_ALWAYS_INLINE uint64_t cut_level(const engine_t *e, uint32_t x, uint32_t y)
 {
-    uint64_t cut_at = e->fixed_cut;
+    uint64_t cut_at = e->plan->fixed_cut;
     if (e->use_ref && e->ref != NULL) {
         /* A position before ref by the tie rule wins a tie, so it needs
            sad <= ref. With uniqueness (ref is the best: raster or predict
@@ -412,7 +418,7 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->nx + x;
     const uint32_t *g = g0;
-    const size_t down = (size_t)e->group * e->nx;
+    const uint32_t down = (uint32_t)e->group * e->nx; /* < 2^32 */
     const uint32_t *w = e->wgrp;
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
@@ -460,11 +466,14 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
                                    uint32_t rest, uint64_t *sad)
 {
     const uint32_t L = e->L;
-    const size_t as = e->area->stride, ws = e->win->stride;
+    const uint32_t as = e->area->stride, ws = e->win->stride;
     const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
     const uint8_t *w = e->win->base;
     uint32_t partial = 0u; /* < 2^32 - 1: e->fast */
-    uint32_t k, g = 0u, next_start = 0u;
+    uint32_t k;
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t g = 0u, next_start = 0u; /* the next group and its first row */
+#endif
     if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
         /* the first row in chunks: most positions are cut there. Group 0
            starts with it when rest != 0, as in eval_position */
@@ -490,8 +499,6 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             e->ops += L;
             return 0;
         }
-        a += as;
-        w += ws;
         k = 1u;
     } else {
         k = 0u;
@@ -504,14 +511,12 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             next_start += e->group;
         }
 #endif
-        partial += row_sad(e, a, w, L);
+        partial += row_sad(e, &a[(size_t)k * as], &w[(size_t)k * ws], L);
         if (partial + rest >= cut_at) {
             const uint32_t summed = (k + 1u) * L; /* <= L * M < 2^32 */
             e->ops += summed;
             return 0;
         }
-        a += as;
-        w += ws;
     }
     {
         const uint32_t summed = e->M * L; /* < 2^32 */
@@ -720,8 +725,10 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     return 1;
 }
 
-/* Raster and predict scans: the reference is always the best so far. */
-static int consider_best(engine_t *e, uint32_t x, uint32_t y)
+/* Raster, seeded and predict scans: the reference is always the best so
+   far. Inlined: its candidate on the scan's frame costs less stack than a
+   frame of its own (issue 18). */
+static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
 {
     cand_t c;
     int err = consider(e, x, y, &c);
@@ -866,7 +873,8 @@ static bool seed_visited(const uint32_t *cx, const uint32_t *cy, uint32_t x, uin
 }
 #endif
 
-static int scan_raster(engine_t *e)
+/* Out of line: its candidate stays off the engine's frame. */
+static SSDA_NOINLINE int scan_raster(engine_t *e)
 {
     uint32_t x, y;
     for (y = 0u; y < e->ny; y++) {
@@ -924,66 +932,53 @@ static SSDA_NOINLINE int scan_seeded(engine_t *e)
 
 #ifndef SSDA_CFG_NO_PREDICT
 
-/* Visit the positions from (x0, y0) to (x1, y1) inclusive (one row or one
-   column: one of the two ranges is a single value), clipped to the range.
-   Coordinates are int32_t: |p| <= 2 * 65535. */
-static int scan_segment(engine_t *e, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
-{
-    int32_t x, y;
-    if (x0 < 0) {
-        x0 = 0;
-    }
-    if (y0 < 0) {
-        y0 = 0;
-    }
-    if (x1 >= (int32_t)e->nx) {
-        x1 = (int32_t)e->nx - 1;
-    }
-    if (y1 >= (int32_t)e->ny) {
-        y1 = (int32_t)e->ny - 1;
-    }
-    for (y = y0; y <= y1; y++) {
-        for (x = x0; x <= x1; x++) {
-            int err = consider_best(e, (uint32_t)x, (uint32_t)y);
-            if (err != SSDA_OK) {
-                return err;
-            }
-        }
-    }
-    return SSDA_OK;
-}
-
 /* Square rings of growing Chebyshev radius around the prediction: the top
-   and bottom rows of each ring, then its left and right columns. */
+   and bottom rows of each ring, then its left and right columns, each
+   clipped to the range (a side outside it is skipped whole). One loop, no
+   call per side: its frame is the only one between the engine's and
+   consider's (issue 18). Coordinates are int32_t: |p| <= 2 * 65535. */
 static SSDA_NOINLINE int scan_predict(engine_t *e)
 {
-    int32_t px = (int32_t)clamp_pos(e->px, e->nx);
-    int32_t py = (int32_t)clamp_pos(e->py, e->ny);
+    const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
+    const int32_t px = (int32_t)e->tx;
+    const int32_t py = (int32_t)e->ty;
     int32_t dmax = px;
     int32_t d;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py);
-    if ((int32_t)e->nx - 1 - px > dmax) {
-        dmax = (int32_t)e->nx - 1 - px;
+    if (nx - 1 - px > dmax) {
+        dmax = nx - 1 - px;
     }
     if (py > dmax) {
         dmax = py;
     }
-    if ((int32_t)e->ny - 1 - py > dmax) {
-        dmax = (int32_t)e->ny - 1 - py;
+    if (ny - 1 - py > dmax) {
+        dmax = ny - 1 - py;
     }
     for (d = 1; d <= dmax && err == SSDA_OK; d++) {
-        /* a ring row or column outside the range is skipped whole */
-        if (py - d >= 0) {
-            err = scan_segment(e, px - d, py - d, px + d, py - d);
-        }
-        if (err == SSDA_OK && py + d < (int32_t)e->ny) {
-            err = scan_segment(e, px - d, py + d, px + d, py + d);
-        }
-        if (err == SSDA_OK && px - d >= 0) {
-            err = scan_segment(e, px - d, py - d + 1, px - d, py + d - 1);
-        }
-        if (err == SSDA_OK && px + d < (int32_t)e->nx) {
-            err = scan_segment(e, px + d, py - d + 1, px + d, py + d - 1);
+        uint32_t side;
+        for (side = 0u; side < 4u && err == SSDA_OK; side++) {
+            /* top, bottom: the row py -+ d, x in px - d .. px + d; left,
+               right: the column px -+ d, y in py - d + 1 .. py + d - 1 */
+            const int32_t sgn = (side & 1u) != 0u ? d : -d;
+            const int32_t fix = side < 2u ? py + sgn : px + sgn;
+            int32_t lo = side < 2u ? px - d : py - d + 1;
+            int32_t hi = side < 2u ? px + d : py + d - 1;
+            const int32_t fix_n = side < 2u ? ny : nx;
+            const int32_t run_n = side < 2u ? nx : ny;
+            int32_t i;
+            if (fix < 0 || fix >= fix_n) {
+                continue;
+            }
+            if (lo < 0) {
+                lo = 0;
+            }
+            if (hi >= run_n) {
+                hi = run_n - 1;
+            }
+            for (i = lo; i <= hi && err == SSDA_OK; i++) {
+                err = consider_best(e, (uint32_t)(side < 2u ? i : fix),
+                                       (uint32_t)(side < 2u ? fix : i));
+            }
         }
     }
     return err;
@@ -1010,7 +1005,7 @@ static int scan_coarse_grid(engine_t *e, uint32_t step)
 }
 
 /* From start, move 1 px to the best better neighbour until none improves. */
-static int hill_climb(engine_t *e, const cand_t *start)
+static SSDA_ALWAYS_INLINE int hill_climb(engine_t *e, const cand_t *start)
 {
     cand_t next = *start;
     uint32_t cx = start->x, cy = start->y; /* the current position */
@@ -1048,23 +1043,24 @@ static int hill_climb(engine_t *e, const cand_t *start)
     }
 }
 
+/* The coarse grid, then a climb from the best and, when there were two,
+   from the second (as the grid left them). hill_climb is inlined once, in
+   the loop: one frame between the engine's and consider's (issue 18). */
 static SSDA_NOINLINE int scan_coarse(engine_t *e)
 {
     uint32_t step = e->plan->coarse_step;
     cand_t s2;
+    uint32_t i, climbs;
     int err = scan_coarse_grid(e, step);
     if (err != SSDA_OK || e->n_best == 0u) {
         return err;
     }
     s2 = e->second; /* the climbs change best and second */
-    if (e->n_best == 2u) {
-        err = hill_climb(e, &e->best);
-        if (err == SSDA_OK) {
-            err = hill_climb(e, &s2);
-        }
-        return err;
+    climbs = e->n_best; /* 1 or 2 */
+    for (i = 0u; i < climbs && err == SSDA_OK; i++) {
+        err = hill_climb(e, i == 0u ? &e->best : &s2);
     }
-    return hill_climb(e, &e->best);
+    return err;
 }
 #endif
 
@@ -1140,7 +1136,8 @@ static SSDA_ALWAYS_INLINE void group_rows(uint32_t *gsum, uint32_t nx, uint32_t 
             s = s - top0 + c[(size_t)group * nx];
             c[nx] = s;
             s = s - top1 + c[((size_t)group + 1u) * nx];
-            c += 2u * (size_t)nx;
+            c += nx;
+            c += nx;
         }
         if (yy + group < ah) {
             const uint32_t top = *c;
@@ -1210,8 +1207,8 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     }
     /* M >= 1: the window height */
     ngroups = SSDA_DIV32(e->M, group); /* NOLINT(clang-analyzer-core.DivideZero) */
-    e->group = group;
-    e->ngroups = ngroups;
+    e->group = (uint16_t)group;   /* 1..4 */
+    e->ngroups = (uint16_t)ngroups; /* <= M */
     e->gsum = gsum;
     e->wgrp = wgrp;
     e->term = wgrp + e->M;
@@ -1429,10 +1426,11 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     e.plan = plan;
     e.L = window->width;
     e.M = window->height;
-    e.nx = (uint32_t)area->width - e.L + 1u;
-    e.ny = (uint32_t)area->height - e.M + 1u;
-    e.px = predict_x;
-    e.py = predict_y;
+    e.nx = (uint16_t)(area->width - e.L + 1u); /* 1 .. 65535 */
+    e.ny = (uint16_t)(area->height - e.M + 1u);
+    e.tx = (uint16_t)clamp_pos(predict_x, e.nx);
+    e.ty = (uint16_t)clamp_pos(predict_y, e.ny);
+
     e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
 #ifndef SSDA_CFG_NO_UNIQUE
     if (plan->unique_radius != 0u) {
@@ -1442,8 +1440,7 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
         e.loose = UINT64_MAX;
     }
 #endif
-    e.row_step = plan->row_step;
-    e.fixed_cut = plan->fixed_cut;
+    e.row_step = (uint16_t)plan->row_step; /* < M */
     /* the mode's flags, derived from the plan */
     e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
     e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;

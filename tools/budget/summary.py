@@ -4,8 +4,10 @@
 import re
 import sys
 
-TARGETS = {"search": 2048, "pitch": 1536, "stream": 2048}  # M0+ flash, bytes (issue 6)
+# M0+ flash, bytes (issue 6; the pitch's 2 048 from issue 18)
+TARGETS = {"search": 2048, "pitch": 2048, "stream": 2048}
 STACK_LIMIT = 256
+STACK_TARGETS = {"ssda_match": 320}  # issue 18; the others STACK_LIMIT
 
 
 def rows(text):
@@ -70,7 +72,8 @@ def main():
     w(f"\n| worst stack (M4F, -Os) | bytes | target |\n|---|---:|---|\n")
     for f, v in stack:
         w(f"| `{f}` | {fmt(v)} (+ callback)" if f != "ssda_pitch_push" else f"| `{f}` | {fmt(v)}")
-        w(f" | {STACK_LIMIT} B: {verdict(v, STACK_LIMIT)} |\n")
+        goal = STACK_TARGETS.get(f, STACK_LIMIT)
+        w(f" | {goal} B: {verdict(v, goal)} |\n")
     sad = find(t, "8-bit, long rows")
     w("\n| Cortex-M4 (QEMU `-icount`, DSP kernels, -O2) | instructions |\n|---|---:|\n")
     w(f"| SAD kernel, 8-bit, long rows | {sad[0]} / pixel (portable C: {sad[1]}) |\n")
