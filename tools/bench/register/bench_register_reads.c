@@ -156,6 +156,15 @@ int main(int argc, char **argv)
     }
     printf("REF %s: %ux%u, %zu bytes; MOV %s: %zu bytes; offset %d,%d\n", argv[1], ref.width,
            ref.height, image_r, argv[2], image_m, (int)cfg.offset_x, (int)cfg.offset_y);
+    {
+        const uint8_t fmt = ref.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
+        const size_t nr = SSDA_REGISTER_REF_SIZE(SSDA_LAYOUT_RASTER, ref.width, cfg.grid_x,
+                                                 cfg.window, fmt, 1u, 0u);
+        const size_t nm = SSDA_REGISTER_MOV_SIZE(SSDA_LAYOUT_RASTER, mov.width, cfg.search, fmt,
+                                                 1u, 0u);
+        printf("least arenas: REF %zu, MOV %zu bytes (each source gets half of mem: mem >= %zu)\n",
+               nr, nm, 2u * (nr > nm ? nr : nm));
+    }
     printf("%10s %14s %8s %10s %14s %8s %10s %s\n", "mem", "REF bytes", "x REF", "REF reads",
            "MOV bytes", "x MOV", "MOV reads", "points");
     while (*mems != '\0') {
