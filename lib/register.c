@@ -335,7 +335,7 @@ static ssda_register_status_t status_of(const reg_cfg_t *c, const ssda_view_t *a
 }
 
 /* One cell: fills *pt. */
-static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, const reg_work_t *w,
+static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_work_t *w,
                 uint32_t i, uint32_t j, ssda_register_point_t *pt)
 {
     const uint32_t rw = ref->cfg.width, rh = ref->cfg.height;
@@ -467,11 +467,11 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
         return SSDA_ERR_BUFFER;
     }
     /* the plates that bound the reads (register.h): a band of win rows of
-       the widest cell (SSDA_REGISTER_REF_SIZE; the narrower cells' widths
-       checked too, as a plate's pitch need not grow with its width), a
-       row of the search area (SSDA_REGISTER_MOV_SIZE) */
+       the widest cell (SSDA_REGISTER_REF_SIZE; a narrower cell's plate is
+       no larger: only a plate as wide as the image may take the image's
+       shorter stride as pitch, and with cells of two widths neither is),
+       a row of the search area (SSDA_REGISTER_MOV_SIZE) */
     if (!ssda__stream_holds(ref, SSDA_DIV32(ref->cfg.width + c.gx - 1u, c.gx), c.win, 0u) ||
-        !ssda__stream_holds(ref, SSDA_DIV32(ref->cfg.width, c.gx), c.win, 0u) ||
         !ssda__stream_holds(mov, c.search < mov->cfg.width ? c.search : mov->cfg.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
