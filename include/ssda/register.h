@@ -51,18 +51,20 @@
  * image one row of the search area; below that the search is refused
  * (SSDA_ERR_BUFFER) before any read. For every accepted arena:
  *   reference: bytes read = the sum over cells of the windows' rectangle
- *     (at most the image's bytes once), the same for every arena;
+ *     (at most the image's bytes once), the same for every arena (tiled:
+ *     up to the tile rows below);
  *   moving image: bytes read <= the sum over the cells searched of their
  *     (clipped) areas, at most grid_x * grid_y * search^2 px (the seed's
  *     defaults on 1000 x 800: 0.032x the image), less when a plate still
  *     holds rows of the area before;
  * both plus each read's alignment: 2 (read_size - 1) bytes per read
  * (stats.reads) and, tiled, the rest of the tile rows a run of rows spans.
- * So more memory never reads more (it only takes fewer, longer reads). On
- * the 1280 x 960 16-bit MicaSense bands the reference read 1.00x its bytes
- * at every arena from its minimum (12 800 bytes) to 1 MB, against 43x to
- * 1336x before (docs/registration.md). The results do not depend on the
- * arena.
+ * So more memory never reads more bytes of a raster source (it only takes
+ * fewer, longer reads); a tiled one's longer runs may span more of the
+ * tile rows, within the bound. On the 1280 x 960 16-bit MicaSense bands
+ * the reference read 1.00x its bytes at every arena from its least (12 800
+ * bytes) to 8 MB, against 43x to 1337x before (docs/registration.md). The
+ * results do not depend on the arena.
  */
 #ifndef SSDA_REGISTER_H
 #define SSDA_REGISTER_H
@@ -147,9 +149,10 @@ typedef struct {
 
 /* Least arena of a streamed reference `width` px wide (stream.h's
    SSDA_SOURCE_SIZE with the source's layout, format, read_size, tile_w): a
-   band of `window` rows (0 = 20) of the widest cell. Raster sources read
-   at byte granularity whose packed rows are not a multiple of 4 bytes may
-   need up to 3 bytes a row less (their plates keep the image's stride). */
+   band of `window` rows (0 = 20) of the widest cell. (With one cell across,
+   a raster source read at byte granularity whose rows are not a multiple
+   of 4 bytes may need up to 3 bytes a row less: its plate keeps the
+   image's stride.) */
 #define SSDA_REGISTER_REF_SIZE(layout, width, grid_x, window, format, read_size, tile_w) \
     SSDA_SOURCE_SIZE(layout, SSDA_REGISTER_CELL_W(width, grid_x),                \
                      (size_t)(window) != 0u ? (size_t)(window)                   \
