@@ -24,40 +24,10 @@ typedef ssda__cand_t cand_t;
 #endif
 
 /* The search state, kept small: it lives on the caller's stack under the
-   deepest call chain (hill_climb > consider > block_bound). Fields by
-   alignment, 8 bytes first, so that none pads. */
+   deepest call chain (scan > consider > block_bound). Fields by size, the
+   smallest first, so that none pads and the narrow ones stay within the
+   short load offsets of Thumb-1 (the Cortex-M0+). */
 typedef struct {
-    cand_t best, second; /* best two completed, by the tie rule */
-#ifdef ENGINE_FALLBACK
-    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
-                            sad is the lower bound known at the cut */
-#endif
-    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
-    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
-    const ssda__rows_t *area;
-    const ssda__rows_t *win;
-    const ssda_match_plan_t *plan; /* the resolved options (match_rows.h) */
-    const cand_t *ref;   /* what the current position must beat; NULL: nothing */
-    cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
-#ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
-                            row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
-    uint32_t *wgrp;      /* bounds: window sums per group, same range */
-    uint32_t *term;      /* bounds: group terms of the current position */
-    uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
-                            (<= positions < 2^32), added to ops by finish */
-    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
-                              modulo 2^32 (block_bound) */
-    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
-    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
-                            bound, saturated to 32 bits (a lower bound still),
-                            nx per row in the group tables' place; else NULL */
-#endif
-#ifdef ENGINE_FALLBACK
-    uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
-#endif
-    uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
-    uint32_t completed;
     uint16_t L, M;       /* window width and height */
     uint16_t nx, ny;     /* positions per row and per column */
     uint16_t tx, ty;     /* the predicted position clamped into the range */
@@ -79,12 +49,45 @@ typedef struct {
     bool bounds;         /* successive elimination active */
     bool ramp_mode;      /* RAMP or AUTO_RAMP */
     bool tie_near;       /* SSDA_MATCH_TIE_NEAREST */
+#ifndef SSDA_CFG_NO_FAST_PATH
     bool fast;           /* positions are evaluated by eval_fast (see there) */
     bool plain_ref;      /* use_ref, no uniqueness list, no TIE_NEAREST */
+#endif
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
 #endif
+    const ssda__rows_t *area;
+    const ssda__rows_t *win;
+    const ssda_match_plan_t *plan; /* the resolved options (match_rows.h) */
+    const cand_t *ref;   /* what the current position must beat; NULL: nothing */
+    cand_t *list;        /* SSDA_MATCH_UNIQUE: the smallest completed positions */
+    uint32_t positions;  /* evaluations; raster/predict <= 65535^2 < 2^32 */
+    uint32_t completed;
+#ifdef ENGINE_FALLBACK
+    uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
+#endif
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
+                            row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
+    uint32_t *wgrp;      /* bounds: window sums per group, same range */
+    uint32_t *term;      /* bounds: group terms of the current position */
+    uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
+                            (<= positions < 2^32), added to ops by finish */
+    const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
+                              modulo 2^32 (block_bound) */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
+    uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
+                            bound, saturated to 32 bits (a lower bound still),
+                            nx per row in the group tables' place; else NULL */
+#endif
+    cand_t best, second; /* best two completed, by the tie rule */
+#ifdef ENGINE_FALLBACK
+    cand_t fb;           /* all-cut fallback: most pixels before its cut; its
+                            sad is the lower bound known at the cut */
+#endif
+    uint64_t loose;      /* SSDA_MATCH_UNIQUE: cut level, floor(ratio * best) + 1 */
+    uint64_t ops;        /* pixel operations; < 2^64 for any accepted size */
 } engine_t;
 
 static uint32_t clamp_pos(int32_t v, uint32_t n)
@@ -410,6 +413,7 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 }
 #endif
 
+#ifndef SSDA_CFG_NO_FAST_PATH
 #ifndef SSDA_CFG_NO_BOUNDS
 /* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
    SAD < 2^32 - 1 (triangle inequality), each term likewise. The terms are
@@ -554,6 +558,7 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
 #endif
     return fast_rows(e, x, y, cut_at, rest, sad);
 }
+#endif /* SSDA_CFG_NO_FAST_PATH */
 
 /*
  * Evaluate position (x, y). Returns 1 and sets *sad when the position is
@@ -694,7 +699,11 @@ static void list_insert(engine_t *e, const cand_t *c)
    *c filled when the position completed, 0 when cut, or a fetch error. */
 static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
 {
+#ifndef SSDA_CFG_NO_FAST_PATH
     int done = e->fast ? eval_fast(e, x, y, &c->sad) : eval_position(e, x, y, &c->sad);
+#else
+    int done = eval_position(e, x, y, &c->sad);
+#endif
     if (done <= 0) {
         return done;
     }
@@ -1476,14 +1485,20 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
         }
     }
 #endif
+#ifndef SSDA_CFG_NO_FAST_PATH
     e.plain_ref = e.use_ref && e.list == NULL && !e.tie_near;
+    /* every SAD of the window < 2^32 - 1: L * M * maxval, with L * M <=
+       16843008 (8-bit) or 65536 (16-bit); no 64-bit multiply on the M0+ */
     e.fast = !e.ramp_mode && e.row_step == 1u && area->base != NULL && window->base != NULL &&
-             (uint64_t)e.L * e.M * (e.u8 ? 255u : 65535u) < UINT32_MAX;
+             (uint32_t)e.L * e.M <= (e.u8 ? 16843008u : 65536u);
 #ifdef ENGINE_FALLBACK
     e.fast = e.fast && !e.need_fb;
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
     e.fast = e.fast && e.low == NULL && e.lev_lo > e.lev_hi;
+#endif
+#endif /* SSDA_CFG_NO_FAST_PATH */
+#ifndef SSDA_CFG_NO_BOUNDS
     if (e.low != NULL) {
         err = scan_seeded(&e);
     } else

@@ -24,7 +24,7 @@
  * The minimal cores measured by tools/budget.sh (docs/target.md) set:
  *   search: all SSDA_CFG_NO_* of the search (exact AUTO and NONE thresholds,
  *           raster scan, row order, 8-bit views; no uniqueness, no sub-pixel
- *           fit)
+ *           fit, no 32-bit fast path)
  *   pitch:  all SSDA_CFG_NO_PITCH_* (streamed AMDF with early exit,
  *           voicing, the dip-run choice and its octave check, V-shaped
  *           interpolation)
@@ -81,6 +81,12 @@
 /* No sub-pixel fit (SSDA_MATCH_SUBPIXEL); tracking then needs
    SSDA_TRACK_NO_SUBPIXEL. */
 /* #define SSDA_CFG_NO_SUBPIXEL */
+
+/* No 32-bit fast path of the exact search (rows in memory, row order, no
+   ramp or fallback, every SAD of the window below 2^32 - 1): every position
+   takes the general 64-bit evaluation. The same results and pixel_ops,
+   less code, more instructions per position (docs/target.md). */
+/* #define SSDA_CFG_NO_FAST_PATH */
 
 /* ---- pitch (pitch.h) ---- */
 
