@@ -280,7 +280,7 @@ static uint64_t block_bound(engine_t *e, uint32_t l, uint32_t x, uint32_t y, uin
                             uint32_t *rows)
 {
     const uint32_t nb = 1u << l;
-    const uint32_t bw = e->L >> l;
+    const uint32_t bw = (uint32_t)e->L >> l;
     const size_t is = (size_t)e->area->width + 1u;
     const size_t down = (size_t)(e->M >> l) * is;
     const uint32_t *w = e->wblk + (((1u << (2u * l)) - 4u) / 3u); /* after levels 1..l-1 */
@@ -1276,7 +1276,7 @@ static SSDA_NOINLINE int window_blocks(engine_t *e, uint32_t *wblk)
 {
     uint32_t l;
     for (l = e->lev_lo; l <= e->lev_hi; l++) {
-        const uint32_t nb = 1u << l, bw = e->L >> l, bh = e->M >> l;
+        const uint32_t nb = 1u << l, bw = (uint32_t)e->L >> l, bh = (uint32_t)e->M >> l;
         uint32_t *w = wblk + (((1u << (2u * l)) - 4u) / 3u);
         uint32_t i, j, yy, c;
         for (i = 0u; i < nb * nb; i++) {
@@ -1324,7 +1324,7 @@ static SSDA_NOINLINE int build_blocks(engine_t *e)
     e->lev_lo = 1u;
     e->lev_hi = 0u;
     for (l = 1u; l <= SSDA_MATCH_BLOCK_LEVELS; l++) {
-        const uint32_t bw = e->L >> l, bh = e->M >> l; /* <= 32767 */
+        const uint32_t bw = (uint32_t)e->L >> l, bh = (uint32_t)e->M >> l; /* <= 32767 */
         if (bw < BLOCK_MIN_SIDE || bh < BLOCK_MIN_SIDE) {
             break;
         }
