@@ -21,7 +21,9 @@ static PyStructSequence_Field fit_fields[] = {
     {"n_used", "pairs in the final fit"},
     {"rejected", "pairs dropped as outliers"},
     {"refinements", "iterative-refinement steps"},
-    {"within_bound", "every used pair within max_residual_q8"},
+    {"within_bound", "every used pair's leave-one-out statistic within max_residual_q8"},
+    {"max_leverage_q15", "largest leverage of a used pair, Q1.15 (32768 = 1)"},
+    {"weak", "the map is weakly determined (fewer than 2 pairs per term or a leverage > 0.8)"},
     {NULL, NULL}};
 
 static PyStructSequence_Field shade_fields[] = {
@@ -179,6 +181,8 @@ static PyObject *fit_object(PyObject *poly, PyObject *res, PyObject *used,
     PyStructSequence_SET_ITEM(o, 7, PyLong_FromUnsignedLong(r->rejected));
     PyStructSequence_SET_ITEM(o, 8, PyLong_FromUnsignedLong(r->refinements));
     PyStructSequence_SET_ITEM(o, 9, PyBool_FromLong(r->within_bound));
+    PyStructSequence_SET_ITEM(o, 10, PyLong_FromUnsignedLong(r->max_leverage_q15));
+    PyStructSequence_SET_ITEM(o, 11, PyBool_FromLong(r->weak));
     if (PyErr_Occurred()) {
         Py_DECREF(o);
         return NULL;
@@ -632,7 +636,7 @@ static PyMethodDef methods[] = {
      "outlier rejection (seed 002; ssda_poly_fit): pairs an (n, 4) int32 array of\n"
      "ref_x, ref_y, mov_x, mov_y in Q8 px, size the reference grid (w, h). Returns a\n"
      "PolyFit (poly, residual_q8, used, rms_q8, max_q8, cond, n_used, rejected,\n"
-     "refinements, within_bound). The GIL is released."},
+     "refinements, within_bound, max_leverage_q15, weak). The GIL is released."},
     {"shade", (PyCFunction)(void (*)(void))py_shade, METH_VARARGS | METH_KEYWORDS,
      "shade(images, /, *, mode='max', centre=None)\n--\n\n"
      "The seed's shading function (DC and one cycle per direction) of the images\n"
@@ -677,7 +681,7 @@ int ssdapy_init_reg(PyObject *m)
         PyModule_AddIntConstant(m, "REGISTER_OUTSIDE", SSDA_REGISTER_OUTSIDE) != 0) {
         return -1;
     }
-    fit_type = ssdapy_struct_type(m, "ssda.PolyFit", "Result of poly_fit.", fit_fields, 10);
+    fit_type = ssdapy_struct_type(m, "ssda.PolyFit", "Result of poly_fit.", fit_fields, 12);
     shade_type = ssdapy_struct_type(m, "ssda.ShadeResult", "Result of shade.", shade_fields, 6);
     poly_dtype = ssdapy_np_struct_dtype(9, names, formats, offsets, sizeof(ssda_poly_t));
     if (fit_type == NULL || shade_type == NULL || poly_dtype == NULL) {
