@@ -184,7 +184,7 @@ typedef struct {
  * in 128 bits (r_i^2 < 2^64 in Q16, so s_i^2 < 2^80); the bound's square
  * is below 2^64. UINT32_MAX as the bound: no rejection.
  * Cost per round: one fit, then per used pair O(terms^2) 64 x 64-bit
- * multiplications and terms + 1 128-bit divisions; at most
+ * multiplications and terms + 2 128-bit divisions; at most
  * n - terms - 1 rounds. Measured on the Cortex-M4 (-O2, 16 pairs, order
  * 2, no pair dropped): 1.76 M instructions (0.97 M with the raw-residual
  * rule), stack 3.7 KB (3.4 KB); docs/registration.md.
