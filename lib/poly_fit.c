@@ -281,8 +281,8 @@ static ssda__i128_t leverage_of(const solve_t *sv, uint32_t m, uint32_t count, c
     return ssda__w_div_round(q, ssda__w_i64((int64_t)count));
 }
 
-/* Leverage below which a pair can be judged: 1 - h >= 2^-16 (Q60). */
-#define FIT_MIN_ONE_MINUS_H ((int64_t)1 << 44)
+/* A pair can be judged while 1 - h >= 2^-16 (2^44 in Q60). */
+#define FIT_MIN_ONE_MINUS_H_LOG2 44u
 
 /* The verdict on the used pairs under the current fit. */
 typedef struct {
@@ -300,7 +300,7 @@ static void judge_pairs(const ssda_poly_t *p, const ssda_poly_pair_t *pairs, siz
                         verdict_t *v)
 {
     const ssda__i128_t one = ssda__u128_shl(W_ONE, 60u);
-    const ssda__i128_t floor_1h = ssda__w_i64(FIT_MIN_ONE_MINUS_H);
+    const ssda__i128_t floor_1h = ssda__u128_shl(W_ONE, FIT_MIN_ONE_MINUS_H_LOG2);
     size_t k;
     v->stat = ssda__w_i64(-1);
     v->at = 0u;
