@@ -958,6 +958,24 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     return rc;
 }
 
+int relax_field(const ssda_relax_grid_t *g, uint32_t iterations, int median, int keep,
+                ssda_relax_vector_t *out, size_t count)
+{
+    ssda_relax_config_t c;
+    int e;
+    if (median) {
+        return ssda_relax_median(g, NULL, out, count);
+    }
+    memset(&c, 0, sizeof c);
+    c.iterations = (uint16_t)iterations;
+    c.flags = keep ? SSDA_RELAX_KEEP : 0u;
+    c.work_size = SSDA_RELAX_WORK_SIZE(g->cols, g->rows);
+    c.work = malloc(c.work_size);
+    e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(g, &c, out, count);
+    free(c.work);
+    return e;
+}
+
 /* --relax N or --relax-median on the tracked grid: the sub-pixel vectors
    (Q8; whole pixels with --no-subpixel), so that a vector the cleaning
    keeps keeps its fraction. */
@@ -981,18 +999,7 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
     g.frac_bits = 8;
     g.cols = r->grid.cols;
     g.rows = r->grid.rows;
-    if (o->relax_median) {
-        e = ssda_relax_median(&g, NULL, r->clean, r->grid.count);
-    } else {
-        ssda_relax_config_t c;
-        memset(&c, 0, sizeof c);
-        c.iterations = (uint16_t)o->relax;
-        c.flags = o->relax_keep ? SSDA_RELAX_KEEP : 0u;
-        c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
-        c.work = malloc(c.work_size);
-        e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->grid.count);
-        free(c.work);
-    }
+    e = relax_field(&g, o->relax, o->relax_median, o->relax_keep, r->clean, r->grid.count);
     if (e != SSDA_OK) {
         return cli_input_error(cmd, "cleaning the field failed: %s", ssda_strerror(e));
     }
