@@ -56,7 +56,8 @@ const char track_opts_help[] =
     "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
     "  --relax N         clean the field by relaxation labelling (the seed 003's\n"
     "                    section 4), N iterations: JSON windows gain relax_dx,\n"
-    "                    relax_dy (px) and changed\n"
+    "                    relax_dy (px) and changed; the overlay draws the cleaned\n"
+    "                    vectors as a second (cyan) arrow, the changed ones pink\n"
     "  --relax-keep      with --relax: keep vectors whose most likely class is their\n"
     "                    own (without it those are smoothed too: changed is false,\n"
     "                    yet relax_dx, relax_dy may differ from sub_dx, sub_dy)\n"
@@ -1358,6 +1359,16 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
             dv[n].has_truth = 1;
             dv[n].tdx = truth[k][0];
             dv[n].tdy = truth[k][1];
+        } else if (truth == NULL && r->clean != NULL &&
+                   (r->clean[k].flags & SSDA_RELAX_VALID) != 0u) {
+            /* --relax / --relax-median: the cleaned vector as the second
+               arrow, the changed ones marked (as ssda flow draws them) */
+            dv[n].has_truth = 1;
+            dv[n].tdx = r->clean[k].dx_q8 / 256.0;
+            dv[n].tdy = r->clean[k].dy_q8 / 256.0;
+            if ((r->clean[k].flags & SSDA_RELAX_CHANGED) != 0u) {
+                dv[n].status = DRAW_CHANGED;
+            }
         }
         n++;
     }
@@ -1369,7 +1380,9 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     }
     memset(&dopt, 0, sizeof dopt);
     dopt.title = title;
-    dopt.truth_label = truth_label;
+    dopt.truth_label = truth != NULL || r->clean == NULL ? truth_label
+                       : o->relax_median                 ? "after the median test"
+                                                         : "after relaxation";
     dopt.subtitle = subtitle;
     dopt.arrow_scale = o->arrow_scale;
     dopt.grid_step = (double)step * every; /* arrows scale to the drawn spacing */
