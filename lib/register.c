@@ -1,6 +1,8 @@
 /*
  * register.c - control points per grid cell (register.h): the most
  * textured window, its match in the moving image, a sub-pixel peak.
+ * Streamed sources read through plates planned per cell (the windows'
+ * rectangle, the search area), so that every row is read once.
  */
 #include <string.h>
 #include "ssda/register.h"
@@ -53,6 +55,36 @@ static int resolve(const ssda_register_config_t *in, const ssda_source_t *ref, r
     return SSDA_OK;
 }
 
+/* A span of n px at (x, y) of s: the image's own pixels in RAM, else
+   through the plate planned for the rectangle being read (a miss moves it
+   as planned). */
+static int fetch(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t n, const uint8_t **px)
+{
+    if (s->view != NULL) {
+        *px = s->view + (size_t)y * s->cfg.stride + (size_t)x * s->cfg.format;
+        return SSDA_OK;
+    }
+    return ssda__stream_fetch(s, x, y, n, px);
+}
+
+/* Shape a streamed source's plate (in RAM: nothing) for the w x h
+   rectangle at (x, y) read next: as wide as it (the job checked that
+   `rows` rows of that width fit), as many rows as fit, its starts on a
+   lattice of q rows from y. */
+static void plan_plate(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint32_t h,
+                       uint32_t rows, uint32_t q)
+{
+    ssda_rect_t r;
+    if (s->view != NULL) {
+        return;
+    }
+    r.x = (uint16_t)x; /* inside the image: < 2^16 */
+    r.y = (uint16_t)y;
+    r.width = (uint16_t)w;
+    r.height = (uint16_t)h;
+    (void)ssda__stream_plate_shape(s, &r, w, rows, q, 0u); /* fits: checked */
+}
+
 /* Copy the w x h rectangle at (x, y) of s into dst (packed rows). */
 static int copy_rect(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint32_t h,
                      uint8_t *dst)
@@ -61,7 +93,7 @@ static int copy_rect(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint3
     uint32_t r;
     for (r = 0u; r < h; r++) {
         const uint8_t *px;
-        const int err = ssda_source_row(s, x, y + r, w, &px);
+        const int err = fetch(s, x, y + r, w, &px);
         if (err != SSDA_OK) {
             return err;
         }
@@ -74,11 +106,11 @@ static int copy_rect(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t w, uint3
    65025, sum v < 2^32, sum v^2 < 2^48; the result < 2^64 + fits 128). */
 static int window_spread(ssda_source_t *s, uint32_t x, uint32_t y, uint32_t win, ssda__i128_t *out)
 {
-    uint64_t s1 = 0u, s2 = 0u;
+    uint64_t s1 = 0u, s2 = 0u; /* < 65025 * 65535 < 2^32, < 65025 * 65535^2 < 2^48 */
     uint32_t r, i;
     for (r = 0u; r < win; r++) {
         const uint8_t *px;
-        const int err = ssda_source_row(s, x, y + r, win, &px);
+        const int err = fetch(s, x, y + r, win, &px);
         if (err != SSDA_OK) {
             return err;
         }
@@ -108,39 +140,74 @@ static void area_of(const reg_cfg_t *c, uint32_t wx, uint32_t wy, int64_t *a)
     a[3] = a[1] + c->search;
 }
 
-/* The most textured window of the cell [x0, x1) x [y0, y1): top-left in
-   *bx, *by, its n^2 * variance in *best. Windows whose whole search area
-   lies in the moving image (mw x mh) come first: a match at the clipped
-   edge of an area could not tell a window half outside the image; only
-   when no window has such an area are the others taken. */
-static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *cell,
-                         uint32_t mw, uint32_t mh, uint32_t *bx, uint32_t *by, ssda__i128_t *best)
+/* The most textured window of one kind so far: n^2 * variance, top-left,
+   and its pixels (kept in px, so that the window is not read again). */
+typedef struct {
+    ssda__i128_t v;
+    uint32_t x, y;
+    bool any;
+    uint8_t *px;
+} best_t;
+
+/* Take the window at (x, y), of spread v, if it beats b (ties: the first,
+   in raster order). Its rows are in the plate still (the spread was just
+   taken from them): copying them reads nothing. */
+static int keep_better(ssda_source_t *s, uint32_t win, best_t *b, uint32_t x, uint32_t y,
+                       const ssda__i128_t *v)
 {
-    uint32_t pass, x, y;
-    bool any = false;
-    for (pass = 0u; pass < 2u && !any; pass++) {
-        for (y = cell[2]; y + c->win <= cell[3]; y += c->step) {
-            for (x = cell[0]; x + c->win <= cell[1]; x += c->step) {
-                int64_t a[4];
-                ssda__i128_t v;
-                int err;
-                area_of(c, x, y, a);
-                if (pass == 0u && (a[0] < 0 || a[1] < 0 || a[2] > (int64_t)mw || a[3] > (int64_t)mh)) {
-                    continue;
-                }
-                err = window_spread(s, x, y, c->win, &v);
-                if (err != SSDA_OK) {
-                    return err;
-                }
-                if (!any || ssda__w_lt(*best, v)) {
-                    *best = v;
-                    *bx = x;
-                    *by = y;
-                    any = true;
-                }
+    if (b->any && !ssda__w_lt(b->v, *v)) {
+        return SSDA_OK;
+    }
+    b->v = *v;
+    b->x = x;
+    b->y = y;
+    b->any = true;
+    return copy_rect(s, x, y, win, win, b->px);
+}
+
+/* The most textured window of the cell [x0, x1) x [y0, y1): top-left in
+   *bx, *by, its n^2 * variance in *best, its pixels in w->win. Windows
+   whose whole search area lies in the moving image (mw x mh) come first:
+   a match at the clipped edge of an area could not tell a window half
+   outside the image; only when no window has such an area are the others
+   taken (kept meanwhile in w->area, which holds a window). One sweep down
+   the lattice, so a streamed reference's plate slides down once. */
+static int most_textured(ssda_source_t *s, const reg_cfg_t *c, const uint32_t *cell,
+                         uint32_t mw, uint32_t mh, const reg_work_t *w, uint32_t *bx,
+                         uint32_t *by, ssda__i128_t *best)
+{
+    best_t in, all;
+    uint32_t x, y;
+    (void)memset(&in, 0, sizeof in);
+    (void)memset(&all, 0, sizeof all);
+    in.px = w->win;
+    all.px = w->area;
+    for (y = cell[2]; y + c->win <= cell[3]; y += c->step) {
+        for (x = cell[0]; x + c->win <= cell[1]; x += c->step) {
+            int64_t a[4];
+            ssda__i128_t v;
+            int err;
+            area_of(c, x, y, a);
+            err = window_spread(s, x, y, c->win, &v);
+            if (err == SSDA_OK && a[0] >= 0 && a[1] >= 0 && a[2] <= (int64_t)mw &&
+                a[3] <= (int64_t)mh) {
+                err = keep_better(s, c->win, &in, x, y, &v);
+            }
+            if (err == SSDA_OK && !in.any) { /* the others matter only until then */
+                err = keep_better(s, c->win, &all, x, y, &v);
+            }
+            if (err != SSDA_OK) {
+                return err;
             }
         }
     }
+    if (!in.any) {
+        (void)memcpy(w->win, w->area, (size_t)c->win * c->win * c->bpp);
+        in = all;
+    }
+    *bx = in.x;
+    *by = in.y;
+    *best = in.v;
     return SSDA_OK;
 }
 
@@ -286,7 +353,14 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
     (void)memset(pt, 0, sizeof *pt);
     pt->cell_x = (uint16_t)i;
     pt->cell_y = (uint16_t)j;
-    err = most_textured(ref, c, cell_box, mov->cfg.width, mov->cfg.height, &wx, &wy, &spread);
+    {
+        /* the windows' rectangle: lattice columns and rows of the cell
+           (cells hold a window, checked), read in bands of win rows */
+        const uint32_t span_x = SSDA_DIV32(x1 - x0 - c->win, c->step) * c->step + c->win;
+        const uint32_t span_y = SSDA_DIV32(y1 - y0 - c->win, c->step) * c->step + c->win;
+        plan_plate(ref, x0, y0, span_x, span_y, c->win, c->step);
+    }
+    err = most_textured(ref, c, cell_box, mov->cfg.width, mov->cfg.height, w, &wx, &wy, &spread);
     if (err != SSDA_OK) {
         return err;
     }
@@ -327,10 +401,9 @@ static int cell(ssda_source_t *ref, ssda_source_t *mov, const reg_cfg_t *c, reg_
     }
     aw = (uint32_t)ax1 - (uint32_t)ax0; /* 0 <= ax0 < ax1 <= 65535 */
     ah = (uint32_t)ay1 - (uint32_t)ay0;
-    err = copy_rect(ref, wx, wy, c->win, c->win, w->win);
-    if (err == SSDA_OK) {
-        err = copy_rect(mov, (uint32_t)ax0, (uint32_t)ay0, aw, ah, w->area);
-    }
+    /* the area, row by row through a plate of as many of its rows as fit */
+    plan_plate(mov, (uint32_t)ax0, (uint32_t)ay0, aw, ah, 1u, ah);
+    err = copy_rect(mov, (uint32_t)ax0, (uint32_t)ay0, aw, ah, w->area);
     if (err != SSDA_OK) {
         return err;
     }
@@ -393,10 +466,13 @@ int ssda_register_points(ssda_source_t *ref, ssda_source_t *mov,
         (((uintptr_t)work) & 7u) != 0u) {
         return SSDA_ERR_BUFFER;
     }
-    /* a streamed source must hold the widest span it is asked for */
-    if ((ref->view == NULL && ssda__stream_plate_fit_w(ref, 1u, 0u) < c.win) ||
-        (mov->view == NULL && ssda__stream_plate_fit_w(mov, 1u, 0u) < c.search &&
-         ssda__stream_plate_fit_w(mov, 1u, 0u) < mov->cfg.width)) {
+    /* the plates that bound the reads (register.h): a band of win rows of
+       the widest cell (SSDA_REGISTER_REF_SIZE; a narrower cell's plate is
+       no larger: only a plate as wide as the image may take the image's
+       shorter stride as pitch, and with cells of two widths neither is),
+       a row of the search area (SSDA_REGISTER_MOV_SIZE) */
+    if (!ssda__stream_holds(ref, SSDA_DIV32(ref->cfg.width + c.gx - 1u, c.gx), c.win, 0u) ||
+        !ssda__stream_holds(mov, c.search < mov->cfg.width ? c.search : mov->cfg.width, 1u, 0u)) {
         return SSDA_ERR_BUFFER;
     }
     w.win = (uint8_t *)work;

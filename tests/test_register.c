@@ -7,6 +7,7 @@
  * minimum, statuses (flat cells, areas outside the image, matches on the
  * area's border), streamed sources equal to in-RAM ones, and errors.
  */
+#include <stdio.h>
 #include <string.h>
 #include "unity.h"
 #include "ssda/register.h"
@@ -30,8 +31,12 @@ static uint8_t g_ref[RH][RW], g_mov[RH][RW];
 static uint16_t g_ref16[RH][RW], g_mov16[RH][RW];
 static uint64_t g_work[(SSDA_REGISTER_WORK_SIZE(40, 80, 2) + 7u) / 8u];
 static ssda_register_point_t g_pts[64], g_pts2[64];
-static uint8_t g_dev_r[RW * RH * 2u + 64u], g_dev_m[RW * RH * 2u + 64u];
-static uint32_t g_arena_r[2048], g_arena_m[2048];
+/* devices: the image tiled in 32 x 16 tiles (8 x 12 of them) at 16 bits */
+#define DEV_BYTES (8u * 12u * 32u * 16u * 2u + 64u)
+static uint8_t g_dev_r[DEV_BYTES], g_dev_m[DEV_BYTES];
+/* arenas: up to the whole image (with a bounce buffer) */
+#define ARENA_WORDS ((RW * RH * 2u + 1024u) / 4u)
+static uint32_t g_arena_r[ARENA_WORDS], g_arena_m[ARENA_WORDS];
 static test_source_t g_tr, g_tm;
 
 /* The known map: moving = reference + (dx, dy) + a rotation of `rot` rad
@@ -147,22 +152,39 @@ static void ram_sources(ssda_source_t *ref, ssda_source_t *mov, uint8_t format)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(mov, &b));
 }
 
-static void stream_sources(ssda_source_t *ref, ssda_source_t *mov, uint8_t format, size_t ar, size_t am)
+/* The device layouts of the bound test: raster read at byte granularity,
+   and tiled (32 x 16 tiles) read in 16-byte units. */
+typedef struct {
+    uint8_t layout;
+    uint16_t tile_w, tile_h;
+    uint32_t read_size;
+} layout_t;
+static const layout_t k_raster = {SSDA_LAYOUT_RASTER, 0, 0, 1};
+static const layout_t k_tiled = {SSDA_LAYOUT_TILED, 32, 16, 16};
+
+static void stream_sources_in(ssda_source_t *ref, ssda_source_t *mov, uint8_t format,
+                              const layout_t *l, size_t ar, size_t am)
 {
     ssda_source_t r0, m0;
     ssda_view_t a, b;
     ssda_source_config_t ca, cb;
+    TEST_ASSERT_TRUE(ar <= sizeof g_arena_r && am <= sizeof g_arena_m);
     ram_sources(&r0, &m0, format);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a, r0.view, RW, RH, RW * format, (ssda_pixfmt_t)format));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b, m0.view, RW, RH, RW * format, (ssda_pixfmt_t)format));
-    test_source_init(&g_tr, g_dev_r, sizeof g_dev_r, 1);
-    test_source_init(&g_tm, g_dev_m, sizeof g_dev_m, 1);
-    ca = test_source_config(&g_tr, &a, SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 0, 1, g_arena_r, ar);
-    cb = test_source_config(&g_tm, &b, SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 0, 1, g_arena_m, am);
+    test_source_init(&g_tr, g_dev_r, sizeof g_dev_r, l->read_size);
+    test_source_init(&g_tm, g_dev_m, sizeof g_dev_m, l->read_size);
+    ca = test_source_config(&g_tr, &a, l->layout, l->tile_w, l->tile_h, 0, 0, 0, l->read_size, g_arena_r, ar);
+    cb = test_source_config(&g_tm, &b, l->layout, l->tile_w, l->tile_h, 0, 0, 0, l->read_size, g_arena_m, am);
     test_source_store(&g_tr, &ca, &a);
     test_source_store(&g_tm, &cb, &b);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(ref, &ca));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(mov, &cb));
+}
+
+static void stream_sources(ssda_source_t *ref, ssda_source_t *mov, uint8_t format, size_t ar, size_t am)
+{
+    stream_sources_in(ref, mov, format, &k_raster, ar, am);
 }
 
 /* Every cell of a textured pair with a known shift and rotation: OK, on
@@ -415,7 +437,9 @@ static void test_statuses(void)
     for (k = 0; k < 16; k++) TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_OUTSIDE, g_pts[k].status);
 }
 
-/* Streamed sources in small arenas give the in-RAM points. */
+/* Streamed sources in small arenas (from the least each accepts: a band
+   of 20 rows of a 60 px cell, a row of a 40 px area) give the in-RAM
+   points. */
 static void test_streamed_equals_ram(void)
 {
     test_rng_t r;
@@ -428,7 +452,7 @@ static void test_streamed_equals_ram(void)
     memset(&cfg, 0, sizeof cfg);
     cfg.metric = SSDA_REGISTER_SAD;
     for (format = 1; format <= 2; format++) {
-        static const size_t arenas[][2] = {{40, 80}, {600, 700}, {4096, 4096}};
+        static const size_t arenas[][2] = {{1200, 40}, {1900, 700}, {4096, 4096}};
         size_t a;
         ram_sources(&ref, &mov, format);
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
@@ -439,15 +463,171 @@ static void test_streamed_equals_ram(void)
             TEST_ASSERT_EQUAL_MEMORY(g_pts, g_pts2, 16 * sizeof g_pts[0]);
         }
         /* a read error comes back unchanged */
-        stream_sources(&ref, &mov, format, 600 * format, 700 * format);
+        stream_sources(&ref, &mov, format, 1900 * format, 700 * format);
         g_tm.fail_at_read = 5;
         g_tm.fail_code = -41;
         TEST_ASSERT_EQUAL_INT(-41, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, sizeof g_work));
-        stream_sources(&ref, &mov, format, 600 * format, 700 * format);
+        stream_sources(&ref, &mov, format, 1900 * format, 700 * format);
         g_tr.fail_at_read = 3;
         g_tr.fail_code = -42;
         TEST_ASSERT_EQUAL_INT(-42, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, sizeof g_work));
     }
+}
+
+/* Columns [x, x + w) of a row of the layout: the bytes a read of that row
+   may cost beyond alignment (raster: w px; tiled: every tile row it
+   touches whole, since a run of rows of a tile is one read). */
+static uint64_t row_cost(const layout_t *l, uint32_t x, uint32_t w, uint8_t fmt)
+{
+    if (l->layout == SSDA_LAYOUT_RASTER) {
+        return (uint64_t)w * fmt;
+    }
+    return (uint64_t)((x + w - 1u) / l->tile_w - x / l->tile_w + 1u) * l->tile_w * fmt;
+}
+
+/* The reference's reads by register.h's plan, from the cells and the
+   lattice alone: each cell's windows' rectangle once. */
+static uint64_t ref_once(const layout_t *l, const ssda_register_config_t *c, uint8_t fmt)
+{
+    const uint32_t gx = c->grid_x ? c->grid_x : 4u, gy = c->grid_y ? c->grid_y : 4u;
+    const uint32_t win = c->window ? c->window : 20u;
+    const uint32_t step = c->step ? c->step : (win / 4u ? win / 4u : 1u);
+    uint64_t sum = 0;
+    uint32_t i, j;
+    for (j = 0; j < gy; j++) {
+        for (i = 0; i < gx; i++) {
+            const uint32_t x0 = i * RW / gx, x1 = (i + 1u) * RW / gx;
+            const uint32_t y0 = j * RH / gy, y1 = (j + 1u) * RH / gy;
+            const uint32_t sx = (x1 - x0 - win) / step * step + win;
+            const uint32_t sy = (y1 - y0 - win) / step * step + win;
+            sum += sy * row_cost(l, x0, sx, fmt);
+        }
+    }
+    return sum;
+}
+
+/* The moving image's bound: the clipped search area of every point that
+   was searched (neither FLAT nor OUTSIDE), once. */
+static uint64_t mov_areas(const layout_t *l, const ssda_register_config_t *c,
+                          const ssda_register_point_t *pts, size_t n, uint8_t fmt)
+{
+    const int32_t win = c->window ? c->window : 20, search = c->search ? c->search : 40;
+    const int32_t half = (search - win) / 2;
+    uint64_t sum = 0;
+    size_t k;
+    for (k = 0; k < n; k++) {
+        int32_t wx = (pts[k].pair.ref_x_q8 / 128 - (win - 1)) / 2;
+        int32_t wy = (pts[k].pair.ref_y_q8 / 128 - (win - 1)) / 2;
+        int32_t x0 = wx + c->offset_x - half, y0 = wy + c->offset_y - half;
+        int32_t x1 = x0 + search, y1 = y0 + search;
+        if (pts[k].status == SSDA_REGISTER_FLAT || pts[k].status == SSDA_REGISTER_OUTSIDE) {
+            continue;
+        }
+        x0 = x0 < 0 ? 0 : x0;
+        y0 = y0 < 0 ? 0 : y0;
+        x1 = x1 > (int32_t)RW ? (int32_t)RW : x1;
+        y1 = y1 > (int32_t)RH ? (int32_t)RH : y1;
+        sum += (uint64_t)(y1 - y0) * row_cost(l, (uint32_t)x0, (uint32_t)(x1 - x0), fmt);
+    }
+    return sum;
+}
+
+/* The bound (register.h, issue 17 item 1) over two layouts, both formats
+   and two configurations, for arenas from the least each source accepts
+   (SSDA_REGISTER_REF_SIZE, _MOV_SIZE) up to its whole image: the points
+   equal the in-RAM run's; the reference's bytes read are each cell's
+   windows' rectangle once (raster: exactly, the same at every arena;
+   tiled: at most, with whole tile rows), the moving image's at most the
+   searched areas once, plus 2 (read_size - 1) per read; raster reads never
+   rise with the arena. One byte below either least: refused, nothing
+   read, the points untouched. (Before the plan, the reference read each
+   row once per window revisiting it: 67x its bytes here at the least
+   arena, 8-bit raster.) */
+static void test_reads_are_bounded_for_every_accepted_arena(void)
+{
+#ifndef SSDA_TEST_SMALL
+    const uint32_t steps = 9u;
+    const uint8_t fmt0 = 1u;
+#else
+    const uint32_t steps = 2u; /* emulated boards: 16-bit, 3 arenas */
+    const uint8_t fmt0 = 2u;
+#endif
+    test_rng_t r;
+    const map_t m = {4.5, -3.25, 0.01};
+    const layout_t *layouts[2] = {&k_raster, &k_tiled};
+    ssda_register_config_t cfgs[2];
+    double worst_r = 0.0, worst_m = 0.0;
+    uint32_t li, ci, t;
+    uint8_t fmt;
+    test_rng_seed(&r, 17);
+    make_pair(&r, &m, 0);
+    memset(cfgs, 0, sizeof cfgs);
+    cfgs[0].offset_x = 4;
+    cfgs[0].offset_y = -3;
+    cfgs[1].grid_x = 3;
+    cfgs[1].grid_y = 5;
+    cfgs[1].window = 16;
+    cfgs[1].search = 48;
+    cfgs[1].step = 3;
+    cfgs[1].metric = SSDA_REGISTER_SAD;
+    cfgs[1].offset_x = -20; /* some areas clipped at the left */
+    for (li = 0; li < 2; li++) {
+        const layout_t *l = layouts[li];
+        const uint64_t slack = 2u * (l->read_size - 1u);
+        for (fmt = fmt0; fmt <= 2; fmt++) {
+            for (ci = 0; ci < 2; ci++) {
+                const ssda_register_config_t *c = &cfgs[ci];
+                const size_t n = (size_t)(c->grid_x ? c->grid_x : 4u) * (c->grid_y ? c->grid_y : 4u);
+                const size_t min_r = SSDA_REGISTER_REF_SIZE(l->layout, RW, c->grid_x, c->window, fmt, l->read_size, l->tile_w);
+                const size_t min_m = SSDA_REGISTER_MOV_SIZE(l->layout, RW, c->search, fmt, l->read_size, l->tile_w);
+                const size_t all_r = SSDA_SOURCE_SIZE(l->layout, RW, RH, fmt, l->read_size, l->tile_w);
+                const uint64_t once_r = ref_once(l, c, fmt);
+                uint64_t areas, prev_r = UINT64_MAX, prev_m = UINT64_MAX;
+                ssda_source_t ref, mov;
+                ram_sources(&ref, &mov, fmt);
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, c, g_pts, n, NULL, g_work, sizeof g_work));
+                areas = mov_areas(l, c, g_pts, n, fmt);
+                /* one byte below either least: nothing read, nothing written */
+                memset(g_pts2, 0x5A, sizeof g_pts2);
+                stream_sources_in(&ref, &mov, fmt, l, min_r - 1u, all_r);
+                TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, c, g_pts2, n, NULL, g_work, sizeof g_work));
+                stream_sources_in(&ref, &mov, fmt, l, all_r, min_m - 1u);
+                TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, c, g_pts2, n, NULL, g_work, sizeof g_work));
+                TEST_ASSERT_EQUAL_UINT64(0, g_tr.reads + g_tm.reads);
+                TEST_ASSERT_EACH_EQUAL_HEX8(0x5A, g_pts2, sizeof g_pts2);
+                for (t = 0; t <= steps; t++) {
+                    /* from the least to the whole image, both at once */
+                    const size_t ar = min_r + (all_r - min_r) * t / steps;
+                    const size_t am = min_m + (all_r - min_m) * t / steps;
+                    uint64_t br, bm;
+                    char msg[120];
+                    stream_sources_in(&ref, &mov, fmt, l, ar, am);
+                    memset(g_pts2, 0xEE, sizeof g_pts2);
+                    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, c, g_pts2, n, NULL, g_work, sizeof g_work));
+                    TEST_ASSERT_EQUAL_MEMORY(g_pts, g_pts2, n * sizeof g_pts[0]);
+                    br = ref.stats.bytes_read;
+                    bm = mov.stats.bytes_read;
+                    TEST_ASSERT_EQUAL_UINT64(g_tr.bytes_read, br);
+                    TEST_ASSERT_EQUAL_UINT64(g_tm.bytes_read, bm);
+                    snprintf(msg, sizeof msg, "layout %u format %u config %u arenas %u, %u: read %llu, %llu",
+                             (unsigned)li, (unsigned)fmt, (unsigned)ci, (unsigned)ar, (unsigned)am,
+                             (unsigned long long)br, (unsigned long long)bm);
+                    if (l->layout == SSDA_LAYOUT_RASTER) {
+                        TEST_ASSERT_EQUAL_UINT64_MESSAGE(once_r, br, msg);
+                        TEST_ASSERT_TRUE_MESSAGE(bm <= prev_m && br <= prev_r, msg);
+                    } else {
+                        TEST_ASSERT_TRUE_MESSAGE(br <= once_r + slack * ref.stats.reads, msg);
+                    }
+                    TEST_ASSERT_TRUE_MESSAGE(bm <= areas + slack * mov.stats.reads, msg);
+                    prev_r = br;
+                    prev_m = bm;
+                    worst_r = (double)br / (RW * RH * fmt) > worst_r ? (double)br / (RW * RH * fmt) : worst_r;
+                    worst_m = (double)bm / (RW * RH * fmt) > worst_m ? (double)bm / (RW * RH * fmt) : worst_m;
+                }
+            }
+        }
+    }
+    printf("worst bytes read / image bytes: REF %.3f, MOV %.3f\n", worst_r, worst_m);
 }
 
 static void test_errors(void)
@@ -498,7 +678,7 @@ static void test_errors(void)
     /* one streamed source given twice */
     stream_sources(&ref, &mov, SSDA_PIX_U8, 4000, 4000);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_register_points(&ref, &ref, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
-    /* arenas too small for a span */
+    /* arenas below the least: a row of the window, of the area */
     stream_sources(&ref, &mov, SSDA_PIX_U8, 8, 4000);
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
     stream_sources(&ref, &mov, SSDA_PIX_U8, 4000, 36);
@@ -515,6 +695,7 @@ int main(void)
     RUN_TEST(test_window_and_placement_brute_force);
     RUN_TEST(test_statuses);
     RUN_TEST(test_streamed_equals_ram);
+    RUN_TEST(test_reads_are_bounded_for_every_accepted_arena);
     RUN_TEST(test_errors);
     return UNITY_END();
 }

@@ -38,15 +38,33 @@
  * The pair is (window centre in the reference, matched centre in the
  * moving image): centre = top-left + (window - 1) / 2 px.
  *
- * STREAMING: both images are sources (stream.h), in RAM or streamed; the
- * window and the area are copied through ssda_source_row into the work
- * buffer, so a streamed source needs an arena of one row of its widest
- * span (the cell's width for the reference, the area's for the moving
- * image). The bytes read are NOT yet bounded: the cells are visited
- * without a plan for the plate, and on a 1280 x 960 16-bit reference the
- * search read 43x the image's bytes with a 256-byte arena and 691x to
- * 1336x with 4 KB to 1 MB (more memory read more; docs/registration.md).
- * The results do not depend on the arena.
+ * STREAMING: both images are sources (stream.h), in RAM or streamed; each
+ * streamed source's plate is planned for what the cell reads next (issue 17
+ * item 1; the tracking engine's rule of issue 22). The reference's plate
+ * is shaped to the cell's windows (their bounding rectangle), as wide as
+ * it and sliding down the window lattice: the windows' spreads are taken
+ * from it and the best window's pixels kept as it goes, so each of those
+ * rows is read once. The moving image's plate is shaped to the cell's
+ * search area, as many rows as fit, so each area row is read once. Arenas
+ * (SSDA_REGISTER_REF_SIZE, SSDA_REGISTER_MOV_SIZE below): the reference
+ * needs a band of `window` rows as wide as the widest cell, the moving
+ * image one row of the search area; below that the search is refused
+ * (SSDA_ERR_BUFFER) before any read. For every accepted arena:
+ *   reference: bytes read = the sum over cells of the windows' rectangle
+ *     (at most the image's bytes once), the same for every arena (tiled:
+ *     up to the tile rows below);
+ *   moving image: bytes read <= the sum over the cells searched of their
+ *     (clipped) areas, at most grid_x * grid_y * search^2 px (the seed's
+ *     defaults on 1000 x 800: 0.032x the image), less when a plate still
+ *     holds rows of the area before;
+ * both plus each read's alignment: 2 (read_size - 1) bytes per read
+ * (stats.reads) and, tiled, the rest of the tile rows a run of rows spans.
+ * So more memory never reads more bytes of a raster source (it only takes
+ * fewer, longer reads); a tiled one's longer runs may span more of the
+ * tile rows, within the bound. On the 1280 x 960 16-bit MicaSense bands
+ * the reference read 1.00x its bytes at every arena from its least (12 800
+ * bytes) to 8 MB, against 43x to 1337x before (docs/registration.md). The
+ * results do not depend on the arena.
  */
 #ifndef SSDA_REGISTER_H
 #define SSDA_REGISTER_H
@@ -123,6 +141,33 @@ typedef struct {
           ? SSDA_MATCH_WORK_SIZE(search, search, window, window)              \
           : SSDA_NCC_WORK_SIZE(search, window, window)))
 
+/* Widest cell of a grid of grid_x cells across `width` px: ceil(width /
+   grid_x) (grid_x 0 = 4). */
+#define SSDA_REGISTER_GRID_(g) ((size_t)(g) != 0u ? (size_t)(g) : (size_t)SSDA_REGISTER_DEFAULT_GRID)
+#define SSDA_REGISTER_CELL_W(width, grid_x)                                    \
+    (((size_t)(width) + SSDA_REGISTER_GRID_(grid_x) - 1u) / SSDA_REGISTER_GRID_(grid_x))
+
+/* Least arena of a streamed reference `width` px wide (stream.h's
+   SSDA_SOURCE_SIZE with the source's layout, format, read_size, tile_w): a
+   band of `window` rows (0 = 20) of the widest cell. (With one cell across,
+   a raster source read at byte granularity whose rows are not a multiple
+   of 4 bytes may need up to 3 bytes a row less: its plate keeps the
+   image's stride.) */
+#define SSDA_REGISTER_REF_SIZE(layout, width, grid_x, window, format, read_size, tile_w) \
+    SSDA_SOURCE_SIZE(layout, SSDA_REGISTER_CELL_W(width, grid_x),                \
+                     (size_t)(window) != 0u ? (size_t)(window)                   \
+                                            : (size_t)SSDA_REGISTER_DEFAULT_WINDOW, \
+                     format, read_size, tile_w)
+
+/* Least arena of a streamed moving image `width` px wide: one row of the
+   search area (search 0 = 40), or of the image when narrower. */
+#define SSDA_REGISTER_SEARCH_(s) ((size_t)(s) != 0u ? (size_t)(s) : (size_t)SSDA_REGISTER_DEFAULT_SEARCH)
+#define SSDA_REGISTER_MOV_SIZE(layout, width, search, format, read_size, tile_w) \
+    SSDA_SOURCE_SIZE(layout,                                                    \
+                     SSDA_REGISTER_SEARCH_(search) < (size_t)(width)             \
+                         ? SSDA_REGISTER_SEARCH_(search) : (size_t)(width),      \
+                     1u, format, read_size, tile_w)
+
 /*
  * Find a control point in every cell (see METHOD).
  *   ref, mov:  initialised sources of the same format (in RAM or streamed;
@@ -141,8 +186,10 @@ typedef struct {
  *                    overlapping arenas
  *   SSDA_ERR_SIZE    a cell smaller than the window (grid too fine), or
  *                    out_count below grid_x * grid_y
- *   SSDA_ERR_BUFFER  work_size short or misaligned; an arena that cannot
- *                    hold one span
+ *   SSDA_ERR_BUFFER  work_size short or misaligned; a streamed reference's
+ *                    arena below SSDA_REGISTER_REF_SIZE or a streamed
+ *                    moving image's below SSDA_REGISTER_MOV_SIZE (nothing
+ *                    read: below them the reads would not be bounded)
  *   SSDA_ERR_UNSUPPORTED  16-bit images in a build with SSDA_CFG_NO_U16
  * or a read() error unchanged (then out holds the cells done before it).
  */

@@ -52,7 +52,11 @@ static const char help[] =
     "  --fill V           output value where MOV has no pixel (default 0)\n"
     "  --mem BYTES        streamed: MOV's pixels reach the warp and the search\n"
     "                     through plates of BYTES (K/M suffix) in all, as on a\n"
-    "                     small processor (default: images in RAM)\n"
+    "                     small processor (default: images in RAM); the search\n"
+    "                     needs at least a band of window rows of REF's widest\n"
+    "                     cell plus a row of the search area (1280 x 960 16-bit,\n"
+    "                     4x4 cells, 20 in 40: 12880 bytes; less is refused,\n"
+    "                     naming it), and reads each byte of REF at most once\n"
     "  --shade            remove each image's shading first (the seed's low-pass:\n"
     "                     DC and one cycle per direction, kept at its centre)\n"
     "  --stack FILE.png   REF and the registered MOVs as one PNG: 2 bands -> RGB\n"
@@ -503,7 +507,7 @@ static int find_points(const char *cmd, const gray_image_t *ref, reg_one_t *r,
     ssda_source_t sr, sm;
     mem_dev_t dr, dm;
     void *ar = NULL, *am = NULL, *work = NULL;
-    size_t half = 0, ws;
+    size_t size_r = 0, size_m = 0, ws;
     const uint8_t fmt = ref->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
     ssda_register_config_t c = o->reg;
     int err;
@@ -513,17 +517,39 @@ static int find_points(const char *cmd, const gray_image_t *ref, reg_one_t *r,
     ws = SSDA_REGISTER_WORK_SIZE(c.window ? c.window : 20, c.search ? c.search : 40, fmt);
     work = malloc(ws) /* malloc: aligned for any type */;
     if (o->have_mem) {
-        half = (size_t)(o->mem / 2) & ~(size_t)3;
-        ar = malloc(half);
-        am = malloc(half);
+        /* the least arenas (register.h): a band of window rows of REF's
+           widest cell, a row of MOV's search area; below them the library
+           refuses, as its reads would not be bounded. Halves when both
+           fit, else REF gets its least and MOV the rest. */
+        const size_t need_r = SSDA_REGISTER_REF_SIZE(SSDA_LAYOUT_RASTER, ref->width, c.grid_x,
+                                                     c.window, fmt, 1u, 0u);
+        const size_t need_m = SSDA_REGISTER_MOV_SIZE(SSDA_LAYOUT_RASTER, r->img.width, c.search,
+                                                     fmt, 1u, 0u);
+        const size_t half = (size_t)(o->mem / 2) & ~(size_t)3;
+        if (o->mem < (uint64_t)need_r + need_m) {
+            cli_input_error(cmd, "'%s': control points: --mem %llu is below the least the search "
+                            "needs: --mem %zu (REF: %u rows of a %zu px cell, %zu bytes; MOV: a "
+                            "row of the search area, %zu bytes)", r->path,
+                            (unsigned long long)o->mem, need_r + need_m,
+                            c.window ? c.window : 20u,
+                            (size_t)SSDA_REGISTER_CELL_W(ref->width, c.grid_x), need_r, need_m);
+            r->secs_points = now_s() - t0;
+            return -1;
+        }
+        size_r = half < need_r ? need_r
+                               : ((size_t)o->mem - half < need_m ? ((size_t)o->mem - need_m) & ~(size_t)3
+                                                                 : half);
+        size_m = (size_t)o->mem - size_r;
+        ar = malloc(size_r);
+        am = malloc(size_m);
     }
     if (work == NULL || (o->have_mem && (ar == NULL || am == NULL))) {
         err = SSDA_ERR_BUFFER;
         goto done;
     }
-    err = make_source(&sr, ref, &dr, ar, half);
+    err = make_source(&sr, ref, &dr, ar, size_r);
     if (err == SSDA_OK) {
-        err = make_source(&sm, &r->img, &dm, am, half);
+        err = make_source(&sm, &r->img, &dm, am, size_m);
     }
     if (err == SSDA_OK) {
         err = ssda_register_points(&sr, &sm, &c, r->pts, r->ncells, &r->accepted, work, ws);
