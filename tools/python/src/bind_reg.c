@@ -190,16 +190,6 @@ static PyObject *fit_object(PyObject *poly, PyObject *res, PyObject *used,
     return o;
 }
 
-static PyObject *typed_empty(int ndim, const Py_ssize_t *shape, const char *dtype)
-{
-    PyObject *dt = PyUnicode_FromString(dtype), *a;
-    if (dt == NULL) {
-        return NULL;
-    }
-    a = ssdapy_np_empty(ndim, shape, dt);
-    Py_DECREF(dt);
-    return a;
-}
 
 static PyObject *py_poly_fit(PyObject *self, PyObject *args, PyObject *kw)
 {
@@ -229,8 +219,8 @@ static PyObject *py_poly_fit(PyObject *self, PyObject *args, PyObject *kw)
     have = 1;
     {
         const Py_ssize_t shape[1] = {n};
-        if ((poly = poly_new(&p)) == NULL || (res = typed_empty(1, shape, "uint32")) == NULL ||
-            (used = typed_empty(1, shape, "uint8")) == NULL) {
+        if ((poly = poly_new(&p)) == NULL || (res = ssdapy_np_typed(1, shape, "uint32")) == NULL ||
+            (used = ssdapy_np_typed(1, shape, "uint8")) == NULL) {
             goto done;
         }
     }
@@ -317,7 +307,7 @@ static PyObject *shade_object(PyObject *corr, const ssda_shade_t *sh)
     if (o == NULL) {
         return NULL;
     }
-    k = typed_empty(2, s33, "int32");
+    k = ssdapy_np_typed(2, s33, "int32");
     if (k == NULL || (d = ssdapy_np_data(k)) == NULL) {
         Py_XDECREF(k);
         Py_DECREF(o);
@@ -434,7 +424,7 @@ static const ssdapy_field_t reg_cfg_fields[] = {
 
 static PyObject *py_register_points(PyObject *self, PyObject *args, PyObject *kw)
 {
-    PyObject *a[2], *kwc, *v, *pts = NULL, *out = NULL;
+    PyObject *a[2], *kwc, *pts = NULL, *out = NULL;
     ssdapy_src_arg_t r, m;
     ssda_register_config_t cfg;
     ssda_register_point_t *p;
@@ -449,13 +439,8 @@ static PyObject *py_register_points(PyObject *self, PyObject *args, PyObject *kw
     if (ssdapy_fields(kwc, &cfg, reg_cfg_fields) != 0) {
         goto done;
     }
-    if ((v = ssdapy_kw_take(kwc, "metric")) != NULL) {
-        int k, rc = ssdapy_enum(v, "metric", reg_metrics, &k);
-        Py_DECREF(v);
-        if (rc != 0) {
-            goto done;
-        }
-        cfg.metric = (uint8_t)k;
+    if (ssdapy_kw_enum(kwc, "metric", reg_metrics, &cfg.metric) != 0) {
+        goto done;
     }
     if (ssdapy_kw_done(kwc, "register_points") != 0 ||
         ssdapy_src_arg_get(a[0], "ref", &r, NULL) != 0) {
@@ -537,7 +522,7 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
         {"tile_w", offsetof(ssda_warp_config_t, tile_w), 2, 0, 65535},
         {"tile_h", offsetof(ssda_warp_config_t, tile_h), 2, 0, 65535},
         {NULL, 0, 0, 0, 0}};
-    PyObject *a[2], *kwc, *v, *img = NULL, *out = NULL;
+    PyObject *a[2], *kwc, *img = NULL, *out = NULL;
     ssdapy_src_arg_t s;
     ssda_warp_config_t wc;
     ssda_warp_stats_t st;
@@ -553,13 +538,8 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
     if (ssdapy_fields(kwc, &wc, f) != 0) {
         goto done;
     }
-    if ((v = ssdapy_kw_take(kwc, "resample")) != NULL) {
-        int k, rc = ssdapy_enum(v, "resample", resamples, &k);
-        Py_DECREF(v);
-        if (rc != 0) {
-            goto done;
-        }
-        wc.resample = (uint8_t)k;
+    if (ssdapy_kw_enum(kwc, "resample", resamples, &wc.resample) != 0) {
+        goto done;
     }
     if (ssdapy_kw_done(kwc, "warp") != 0 || poly_get(a[1], &map) != 0 ||
         ssdapy_src_arg_get(a[0], "source", &s, NULL) != 0) {
@@ -571,7 +551,7 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
         const uint8_t fmt = s.format;
         wo.bpp = fmt == SSDA_PIX_U16 ? 2u : 1u;
         wo.stride = (size_t)map.ref_w * wo.bpp;
-        if ((img = typed_empty(2, shape, wo.bpp == 2u ? "uint16" : "uint8")) == NULL ||
+        if ((img = ssdapy_np_typed(2, shape, wo.bpp == 2u ? "uint16" : "uint8")) == NULL ||
             (wo.out = ssdapy_np_data(img)) == NULL) {
             goto done;
         }
