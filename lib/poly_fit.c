@@ -1,6 +1,7 @@
 /*
  * poly_fit.c - least-squares fit of a polynomial map with outlier
- * rejection (method and bounds in poly.h): exact 128-bit normal equations,
+ * rejection by the leave-one-out statistic r / sqrt(1 - h) (method and
+ * bounds in poly.h): exact 128-bit normal equations,
  * fixed-point Cholesky, iterative refinement against the exact sums.
  */
 #include <string.h>
@@ -252,38 +253,87 @@ static uint32_t residual_of(const solve_t *sv, uint32_t m, const ssda_poly_pair_
     return ssda__isqrt64(e2);
 }
 
-/* The used pair with the largest residual (ties: lowest index) under the
-   current solution; its residual in *worst. */
-static size_t worst_pair(const ssda_poly_t *p, const ssda_poly_pair_t *pairs, size_t n,
-                         const uint8_t *flags, const solve_t *sv, uint32_t m, uint32_t *worst)
+/* Leverage of a pair with terms phi: h = phi^T G^-1 phi for the used
+   pairs' sums G, from the factor L of G / count: h = |L^-1 phi|^2 / count,
+   Q60 (1 = 2^60). Forward substitution z = L^-1 phi in Q30: exact |z|^2 =
+   count h <= count <= 2^14, so |z| <= 2^37; a |z| beyond 2^40 (rounding
+   of a factor near singular) returns 2^60 (leverage 1: cannot be judged).
+   Bounds: each sum |phi 2^30 - sum l z| <= 2^60 + 9 * 2^31 * 2^40 < 2^75;
+   sum z^2 <= 10 * 2^80 < 2^84. */
+static ssda__i128_t leverage_of(const solve_t *sv, uint32_t m, uint32_t count, const int64_t *phi)
 {
-    size_t k, at = 0u;
-    uint32_t best = 0u;
-    bool any = false;
+    int64_t z[SSDA_POLY_MAX_TERMS];
+    ssda__i128_t q = {0u, 0u}; /* hi, lo */
+    uint32_t j, k;
+    for (j = 0u; j < m; j++) {
+        ssda__i128_t acc = ssda__u128_shl(ssda__w_i64(phi[j]), 30u); /* Q60 */
+        ssda__i128_t zj;
+        for (k = 0u; k < j; k++) {
+            acc = ssda__w_sub(acc, ssda__w_mul64(sv->l[TRI(j, k)], z[k]));
+        }
+        zj = ssda__w_div_round(acc, ssda__w_i64(sv->l[TRI(j, j)])); /* l_jj >= 1 */
+        if (!w_small(zj, 40u)) {
+            return ssda__u128_shl(W_ONE, 60u);
+        }
+        z[j] = ssda__i128_to64(zj);
+        q = ssda__w_add(q, ssda__w_mul64(z[j], z[j]));
+    }
+    return ssda__w_div_round(q, ssda__w_i64((int64_t)count));
+}
+
+/* A pair can be judged while 1 - h >= 2^-16 (2^44 in Q60). */
+#define FIT_MIN_ONE_MINUS_H_LOG2 44u
+
+/* The verdict on the used pairs under the current fit. */
+typedef struct {
+    ssda__i128_t stat;  /* largest r^2 / (1 - h), px^2 Q16 (< 2^124 / 2^44 = 2^80) */
+    size_t at;          /* its pair (ties: the lowest index) */
+    ssda__i128_t lev;   /* largest leverage, Q60 */
+} verdict_t;
+
+/* Judge every used pair by r^2 / (1 - h): how much the sum of squared
+   residuals falls when the pair is left out (exact identity of least
+   squares; r the pair's residual, h its leverage). A pair with 1 - h below
+   2^-16 cannot be judged (the map passes through it): statistic 0. */
+static void judge_pairs(const ssda_poly_t *p, const ssda_poly_pair_t *pairs, size_t n,
+                        const uint8_t *flags, const solve_t *sv, uint32_t m, uint32_t count,
+                        verdict_t *v)
+{
+    const ssda__i128_t one = ssda__u128_shl(W_ONE, 60u);
+    const ssda__i128_t floor_1h = ssda__u128_shl(W_ONE, FIT_MIN_ONE_MINUS_H_LOG2);
+    size_t k;
+    v->stat = ssda__w_i64(-1);
+    v->at = 0u;
+    v->lev = ssda__w_i64(0);
     for (k = 0u; k < n; k++) {
         int64_t phi[SSDA_POLY_MAX_TERMS];
         uint64_t sq;
-        uint32_t r;
+        ssda__i128_t h, one_minus, s = {0u, 0u}; /* hi, lo */
         if (flags[k] == 0u) {
             continue;
         }
         (void)terms_of(p, &pairs[k], phi); /* checked when the pair was added */
-        r = residual_of(sv, m, &pairs[k], phi, &sq);
-        if (!any || r > best) {
-            best = r;
-            at = k;
-            any = true;
+        (void)residual_of(sv, m, &pairs[k], phi, &sq);
+        h = leverage_of(sv, m, count, phi);
+        v->lev = ssda__w_lt(v->lev, h) ? h : v->lev;
+        one_minus = ssda__w_sub(one, h);
+        if (!ssda__w_lt(one_minus, floor_1h)) {
+            const ssda__i128_t e2 = {0u, sq}; /* hi, lo; < 2^64 */
+            /* < 2^124 / 2^44 */
+            s = ssda__w_div_floor(ssda__u128_shl(e2, 60u), one_minus);
+        }
+        if (ssda__w_lt(v->stat, s)) {
+            v->stat = s;
+            v->at = k;
         }
     }
-    *worst = best;
-    return at;
 }
 
 /* Outputs of a finished fit: coefficients (displacement + identity),
    residuals, flags and the summary. */
 static void write_out(const ssda_poly_t *dom, const ssda_poly_pair_t *pairs, size_t n,
-                      const uint8_t *flags, const solve_t *sv, uint32_t m, uint32_t bound,
-                      uint16_t rejected, ssda_poly_t *poly, uint32_t *residual_q8,
+                      const uint8_t *flags, const solve_t *sv, uint32_t m, const verdict_t *vd,
+                      bool within, uint16_t rejected, ssda_poly_t *poly, uint32_t *residual_q8,
                       uint8_t *used, ssda_poly_fit_result_t *result)
 {
     ssda_poly_fit_result_t res;
@@ -329,7 +379,14 @@ static void write_out(const ssda_poly_t *dom, const ssda_poly_pair_t *pairs, siz
     res.cond = sv->cond;
     res.rejected = rejected;
     res.refinements = sv->steps;
-    res.within_bound = res.max_q8 <= bound;
+    res.within_bound = within;
+    {
+        /* Q60 -> Q15, rounded; a rounded leverage may pass 1 by a few units */
+        const ssda__i128_t l15 = ssda__w_sar(ssda__w_add(vd->lev, ssda__u128_shl(W_ONE, 44u)), 45u);
+        res.max_leverage_q15 = ssda__w_lt(ssda__w_i64(32768), l15) ? 32768u : (uint16_t)l15.lo;
+    }
+    res.weak = (uint32_t)res.used < SSDA_POLY_WEAK_PAIRS(m) ||
+               res.max_leverage_q15 > SSDA_POLY_WEAK_LEVERAGE_Q15;
     *poly = p;
     if (result != NULL) {
         *result = res;
@@ -348,7 +405,10 @@ int ssda_poly_fit(const ssda_poly_pair_t *pairs, size_t n, uint16_t ref_w, uint1
     ssda_poly_t dom;
     sums_t sums;
     solve_t sv;
-    uint32_t m, worst;
+    verdict_t vd;
+    ssda__i128_t b2;
+    bool within;
+    uint32_t m;
     uint16_t rejected = 0u;
     size_t k;
     int err;
@@ -371,6 +431,11 @@ int ssda_poly_fit(const ssda_poly_pair_t *pairs, size_t n, uint16_t ref_w, uint1
     }
     (void)memset(&sums, 0, sizeof sums);
     (void)memset(&sv, 0, sizeof sv);
+    {
+        /* no bound: every statistic (< 2^80) is within 2^80 */
+        const ssda__i128_t bb = {0u, (uint64_t)bound * bound}; /* hi, lo; < 2^64 */
+        b2 = bound == UINT32_MAX ? ssda__u128_shl(W_ONE, 80u) : bb;
+    }
     for (k = 0u; k < n; k++) {
         int64_t phi[SSDA_POLY_MAX_TERMS];
         if (!terms_of(&dom, &pairs[k], phi)) {
@@ -380,23 +445,24 @@ int ssda_poly_fit(const ssda_poly_pair_t *pairs, size_t n, uint16_t ref_w, uint1
         flags[k] = 1u;
     }
     for (;;) {
-        size_t w;
         err = fit_sums(&sums, m, &sv);
         if (err != SSDA_OK) {
             return err;
         }
-        w = worst_pair(&dom, pairs, n, flags, &sv, m, &worst);
-        if (worst <= bound || sums.count <= m + 1u) {
+        judge_pairs(&dom, pairs, n, flags, &sv, m, sums.count, &vd);
+        /* bound^2 < 2^64 */
+        within = !ssda__w_lt(b2, vd.stat);
+        if (within || sums.count <= m + 1u) {
             break;
         }
         {
             int64_t phi[SSDA_POLY_MAX_TERMS];
-            (void)terms_of(&dom, &pairs[w], phi);
-            sums_update(&sums, &pairs[w], phi, m, false);
+            (void)terms_of(&dom, &pairs[vd.at], phi);
+            sums_update(&sums, &pairs[vd.at], phi, m, false);
         }
-        flags[w] = 0u;
+        flags[vd.at] = 0u;
         rejected++;
     }
-    write_out(&dom, pairs, n, flags, &sv, m, bound, rejected, poly, residual_q8, used, result);
+    write_out(&dom, pairs, n, flags, &sv, m, &vd, within, rejected, poly, residual_q8, used, result);
     return SSDA_OK;
 }

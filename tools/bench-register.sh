@@ -12,17 +12,15 @@
 # DATA_DIR defaults to ../shared/data (classic/, homography/graf/, multiband/).
 # Needs /usr/bin/python3 with numpy and cv2 (python3-opencv), gdal-bin.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+. "$(dirname "$0")/bench_lib.sh"
 cd "$root"
 dir=${SSDA_BENCH_DIR:-build/bench}
 data=$root/../shared/data
-if [ $# -ge 1 ] && [ "$1" != "--" ]; then data=$1; shift; fi
+if [ $# -ge 1 ] && [ "$1" != "--" ]; then data=$(from_caller "$1"); shift; fi
 [ "${1:-}" = "--" ] && shift
 
 bash tools/setup-deps.sh python3-opencv python3-numpy gdal-bin >&2
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
-      -DSSDA_BUILD_TOOLS=ON -DSSDA_BUILD_BENCH=ON >&2
-cmake --build "$dir" --target ssda_cli ssda-bench-warp -j "$(nproc 2>/dev/null || echo 2)" >&2
+bench_build "$dir" ON ssda_cli ssda-bench-warp
 
 echo "## Registration (tools/bench-register.sh, $(date -u +%Y-%m-%d), $(nproc) cores)"
 echo

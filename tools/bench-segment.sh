@@ -20,19 +20,14 @@
 # folder it is run in. SSDA_BENCH_DIR sets the build directory (default
 # build/bench-segment, in the repository).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
-caller=$PWD
-# a path given by the caller, made absolute before the cd below
-from_caller() { case $1 in /*) printf '%s' "$1" ;; *) printf '%s/%s' "$caller" "$1" ;; esac; }
+. "$(dirname "$0")/bench_lib.sh"
 cd "$root"
 dir=${SSDA_BENCH_DIR:-build/bench-segment}
 reps=5
 if [ "${1:-}" = "--reps" ]; then reps=$2; shift 2; fi
 
 bash tools/setup-deps.sh python3-numpy python3-sklearn python3-skimage >&2
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
-      -DSSDA_BUILD_TOOLS=ON -DSSDA_BUILD_BENCH=ON >&2
-cmake --build "$dir" --target ssda_cli ssda-bench-segment -j "$(nproc 2>/dev/null || echo 2)" >&2
+bench_build "$dir" ON ssda_cli ssda-bench-segment
 
 images=()
 for spec in "$@"; do # PATH:NODATA:K1,K2: only PATH is a path

@@ -9,26 +9,18 @@
 # --tile WxH, --read-size N, --predict none|left|median, --no-bounds, --tmpdir DIR.
 # SSDA_BENCH_DIR sets the build directory (default build/bench).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+. "$(dirname "$0")/bench_lib.sh"
 cd "$root"
 dir=${SSDA_BENCH_DIR:-build/bench}
 
 bash tools/setup-deps.sh >&2
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
-      -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=ON >&2
-cmake --build "$dir" --target ssda-bench-stream -j "$(nproc 2>/dev/null || echo 2)" >&2
+bench_build "$dir" OFF ssda-bench-stream
 
-args=()
-if [ $# -ge 2 ] && [ "$1" != "--" ]; then
-  args=(--mask 4095 "$1" "$2"); shift 2
-else
-  goes=$root/../shared/data/goes16
-  if [ -f "$goes/goes16_c10_20221002_110117.png" ] && [ -f "$goes/goes16_c10_20221002_110617.png" ]; then
-    args=(--mask 4095 "$goes/goes16_c10_20221002_110117.png" "$goes/goes16_c10_20221002_110617.png")
-  else
-    echo "bench-stream: give FIRST.png SECOND.png (no GOES-16 pair in $goes)" >&2
-    exit 2
-  fi
+bench_pair_args bench-stream "$@"
+shift "$pair_shift"
+if [ ${#pair_args[@]} -eq 0 ]; then
+  echo "bench-stream: give FIRST.png SECOND.png (no GOES-16 pair in $root/../shared/data/goes16)" >&2
+  exit 2
 fi
 [ "${1:-}" = "--" ] && shift
-exec "$dir/tools/bench/stream/ssda-bench-stream" "${args[@]}" "$@"
+exec "$dir/tools/bench/stream/ssda-bench-stream" "${pair_args[@]}" "$@"

@@ -6,23 +6,14 @@
 # directory exists (fill value 4095 masked), and always adds a synthetic pair.
 # SSDA_BENCH_DIR sets the build directory (default build/bench).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/.." && pwd)
+. "$(dirname "$0")/bench_lib.sh"
 cd "$root"
 dir=${SSDA_BENCH_DIR:-build/bench}
 
 bash tools/setup-deps.sh >&2
-cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DSSDA_BUILD_TESTS=OFF \
-      -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=ON >&2
-cmake --build "$dir" --target ssda-bench-track -j "$(nproc 2>/dev/null || echo 2)" >&2
+bench_build "$dir" OFF ssda-bench-track
 
-args=()
-if [ $# -ge 2 ] && [ "$1" != "--" ]; then
-  args=(--mask 4095 "$1" "$2"); shift 2
-else
-  goes=$root/../shared/data/goes16
-  if [ -f "$goes/goes16_c10_20221002_110117.png" ] && [ -f "$goes/goes16_c10_20221002_110617.png" ]; then
-    args=(--mask 4095 "$goes/goes16_c10_20221002_110117.png" "$goes/goes16_c10_20221002_110617.png")
-  fi
-fi
+bench_pair_args bench-track "$@"
+shift "$pair_shift"
 [ "${1:-}" = "--" ] && shift
-exec "$dir/tools/bench/ssda-bench-track" "${args[@]}" "$@"
+exec "$dir/tools/bench/ssda-bench-track" "${pair_args[@]}" "$@"

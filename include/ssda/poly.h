@@ -88,9 +88,12 @@ typedef struct {
                                 UINT32_MAX = no rejection */
 } ssda_poly_fit_config_t;
 
-/* Default rejection bound: 2 px. The seed's Fig. 9 pairs fit within 0.6 px
-   at order 1 or 2 once its one misread pair (20 px off) is dropped; a
-   correlation peak misplaced by a repeated pattern is off by a window or
+/* Default rejection bound: 2 px, on the leave-one-out statistic s of a
+   pair (poly.h, REJECTION: its residual / sqrt(1 - leverage), whose spread
+   under noise is the noise's, at any leverage). The seed's Fig. 9 pairs fit
+   within 0.6 px at order 1 or 2 once its one misread pair (20 px off) is
+   dropped; correlation peaks on textured windows land within a few tenths
+   of a pixel; a peak misplaced by a repeated pattern is off by a window or
    more. */
 #define SSDA_POLY_DEFAULT_MAX_RESIDUAL_Q8 512u
 
@@ -104,10 +107,28 @@ typedef struct {
                              (saturates at UINT32_MAX) */
     uint16_t used;        /* pairs in the final fit */
     uint16_t rejected;    /* pairs dropped as outliers */
+    uint16_t max_leverage_q15; /* largest leverage h of a used pair, Q1.15
+                             (32768 = 1): the share of that pair's own
+                             error that the map follows at its position */
     uint8_t refinements;  /* iterative-refinement steps taken (1..4) */
-    bool within_bound;    /* every used pair's residual <= the bound (false:
-                             rejection stopped at the minimum of pairs) */
+    bool within_bound;    /* every used pair's leave-one-out statistic (see
+                             REJECTION) <= the bound, hence every residual
+                             too (false: rejection stopped at the minimum
+                             of pairs) */
+    bool weak;            /* the map is weakly determined: fewer than
+                             SSDA_POLY_WEAK_PAIRS(terms) pairs used, or a
+                             leverage above SSDA_POLY_WEAK_LEVERAGE_Q15; an
+                             outlier there can pass the rejection: warn */
 } ssda_poly_fit_result_t;
+
+/* A fit is weakly determined (result.weak) below 2 pairs per term (the mean
+   leverage terms / used is then above 1/2) ... */
+#define SSDA_POLY_WEAK_PAIRS(terms) (2u * (uint32_t)(terms))
+/* ... or when a pair's leverage exceeds 0.8: the map then follows more
+   than 80 % of that pair's own error, and an outlier there shows only
+   sqrt(1 - h) < 45 % of its offset to the rejection (it must be off by
+   more than 2.2 times the bound to be dropped). */
+#define SSDA_POLY_WEAK_LEVERAGE_Q15 26214u
 
 /* Work bytes ssda_poly_fit needs for n pairs (one flag per pair). */
 #define SSDA_POLY_FIT_WORK_SIZE(n) ((size_t)(n))
@@ -133,11 +154,40 @@ typedef struct {
  * within a few units of Q24 while cond * 2^-28 << 1 (tests: against a
  * QR fit in 64-bit reference arithmetic, order 3, cond up to 10^4).
  *
- * REJECTION. After each fit the residual of every used pair (distance
- * between the mapped reference position and the moving position) is
- * computed; while the largest exceeds cfg->max_residual_q8 and more than
- * SSDA_POLY_TERMS(order) + 1 pairs are used, the worst pair (the largest
- * residual; ties: the lowest index) is dropped and the map refitted.
+ * REJECTION, by the leave-one-out statistic. After each fit every used
+ * pair i gets its residual r_i (the distance between its mapped reference
+ * position and its moving position) and its leverage h_i = phi_i^T G^-1
+ * phi_i (phi_i its terms, G the normal matrix of the used pairs; 0 < h_i
+ * <= 1, sum h_i = terms). Least squares gives exactly:
+ *     RSS - RSS without i = r_i^2 / (1 - h_i),
+ * the fall of the sum of squared residuals when pair i is left out, and
+ * r_i / (1 - h_i) is the pair's distance to the map fitted without it.
+ * The pair with the largest s_i = r_i / sqrt(1 - h_i) (ties: the lowest
+ * index) is dropped and the map refitted, while that s_i exceeds
+ * cfg->max_residual_q8 and more than SSDA_POLY_TERMS(order) + 1 pairs are
+ * used. Why s_i: (a) it is the likelihood-ratio choice of the one pair
+ * that is off the map (the mean-shift outlier model: the pair whose
+ * removal explains the most of the squared residuals); the largest raw
+ * residual is not: a pair of high leverage pulls the map to itself and
+ * keeps a small residual (r_i = (1 - h_i) times its distance to the map
+ * of the others), while good pairs near it take the error. (b) Under
+ * noise of sigma px on good pairs every s_i has the same spread sigma
+ * whatever its leverage (r_i has sigma sqrt(1 - h_i), the deleted
+ * residual r_i / (1 - h_i) has sigma / sqrt(1 - h_i), which would drop
+ * good pairs of high leverage), so the bound means the same everywhere.
+ * A pair off the map by e px has s_i = e sqrt(1 - h_i) when it is the
+ * only outlier: it is dropped when e > bound / sqrt(1 - h_i) (see weak).
+ * In fixed point: h_i = |L^-1 phi_i|^2 / used from the Cholesky factor L
+ * (Q30) of G / used by forward substitution (Q30, 128-bit sums), to within
+ * about cond * 2^-30; a pair with 1 - h_i < 2^-16 cannot be judged (the
+ * map passes through it) and is kept. s_i^2 = r_i^2 2^60 / (2^60 - h_i)
+ * in 128 bits (r_i^2 < 2^64 in Q16, so s_i^2 < 2^80); the bound's square
+ * is below 2^64. UINT32_MAX as the bound: no rejection.
+ * Cost per round: one fit, then per used pair O(terms^2) 64 x 64-bit
+ * multiplications and terms + 2 128-bit divisions; at most
+ * n - terms - 1 rounds. Measured on the Cortex-M4 (-O2, 16 pairs, order
+ * 2, no pair dropped): 1.76 M instructions (0.97 M with the raw-residual
+ * rule), stack 3.7 KB (3.4 KB); docs/registration.md.
  *
  *   pairs, n:  the pairs; n <= 65535. Reference positions must lie within
  *              the grid's domain (|X - cx| <= 2^kx, likewise y).

@@ -3,6 +3,10 @@
  * of one scene from different cameras, or two dates): one point per cell of
  * a grid over the reference, found by correlation or by SSDA, sub-pixel,
  * ready for ssda_poly_fit (poly.h) and ssda_warp (warp.h).
+ * A wrong point (a chance match) is left to the fit: ssda_poly_fit drops
+ * pairs by their leave-one-out statistic, so that a wrong point at a
+ * corner (high leverage) does not bend the map to itself, and flags a map
+ * the points fix weakly (result.weak: say so to the user).
  *
  * Seed: Nagao et al. 1975, section 3.2: the reference (1000 x 800) is cut
  * into 4 x 4 parts and one feature point is taken from each; a 20 x 20

@@ -4,6 +4,7 @@
 #include "draw.h"
 #include "json_out.h"
 #include "progress.h"
+#include "track_run.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -258,18 +259,7 @@ static int clean(const flow_opts_t *o, flow_run_t *r)
     g.cols = r->res.cols;
     g.rows = r->res.rows;
     g.frac_bits = 8;
-    if (o->median) {
-        err = ssda_relax_median(&g, NULL, r->clean, r->res.count);
-    } else {
-        ssda_relax_config_t c;
-        memset(&c, 0, sizeof c);
-        c.iterations = (uint16_t)o->relax;
-        c.flags = o->keep ? SSDA_RELAX_KEEP : 0u;
-        c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
-        c.work = malloc(c.work_size);
-        err = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->res.count);
-        free(c.work);
-    }
+    err = relax_field(&g, o->relax, o->median, o->keep, r->clean, r->res.count);
     if (err != SSDA_OK) {
         return cli_input_error("flow", "cleaning failed: %s", ssda_strerror(err));
     }

@@ -25,8 +25,11 @@ static const char help[] =
     "Register each MOV to REF (the seed's band registration): the reference is cut\n"
     "into a grid of cells; in each, the most textured window is searched in an area\n"
     "of MOV; the accepted pairs fix a polynomial map from REF's pixels to MOV's by\n"
-    "least squares (the worst pair dropped while its residual exceeds a bound); MOV\n"
-    "is resampled through the map onto REF's grid.\n"
+    "least squares (while a pair's leave-one-out statistic, its residual /\n"
+    "sqrt(1 - leverage), exceeds a bound, the largest is dropped and the map\n"
+    "refitted); MOV is resampled through the map onto REF's grid. A map that the\n"
+    "points fix weakly (fewer than 2 per term, or a point of leverage above 0.8)\n"
+    "is warned about on stderr.\n"
     "\n"
     "options:\n"
     "  -o OUT.png         the registered MOV (repeat once per MOV, in order)\n"
@@ -47,7 +50,8 @@ static const char help[] =
     "                       sad     SSDA: the exact SAD minimum (fast; fails across\n"
     "                               gain changes and inverted contrast)\n"
     "  --min-rho R        acceptance of the correlation metrics (default 0.65)\n"
-    "  --max-residual PX  outlier bound of the fit, px (default 2)\n"
+    "  --max-residual PX  outlier bound of the fit on the leave-one-out statistic,\n"
+    "                     px (default 2)\n"
     "  --resample nearest|bilinear   (default bilinear; the seed: nearest)\n"
     "  --fill V           output value where MOV has no pixel (default 0)\n"
     "  --mem BYTES        streamed: MOV's pixels reach the warp and the search\n"
@@ -70,7 +74,7 @@ static const char help[] =
     "  -h, --help         this text\n"
     "\n"
     "JSON: {\"order\",\"points\":[{\"ref_x\",\"ref_y\",\"mov_x\",\"mov_y\",\"rho\",\n"
-    "\"residual\",\"used\",\"status\"}],\"rms\",\"coeffs_x\",\"coeffs_y\",...}: MOV's x and\n"
+    "\"residual\",\"used\",\"status\"}],\"rms\",\"weak\",\"coeffs_x\",\"coeffs_y\",...}: MOV's x and\n"
     "y as polynomials of REF's pixel (x, y), terms 1, x, y, x^2, x*y, y^2, x^3,\n"
     "x^2*y, x*y^2, y^3; several MOVs: {\"registrations\":[...]}.\n"
     "\n"
@@ -801,6 +805,8 @@ static cJSON *json_of(const reg_one_t *r, const gray_image_t *ref, const reg_opt
     cJSON_AddNumberToObject(j, "rms", r->fit.rms_q8 / 256.0);
     cJSON_AddNumberToObject(j, "max_residual", r->fit.max_q8 / 256.0);
     cJSON_AddNumberToObject(j, "cond", r->fit.cond);
+    cJSON_AddNumberToObject(j, "max_leverage", r->fit.max_leverage_q15 / 32768.0);
+    cJSON_AddBoolToObject(j, "weak", r->fit.weak);
     poly_to_pixel(&r->map, px, py);
     for (t = 0; t < (int)SSDA_POLY_TERMS(o->order); t++) {
         cJSON_AddItemToArray(cx, cJSON_CreateNumber(px[t]));
@@ -961,6 +967,22 @@ static void few_points_warning(const char *cmd, const reg_one_t *r)
     }
 }
 
+/* A map the used points fix weakly: an outlier among them can pass the
+   rejection (poly.h, result.weak). Said on stderr, also under -q. */
+static void weak_fit_warning(const char *cmd, const reg_one_t *r, unsigned order)
+{
+    const unsigned terms = SSDA_POLY_TERMS(order);
+    if (r->fit.weak) {
+        fprintf(stderr,
+                "ssda %s: warning: '%s': the order-%u map is weakly determined (%u points for "
+                "%u terms, largest leverage %.2f; wanted >= %u points, <= %.2f): an outlier "
+                "may pass unseen; try a lower --order or a finer --grid, and check --flicker "
+                "or --checker\n",
+                cmd, r->path, order, r->fit.used, terms, r->fit.max_leverage_q15 / 32768.0,
+                SSDA_POLY_WEAK_PAIRS(terms), SSDA_POLY_WEAK_LEVERAGE_Q15 / 32768.0);
+    }
+}
+
 static void summary(const reg_one_t *r, const reg_opts_t *o)
 {
     double px[10], py[10];
@@ -1073,6 +1095,7 @@ int cmd_register(int argc, char **argv)
     rc = write_outputs(a.cmd, &ref, r, n, &o, a.pos[0]);
     for (i = 0; rc == CLI_OK && i < n; i++) {
         few_points_warning(a.cmd, &r[i]);
+        weak_fit_warning(a.cmd, &r[i], o.order);
     }
     if (rc == CLI_OK && !o.quiet) {
         for (i = 0; i < n; i++) {

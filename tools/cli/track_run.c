@@ -56,7 +56,8 @@ const char track_opts_help[] =
     "  --arrow-scale S   arrows drawn S times the motion (default: automatic)\n"
     "  --relax N         clean the field by relaxation labelling (the seed 003's\n"
     "                    section 4), N iterations: JSON windows gain relax_dx,\n"
-    "                    relax_dy (px) and changed\n"
+    "                    relax_dy (px) and changed; the overlay draws the cleaned\n"
+    "                    vectors as a second (cyan) arrow, the changed ones pink\n"
     "  --relax-keep      with --relax: keep vectors whose most likely class is their\n"
     "                    own (without it those are smoothed too: changed is false,\n"
     "                    yet relax_dx, relax_dy may differ from sub_dx, sub_dy)\n"
@@ -958,6 +959,24 @@ static int prepare_and_track(const char *cmd, const track_opts_t *o, track_resul
     return rc;
 }
 
+int relax_field(const ssda_relax_grid_t *g, uint32_t iterations, int median, int keep,
+                ssda_relax_vector_t *out, size_t count)
+{
+    ssda_relax_config_t c;
+    int e;
+    if (median) {
+        return ssda_relax_median(g, NULL, out, count);
+    }
+    memset(&c, 0, sizeof c);
+    c.iterations = (uint16_t)iterations;
+    c.flags = keep ? SSDA_RELAX_KEEP : 0u;
+    c.work_size = SSDA_RELAX_WORK_SIZE(g->cols, g->rows);
+    c.work = malloc(c.work_size);
+    e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(g, &c, out, count);
+    free(c.work);
+    return e;
+}
+
 /* --relax N or --relax-median on the tracked grid: the sub-pixel vectors
    (Q8; whole pixels with --no-subpixel), so that a vector the cleaning
    keeps keeps its fraction. */
@@ -981,18 +1000,7 @@ static int clean_field(const char *cmd, const track_opts_t *o, track_result_t *r
     g.frac_bits = 8;
     g.cols = r->grid.cols;
     g.rows = r->grid.rows;
-    if (o->relax_median) {
-        e = ssda_relax_median(&g, NULL, r->clean, r->grid.count);
-    } else {
-        ssda_relax_config_t c;
-        memset(&c, 0, sizeof c);
-        c.iterations = (uint16_t)o->relax;
-        c.flags = o->relax_keep ? SSDA_RELAX_KEEP : 0u;
-        c.work_size = SSDA_RELAX_WORK_SIZE(g.cols, g.rows);
-        c.work = malloc(c.work_size);
-        e = c.work == NULL ? SSDA_ERR_NULL : ssda_relax_labels(&g, &c, r->clean, r->grid.count);
-        free(c.work);
-    }
+    e = relax_field(&g, o->relax, o->relax_median, o->relax_keep, r->clean, r->grid.count);
     if (e != SSDA_OK) {
         return cli_input_error(cmd, "cleaning the field failed: %s", ssda_strerror(e));
     }
@@ -1351,6 +1359,16 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
             dv[n].has_truth = 1;
             dv[n].tdx = truth[k][0];
             dv[n].tdy = truth[k][1];
+        } else if (truth == NULL && r->clean != NULL &&
+                   (r->clean[k].flags & SSDA_RELAX_VALID) != 0u) {
+            /* --relax / --relax-median: the cleaned vector as the second
+               arrow, the changed ones marked (as ssda flow draws them) */
+            dv[n].has_truth = 1;
+            dv[n].tdx = r->clean[k].dx_q8 / 256.0;
+            dv[n].tdy = r->clean[k].dy_q8 / 256.0;
+            if ((r->clean[k].flags & SSDA_RELAX_CHANGED) != 0u) {
+                dv[n].status = DRAW_CHANGED;
+            }
         }
         n++;
     }
@@ -1362,7 +1380,9 @@ int track_write_overlay(const char *cmd, FILE *f, const char *name, const track_
     }
     memset(&dopt, 0, sizeof dopt);
     dopt.title = title;
-    dopt.truth_label = truth_label;
+    dopt.truth_label = truth != NULL || r->clean == NULL ? truth_label
+                       : o->relax_median                 ? "after the median test"
+                                                         : "after relaxation";
     dopt.subtitle = subtitle;
     dopt.arrow_scale = o->arrow_scale;
     dopt.grid_step = (double)step * every; /* arrows scale to the drawn spacing */

@@ -82,6 +82,12 @@ typedef struct {
     double metric_secs;           /* --metric: its time */
 } track_result_t;
 
+/* --relax N (iterations, SSDA_RELAX_KEEP with keep) or --relax-median on
+   the field g into out (count entries): an ssda error code (SSDA_ERR_NULL
+   when the work buffer cannot be had). */
+int relax_field(const ssda_relax_grid_t *g, uint32_t iterations, int median, int keep,
+                ssda_relax_vector_t *out, size_t count);
+
 /*
  * Load FIRST and SECOND, apply --grad, track. Prints errors.
  * Returns CLI_OK, CLI_INPUT or CLI_USAGE (an option that does not fit the

@@ -80,6 +80,10 @@ flow)
     fail "track --relax: $(head -c 400 t.json)"
   run 0 track r.png n2.png --relax-median --json t.json --quiet &&
     grep -q '"cleaning":"median"' t.json && grep -q '"relax_dx"' t.json || fail "track --relax-median"
+  # the overlay draws the cleaned field too (it drew only the raw vectors)
+  run 0 track r.png n2.png --overlay plain.png --quiet &&
+    run 0 track r.png n2.png --relax 30 --overlay relaxed.png --quiet &&
+    ! cmp -s plain.png relaxed.png || fail "track --relax: the overlay shows no cleaned vectors"
   run 2 track r.png n2.png --relax 3 --relax-median && stderr_has "not both"
   run 2 track r.png n2.png --relax x && stderr_has "bad --relax 'x'"
   ;;

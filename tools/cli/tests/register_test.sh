@@ -64,6 +64,12 @@ run 0 register ref.png mov.png --json - && grep -q '"coeffs_x"' out.txt || fail 
 run 0 register ref.png mov.png --order 1 --max-residual 0.01 --json w.json -q &&
   stderr_has "only 4 of 16 cells gave the map's control points"
 run 0 register ref.png mov.png --json w2.json -q && [ -s err.txt ] && fail "warning on a good run: $(cat err.txt)"
+grep -q '"weak":false' w2.json || fail "a good run's fit is not weak=false in w2.json"
+# a weakly determined map (order 3 on 4 x 4 cells: 16 points for 10 terms):
+# a warning on stderr, also with -q, and "weak":true in the JSON
+run 0 register ref.png mov.png --order 3 --json w3.json -q &&
+  stderr_has "the order-3 map is weakly determined (16 points for 10 terms" &&
+  { grep -q '"weak":true' w3.json || fail "no weak:true in w3.json"; }
 # too few control points: exit 1, the counts named, no output at all
 run 1 register ref.png flat.png -o x.png --json x.json --flicker x.gif && {
   stderr_has "found 0 control points of 16 cells; order 2 needs at least 6"; absent x.png x.json x.gif

@@ -50,20 +50,13 @@ static const ssdapy_field_t median_cfg_fields[] = {
 
 static int composite_options(PyObject *kw, ssda_composite_config_t *cfg)
 {
-    PyObject *v;
-    int e;
     memset(cfg, 0, sizeof *cfg);
     if (ssdapy_fields(kw, cfg, composite_cfg_fields) != 0 ||
         ssdapy_flag(kw, "subpixel", &cfg->flags, SSDA_COMPOSITE_SUBPIXEL) != 0) {
         return -1;
     }
-    if ((v = ssdapy_kw_take(kw, "metric")) != NULL) {
-        int rc = ssdapy_enum(v, "metric", metrics, &e);
-        Py_DECREF(v);
-        if (rc != 0) {
-            return -1;
-        }
-        cfg->metric = (uint8_t)e;
+    if (ssdapy_kw_enum(kw, "metric", metrics, &cfg->metric) != 0) {
+        return -1;
     }
     return 0;
 }

@@ -44,20 +44,6 @@ static const ssdapy_name_t scans[] = {
 static const ssdapy_name_t orders[] = {
     {"rows", SSDA_ORDER_ROWS}, {"spread", SSDA_ORDER_SPREAD}, {NULL, 0}};
 
-/* One option: take it from kw (absent or None: keep *cfg's value). */
-static int take_enum(PyObject *kw, const char *name, const ssdapy_name_t *t, uint8_t *dst)
-{
-    PyObject *v = ssdapy_kw_take(kw, name);
-    int e, rc = 0;
-    if (v != NULL) {
-        rc = ssdapy_enum(v, name, t, &e);
-        if (rc == 0) {
-            *dst = (uint8_t)e;
-        }
-        Py_DECREF(v);
-    }
-    return rc;
-}
 
 static int take_uint(PyObject *kw, const char *name, unsigned long long hi,
                      unsigned long long *dst)
@@ -79,9 +65,9 @@ int ssdapy_match_options(PyObject *kw, ssda_match_config_t *cfg, int allow_predi
     int scan_given = scan != NULL && scan != Py_None;
     memset(cfg, 0, sizeof *cfg);
     cfg->flags = SSDA_MATCH_BOUNDS; /* exact either way; less work on a host */
-    if (take_enum(kw, "threshold", thresholds, &cfg->threshold) != 0 ||
-        take_enum(kw, "scan", scans, &cfg->scan) != 0 ||
-        take_enum(kw, "order", orders, &cfg->order) != 0 ||
+    if (ssdapy_kw_enum(kw, "threshold", thresholds, &cfg->threshold) != 0 ||
+        ssdapy_kw_enum(kw, "scan", scans, &cfg->scan) != 0 ||
+        ssdapy_kw_enum(kw, "order", orders, &cfg->order) != 0 ||
         take_uint(kw, "k_q8", 65535u, &k) != 0 ||
         take_uint(kw, "lambda_q8", 0xFFFFFFFFu, &lambda) != 0 ||
         take_uint(kw, "fixed_threshold", UINT64_MAX, &fixed) != 0 ||
@@ -102,29 +88,14 @@ int ssdapy_match_options(PyObject *kw, ssda_match_config_t *cfg, int allow_predi
             cfg->flags = 0;
         }
     }
-    if (allow_predict && (v = ssdapy_kw_take(kw, "predict")) != NULL) {
-        long long xy[2];
-        PyObject *seq = PySequence_Fast(v, "predict must be (x, y)");
-        int rc = -1;
-        Py_DECREF(v);
-        if (seq == NULL) {
+    if (allow_predict) {
+        const int got = ssdapy_kw_xy(kw, "predict", &cfg->predict_x, &cfg->predict_y);
+        if (got < 0) {
             return -1;
         }
-        if (PySequence_Fast_GET_SIZE(seq) != 2) {
-            PyErr_SetString(PyExc_ValueError, "predict must be (x, y)");
-        } else if (ssdapy_int(PySequence_Fast_GET_ITEM(seq, 0), "predict x", INT32_MIN,
-                              INT32_MAX, &xy[0]) == 0 &&
-                   ssdapy_int(PySequence_Fast_GET_ITEM(seq, 1), "predict y", INT32_MIN,
-                              INT32_MAX, &xy[1]) == 0) {
-            cfg->predict_x = (int32_t)xy[0];
-            cfg->predict_y = (int32_t)xy[1];
-            if (!scan_given) {
-                cfg->scan = SSDA_SCAN_PREDICT;
-            }
-            rc = 0;
+        if (got > 0 && !scan_given) {
+            cfg->scan = SSDA_SCAN_PREDICT;
         }
-        Py_DECREF(seq);
-        return rc;
     }
     return 0;
 }

@@ -64,20 +64,15 @@ static int ncc_options(PyObject *kw, ssda_ncc_config_t *cfg)
 {
     PyObject *v;
     unsigned long long radius;
-    int e, b;
+    int b;
     size_t i;
     static const struct {
         const char *name;
         uint8_t bit;
     } flags[] = {{"full", SSDA_NCC_FULL}, {"around", SSDA_NCC_AROUND}};
     memset(cfg, 0, sizeof *cfg);
-    if ((v = ssdapy_kw_take(kw, "metric")) != NULL) {
-        int rc = ssdapy_enum(v, "metric", metrics, &e);
-        Py_DECREF(v);
-        if (rc != 0) {
-            return -1;
-        }
-        cfg->metric = (uint8_t)e;
+    if (ssdapy_kw_enum(kw, "metric", metrics, &cfg->metric) != 0) {
+        return -1;
     }
     for (i = 0; i < sizeof flags / sizeof flags[0]; i++) {
         if ((v = ssdapy_kw_take(kw, flags[i].name)) != NULL) {
@@ -98,27 +93,12 @@ static int ncc_options(PyObject *kw, ssda_ncc_config_t *cfg)
         cfg->radius = (uint16_t)radius;
         cfg->flags |= SSDA_NCC_DISK | SSDA_NCC_PREDICT;
     }
-    if ((v = ssdapy_kw_take(kw, "predict")) != NULL) {
-        PyObject *seq = PySequence_Fast(v, "predict must be (x, y)");
-        long long xy[2];
-        int rc = -1;
-        Py_DECREF(v);
-        if (seq == NULL) {
-            return -1;
-        }
-        if (PySequence_Fast_GET_SIZE(seq) != 2) {
-            PyErr_SetString(PyExc_ValueError, "predict must be (x, y)");
-        } else if (ssdapy_int(PySequence_Fast_GET_ITEM(seq, 0), "predict x", INT32_MIN,
-                              INT32_MAX, &xy[0]) == 0 &&
-                   ssdapy_int(PySequence_Fast_GET_ITEM(seq, 1), "predict y", INT32_MIN,
-                              INT32_MAX, &xy[1]) == 0) {
-            cfg->predict_x = (int32_t)xy[0];
-            cfg->predict_y = (int32_t)xy[1];
-            cfg->flags |= SSDA_NCC_PREDICT;
-            rc = 0;
-        }
-        Py_DECREF(seq);
-        return rc;
+    b = ssdapy_kw_xy(kw, "predict", &cfg->predict_x, &cfg->predict_y);
+    if (b < 0) {
+        return -1;
+    }
+    if (b > 0) {
+        cfg->flags |= SSDA_NCC_PREDICT;
     }
     return 0;
 }

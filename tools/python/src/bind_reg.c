@@ -21,7 +21,9 @@ static PyStructSequence_Field fit_fields[] = {
     {"n_used", "pairs in the final fit"},
     {"rejected", "pairs dropped as outliers"},
     {"refinements", "iterative-refinement steps"},
-    {"within_bound", "every used pair within max_residual_q8"},
+    {"within_bound", "every used pair's leave-one-out statistic within max_residual_q8"},
+    {"max_leverage_q15", "largest leverage of a used pair, Q1.15 (32768 = 1)"},
+    {"weak", "the map is weakly determined (fewer than 2 pairs per term or a leverage > 0.8)"},
     {NULL, NULL}};
 
 static PyStructSequence_Field shade_fields[] = {
@@ -179,6 +181,8 @@ static PyObject *fit_object(PyObject *poly, PyObject *res, PyObject *used,
     PyStructSequence_SET_ITEM(o, 7, PyLong_FromUnsignedLong(r->rejected));
     PyStructSequence_SET_ITEM(o, 8, PyLong_FromUnsignedLong(r->refinements));
     PyStructSequence_SET_ITEM(o, 9, PyBool_FromLong(r->within_bound));
+    PyStructSequence_SET_ITEM(o, 10, PyLong_FromUnsignedLong(r->max_leverage_q15));
+    PyStructSequence_SET_ITEM(o, 11, PyBool_FromLong(r->weak));
     if (PyErr_Occurred()) {
         Py_DECREF(o);
         return NULL;
@@ -186,16 +190,6 @@ static PyObject *fit_object(PyObject *poly, PyObject *res, PyObject *used,
     return o;
 }
 
-static PyObject *typed_empty(int ndim, const Py_ssize_t *shape, const char *dtype)
-{
-    PyObject *dt = PyUnicode_FromString(dtype), *a;
-    if (dt == NULL) {
-        return NULL;
-    }
-    a = ssdapy_np_empty(ndim, shape, dt);
-    Py_DECREF(dt);
-    return a;
-}
 
 static PyObject *py_poly_fit(PyObject *self, PyObject *args, PyObject *kw)
 {
@@ -225,8 +219,8 @@ static PyObject *py_poly_fit(PyObject *self, PyObject *args, PyObject *kw)
     have = 1;
     {
         const Py_ssize_t shape[1] = {n};
-        if ((poly = poly_new(&p)) == NULL || (res = typed_empty(1, shape, "uint32")) == NULL ||
-            (used = typed_empty(1, shape, "uint8")) == NULL) {
+        if ((poly = poly_new(&p)) == NULL || (res = ssdapy_np_typed(1, shape, "uint32")) == NULL ||
+            (used = ssdapy_np_typed(1, shape, "uint8")) == NULL) {
             goto done;
         }
     }
@@ -313,7 +307,7 @@ static PyObject *shade_object(PyObject *corr, const ssda_shade_t *sh)
     if (o == NULL) {
         return NULL;
     }
-    k = typed_empty(2, s33, "int32");
+    k = ssdapy_np_typed(2, s33, "int32");
     if (k == NULL || (d = ssdapy_np_data(k)) == NULL) {
         Py_XDECREF(k);
         Py_DECREF(o);
@@ -430,7 +424,7 @@ static const ssdapy_field_t reg_cfg_fields[] = {
 
 static PyObject *py_register_points(PyObject *self, PyObject *args, PyObject *kw)
 {
-    PyObject *a[2], *kwc, *v, *pts = NULL, *out = NULL;
+    PyObject *a[2], *kwc, *pts = NULL, *out = NULL;
     ssdapy_src_arg_t r, m;
     ssda_register_config_t cfg;
     ssda_register_point_t *p;
@@ -445,13 +439,8 @@ static PyObject *py_register_points(PyObject *self, PyObject *args, PyObject *kw
     if (ssdapy_fields(kwc, &cfg, reg_cfg_fields) != 0) {
         goto done;
     }
-    if ((v = ssdapy_kw_take(kwc, "metric")) != NULL) {
-        int k, rc = ssdapy_enum(v, "metric", reg_metrics, &k);
-        Py_DECREF(v);
-        if (rc != 0) {
-            goto done;
-        }
-        cfg.metric = (uint8_t)k;
+    if (ssdapy_kw_enum(kwc, "metric", reg_metrics, &cfg.metric) != 0) {
+        goto done;
     }
     if (ssdapy_kw_done(kwc, "register_points") != 0 ||
         ssdapy_src_arg_get(a[0], "ref", &r, NULL) != 0) {
@@ -533,7 +522,7 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
         {"tile_w", offsetof(ssda_warp_config_t, tile_w), 2, 0, 65535},
         {"tile_h", offsetof(ssda_warp_config_t, tile_h), 2, 0, 65535},
         {NULL, 0, 0, 0, 0}};
-    PyObject *a[2], *kwc, *v, *img = NULL, *out = NULL;
+    PyObject *a[2], *kwc, *img = NULL, *out = NULL;
     ssdapy_src_arg_t s;
     ssda_warp_config_t wc;
     ssda_warp_stats_t st;
@@ -549,13 +538,8 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
     if (ssdapy_fields(kwc, &wc, f) != 0) {
         goto done;
     }
-    if ((v = ssdapy_kw_take(kwc, "resample")) != NULL) {
-        int k, rc = ssdapy_enum(v, "resample", resamples, &k);
-        Py_DECREF(v);
-        if (rc != 0) {
-            goto done;
-        }
-        wc.resample = (uint8_t)k;
+    if (ssdapy_kw_enum(kwc, "resample", resamples, &wc.resample) != 0) {
+        goto done;
     }
     if (ssdapy_kw_done(kwc, "warp") != 0 || poly_get(a[1], &map) != 0 ||
         ssdapy_src_arg_get(a[0], "source", &s, NULL) != 0) {
@@ -567,7 +551,7 @@ static PyObject *py_warp(PyObject *self, PyObject *args, PyObject *kw)
         const uint8_t fmt = s.format;
         wo.bpp = fmt == SSDA_PIX_U16 ? 2u : 1u;
         wo.stride = (size_t)map.ref_w * wo.bpp;
-        if ((img = typed_empty(2, shape, wo.bpp == 2u ? "uint16" : "uint8")) == NULL ||
+        if ((img = ssdapy_np_typed(2, shape, wo.bpp == 2u ? "uint16" : "uint8")) == NULL ||
             (wo.out = ssdapy_np_data(img)) == NULL) {
             goto done;
         }
@@ -632,7 +616,7 @@ static PyMethodDef methods[] = {
      "outlier rejection (seed 002; ssda_poly_fit): pairs an (n, 4) int32 array of\n"
      "ref_x, ref_y, mov_x, mov_y in Q8 px, size the reference grid (w, h). Returns a\n"
      "PolyFit (poly, residual_q8, used, rms_q8, max_q8, cond, n_used, rejected,\n"
-     "refinements, within_bound). The GIL is released."},
+     "refinements, within_bound, max_leverage_q15, weak). The GIL is released."},
     {"shade", (PyCFunction)(void (*)(void))py_shade, METH_VARARGS | METH_KEYWORDS,
      "shade(images, /, *, mode='max', centre=None)\n--\n\n"
      "The seed's shading function (DC and one cycle per direction) of the images\n"
@@ -677,7 +661,7 @@ int ssdapy_init_reg(PyObject *m)
         PyModule_AddIntConstant(m, "REGISTER_OUTSIDE", SSDA_REGISTER_OUTSIDE) != 0) {
         return -1;
     }
-    fit_type = ssdapy_struct_type(m, "ssda.PolyFit", "Result of poly_fit.", fit_fields, 10);
+    fit_type = ssdapy_struct_type(m, "ssda.PolyFit", "Result of poly_fit.", fit_fields, 12);
     shade_type = ssdapy_struct_type(m, "ssda.ShadeResult", "Result of shade.", shade_fields, 6);
     poly_dtype = ssdapy_np_struct_dtype(9, names, formats, offsets, sizeof(ssda_poly_t));
     if (fit_type == NULL || shade_type == NULL || poly_dtype == NULL) {

@@ -63,38 +63,13 @@ static const ssdapy_field_t mix_cfg_fields[] = {
     {"tol_q24", offsetof(ssda_mix_config_t, tol_q24), 4, 0, 0xFFFFFFFFll},
     {NULL, 0, 0, 0, 0}};
 
-/* A named option from a table into *out (a uint8_t field). */
-static int enum_opt(PyObject *kw, const char *name, const ssdapy_name_t *t, uint8_t *out)
-{
-    PyObject *v = ssdapy_kw_take(kw, name);
-    int e, rc;
-    if (v == NULL) {
-        return 0;
-    }
-    rc = ssdapy_enum(v, name, t, &e);
-    Py_DECREF(v);
-    if (rc == 0) {
-        *out = (uint8_t)e;
-    }
-    return rc;
-}
 
-static PyObject *typed_empty(int ndim, const Py_ssize_t *shape, const char *dtype)
-{
-    PyObject *dt = PyUnicode_FromString(dtype), *a;
-    if (dt == NULL) {
-        return NULL;
-    }
-    a = ssdapy_np_empty(ndim, shape, dt);
-    Py_DECREF(dt);
-    return a;
-}
 
 /* A numpy array of n values of dtype from C values. */
 static PyObject *array_of(const void *v, Py_ssize_t n, size_t item, const char *dtype,
                           int ndim, const Py_ssize_t *shape)
 {
-    PyObject *a = typed_empty(ndim, shape, dtype);
+    PyObject *a = ssdapy_np_typed(ndim, shape, dtype);
     void *d;
     if (a == NULL || (d = ssdapy_np_data(a)) == NULL) {
         Py_XDECREF(a);
@@ -228,8 +203,8 @@ static int kl_options(PyObject *kw, kl_job_t *j, int *features)
     memset(j, 0, sizeof *j);
     *features = 1;
     if (ssdapy_fields(kw, &j->kc, kl_cfg_fields) != 0 ||
-        enum_opt(kw, "matrix", kl_matrices, &j->kc.matrix) != 0 ||
-        enum_opt(kw, "range", kl_ranges, &j->kc.range) != 0) {
+        ssdapy_kw_enum(kw, "matrix", kl_matrices, &j->kc.matrix) != 0 ||
+        ssdapy_kw_enum(kw, "range", kl_ranges, &j->kc.range) != 0) {
         return -1;
     }
     if ((v = ssdapy_kw_take(kw, "nodata")) != NULL) {
@@ -296,7 +271,7 @@ static PyObject *py_kl(PyObject *self, PyObject *args, PyObject *kw)
     j.ac.format = s.format;
     if (features) {
         const Py_ssize_t shape[3] = {3, s.b.shape[0], s.b.shape[1]};
-        if ((feat = typed_empty(3, shape, "uint16")) == NULL ||
+        if ((feat = ssdapy_np_typed(3, shape, "uint16")) == NULL ||
             (j.feat = ssdapy_np_data(feat)) == NULL) {
             goto done;
         }
@@ -368,7 +343,7 @@ static PyObject *py_mix_hist(PyObject *self, PyObject *args, PyObject *kw)
     }
     {
         const Py_ssize_t shape[1] = {(Py_ssize_t)bins};
-        if ((hist = typed_empty(1, shape, "uint32")) == NULL || (h = ssdapy_np_data(hist)) == NULL) {
+        if ((hist = ssdapy_np_typed(1, shape, "uint32")) == NULL || (h = ssdapy_np_data(hist)) == NULL) {
             goto done;
         }
     }
@@ -466,8 +441,8 @@ static PyObject *py_mix_fit(PyObject *self, PyObject *args, PyObject *kw)
         return NULL;
     }
     if (ssdapy_fields(kwc, &cfg, mix_cfg_fields) != 0 ||
-        enum_opt(kwc, "fit", mix_fits, &cfg.fit) != 0 ||
-        enum_opt(kwc, "init", mix_inits, &cfg.init) != 0 ||
+        ssdapy_kw_enum(kwc, "fit", mix_fits, &cfg.fit) != 0 ||
+        ssdapy_kw_enum(kwc, "init", mix_inits, &cfg.init) != 0 ||
         ssdapy_flag(kwc, "seed_steps", &cfg.flags, SSDA_MIX_SEED_STEPS) != 0 ||
         ssdapy_kw_done(kwc, "mix_fit") != 0 || flat_get(a[0], "hist", 'I', 4, &b) != 0) {
         goto done;
@@ -495,7 +470,7 @@ static int band_opts(PyObject *kw, uint8_t *rule, unsigned long long *band)
 {
     PyObject *v;
     *band = 0;
-    if (rule != NULL && enum_opt(kw, "rule", mix_rules, rule) != 0) {
+    if (rule != NULL && ssdapy_kw_enum(kw, "rule", mix_rules, rule) != 0) {
         return -1;
     }
     if ((v = ssdapy_kw_take(kw, "band_q8")) != NULL) {
@@ -523,7 +498,7 @@ static PyObject *py_mix_lut(PyObject *self, PyObject *args, PyObject *kw)
     }
     {
         const Py_ssize_t shape[1] = {(Py_ssize_t)(m.bins > 0u ? m.bins : 1u)};
-        if ((lut = typed_empty(1, shape, "uint8")) == NULL || (l = ssdapy_np_data(lut)) == NULL) {
+        if ((lut = ssdapy_np_typed(1, shape, "uint8")) == NULL || (l = ssdapy_np_data(lut)) == NULL) {
             goto done;
         }
     }
@@ -611,7 +586,7 @@ static PyObject *py_mix_label(PyObject *self, PyObject *args, PyObject *kw)
         for (i = 0; i < nd && i < 8; i++) {
             shape[i] = bv.ndim > 0 ? bv.shape[i] : 1;
         }
-        if ((lab = typed_empty((int)(nd < 8 ? nd : 8), shape, "uint8")) == NULL ||
+        if ((lab = ssdapy_np_typed((int)(nd < 8 ? nd : 8), shape, "uint8")) == NULL ||
             (l = ssdapy_np_data(lab)) == NULL) {
             goto done;
         }
@@ -681,7 +656,7 @@ static PyObject *py_region(PyObject *self, PyObject *args, PyObject *kw)
     if (ssdapy_args(args, "region", 1, 1, a) != 0 || (kwc = ssdapy_kw_copy(kw)) == NULL) {
         return NULL;
     }
-    if (enum_opt(kwc, "op", region_ops, &r.op) != 0) {
+    if (ssdapy_kw_enum(kwc, "op", region_ops, &r.op) != 0) {
         goto done;
     }
     {
@@ -706,9 +681,9 @@ static PyObject *py_region(PyObject *self, PyObject *args, PyObject *kw)
     r.h = img.view.height;
     {
         const Py_ssize_t shape[2] = {r.h, r.w}, s256[1] = {256};
-        if ((res = typed_empty(2, shape, "uint8")) == NULL ||
+        if ((res = ssdapy_np_typed(2, shape, "uint8")) == NULL ||
             (r.out = ssdapy_np_data(res)) == NULL ||
-            (with_counts && ((cnt = typed_empty(1, s256, "uint32")) == NULL ||
+            (with_counts && ((cnt = ssdapy_np_typed(1, s256, "uint32")) == NULL ||
                              (r.counts = ssdapy_np_data(cnt)) == NULL))) {
             goto done;
         }

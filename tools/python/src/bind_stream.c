@@ -342,21 +342,10 @@ static void source_dealloc(PyObject *self_o)
 
 static PyObject *source_get_stats(PyObject *self_o, void *closure)
 {
-    SourceObject *s = (SourceObject *)self_o;
-    PyObject *o = PyStructSequence_New(source_stats_type);
+    const ssda_source_stats_t *st = &((SourceObject *)self_o)->src.stats;
+    const unsigned long long v[] = {st->bytes_read, st->reads, st->hits, st->misses};
     (void)closure;
-    if (o == NULL) {
-        return NULL;
-    }
-    PyStructSequence_SET_ITEM(o, 0, PyLong_FromUnsignedLongLong(s->src.stats.bytes_read));
-    PyStructSequence_SET_ITEM(o, 1, PyLong_FromUnsignedLongLong(s->src.stats.reads));
-    PyStructSequence_SET_ITEM(o, 2, PyLong_FromUnsignedLongLong(s->src.stats.hits));
-    PyStructSequence_SET_ITEM(o, 3, PyLong_FromUnsignedLongLong(s->src.stats.misses));
-    if (PyErr_Occurred()) {
-        Py_DECREF(o);
-        return NULL;
-    }
-    return o;
+    return ssdapy_struct_seq(source_stats_type, v, (Py_ssize_t)(sizeof v / sizeof v[0]));
 }
 
 static PyObject *source_get_memory(PyObject *self_o, void *closure)

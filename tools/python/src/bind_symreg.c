@@ -69,47 +69,21 @@ static const ssdapy_field_t symreg_cfg_fields[] = {
     U32F(scale_max_q16), U32F(area_ratio_q8), U32F(reach_q16), U32F(reach_min_q8),
     U32F(resid_max_q8), U32F(resid_mean_q8), U32F(shear_q16), {NULL, 0, 0, 0, 0}};
 
-static PyObject *seq_of_u32(PyTypeObject *t, const uint32_t *v, Py_ssize_t n)
-{
-    PyObject *o = PyStructSequence_New(t);
-    Py_ssize_t i;
-    if (o == NULL) {
-        return NULL;
-    }
-    for (i = 0; i < n; i++) {
-        PyStructSequence_SET_ITEM(o, i, PyLong_FromUnsignedLong(v[i]));
-    }
-    if (PyErr_Occurred()) {
-        Py_DECREF(o);
-        return NULL;
-    }
-    return o;
-}
 
 static PyObject *edge_stats_object(const ssda_edge_stats_t *s)
 {
-    const uint32_t v[] = {s->thinned, s->ends, s->ends_dropped, s->extended, s->extend_joined,
+    const unsigned long long v[] = {s->thinned, s->ends, s->ends_dropped, s->extended, s->extend_joined,
                           s->closed_t, s->closed_i, s->closed_v, s->branch, s->conn, s->end};
-    return seq_of_u32(edge_stats_type, v, 11);
+    return ssdapy_struct_seq(edge_stats_type, v, (Py_ssize_t)(sizeof v / sizeof v[0]));
 }
 
 static PyObject *loop_stats_object(const ssda_loops_stats_t *s)
 {
-    const uint32_t v[] = {s->pruned, s->regions, s->border, s->too_small, s->too_large,
+    const unsigned long long v[] = {s->pruned, s->regions, s->border, s->too_small, s->too_large,
                           s->too_dark, s->too_long, s->loops, s->dropped};
-    return seq_of_u32(loop_stats_type, v, 9);
+    return ssdapy_struct_seq(loop_stats_type, v, (Py_ssize_t)(sizeof v / sizeof v[0]));
 }
 
-static PyObject *typed_empty(int ndim, const Py_ssize_t *shape, const char *dtype)
-{
-    PyObject *dt = PyUnicode_FromString(dtype), *a;
-    if (dt == NULL) {
-        return NULL;
-    }
-    a = ssdapy_np_empty(ndim, shape, dt);
-    Py_DECREF(dt);
-    return a;
-}
 
 static PyObject *head(PyObject *array, Py_ssize_t n)
 {
@@ -196,7 +170,7 @@ static PyObject *py_edges(PyObject *self, PyObject *args, PyObject *kw)
     ew = SSDA_EDGE_WORK_SIZE(ends_for(img.view.width, img.view.height));
     {
         const Py_ssize_t shape[2] = {img.view.height, img.view.width};
-        map = typed_empty(2, shape, "uint16");
+        map = ssdapy_np_typed(2, shape, "uint16");
     }
     ring = PyMem_Malloc(SSDA_EDGE_RING_SIZE(img.view.width));
     work = PyMem_Malloc(ew);
@@ -330,9 +304,9 @@ static PyObject *py_loops(PyObject *self, PyObject *args, PyObject *kw)
         const Py_ssize_t mshape[2] = {img.view.height, img.view.width};
         const Py_ssize_t lshape[1] = {c.max_loops};
         const Py_ssize_t pshape[3] = {c.max_loops, c.samples, 2};
-        map = typed_empty(2, mshape, "uint16");
+        map = ssdapy_np_typed(2, mshape, "uint16");
         lo = map != NULL ? ssdapy_np_empty(1, lshape, loop_dtype) : NULL;
-        pts = lo != NULL ? typed_empty(3, pshape, "int32") : NULL;
+        pts = lo != NULL ? ssdapy_np_typed(3, pshape, "int32") : NULL;
         fds = pts != NULL ? ssdapy_np_empty(1, lshape, ssdapy_fd_dtype) : NULL;
     }
     if (fds == NULL || (c.map = ssdapy_np_data(map)) == NULL ||
@@ -434,7 +408,7 @@ static PyObject *symreg_object(const ssda_symreg_result_t *r, PyObject *pairs)
     double *A;
     Py_ssize_t i;
     const uint32_t tail[] = {r->candidates, r->nuclei, r->best_nucleus, r->matches, r->skipped};
-    aff = typed_empty(2, shape, "float64");
+    aff = ssdapy_np_typed(2, shape, "float64");
     if (aff == NULL || (A = ssdapy_np_data(aff)) == NULL) {
         Py_XDECREF(aff);
         return NULL;

@@ -29,22 +29,10 @@ static PyStructSequence_Field result_fields[] = {
 
 static PyObject *grid_object(const ssda_track_grid_t *g)
 {
-    const unsigned long v[] = {g->count, g->cols, g->rows, g->win_w, g->win_h,
-                               g->search_w, g->search_h, g->step_x, g->step_y,
-                               g->roi_x, g->roi_y, g->roi_w, g->roi_h};
-    PyObject *o = PyStructSequence_New(grid_type);
-    Py_ssize_t i;
-    if (o == NULL) {
-        return NULL;
-    }
-    for (i = 0; i < (Py_ssize_t)(sizeof v / sizeof v[0]); i++) {
-        PyStructSequence_SET_ITEM(o, i, PyLong_FromUnsignedLong(v[i]));
-    }
-    if (PyErr_Occurred()) {
-        Py_DECREF(o);
-        return NULL;
-    }
-    return o;
+    const unsigned long long v[] = {g->count, g->cols, g->rows, g->win_w, g->win_h,
+                                    g->search_w, g->search_h, g->step_x, g->step_y,
+                                    g->roi_x, g->roi_y, g->roi_w, g->roi_h};
+    return ssdapy_struct_seq(grid_type, v, (Py_ssize_t)(sizeof v / sizeof v[0]));
 }
 
 static PyObject *stats_object(const ssda_track_stats_t *s)
@@ -52,19 +40,7 @@ static PyObject *stats_object(const ssda_track_stats_t *s)
     const unsigned long long v[] = {s->pixel_ops, s->positions, s->completed,
                                     s->check_pixels, s->windows, s->ok, s->excluded,
                                     s->masked, s->edge, s->flat, s->ambiguous, s->at_limit};
-    PyObject *o = PyStructSequence_New(stats_type);
-    Py_ssize_t i;
-    if (o == NULL) {
-        return NULL;
-    }
-    for (i = 0; i < (Py_ssize_t)(sizeof v / sizeof v[0]); i++) {
-        PyStructSequence_SET_ITEM(o, i, PyLong_FromUnsignedLongLong(v[i]));
-    }
-    if (PyErr_Occurred()) {
-        Py_DECREF(o);
-        return NULL;
-    }
-    return o;
+    return ssdapy_struct_seq(stats_type, v, (Py_ssize_t)(sizeof v / sizeof v[0]));
 }
 
 PyObject *ssdapy_track_vectors(const ssda_track_grid_t *g, ssda_track_vector_t **data)

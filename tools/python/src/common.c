@@ -2,6 +2,7 @@
    samples through the buffer protocol, argument parsing, numpy results. */
 #include "ssdapy.h"
 
+#include <stdio.h>
 #include <string.h>
 
 ssdapy_state_t ssdapy;
@@ -484,6 +485,49 @@ int ssdapy_flag(PyObject *kw, const char *name, uint8_t *flags, uint8_t bit)
     return 0;
 }
 
+int ssdapy_kw_xy(PyObject *kw, const char *name, int32_t *x, int32_t *y)
+{
+    PyObject *v = ssdapy_kw_take(kw, name), *seq;
+    char msg[64];
+    long long xy[2];
+    int rc = -1;
+    if (v == NULL) {
+        return 0;
+    }
+    (void)snprintf(msg, sizeof msg, "%.40s must be (x, y)", name);
+    seq = PySequence_Fast(v, msg);
+    Py_DECREF(v);
+    if (seq == NULL) {
+        return -1;
+    }
+    if (PySequence_Fast_GET_SIZE(seq) != 2) {
+        PyErr_SetString(PyExc_ValueError, msg);
+    } else if (ssdapy_int(PySequence_Fast_GET_ITEM(seq, 0), name, INT32_MIN, INT32_MAX,
+                          &xy[0]) == 0 &&
+               ssdapy_int(PySequence_Fast_GET_ITEM(seq, 1), name, INT32_MIN, INT32_MAX,
+                          &xy[1]) == 0) {
+        *x = (int32_t)xy[0];
+        *y = (int32_t)xy[1];
+        rc = 1;
+    }
+    Py_DECREF(seq);
+    return rc;
+}
+
+int ssdapy_kw_enum(PyObject *kw, const char *name, const ssdapy_name_t *table, uint8_t *dst)
+{
+    PyObject *v = ssdapy_kw_take(kw, name);
+    int e, rc = 0;
+    if (v != NULL) {
+        rc = ssdapy_enum(v, name, table, &e);
+        if (rc == 0) {
+            *dst = (uint8_t)e;
+        }
+        Py_DECREF(v);
+    }
+    return rc;
+}
+
 PyObject *ssdapy_kw_copy(PyObject *kw)
 {
     return kw != NULL ? PyDict_Copy(kw) : PyDict_New();
@@ -535,6 +579,34 @@ int ssdapy_args(PyObject *args, const char *func, Py_ssize_t n, Py_ssize_t max,
 }
 
 /* ---- results ---- */
+
+PyObject *ssdapy_struct_seq(PyTypeObject *type, const unsigned long long *v, Py_ssize_t n)
+{
+    PyObject *o = PyStructSequence_New(type);
+    Py_ssize_t i;
+    if (o == NULL) {
+        return NULL;
+    }
+    for (i = 0; i < n; i++) {
+        PyStructSequence_SET_ITEM(o, i, PyLong_FromUnsignedLongLong(v[i]));
+    }
+    if (PyErr_Occurred()) {
+        Py_DECREF(o);
+        return NULL;
+    }
+    return o;
+}
+
+PyObject *ssdapy_np_typed(int ndim, const Py_ssize_t *shape, const char *dtype)
+{
+    PyObject *dt = PyUnicode_FromString(dtype), *a;
+    if (dt == NULL) {
+        return NULL;
+    }
+    a = ssdapy_np_empty(ndim, shape, dt);
+    Py_DECREF(dt);
+    return a;
+}
 
 PyObject *ssdapy_np_empty(int ndim, const Py_ssize_t *shape, PyObject *dtype)
 {

@@ -108,6 +108,12 @@ typedef struct {
     int value;
 } ssdapy_name_t;
 int ssdapy_enum(PyObject *o, const char *what, const ssdapy_name_t *table, int *out);
+/* The keyword `name` as a name of table into *dst (absent or None: *dst
+   kept). Returns 0 or -1 with an exception. */
+/* The keyword `name` as a pair (x, y) of int32 into *x, *y: 1 when given,
+   0 when absent or None (unchanged), -1 with an exception. */
+int ssdapy_kw_xy(PyObject *kw, const char *name, int32_t *x, int32_t *y);
+int ssdapy_kw_enum(PyObject *kw, const char *name, const ssdapy_name_t *table, uint8_t *dst);
 
 /* Integer fields of a C config struct taken from keyword arguments by
    name: each in lo..hi, stored in `bytes` bytes (1, 2 or 4; signed when
@@ -137,6 +143,10 @@ int ssdapy_args(PyObject *args, const char *func, Py_ssize_t n, Py_ssize_t max,
 
 /* numpy.empty(shape, dtype) as a new reference; ndim 0 or more. */
 PyObject *ssdapy_np_empty(int ndim, const Py_ssize_t *shape, PyObject *dtype);
+/* A struct sequence of `type` whose n fields are the integers v[0..n). */
+PyObject *ssdapy_struct_seq(PyTypeObject *type, const unsigned long long *v, Py_ssize_t n);
+/* numpy.empty with the dtype named by a string ("uint8", "int32", ...). */
+PyObject *ssdapy_np_typed(int ndim, const Py_ssize_t *shape, const char *dtype);
 /* A structured numpy dtype from names, formats and offsets (n fields) and
    the C struct's size, so that the library writes straight into it. */
 PyObject *ssdapy_np_struct_dtype(Py_ssize_t n, const char *const *names,

@@ -26,7 +26,7 @@
    cref relax  DX DY ST COLS ROWS FRAC [opts] (ST "-": all valid) one line per node:
                                              dx_q8 dy_q8 p_q15 cls flags
    cref median DX DY ST COLS ROWS FRAC [opts] the same for ssda_relax_median
-   cref polyfit PAIRS N W H ORDER MAXRES     line: rms max cond used rejected refinements within;
+   cref polyfit PAIRS N W H ORDER MAXRES     line: rms max cond used rejected refinements within leverage weak;
                                              line: u_q24 (10) v_q24 (10) cx cy kx ky order;
                                              then per pair: residual used; then u v at (W/3, H/4)
    cref shade  IMGS N W H BPP MODE [CX CY]   line: k_q8 (9) centre_x centre_y centre_q8 images;
@@ -628,8 +628,8 @@ static int run_polyfit(char **argv)
     if ((e = ssda_poly_fit(pairs, n, w, h, &cfg, &p, res, used, &r, work, n)) != SSDA_OK) {
         return fail(e);
     }
-    printf("%u %u %u %u %u %u %d\n", r.rms_q8, r.max_q8, r.cond, r.used, r.rejected,
-           r.refinements, r.within_bound ? 1 : 0);
+    printf("%u %u %u %u %u %u %d %u %d\n", r.rms_q8, r.max_q8, r.cond, r.used, r.rejected,
+           r.refinements, r.within_bound ? 1 : 0, r.max_leverage_q15, r.weak ? 1 : 0);
     for (k = 0; k < 10; k++) {
         printf("%lld ", (long long)p.u_q24[k]);
     }

@@ -30,7 +30,7 @@ def test_poly_fit_equals_the_c_library(cref, order, maxres):
         opts["max_residual_q8"] = maxres
     f = ssda.poly_fit(pairs, (300, 200), **opts)
     assert lines[0] == [f.rms_q8, f.max_q8, f.cond, f.n_used, f.rejected, f.refinements,
-                        int(f.within_bound)]
+                        int(f.within_bound), f.max_leverage_q15, int(f.weak)]
     p = f.poly[0]
     assert lines[1] == (p["u_q24"].tolist() + p["v_q24"].tolist() +
                         [p["cx"], p["cy"], p["kx"], p["ky"], p["order"]])
@@ -42,6 +42,7 @@ def test_poly_fit_known_map_and_outlier():
     pairs = pairs_of(60, 400, 300, seed=9)
     f = ssda.poly_fit(pairs, (400, 300))  # order 2, 2 px bound
     assert not f.used[5] and f.rejected == 1 and f.within_bound
+    assert not f.weak and 0 < f.max_leverage_q15 < 26214  # 59 pairs for 6 terms
     for x, y in [(0, 0), (200, 150), (399, 299)]:
         u, v = ssda.poly_eval(f.poly, x, y)
         tx = 3 + 1.01 * x - 0.02 * y + 2e-5 * x * x
