@@ -7,6 +7,7 @@
  */
 #include "cli.h"
 #include "img_out.h"
+#include "img_source.h"
 #include "poly_float.h"
 #include "ssda/register.h"
 #include "ssda/shade.h"
@@ -255,49 +256,6 @@ static int parse_opts(cli_args_t *a, reg_opts_t *o)
     return a->bad ? CLI_USAGE : 0;
 }
 
-/* ---- images as sources: in RAM, or streamed through a read callback ---- */
-
-typedef struct {
-    const gray_image_t *img;
-} mem_dev_t;
-
-static int mem_read(void *ctx, uint32_t off, void *buf, uint32_t size)
-{
-    const mem_dev_t *d = (const mem_dev_t *)ctx;
-    const size_t total = (size_t)d->img->stride * d->img->height;
-    if ((size_t)off + size > total) {
-        return SSDA_ERR_IO;
-    }
-    memcpy(buf, (const uint8_t *)d->img->pixels + off, size);
-    return 0;
-}
-
-/* A source over img: in RAM (arena NULL) or streamed within arena. */
-static int make_source(ssda_source_t *s, const gray_image_t *img, mem_dev_t *dev, void *arena,
-                       size_t arena_size)
-{
-    ssda_view_t v;
-    int err = gray_image_view(img, &v);
-    if (err != SSDA_OK) {
-        return err;
-    }
-    if (arena == NULL) {
-        return ssda_source_init_view(s, &v);
-    } else {
-        ssda_source_config_t c;
-        memset(&c, 0, sizeof c);
-        dev->img = img;
-        c.read = mem_read;
-        c.context = dev;
-        c.width = (uint16_t)img->width;
-        c.height = (uint16_t)img->height;
-        c.format = img->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
-        c.arena = arena;
-        c.arena_size = arena_size;
-        return ssda_source_init(s, &c);
-    }
-}
-
 /* Every cell must hold a window (the library's SSDA_ERR_SIZE, which alone
    would read "bad dimensions"): say which grid or window fits REF. Returns
    CLI_OK, CLI_INPUT (REF smaller than a window) or CLI_USAGE (printed). */
@@ -509,7 +467,7 @@ static int find_points(const char *cmd, const gray_image_t *ref, reg_one_t *r,
                        const reg_opts_t *o)
 {
     ssda_source_t sr, sm;
-    mem_dev_t dr, dm;
+    img_device_t dr, dm;
     void *ar = NULL, *am = NULL, *work = NULL;
     size_t size_r = 0, size_m = 0, ws;
     const uint8_t fmt = ref->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
@@ -551,9 +509,9 @@ static int find_points(const char *cmd, const gray_image_t *ref, reg_one_t *r,
         err = SSDA_ERR_BUFFER;
         goto done;
     }
-    err = make_source(&sr, ref, &dr, ar, size_r);
+    err = img_source_init(&sr, ref, &dr, ar, size_r);
     if (err == SSDA_OK) {
-        err = make_source(&sm, &r->img, &dm, am, size_m);
+        err = img_source_init(&sm, &r->img, &dm, am, size_m);
     }
     if (err == SSDA_OK) {
         err = ssda_register_points(&sr, &sm, &c, r->pts, r->ncells, &r->accepted, work, ws);
@@ -637,7 +595,7 @@ done:
 static int warp_image(const char *cmd, reg_one_t *r, const reg_opts_t *o)
 {
     ssda_source_t src;
-    mem_dev_t dev;
+    img_device_t dev;
     ssda_warp_config_t wc;
     ssda_warp_t job;
     ssda_warp_plan_t plan;
@@ -685,7 +643,7 @@ static int warp_image(const char *cmd, reg_one_t *r, const reg_opts_t *o)
     if (row == NULL || (o->have_mem && arena == NULL)) {
         err = SSDA_ERR_BUFFER;
     } else {
-        err = make_source(&src, &r->img, &dev, arena, arena_size);
+        err = img_source_init(&src, &r->img, &dev, arena, arena_size);
     }
     if (err == SSDA_OK) {
         err = ssda_warp_init(&job, &wc, &src);

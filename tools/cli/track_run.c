@@ -2,6 +2,7 @@
 #include "track_run.h"
 #include "track_metric.h"
 #include "track_wave.h"
+#include "img_source.h"
 #include "json_out.h"
 #include "progress.h"
 #include "ssda/grad.h"
@@ -508,22 +509,6 @@ static uint32_t image_mean(const gray_image_t *img, int masked, uint32_t mask)
 
 /* ---- block-streamed tracking (--mem) ---- */
 
-/* The decoded image stands in for external memory: read() copies from it. */
-typedef struct {
-    const uint8_t *base;
-    size_t size;
-} mem_device_t;
-
-static int device_read(void *context, uint32_t offset, void *buffer, uint32_t size)
-{
-    const mem_device_t *d = context;
-    if ((size_t)offset + size > d->size) {
-        return SSDA_ERR_IO; /* never asked for with read_size 1 */
-    }
-    memcpy(buffer, d->base + offset, size);
-    return 0;
-}
-
 /* Plate bytes of FIRST (fs) or SECOND for a strip of n grid columns: a
    band of its search areas (windows) as wide as the strip, at most the
    image wide. */
@@ -564,31 +549,11 @@ static int split_arena(const ssda_track_grid_t *g, uint8_t format, uint64_t mem,
     return 0;
 }
 
-static int init_source(ssda_source_t *src, mem_device_t *dev, const gray_image_t *img,
-                       void *arena, size_t arena_size)
-{
-    ssda_source_config_t sc;
-    memset(&sc, 0, sizeof sc);
-    dev->base = img->pixels;
-    dev->size = (size_t)img->stride * img->height;
-    sc.read = device_read;
-    sc.context = dev;
-    sc.stride = img->stride;
-    sc.read_size = 1;
-    sc.arena = arena;
-    sc.arena_size = arena_size;
-    sc.width = (uint16_t)img->width;
-    sc.height = (uint16_t)img->height;
-    sc.format = img->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
-    sc.layout = SSDA_LAYOUT_RASTER;
-    return ssda_source_init(src, &sc);
-}
-
 /* Track through two block-streamed sources inside o->mem bytes of plates. */
 static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t *r)
 {
     ssda_source_t sf, ss;
-    mem_device_t df, ds;
+    img_device_t df, ds;
     size_t af, as, need, whole;
     void *arena_f = NULL, *arena_s = NULL;
     uint8_t format = r->first.bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
@@ -617,9 +582,9 @@ static int track_streamed(const char *cmd, const track_opts_t *o, track_result_t
         free(arena_s);
         return cli_input_error(cmd, "out of memory for --mem %llu", (unsigned long long)o->mem);
     }
-    e = init_source(&sf, &df, &r->first, arena_f, af);
+    e = img_source_init(&sf, &r->first, &df, arena_f, af);
     if (e == SSDA_OK) {
-        e = init_source(&ss, &ds, &r->second, arena_s, as);
+        e = img_source_init(&ss, &r->second, &ds, arena_s, as);
     }
     if (e == SSDA_OK) {
         e = ssda_stream_track(&sf, &ss, &r->cfg, r->vec, r->grid.count, &r->stats);

@@ -14,45 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "img_source.h"
 #include "png_io.h"
 #include "ssda/register.h"
-
-typedef struct {
-    const gray_image_t *img;
-} mem_dev_t;
-
-static int mem_read(void *ctx, uint32_t off, void *buf, uint32_t size)
-{
-    const mem_dev_t *d = (const mem_dev_t *)ctx;
-    if ((size_t)off + size > (size_t)d->img->stride * d->img->height) {
-        return SSDA_ERR_IO;
-    }
-    memcpy(buf, (const uint8_t *)d->img->pixels + off, size);
-    return 0;
-}
-
-static int make_source(ssda_source_t *s, const gray_image_t *img, mem_dev_t *dev, void *arena,
-                       size_t arena_size)
-{
-    ssda_source_config_t c;
-    dev->img = img;
-    if (arena == NULL) {
-        ssda_view_t v;
-        if (gray_image_view(img, &v) != 0) {
-            return SSDA_ERR_ARG;
-        }
-        return ssda_source_init_view(s, &v);
-    }
-    memset(&c, 0, sizeof c);
-    c.read = mem_read;
-    c.context = dev;
-    c.width = (uint16_t)img->width;
-    c.height = (uint16_t)img->height;
-    c.format = img->bits == 16 ? SSDA_PIX_U16 : SSDA_PIX_U8;
-    c.arena = arena;
-    c.arena_size = arena_size;
-    return ssda_source_init(s, &c);
-}
 
 static size_t parse_bytes(const char *s, const char **end)
 {
@@ -141,10 +105,10 @@ int main(int argc, char **argv)
     }
     {
         ssda_source_t sr, sm;
-        mem_dev_t dr, dm;
-        int e = make_source(&sr, &ref, &dr, NULL, 0);
+        img_device_t dr, dm;
+        int e = img_source_init(&sr, &ref, &dr, NULL, 0);
         if (e == SSDA_OK) {
-            e = make_source(&sm, &mov, &dm, NULL, 0);
+            e = img_source_init(&sm, &mov, &dm, NULL, 0);
         }
         if (e == SSDA_OK) {
             e = ssda_register_points(&sr, &sm, &cfg, want, ncell, NULL, work, ws);
@@ -173,15 +137,15 @@ int main(int argc, char **argv)
         const size_t half = (budget / 2u) & ~(size_t)3u;
         void *ar = malloc(half > 0 ? half : 4), *am = malloc(half > 0 ? half : 4);
         ssda_source_t sr, sm;
-        mem_dev_t dr, dm;
+        img_device_t dr, dm;
         int e;
         if (ar == NULL || am == NULL) {
             fprintf(stderr, "out of memory\n");
             return 1;
         }
-        e = make_source(&sr, &ref, &dr, ar, half);
+        e = img_source_init(&sr, &ref, &dr, ar, half);
         if (e == SSDA_OK) {
-            e = make_source(&sm, &mov, &dm, am, half);
+            e = img_source_init(&sm, &mov, &dm, am, half);
         }
         if (e == SSDA_OK) {
             e = ssda_register_points(&sr, &sm, &cfg, got, ncell, NULL, work, ws);
