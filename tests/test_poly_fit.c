@@ -303,24 +303,19 @@ static void test_rejection_tie_lowest_index(void)
     }
 }
 
-/* The largest accepted job: 16384 pairs at the corners of a 65535 x 65535
-   grid, displacements at the int32 Q8 extremes. The exact sums hold; the
-   fit of alternating +-2^22 px displacements is their mean shift 0 with
-   the right residuals. */
-static void test_worst_case_sums(void)
-{
+/* The worst-case jobs' pairs (16384, 2048 on the boards), shared by the
+   two tests that need them: at the four corners of a 65535 x 65535 grid,
+   displacements alternating +-2^22 px (the int32 Q8 extremes +-2^30). */
 #ifndef SSDA_TEST_SMALL
-    static ssda_poly_pair_t big[16384];
-    static uint8_t work[16384];
-    const size_t n = 16384;
+#define WORST_N 16384u
 #else
-    static ssda_poly_pair_t big[2048];
-    static uint8_t work[2048];
-    const size_t n = 2048;
+#define WORST_N 2048u
 #endif
-    ssda_poly_fit_config_t cfg = {3, UINT32_MAX};
-    ssda_poly_fit_result_t res;
-    ssda_poly_t p;
+static ssda_poly_pair_t g_worst[WORST_N];
+static uint8_t g_worst_work[WORST_N];
+
+static void worst_corners(ssda_poly_pair_t *big, size_t n)
+{
     size_t k;
     for (k = 0; k < n; k++) {
         const int corner = (int)(k % 4);
@@ -331,6 +326,21 @@ static void test_worst_case_sums(void)
         big[k].mov_x_q8 = X * 256 + off;
         big[k].mov_y_q8 = Y * 256 - off;
     }
+}
+
+/* The largest accepted job: 16384 pairs at the corners of a 65535 x 65535
+   grid, displacements at the int32 Q8 extremes. The exact sums hold; the
+   fit of alternating +-2^22 px displacements is their mean shift 0 with
+   the right residuals. */
+static void test_worst_case_sums(void)
+{
+    ssda_poly_pair_t *const big = g_worst;
+    uint8_t *const work = g_worst_work;
+    const size_t n = WORST_N;
+    ssda_poly_fit_config_t cfg = {3, UINT32_MAX};
+    ssda_poly_fit_result_t res;
+    ssda_poly_t p;
+    worst_corners(big, n);
     /* four distinct positions cannot determine 10 terms */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_poly_fit(big, n, 65535, 65535, &cfg, &p, NULL, NULL,
                                                        &res, work, n));
@@ -794,28 +804,13 @@ static void test_loo_unjudgeable_pair(void)
    leverage is 3/n (each corner holds n/4 pairs; order 1). */
 static void test_loo_worst_case(void)
 {
-#ifndef SSDA_TEST_SMALL
-    static ssda_poly_pair_t big[16384];
-    static uint8_t work[16384];
-    const size_t n = 16384;
-#else
-    static ssda_poly_pair_t big[2048];
-    static uint8_t work[2048];
-    const size_t n = 2048;
-#endif
+    ssda_poly_pair_t *const big = g_worst;
+    uint8_t *const work = g_worst_work;
+    const size_t n = WORST_N;
     ssda_poly_fit_config_t cfg = {1, UINT32_MAX - 1u};
     ssda_poly_fit_result_t res;
     ssda_poly_t p;
-    size_t k;
-    for (k = 0; k < n; k++) {
-        const int corner = (int)(k % 4);
-        const int32_t X = (corner & 1) ? 65534 : 0, Y = (corner & 2) ? 65534 : 0;
-        const int32_t off = (k / 4) % 2 ? (1 << 30) : -(1 << 30);
-        big[k].ref_x_q8 = X * 256;
-        big[k].ref_y_q8 = Y * 256;
-        big[k].mov_x_q8 = X * 256 + off;
-        big[k].mov_y_q8 = Y * 256 - off;
-    }
+    worst_corners(big, n);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_fit(big, n, 65535, 65535, &cfg, &p, NULL, NULL, &res,
                                                  work, n));
     TEST_ASSERT_EQUAL_UINT16(n, res.used);
