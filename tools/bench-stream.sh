@@ -16,7 +16,7 @@ dir=${SSDA_BENCH_DIR:-build/bench}
 bash tools/setup-deps.sh >&2
 bench_build "$dir" OFF ssda-bench-stream
 
-bench_pair_args bench-stream "$@"
+bench_pair_args "$@"
 shift "$pair_shift"
 if [ ${#pair_args[@]} -eq 0 ]; then
   echo "bench-stream: give FIRST.png SECOND.png (no GOES-16 pair in $root/../shared/data/goes16)" >&2

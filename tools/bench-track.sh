@@ -13,7 +13,7 @@ dir=${SSDA_BENCH_DIR:-build/bench}
 bash tools/setup-deps.sh >&2
 bench_build "$dir" OFF ssda-bench-track
 
-bench_pair_args bench-track "$@"
+bench_pair_args "$@"
 shift "$pair_shift"
 [ "${1:-}" = "--" ] && shift
 exec "$dir/tools/bench/ssda-bench-track" "${pair_args[@]}" "$@"

@@ -18,7 +18,7 @@ bench_build() {
   cmake --build "$dir" --target "$@" -j "$(nproc 2>/dev/null || echo 2)" >&2
 }
 
-# bench_pair_args NAME "$@": sets pair_args to --mask 4095 FIRST SECOND
+# bench_pair_args "$@": sets pair_args to --mask 4095 FIRST SECOND
 # (FIRST and SECOND from the command line when given, made absolute; else
 # the GOES-16 pair of ../shared/data/goes16 when it is there, else empty)
 # and pair_shift to how many arguments were taken.
@@ -26,8 +26,8 @@ bench_pair_args() {
   local goes=$root/../shared/data/goes16
   pair_args=()
   pair_shift=0
-  if [ $# -ge 3 ] && [ "$2" != "--" ]; then
-    pair_args=(--mask 4095 "$(from_caller "$2")" "$(from_caller "$3")")
+  if [ $# -ge 2 ] && [ "$1" != "--" ]; then
+    pair_args=(--mask 4095 "$(from_caller "$1")" "$(from_caller "$2")")
     pair_shift=2
   elif [ -f "$goes/goes16_c10_20221002_110117.png" ] &&
        [ -f "$goes/goes16_c10_20221002_110617.png" ]; then
