@@ -297,13 +297,13 @@ static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
     return SSDA_OK;
 }
 
-int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
-               const ssda_match_config_t *cfg, ssda_match_result_t *result)
+int ssda_match_search(ssda_match_state_t *state, const ssda_view_t *area,
+                      const ssda_view_t *window, const ssda_match_config_t *cfg,
+                      ssda_match_result_t *result)
 {
-    ssda_match_plan_t plan;
-    ssda__rows_t a, w;
+    ssda__match_head_t *head;
     int err;
-    if (area == NULL || window == NULL || result == NULL) {
+    if (state == NULL || area == NULL || window == NULL || result == NULL) {
         return SSDA_ERR_NULL;
     }
     err = check_pair(area, window);
@@ -313,14 +313,25 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
     if (cfg == NULL) {
         cfg = &ssda__match_defaults;
     }
+    /* the plan is written only once the options pass: on error the state
+       is untouched */
+    head = ssda__match_head(state);
     err = ssda__match_plan(cfg, area->width, area->height, window->width, window->height,
-                           &plan);
+                           &head->plan);
     if (err != SSDA_OK) {
         return err;
     }
-    ssda__rows_view(&a, area);
-    ssda__rows_view(&w, window);
-    return ssda__match_rows(&a, &w, &plan, cfg->predict_x, cfg->predict_y, result);
+    ssda__rows_view(&head->area, area);
+    ssda__rows_view(&head->win, window);
+    /* a tail call: this frame is gone while the search runs */
+    return ssda__match_state(state, cfg->predict_x, cfg->predict_y, result);
+}
+
+int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
+               const ssda_match_config_t *cfg, ssda_match_result_t *result)
+{
+    ssda_match_state_t state; /* the search's state on this frame */
+    return ssda_match_search(&state, area, window, cfg, result);
 }
 
 int ssda_sad_at(const ssda_view_t *area, const ssda_view_t *window,

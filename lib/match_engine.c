@@ -13,6 +13,7 @@
 #include "kernel/kernels.h"
 #include "fixmath.h"
 #include "compiler.h"
+#include <string.h>
 
 /* A candidate ordered by the tie rule: (sad, y, x) lexicographically, or
    (sad, distance to the prediction, y, x) with SSDA_MATCH_TIE_NEAREST. */
@@ -1417,66 +1418,67 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     return SSDA_OK;
 }
 
-int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
-                     const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
-                     ssda_match_result_t *result)
+/*
+ * The engine, zero-filled but for area, win and plan, set up from the plan:
+ * geometry, the mode's flags, the bound tables. SSDA_OK or a fetch error.
+ * Out of line: its locals stay off the frame under the scan.
+ */
+static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t predict_y)
 {
-    engine_t e = {0};
+    const ssda__rows_t *area = e->area;
+    const ssda__rows_t *window = e->win;
+    const ssda_match_plan_t *plan = e->plan;
     const uint8_t mode = plan->threshold;
-    int err;
 #ifdef SSDA_CFG_NO_U16
     if (area->format != (uint8_t)SSDA_PIX_U8) {
         return SSDA_ERR_UNSUPPORTED;
     }
 #endif
 
-    e.area = area;
-    e.win = window;
-    e.plan = plan;
-    e.L = window->width;
-    e.M = window->height;
-    e.nx = (uint16_t)(area->width - e.L + 1u); /* 1 .. 65535 */
-    e.ny = (uint16_t)(area->height - e.M + 1u);
-    e.tx = (uint16_t)clamp_pos(predict_x, e.nx);
-    e.ty = (uint16_t)clamp_pos(predict_y, e.ny);
+    e->L = window->width;
+    e->M = window->height;
+    e->nx = (uint16_t)(area->width - e->L + 1u); /* 1 .. 65535 */
+    e->ny = (uint16_t)(area->height - e->M + 1u);
+    e->tx = (uint16_t)clamp_pos(predict_x, e->nx);
+    e->ty = (uint16_t)clamp_pos(predict_y, e->ny);
 
-    e.u8 = area->format == (uint8_t)SSDA_PIX_U8;
+    e->u8 = area->format == (uint8_t)SSDA_PIX_U8;
 #ifndef SSDA_CFG_NO_UNIQUE
     if (plan->unique_radius != 0u) {
         const uint32_t side = 2u * plan->unique_radius + 1u; /* 3 or 5 */
-        e.list = (cand_t *)plan->list;
-        e.cap = (uint8_t)(side * side + 1u);
-        e.loose = UINT64_MAX;
+        e->list = (cand_t *)plan->list;
+        e->cap = (uint8_t)(side * side + 1u);
+        e->loose = UINT64_MAX;
     }
 #endif
-    e.row_step = (uint16_t)plan->row_step; /* < M */
+    e->row_step = (uint16_t)plan->row_step; /* < M */
     /* the mode's flags, derived from the plan */
-    e.bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
-    e.ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
-    e.tie_near = (plan->flags & SSDA_MATCH_TIE_NEAREST) != 0u;
+    e->bounds = (plan->flags & SSDA_MATCH_BOUNDS) != 0u && mode != (uint8_t)SSDA_THRESHOLD_NONE;
+    e->ramp_mode = mode == (uint8_t)SSDA_THRESHOLD_RAMP || mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP;
+    e->tie_near = (plan->flags & SSDA_MATCH_TIE_NEAREST) != 0u;
 #ifdef ENGINE_FALLBACK
-    e.need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
+    e->need_fb = mode == (uint8_t)SSDA_THRESHOLD_FIXED || mode == (uint8_t)SSDA_THRESHOLD_RAMP;
 #endif
-    e.use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
-                mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
-                (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
-                 (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
+    e->use_ref = mode == (uint8_t)SSDA_THRESHOLD_AUTO ||
+                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
+                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
+                  (e->bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
-    e.lev_lo = 1u; /* no block levels */
-    if (e.bounds) {
-        err = SSDA_OK;
+    e->lev_lo = 1u; /* no block levels */
+    if (e->bounds) {
+        int err = SSDA_OK;
         if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
-            err = build_blocks(&e);
+            err = build_blocks(e);
         }
-        if (e.lev_lo <= e.lev_hi && mode == (uint8_t)SSDA_THRESHOLD_AUTO &&
+        if (e->lev_lo <= e->lev_hi && mode == (uint8_t)SSDA_THRESHOLD_AUTO &&
             plan->scan == (uint8_t)SSDA_SCAN_RASTER) {
             /* the levels and the seed's table take the row groups' place:
                the few positions that pass every level are summed without them */
-            e.low = (uint32_t *)plan->work;
-            e.term = e.wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS;
-            e.bounds = false;
+            e->low = (uint32_t *)plan->work;
+            e->term = e->wblk + SSDA_MATCH_BLOCK_SUMS - SSDA_MATCH_BLOCK_ROWS;
+            e->bounds = false;
         } else if (err == SSDA_OK) {
-            err = build_bounds(&e);
+            err = build_bounds(e);
         } else {
             /* a fetch error: returned below */
         }
@@ -1486,39 +1488,101 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
     }
 #endif
 #ifndef SSDA_CFG_NO_FAST_PATH
-    e.plain_ref = e.use_ref && e.list == NULL && !e.tie_near;
+    e->plain_ref = e->use_ref && e->list == NULL && !e->tie_near;
     /* every SAD of the window < 2^32 - 1: L * M * maxval, with L * M <=
        16843008 (8-bit) or 65536 (16-bit); no 64-bit multiply on the M0+ */
-    e.fast = !e.ramp_mode && e.row_step == 1u && area->base != NULL && window->base != NULL &&
-             (uint32_t)e.L * e.M <= (e.u8 ? 16843008u : 65536u);
+    e->fast = !e->ramp_mode && e->row_step == 1u && area->base != NULL &&
+              window->base != NULL && (uint32_t)e->L * e->M <= (e->u8 ? 16843008u : 65536u);
 #ifdef ENGINE_FALLBACK
-    e.fast = e.fast && !e.need_fb;
+    e->fast = e->fast && !e->need_fb;
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
-    e.fast = e.fast && e.low == NULL && e.lev_lo > e.lev_hi;
+    e->fast = e->fast && e->low == NULL && e->lev_lo > e->lev_hi;
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
+    return SSDA_OK;
+}
+
+/*
+ * The search on an engine zero-filled but for area, win and plan: its
+ * setup, the scan and the result. Inlined into ssda__match_rows (the engine
+ * on its frame: one frame, as before the state existed) and engine_run.
+ */
+static SSDA_ALWAYS_INLINE int engine_go(engine_t *e, int32_t predict_x, int32_t predict_y,
+                                        ssda_match_result_t *result)
+{
+    int err = engine_setup(e, predict_x, predict_y);
+    if (err != SSDA_OK) {
+        return err;
+    }
 #ifndef SSDA_CFG_NO_BOUNDS
-    if (e.low != NULL) {
-        err = scan_seeded(&e);
+    if (e->low != NULL) {
+        err = scan_seeded(e);
     } else
 #endif
 #ifndef SSDA_CFG_NO_PREDICT
-    if (plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {
-        err = scan_predict(&e);
+    if (e->plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {
+        err = scan_predict(e);
     } else
 #endif
 #ifndef SSDA_CFG_NO_COARSE
-    if (plan->scan == (uint8_t)SSDA_SCAN_COARSE) {
-        err = scan_coarse(&e);
+    if (e->plan->scan == (uint8_t)SSDA_SCAN_COARSE) {
+        err = scan_coarse(e);
     } else
 #endif
     {
-        err = scan_raster(&e);
+        err = scan_raster(e);
     }
     /* the else-if chain above is cut by the preprocessor: */
     if (err != SSDA_OK) { /* NOLINT(readability-misleading-indentation) */
         return err;
     }
-    return finish(&e, result);
+    return finish(e, result);
+}
+
+/* engine_go out of line for ssda__match_state, which reaches it by a tail
+   call: then this small frame is the only one between the caller's and the
+   scan's (docs/target.md). */
+static SSDA_NOINLINE int engine_run(engine_t *e, int32_t predict_x, int32_t predict_y,
+                                    ssda_match_result_t *result)
+{
+    return engine_go(e, predict_x, predict_y, result);
+}
+
+int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
+                     const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
+                     ssda_match_result_t *result)
+{
+    engine_t e = {0};
+    e.area = area;
+    e.win = window;
+    e.plan = plan;
+    return engine_go(&e, predict_x, predict_y, result);
+}
+
+/* ssda_match_state_t's private layout: match.c's head, then the engine.
+   The public struct holds SSDA_MATCH_STATE_PTRS pointers and
+   SSDA_MATCH_STATE_WORDS uint64_t, so it is aligned at least as this one
+   (pointers and integers of at most 64 bits); a negative array size below
+   stops the build if this state outgrows it (then raise the counts in
+   include/ssda/match.h: a new pointer needs one more of the first, every 8
+   other bytes one more of the second). */
+typedef struct {
+    ssda__match_head_t head;
+    engine_t e;
+} match_state_t;
+
+typedef char match_state_fits[(sizeof(match_state_t) <= sizeof(ssda_match_state_t)) ? 1 : -1];
+
+int ssda__match_state(ssda_match_state_t *state, int32_t predict_x, int32_t predict_y,
+                      ssda_match_result_t *result)
+{
+    match_state_t *s = (match_state_t *)(void *)state;
+    (void)sizeof(match_state_fits);
+    (void)memset(&s->e, 0, sizeof(s->e));
+    s->e.area = &s->head.area;
+    s->e.win = &s->head.win;
+    s->e.plan = &s->head.plan;
+    /* a tail call: the engine's setup and the scan run on this frame's place */
+    return engine_run(&s->e, predict_x, predict_y, result);
 }

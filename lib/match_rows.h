@@ -70,7 +70,7 @@ SSDA_INTERNAL extern const ssda_match_config_t ssda__match_defaults;
  * and derived values: the row order's step for a window win_h rows tall, the
  * cuts of the threshold mode). Returns SSDA_OK or the error ssda_match
  * documents for the options (no pointer other than cfg and plan is touched);
- * on error *plan is scratch.
+ * on error *plan is untouched (ssda_match_search relies on it).
  */
 SSDA_INTERNAL int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w,
                                    uint32_t area_h, uint32_t win_w, uint32_t win_h,
@@ -87,5 +87,30 @@ SSDA_INTERNAL int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area
 SSDA_INTERNAL int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                                    const ssda_match_plan_t *plan, int32_t predict_x,
                                    int32_t predict_y, ssda_match_result_t *result);
+
+/*
+ * The part of ssda_match_state_t that match.c fills before the search: the
+ * plan and the two row sources. The engine follows it in the state
+ * (match_engine.c lays the whole out and checks that it fits).
+ */
+typedef struct {
+    ssda_match_plan_t plan;
+    ssda__rows_t area;
+    ssda__rows_t win;
+} ssda__match_head_t;
+
+/* The head of a caller's state (its first bytes). */
+static inline ssda__match_head_t *ssda__match_head(ssda_match_state_t *state)
+{
+    return (ssda__match_head_t *)(void *)state;
+}
+
+/*
+ * ssda__match_rows on the plan and row sources of state's head (filled and
+ * checked by the caller), with the engine in the state instead of on the
+ * stack. Same returns; *result written on success only.
+ */
+SSDA_INTERNAL int ssda__match_state(ssda_match_state_t *state, int32_t predict_x,
+                                    int32_t predict_y, ssda_match_result_t *result);
 
 #endif /* SSDA_MATCH_ROWS_H */

@@ -326,6 +326,45 @@ int ssda_match(const ssda_view_t *area, const ssda_view_t *window,
                const ssda_match_config_t *cfg, ssda_match_result_t *result);
 
 /*
+ * A search's working state held by the caller (ssda_match_search): the
+ * resolved options, the two row sources and the search engine (the best
+ * positions so far, counters, the bound tables' addresses), which
+ * ssda_match keeps on its own stack. Caller-allocated: static storage, a
+ * member of a job's struct, or a stack with the room; no initialisation;
+ * reusable for any number of searches one after another, its contents
+ * meaningless between them (nothing to validate, nothing to release). One
+ * state per search running at the same time (threads, interrupts).
+ * Fields private: only its size matters, sizeof(ssda_match_state_t):
+ * SSDA_MATCH_STATE_PTRS pointers and SSDA_MATCH_STATE_WORDS 64-bit words
+ * (280 bytes on 32-bit targets, 368 on 64-bit hosts), aligned as both; the
+ * library checks at compile time that its state fits (lib/match_engine.c).
+ */
+#define SSDA_MATCH_STATE_PTRS 22u
+#define SSDA_MATCH_STATE_WORDS 24u
+typedef struct {
+    void *ptrs_[SSDA_MATCH_STATE_PTRS];       /* private */
+    uint64_t words_[SSDA_MATCH_STATE_WORDS];  /* private */
+} ssda_match_state_t;
+
+/*
+ * ssda_match with its working state in *state instead of on the stack: the
+ * same validation, errors and results (bit-identical: the same code runs),
+ * with at most 320 bytes of stack on the Cortex-M4F at -Os, about half of
+ * ssda_match's (docs/target.md: tools/budget.sh's worst case, which counts
+ * no fetch callback: views have none). For small stacks (an RTOS task,
+ * an interrupt-driven job) with the state in static storage.
+ *   state:        caller storage, any contents; overwritten by the search
+ *                 on success, untouched on every error listed below. Must
+ *                 not be in use by another search at the same time.
+ *   area, window, cfg, result: as ssda_match (result written on success only).
+ * Returns what ssda_match returns; also SSDA_ERR_NULL when state is NULL
+ * (nothing written).
+ */
+int ssda_match_search(ssda_match_state_t *state, const ssda_view_t *area,
+                      const ssda_view_t *window, const ssda_match_config_t *cfg,
+                      ssda_match_result_t *result);
+
+/*
  * Full SAD of the window placed at (x, y) of the area, no early exit: the
  * reference for tests and tools. Same validation as ssda_match; also
  * SSDA_ERR_SIZE if the placement does not fit. *sad written on success only.
