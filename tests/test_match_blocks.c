@@ -3,7 +3,8 @@
  * searches with windows of 1..128 px, 8 and 16-bit, every exact mode, scan
  * and row order, equal to the brute-force minimum computed here (tie rule
  * included) and to the search with SSDA_MATCH_BOUNDS alone in every result
- * field but the work counts; the 32-bit worst case of a block sum (16-bit
+ * field but the work counts (and ssda_match_search equal to ssda_match in
+ * every field, test_match_both.h); the 32-bit worst case of a block sum (16-bit
  * blocks of 65536 pixels of 65535, an integral image that wraps); argument
  * and buffer errors.
  */
@@ -14,6 +15,7 @@
 #include "ssda/stream.h"
 #include "test_image.h"
 #include "test_source.h"
+#include "test_match_both.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -151,7 +153,7 @@ static void test_blocks_equal_brute_force(void)
                      (unsigned)g.ah, (unsigned)g.ww, (unsigned)g.wh, (int)g.fmt);
             TEST_ASSERT_EQUAL_INT_MESSAGE(SSDA_OK, ssda_match(&area, &win, &cfg, &without), msg);
             cfg.flags = (uint8_t)(cfg.flags | SSDA_MATCH_BLOCKS);
-            TEST_ASSERT_EQUAL_INT_MESSAGE(SSDA_OK, ssda_match(&area, &win, &cfg, &with), msg);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(SSDA_OK, test_match_both(&area, &win, &cfg, &with), msg);
             assert_same(&without, &with, msg);
             TEST_ASSERT_TRUE_MESSAGE(with.exact, msg);
             if ((cfg.flags & SSDA_MATCH_TIE_NEAREST) == 0u) {

@@ -1,13 +1,16 @@
 /*
  * test_match_property.c - thousands of random searches: every exact mode,
  * scan, row order and bound option returns the brute-force minimum
- * (computed here independently, tie rule included).
+ * (computed here independently, tie rule included). Every search runs
+ * through ssda_match and ssda_match_search (test_match_both.h): the two
+ * return the same result, field by field, in every mode.
  */
 #include <stdio.h>
 #include <string.h>
 #include "unity.h"
 #include "ssda/match.h"
 #include "test_image.h"
+#include "test_match_both.h"
 
 void setUp(void) {}
 void tearDown(void) {}
@@ -114,7 +117,7 @@ static void test_exact_modes_equal_brute_force(void)
             }
             cfg.predict_x = (int32_t)test_rng_range(&r, 0, 60) - 10;
             cfg.predict_y = (int32_t)test_rng_range(&r, 0, 60) - 10;
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
             snprintf(msg, sizeof msg, "case %u variant %u area %ux%u win %ux%u fmt %d",
                      (unsigned)n, (unsigned)variant, (unsigned)g.aw, (unsigned)g.ah,
                      (unsigned)g.ww, (unsigned)g.wh, (int)g.fmt);
@@ -154,7 +157,7 @@ static void test_fixed_exact_when_any_position_completes(void)
             cfg.work = g_work;
             cfg.work_size = sizeof g_work;
         }
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
         TEST_ASSERT_TRUE(res.exact);
         TEST_ASSERT_TRUE(res.completed >= 1u);
         TEST_ASSERT_EQUAL_UINT64(bsad, res.sad);
@@ -190,7 +193,7 @@ static void test_inexact_modes_report_consistent_results(void)
             cfg.work = g_work;
             cfg.work_size = sizeof g_work;
         }
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
         TEST_ASSERT_TRUE(res.x + g.ww <= g.aw);
         TEST_ASSERT_TRUE(res.y + g.wh <= g.ah);
         truth = test_sad(&area, &win, res.x, res.y);
@@ -258,7 +261,7 @@ static void test_all_cut_fallback_is_no_bound_reject(void)
         cfg.flags = SSDA_MATCH_BOUNDS;
         cfg.work = g_work;
         cfg.work_size = sizeof g_work;
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
         TEST_ASSERT_EQUAL_UINT32(0u, res.completed);
         TEST_ASSERT_FALSE(res.exact);
         TEST_ASSERT_EQUAL_UINT64(test_sad(&area, &win, res.x, res.y), res.sad);
@@ -386,7 +389,7 @@ static void test_quality_flags_equal_brute_force(void)
             cfg.predict_y = pred_y;
             cfg.unique_q8 = uq8;
             cfg.unique_radius = (uint8_t)rad;
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &res));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
             snprintf(msg, sizeof msg, "case %u variant %u flags %u area %ux%u win %ux%u",
                      (unsigned)n, (unsigned)variant, (unsigned)flags, (unsigned)g.aw,
                      (unsigned)g.ah, (unsigned)g.ww, (unsigned)g.wh);
@@ -411,5 +414,7 @@ int main(void)
     RUN_TEST(test_inexact_modes_report_consistent_results);
     RUN_TEST(test_all_cut_fallback_is_no_bound_reject);
     RUN_TEST(test_quality_flags_equal_brute_force);
+    printf("ssda_match_search compared with ssda_match on %lu searches\n",
+           test_match_both_compared);
     return UNITY_END();
 }
