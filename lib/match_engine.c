@@ -1419,9 +1419,10 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
 }
 
 /*
- * The engine, zero-filled but for area, win and plan, set up from the plan:
- * geometry, the mode's flags, the bound tables. SSDA_OK or a fetch error.
- * Out of line: its locals stay off the frame under the scan.
+ * The engine set up from its area, win and plan (the fields its caller
+ * set; any others are cleared here): geometry, the mode's flags, the bound
+ * tables. SSDA_OK or a fetch error. Out of line: its locals stay off the
+ * frame under the scan.
  */
 static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t predict_y)
 {
@@ -1429,6 +1430,10 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
     const ssda__rows_t *window = e->win;
     const ssda_match_plan_t *plan = e->plan;
     const uint8_t mode = plan->threshold;
+    (void)memset(e, 0, sizeof *e);
+    e->area = area;
+    e->win = window;
+    e->plan = plan;
 #ifdef SSDA_CFG_NO_U16
     if (area->format != (uint8_t)SSDA_PIX_U8) {
         return SSDA_ERR_UNSUPPORTED;
@@ -1504,9 +1509,9 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
 }
 
 /*
- * The search on an engine zero-filled but for area, win and plan: its
- * setup, the scan and the result. Inlined into ssda__match_rows (the engine
- * on its frame: one frame, as before the state existed) and engine_run.
+ * The search on an engine whose area, win and plan are set: its setup, the
+ * scan and the result. Inlined into ssda__match_rows (the engine on its
+ * frame: one frame, as before the state existed) and ssda__match_state.
  */
 static SSDA_ALWAYS_INLINE int engine_go(engine_t *e, int32_t predict_x, int32_t predict_y,
                                         ssda_match_result_t *result)
@@ -1540,20 +1545,11 @@ static SSDA_ALWAYS_INLINE int engine_go(engine_t *e, int32_t predict_x, int32_t 
     return finish(e, result);
 }
 
-/* engine_go out of line for ssda__match_state, which reaches it by a tail
-   call: then this small frame is the only one between the caller's and the
-   scan's (docs/target.md). */
-static SSDA_NOINLINE int engine_run(engine_t *e, int32_t predict_x, int32_t predict_y,
-                                    ssda_match_result_t *result)
-{
-    return engine_go(e, predict_x, predict_y, result);
-}
-
 int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
                      ssda_match_result_t *result)
 {
-    engine_t e = {0};
+    engine_t e; /* cleared by engine_setup */
     e.area = area;
     e.win = window;
     e.plan = plan;
@@ -1579,10 +1575,11 @@ int ssda__match_state(ssda_match_state_t *state, int32_t predict_x, int32_t pred
 {
     match_state_t *s = (match_state_t *)(void *)state;
     (void)sizeof(match_state_fits);
-    (void)memset(&s->e, 0, sizeof(s->e));
     s->e.area = &s->head.area;
     s->e.win = &s->head.win;
     s->e.plan = &s->head.plan;
-    /* a tail call: the engine's setup and the scan run on this frame's place */
-    return engine_run(&s->e, predict_x, predict_y, result);
+    /* reached by a tail call from ssda_match_search where the target makes
+       them: then this frame is the only one between the caller's and the
+       scan's (docs/target.md) */
+    return engine_go(&s->e, predict_x, predict_y, result);
 }
