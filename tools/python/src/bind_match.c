@@ -127,13 +127,19 @@ static int search_args(PyObject *args, PyObject *kw, const char *func, Py_ssize_
     return 0;
 }
 
+/* The search runs in ssda_match_search with its state in one heap block
+   with the bounds' work buffer (state first: PyMem_Malloc's alignment, and
+   sizeof(ssda_match_state_t) a multiple of 8 keeps the work aligned too),
+   as a firmware holds it in static storage: the same results as ssda_match,
+   little C stack in each thread. */
 static PyObject *py_match(PyObject *self, PyObject *args, PyObject *kw)
 {
     ssdapy_image_t area, win;
     ssda_match_config_t cfg;
     ssda_match_result_t res;
     PyObject *kwc, *out = NULL;
-    void *work = NULL;
+    unsigned char *block = NULL;
+    size_t work_size = 0;
     int e;
     (void)self;
     if (search_args(args, kw, "match", 0, &area, &win, NULL, &kwc) != 0) {
@@ -146,19 +152,23 @@ static PyObject *py_match(PyObject *self, PyObject *args, PyObject *kw)
         if (win.view.width > area.view.width || win.view.height > area.view.height) {
             cfg.flags = 0; /* the library reports the size error */
         } else {
-            cfg.work_size = SSDA_MATCH_WORK_SIZE(area.view.width, area.view.height,
-                                                 win.view.width, win.view.height);
-            if ((work = PyMem_Malloc(cfg.work_size)) == NULL) {
-                PyErr_NoMemory();
-                goto done;
-            }
-            cfg.work = work;
+            work_size = SSDA_MATCH_WORK_SIZE(area.view.width, area.view.height,
+                                             win.view.width, win.view.height);
         }
     }
-    SSDAPY_NOGIL(e = ssda_match(&area.view, &win.view, &cfg, &res));
-    out = e == SSDA_OK ? ssdapy_match_result(&res) : ssdapy_error(e, "ssda_match");
+    if ((block = PyMem_Malloc(sizeof(ssda_match_state_t) + work_size)) == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    if (work_size != 0) {
+        cfg.work = block + sizeof(ssda_match_state_t);
+        cfg.work_size = work_size;
+    }
+    SSDAPY_NOGIL(e = ssda_match_search((ssda_match_state_t *)(void *)block, &area.view,
+                                       &win.view, &cfg, &res));
+    out = e == SSDA_OK ? ssdapy_match_result(&res) : ssdapy_error(e, "ssda_match_search");
 done:
-    PyMem_Free(work);
+    PyMem_Free(block);
     Py_DECREF(kwc);
     ssdapy_image_release(&area);
     ssdapy_image_release(&win);
@@ -194,7 +204,8 @@ static PyMethodDef methods[] = {
      "match(area, window, /, *, threshold='auto', scan='raster', order='rows', "
      "bounds=True, predict=None, k_q8=0, lambda_q8=0, fixed_threshold=0, coarse_step=0)\n"
      "--\n\n"
-     "Where window fits best in area: ssda_match (ssda/match.h). Both are 2-D uint8 or\n"
+     "Where window fits best in area: ssda_match_search (ssda/match.h; the results of\n"
+     "ssda_match, its state in the binding's memory). Both are 2-D uint8 or\n"
      "uint16 arrays of one dtype (viewed where possible, else copied). Returns a\n"
      "MatchResult (x, y, sad, exact, pixel_ops, positions, completed); x, y is the\n"
      "top-left of the best placement, ties to the smallest sad, then y, then x.\n"

@@ -37,8 +37,8 @@ def test_library_errors_carry_code_and_message():
         ssda.match(W, IMG)  # window larger than area
     assert e.value.code == ssda.ERR_SIZE == -3
     assert e.value.message == ssda.strerror(-3) == "bad dimensions"
-    assert e.value.function == "ssda_match"
-    assert str(e.value) == "ssda_match: bad dimensions (code -3)"
+    assert e.value.function == "ssda_match_search"
+    assert str(e.value) == "ssda_match_search: bad dimensions (code -3)"
     with pytest.raises(ssda.Error) as e:
         ssda.match(IMG, W.astype(np.uint16))
     assert e.value.code == ssda.ERR_FORMAT
