@@ -53,6 +53,9 @@ typedef struct {
     bool fast;           /* positions are evaluated by eval_fast (see there) */
     bool plain_ref;      /* use_ref, no uniqueness list, no TIE_NEAREST */
 #endif
+#ifndef SSDA_CFG_NO_BOUNDS
+    bool blocks4;        /* shared tables with 4 x 4 block sums (tab_refine) */
+#endif
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
     bool have_fb;
@@ -68,10 +71,13 @@ typedef struct {
     uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
+    const uint32_t *gsum; /* bounds: area sums over L x group pixels, nx per area
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
+    uint32_t gpitch;     /* bounds: entries between rows of gsum (nx, or the
+                            shared tables' pitch) */
+    const ssda__match_tab_t *tab; /* bounds: tracking's shared tables, or NULL */
     uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
                             (<= positions < 2^32), added to ops by finish */
     const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
@@ -247,8 +253,8 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t low, uint32_t
    in e->term for the row loop. */
 static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 {
-    const uint32_t *g = e->gsum + (size_t)y * e->nx + x;
-    const size_t down = (size_t)e->group * e->nx;
+    const uint32_t *g = e->gsum + (size_t)y * e->gpitch + x;
+    const size_t down = (size_t)e->group * e->gpitch;
     uint64_t rest = 0u;
     uint32_t k;
     for (k = 0u; k < e->ngroups; k++) {
@@ -259,6 +265,41 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
         rest += d;
     }
     e->ops += e->ngroups;
+    return rest;
+}
+
+/* Tracking's shared tables with 4 x 4 block sums (match_rows.h): a
+   position that passed its group bound gets, group after group, the sum of
+   its L / 4 block terms |area block sum - window block sum| in place of the
+   group's term (never smaller: the triangle inequality, block by block),
+   until the bound reaches cut_at. Gao's successive elimination at 4 x 4
+   blocks, one lookup per term: cheap because the tables are shared by the
+   windows of a grid. A block sum <= 16 * 65535 < 2^20, a group's terms
+   <= 256 of them < 2^28 (L <= 1024); the bound stays <= the position's
+   SAD. One op per term. */
+static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, uint64_t cut_at)
+{
+    const ssda__match_tab_t *t = e->tab;
+    const uint32_t nb = (uint32_t)e->L >> 2, pitch = t->pitch;
+    const uint32_t *b = t->b + (size_t)y * pitch + x;
+    const uint32_t *w = t->wblk;
+    uint32_t k, i;
+    for (k = 0u; k < e->ngroups; k++) {
+        uint32_t s = 0u; /* < 2^28 */
+        for (i = 0u; i < nb; i++) {
+            const uint32_t a = b[4u * i], c = w[i];
+            s += a > c ? a - c : c - a;
+        }
+        rest = rest - e->term[k] + s; /* s >= term[k] */
+        e->term[k] = s;
+        b += (size_t)4u * pitch;
+        w += nb;
+        if (rest >= cut_at) {
+            e->ops += (uint64_t)(k + 1u) * nb;
+            return rest;
+        }
+    }
+    e->ops += (uint64_t)e->ngroups * nb;
     return rest;
 }
 #endif
@@ -420,9 +461,9 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
    stored only when the position passes (a second pass): most do not. */
 static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
 {
-    const uint32_t *g0 = e->gsum + (size_t)y * e->nx + x;
+    const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
     const uint32_t *g = g0;
-    const uint32_t down = (uint32_t)e->group * e->nx; /* < 2^32 */
+    const uint32_t down = (uint32_t)e->group * e->gpitch; /* < 2^32 */
     const uint32_t *w = e->wgrp;
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
@@ -554,6 +595,12 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
         if (rest >= cut_at) {
             return 0;
         }
+        if (e->blocks4) { /* the bound <= the SAD < 2^32 - 1 */
+            rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
+            if (rest >= cut_at) {
+                return 0;
+            }
+        }
     }
 #endif
     return fast_rows(e, x, y, cut_at, rest, sad);
@@ -602,6 +649,9 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     }
     if (e->bounds) {
         rest = group_bound(e, x, y);
+        if (rest < cut_at && e->blocks4) {
+            rest = tab_refine(e, x, y, rest, cut_at);
+        }
         if (rest >= cut_at) {
             NOTE_CUT(e, x, y, rest, 0u);
             return 0;
@@ -1191,6 +1241,64 @@ static SSDA_ALWAYS_INLINE int window_groups(const engine_t *e, uint32_t *wgrp, u
     return SSDA_OK;
 }
 
+/* With shared tables holding 4 x 4 block sums: the window's block sums,
+   L / 4 per group of 4 rows (tab_refine), and each group's sum from its
+   blocks into wgrp. A block sum <= 16 * 65535 < 2^20. Adds the work to
+   *ops (the pixels, then nb - 1 additions a group). Returns SSDA_OK or a
+   fetch error. */
+static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint32_t *wgrp,
+                                        bool u8, uint64_t *ops)
+{
+    const uint32_t nb = (uint32_t)e->L >> 2;
+    uint32_t k, yy, c;
+    for (k = 0u; k < e->ngroups; k++) {
+        uint32_t *w = wblk + (size_t)k * nb;
+        uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */
+        for (c = 0u; c < nb; c++) {
+            w[c] = 0u;
+        }
+        for (yy = 4u * k; yy < 4u * k + 4u; yy++) {
+            const uint8_t *p;
+            int err = ssda__rows_get(e->win, 0u, yy, 4u * nb, &p);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            for (c = 0u; c < 4u * nb; c++) {
+                w[c >> 2] += u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+            }
+        }
+        for (c = 0u; c < nb; c++) {
+            g += w[c];
+        }
+        wgrp[k] = g;
+        *ops += (uint64_t)4u * e->L + nb - 1u;
+    }
+    return SSDA_OK;
+}
+
+/* The bounds from tracking's shared tables (e->tab): the area's group
+   sums are read there (pitch tab->pitch), only the window's are summed
+   here, with its 4 x 4 block sums when the tables hold them. */
+static int tab_bounds(engine_t *e, uint32_t *wgrp, bool u8, uint64_t *ops)
+{
+    e->gsum = e->tab->g;
+    e->gpitch = e->tab->pitch;
+    if (e->tab->b != NULL && !e->ramp_mode) {
+        /* not with the ramp (its cuts read the bound) nor the all-cut
+           fallback (it keeps the position cut latest): the bound's
+           strength would change their results */
+#ifdef ENGINE_FALLBACK
+        e->blocks4 = !e->need_fb;
+#else
+        e->blocks4 = true;
+#endif
+    }
+    if (e->blocks4) {
+        return window_blocks4(e, e->tab->wblk, wgrp, u8, ops);
+    }
+    return window_groups(e, wgrp, 4u, e->ngroups, u8, ops);
+}
+
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -1219,8 +1327,14 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     e->group = (uint16_t)group;   /* 1..4 */
     e->ngroups = (uint16_t)ngroups; /* <= M */
     e->gsum = gsum;
+    e->gpitch = nx;
     e->wgrp = wgrp;
     e->term = wgrp + e->M;
+    if (e->tab != NULL && group == 4u) { /* the tables' groups (track_tab.c) */
+        err = tab_bounds(e, wgrp, u8, &ops);
+        e->ops += ops;
+        return err;
+    }
     err = area_row_sums(e, gsum, u8, &ops);
     if (err == SSDA_OK) {
         if (group > 1u) {
@@ -1421,6 +1535,13 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
                      ssda_match_result_t *result)
 {
+    return ssda__match_rows_tab(area, window, plan, predict_x, predict_y, NULL, result);
+}
+
+int ssda__match_rows_tab(const ssda__rows_t *area, const ssda__rows_t *window,
+                         const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
+                         const ssda__match_tab_t *tab, ssda_match_result_t *result)
+{
     engine_t e = {0};
     const uint8_t mode = plan->threshold;
     int err;
@@ -1463,6 +1584,7 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                  (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
 #ifndef SSDA_CFG_NO_BOUNDS
     e.lev_lo = 1u; /* no block levels */
+    e.tab = tab;
     if (e.bounds) {
         err = SSDA_OK;
         if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
