@@ -286,9 +286,15 @@ static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, u
     uint32_t k, i;
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t s = 0u; /* < 2^28 */
-        for (i = 0u; i < nb; i++) {
-            const uint32_t a = b[4u * i], c = w[i];
-            s += a > c ? a - c : c - a;
+        if (nb == 4u) { /* 16 to 19 columns: no loop */
+            const uint32_t a0 = b[0], a1 = b[4], a2 = b[8], a3 = b[12];
+            s = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
+                (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+        } else {
+            for (i = 0u; i < nb; i++) {
+                const uint32_t a = b[4u * i], c = w[i];
+                s += a > c ? a - c : c - a;
+            }
         }
         rest = rest - e->term[k] + s; /* s >= term[k] */
         e->term[k] = s;
@@ -468,10 +474,16 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
     e->nbound++; /* n ops each, added by finish */
-    for (k = 0u; k < n; k++) {
-        const uint32_t a = *g, b = w[k];
-        rest += a > b ? a - b : b - a;
-        g += down;
+    if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
+        const uint32_t a0 = g[0], a1 = g[down], a2 = g[2u * down], a3 = g[3u * down];
+        rest = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
+               (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+    } else {
+        for (k = 0u; k < n; k++) {
+            const uint32_t a = *g, b = w[k];
+            rest += a > b ? a - b : b - a;
+            g += down;
+        }
     }
     if (rest < cut_at) {
         uint32_t *t = e->term;
@@ -488,8 +500,14 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
 
 /* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
-   at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it). */
-static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y)
+   at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it).
+   With SSDA_MATCH_TIE_NEAREST and a reference of SAD s >= 1 the level is s
+   or s + 1 by the tie rule: s + 1 is returned and *tie set, and eval_fast
+   settles the rule only for a position whose bound leaves it open (the
+   distances cost more than most positions' whole test; tracking always
+   sets the flag). */
+static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y,
+                                               bool *tie)
 {
     const cand_t *ref = e->ref;
     if (e->plain_ref && ref != NULL) { /* the usual case, tested first */
@@ -500,6 +518,10 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     }
     if (e->list != NULL) {
         return e->loose > UINT32_MAX ? UINT32_MAX : (uint32_t)e->loose;
+    }
+    if (ref->sad != 0u) {
+        *tie = true;
+        return (uint32_t)ref->sad + 1u;
     }
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
@@ -583,7 +605,8 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
  */
 static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
-    const uint32_t cut_at = cut_level32(e, x, y);
+    bool tie = false;
+    uint32_t cut_at = cut_level32(e, x, y, &tie);
     uint32_t rest = 0u; /* the bound, < 2^32 - 1 */
     e->positions++;
     if (cut_at == 0u) {
@@ -595,6 +618,16 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
         if (rest >= cut_at) {
             return 0;
         }
+    }
+#endif
+    if (tie && !pos_before(e, x, y, e->ref->x, e->ref->y)) {
+        cut_at--; /* the tie rule (cut_level32): s >= 1 */
+        if (rest >= cut_at) {
+            return 0;
+        }
+    }
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (e->bounds) {
         if (e->blocks4) { /* the bound <= the SAD < 2^32 - 1 */
             rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
             if (rest >= cut_at) {
@@ -1263,8 +1296,15 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
             if (err != SSDA_OK) {
                 return err;
             }
-            for (c = 0u; c < 4u * nb; c++) {
-                w[c >> 2] += u8 ? p[c] : ((const uint16_t *)(const void *)p)[c];
+            if (u8) {
+                for (c = 0u; c < nb; c++) {
+                    w[c] += (uint32_t)p[4u * c] + p[4u * c + 1u] + p[4u * c + 2u] + p[4u * c + 3u];
+                }
+            } else {
+                const uint16_t *q = (const uint16_t *)(const void *)p;
+                for (c = 0u; c < nb; c++) {
+                    w[c] += (uint32_t)q[4u * c] + q[4u * c + 1u] + q[4u * c + 2u] + q[4u * c + 3u];
+                }
             }
         }
         for (c = 0u; c < nb; c++) {
@@ -1582,6 +1622,9 @@ int ssda__match_rows_tab(const ssda__rows_t *area, const ssda__rows_t *window,
                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
                  (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
+#ifdef SSDA_CFG_NO_BOUNDS
+    (void)tab; /* no bounds: no tables */
+#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     e.lev_lo = 1u; /* no block levels */
     e.tab = tab;

@@ -375,6 +375,8 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
                                        (int32_t)hy - pdy, &tab->mt, &res);
         }
     } else
+#else
+    (void)tab; /* no bounds: no tables */
 #endif
     {
         err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy,
@@ -441,10 +443,10 @@ int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
                      uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    ssda__track_tab_t tab;
     ssda__track_tab_t *t = NULL;
     uint32_t row;
 #ifndef SSDA_CFG_NO_BOUNDS
+    ssda__track_tab_t tab;
     if (ssda__track_tab_on(plan)) { /* kept from grid row to grid row */
         ssda__track_tab_init(&tab, plan, col0, col1, origin->first_x);
         t = &tab;
@@ -463,9 +465,9 @@ int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
                      const ssda_track_plan_t *plan, uint32_t row, uint32_t col0, uint32_t col1,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    ssda__track_tab_t tab;
     ssda__track_tab_t *t = NULL;
 #ifndef SSDA_CFG_NO_BOUNDS
+    ssda__track_tab_t tab;
     if (ssda__track_tab_on(plan)) {
         ssda__track_tab_init(&tab, plan, col0, col1, 0u);
         t = &tab;
