@@ -35,6 +35,8 @@ typedef struct {
 #ifndef SSDA_CFG_NO_BOUNDS
     uint16_t group;      /* bounds: rows per group (1..4; blocks: M >> level) */
     uint16_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
+    uint16_t gpitch;     /* bounds: entries between rows of gsum (nx, or the
+                            shared tables' pitch <= FIRST's width) */
     uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
                                lev_lo > lev_hi */
 #endif
@@ -52,9 +54,6 @@ typedef struct {
 #ifndef SSDA_CFG_NO_FAST_PATH
     bool fast;           /* positions are evaluated by eval_fast (see there) */
     bool plain_ref;      /* use_ref, no uniqueness list, no TIE_NEAREST */
-#endif
-#ifndef SSDA_CFG_NO_BOUNDS
-    bool blocks4;        /* shared tables with 4 x 4 block sums (tab_refine) */
 #endif
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
@@ -75,14 +74,14 @@ typedef struct {
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
-    uint32_t gpitch;     /* bounds: entries between rows of gsum (nx, or the
-                            shared tables' pitch) */
-    const ssda__match_tab_t *tab; /* bounds: tracking's shared tables, or NULL */
     uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
                             (<= positions < 2^32), added to ops by finish */
     const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
-                              modulo 2^32 (block_bound) */
-    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
+                              modulo 2^32 (block_bound); shared tables (no block
+                              levels then): their 4 x 4 sums when tab_refine
+                              is on, else NULL */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level;
+                              shared tables: the window's 4 x 4 sums */
     uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
                             bound, saturated to 32 bits (a lower bound still),
                             nx per row in the group tables' place; else NULL */
@@ -279,10 +278,9 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
    SAD. One op per term. */
 static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, uint64_t cut_at)
 {
-    const ssda__match_tab_t *t = e->tab;
-    const uint32_t nb = (uint32_t)e->L >> 2, pitch = t->pitch;
-    const uint32_t *b = t->b + (size_t)y * pitch + x;
-    const uint32_t *w = t->wblk;
+    const uint32_t nb = (uint32_t)e->L >> 2, pitch = e->gpitch;
+    const uint32_t *b = e->integ + (size_t)y * pitch + x;
+    const uint32_t *w = e->wblk;
     uint32_t k, i;
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t s = 0u; /* < 2^28 */
@@ -502,10 +500,10 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
    at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it).
    With SSDA_MATCH_TIE_NEAREST and a reference of SAD s >= 1 the level is s
-   or s + 1 by the tie rule: s + 1 is returned and *tie set, and eval_fast
-   settles the rule only for a position whose bound leaves it open (the
-   distances cost more than most positions' whole test; tracking always
-   sets the flag). */
+   or s + 1 by the tie rule: with bounds, s + 1 is returned and *tie set,
+   and eval_fast settles the rule only for a position whose bound leaves it
+   open (the distances cost more than most positions' whole test; tracking
+   always sets the flag). */
 static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y,
                                                bool *tie)
 {
@@ -519,7 +517,7 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     if (e->list != NULL) {
         return e->loose > UINT32_MAX ? UINT32_MAX : (uint32_t)e->loose;
     }
-    if (ref->sad != 0u) {
+    if (e->bounds && ref->sad != 0u) {
         *tie = true;
         return (uint32_t)ref->sad + 1u;
     }
@@ -618,17 +616,13 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
         if (rest >= cut_at) {
             return 0;
         }
-    }
-#endif
-    if (tie && !pos_before(e, x, y, e->ref->x, e->ref->y)) {
-        cut_at--; /* the tie rule (cut_level32): s >= 1 */
-        if (rest >= cut_at) {
-            return 0;
+        if (tie && !pos_before(e, x, y, e->ref->x, e->ref->y)) {
+            cut_at--; /* the tie rule (cut_level32): s >= 1 */
+            if (rest >= cut_at) {
+                return 0;
+            }
         }
-    }
-#ifndef SSDA_CFG_NO_BOUNDS
-    if (e->bounds) {
-        if (e->blocks4) { /* the bound <= the SAD < 2^32 - 1 */
+        if (e->integ != NULL) { /* the bound <= the SAD < 2^32 - 1 */
             rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
             if (rest >= cut_at) {
                 return 0;
@@ -682,7 +676,7 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     }
     if (e->bounds) {
         rest = group_bound(e, x, y);
-        if (rest < cut_at && e->blocks4) {
+        if (rest < cut_at && e->integ != NULL && e->lev_lo > e->lev_hi) { /* tab_refine */
             rest = tab_refine(e, x, y, rest, cut_at);
         }
         if (rest >= cut_at) {
@@ -1316,25 +1310,25 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
     return SSDA_OK;
 }
 
-/* The bounds from tracking's shared tables (e->tab): the area's group
-   sums are read there (pitch tab->pitch), only the window's are summed
-   here, with its 4 x 4 block sums when the tables hold them. */
-static int tab_bounds(engine_t *e, uint32_t *wgrp, bool u8, uint64_t *ops)
+/* The bounds from tracking's shared tables (match_rows.h): the area's
+   group sums are read there, only the window's are summed here, with its
+   4 x 4 block sums when the tables hold them (tab_refine on: e->integ). */
+static int tab_bounds(engine_t *e, const ssda__match_tab_t *tab, uint32_t *wgrp, bool u8,
+                      uint64_t *ops)
 {
-    e->gsum = e->tab->g;
-    e->gpitch = e->tab->pitch;
-    if (e->tab->b != NULL && !e->ramp_mode) {
-        /* not with the ramp (its cuts read the bound) nor the all-cut
-           fallback (it keeps the position cut latest): the bound's
-           strength would change their results */
+    bool refine = tab->b != NULL && !e->ramp_mode;
 #ifdef ENGINE_FALLBACK
-        e->blocks4 = !e->need_fb;
-#else
-        e->blocks4 = true;
+    /* not with the ramp (its cuts read the bound) nor the all-cut fallback
+       (it keeps the position cut latest): the bound's strength would change
+       their results */
+    refine = refine && !e->need_fb;
 #endif
-    }
-    if (e->blocks4) {
-        return window_blocks4(e, e->tab->wblk, wgrp, u8, ops);
+    e->gsum = tab->g;
+    e->gpitch = (uint16_t)tab->pitch;
+    if (refine) {
+        e->integ = tab->b;
+        e->wblk = tab->wblk;
+        return window_blocks4(e, tab->wblk, wgrp, u8, ops);
     }
     return window_groups(e, wgrp, 4u, e->ngroups, u8, ops);
 }
@@ -1367,11 +1361,14 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     e->group = (uint16_t)group;   /* 1..4 */
     e->ngroups = (uint16_t)ngroups; /* <= M */
     e->gsum = gsum;
-    e->gpitch = nx;
+    e->gpitch = (uint16_t)nx;
     e->wgrp = wgrp;
     e->term = wgrp + e->M;
-    if (e->tab != NULL && group == 4u) { /* the tables' groups (track_tab.c) */
-        err = tab_bounds(e, wgrp, u8, &ops);
+    if ((e->plan->flags & SSDA__MATCH_TAB) != 0u && group == 4u) { /* track_tab.c */
+        const size_t at = ((((size_t)nx * e->area->height + 2u * (size_t)e->M) *
+                             sizeof(uint32_t) + 7u) & ~(size_t)7u) + SSDA_MATCH_UNIQUE_WORK;
+        err = tab_bounds(e, (const ssda__match_tab_t *)(const void *)((const uint8_t *)work + at),
+                         wgrp, u8, &ops);
         e->ops += ops;
         return err;
     }
@@ -1575,13 +1572,6 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
                      const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
                      ssda_match_result_t *result)
 {
-    return ssda__match_rows_tab(area, window, plan, predict_x, predict_y, NULL, result);
-}
-
-int ssda__match_rows_tab(const ssda__rows_t *area, const ssda__rows_t *window,
-                         const ssda_match_plan_t *plan, int32_t predict_x, int32_t predict_y,
-                         const ssda__match_tab_t *tab, ssda_match_result_t *result)
-{
     engine_t e = {0};
     const uint8_t mode = plan->threshold;
     int err;
@@ -1622,12 +1612,8 @@ int ssda__match_rows_tab(const ssda__rows_t *area, const ssda__rows_t *window,
                 mode == (uint8_t)SSDA_THRESHOLD_AUTO_RAMP ||
                 (mode != (uint8_t)SSDA_THRESHOLD_NONE &&
                  (e.bounds || plan->scan == (uint8_t)SSDA_SCAN_COARSE));
-#ifdef SSDA_CFG_NO_BOUNDS
-    (void)tab; /* no bounds: no tables */
-#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     e.lev_lo = 1u; /* no block levels */
-    e.tab = tab;
     if (e.bounds) {
         err = SSDA_OK;
         if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {

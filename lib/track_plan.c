@@ -169,6 +169,7 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
         (maxval == 255u || plan->grid.win_w <= 16384u) &&
         (uint64_t)match.work_size >= ssda__track_tab_size(&plan->grid, first_w)) {
         plan->tab_rows = (uint16_t)(plan->grid.search_h - 3u);
+        plan->match.flags |= (uint8_t)SSDA__MATCH_TAB; /* the engine reads them */
     }
 #endif
     return err;

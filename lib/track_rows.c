@@ -317,6 +317,20 @@ static void vector_init(ssda_track_vector_t *v, uint32_t wx, uint32_t wy)
     v->status = (uint8_t)SSDA_TRACK_EDGE;
 }
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The shared tables' rows for the area at source (ax, ay), their work
+   counted. Out of line: its locals stay off the search's call chain. */
+static SSDA_NOINLINE int tab_area(ssda__track_tab_t *tab, const ssda__rows_t *first,
+                                  const ssda_track_grid_t *g, uint32_t ax, uint32_t ay,
+                                  ssda_track_stats_t *st)
+{
+    uint64_t built = 0u;
+    int err = ssda__track_tab_area(tab, first, g->win_w, ax, ay, &built);
+    add_sat(&st->pixel_ops, built);
+    return err;
+}
+#endif
+
 /* Status and vector of window k; when no test decides it, the search. */
 static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
                         const ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
@@ -366,22 +380,15 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
        65535: no overflow; the engine clamps */
 #ifndef SSDA_CFG_NO_BOUNDS
     if (tab != NULL) { /* shared tables: this area's rows built or kept */
-        uint64_t built = 0u;
-        err = ssda__track_tab_area(tab, first, g->win_w, wx - hx - o->first_x,
-                                   wy - hy - o->first_y, &tab->mt, &built);
-        add_sat(&st->pixel_ops, built);
-        if (err == SSDA_OK) {
-            err = ssda__match_rows_tab(&area, &win, &p->match, (int32_t)hx - pdx,
-                                       (int32_t)hy - pdy, &tab->mt, &res);
+        err = tab_area(tab, first, g, wx - hx - o->first_x, wy - hy - o->first_y, st);
+        if (err != SSDA_OK) {
+            return err;
         }
-    } else
+    }
 #else
     (void)tab; /* no bounds: no tables */
 #endif
-    {
-        err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy,
-                               &res);
-    }
+    err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy, &res);
     if (err != SSDA_OK) {
         return err;
     }
@@ -443,13 +450,11 @@ int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
                      uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
-    ssda__track_tab_t *t = NULL;
+    ssda__track_tab_t *t = NULL; /* shared tables, kept from grid row to grid row */
     uint32_t row;
 #ifndef SSDA_CFG_NO_BOUNDS
-    ssda__track_tab_t tab;
-    if (ssda__track_tab_on(plan)) { /* kept from grid row to grid row */
-        ssda__track_tab_init(&tab, plan, col0, col1, origin->first_x);
-        t = &tab;
+    if (plan->tab_rows != 0u) {
+        t = ssda__track_tab_init(plan, col0, col1, origin->first_x);
     }
 #endif
     for (row = row0; row < row1; row++) {
@@ -467,10 +472,8 @@ int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
 {
     ssda__track_tab_t *t = NULL;
 #ifndef SSDA_CFG_NO_BOUNDS
-    ssda__track_tab_t tab;
-    if (ssda__track_tab_on(plan)) {
-        ssda__track_tab_init(&tab, plan, col0, col1, 0u);
-        t = &tab;
+    if (plan->tab_rows != 0u) {
+        t = ssda__track_tab_init(plan, col0, col1, 0u);
     }
 #endif
     return solve_run(first, second, plan, row, col0, col1, plan->grid.cols,

@@ -1,13 +1,16 @@
 /*
  * track_tab.c - the bound tables shared by the searches of a tracking call
  * (track_tab.h): built row by row from vertical sums of 4 pixels, kept while
- * the grid moves down, read by ssda__match_rows_tab.
+ * the grid moves down, read by the engine (SSDA__MATCH_TAB).
  */
 #include <string.h>
 
 #include "track_tab.h"
 
 #ifndef SSDA_CFG_NO_BOUNDS
+
+/* The state fits before the tables (a negative array size otherwise). */
+typedef char ssda__track_tab_head_fits[sizeof(ssda__track_tab_t) <= SSDA__TRACK_TAB_HEAD ? 1 : -1];
 
 /* Bytes of the per-window work (SSDA_TRACK_WORK_SIZE, rounded up to 8) and
    of the whole buffer with shared tables (SSDA_TRACK_WORK_SIZE_SHARED), in
@@ -22,18 +25,20 @@ static uint64_t per_window_bytes(const ssda_track_grid_t *g)
 uint64_t ssda__track_tab_size(const ssda_track_grid_t *g, uint32_t first_w)
 {
     const uint64_t rows = g->search_h > 3u ? (uint64_t)g->search_h - 3u : 0u;
-    return ((per_window_bytes(g) + 7u) & ~(uint64_t)7u) +
+    return ((per_window_bytes(g) + 7u) & ~(uint64_t)7u) + SSDA__TRACK_TAB_HEAD +
            ((2u * rows + 1u) * first_w + ((uint64_t)g->win_w / 4u) * (g->win_h / 4u)) *
                sizeof(uint32_t);
 }
 
-void ssda__track_tab_init(ssda__track_tab_t *t, const ssda_track_plan_t *plan, uint32_t col0,
-                          uint32_t col1, uint32_t first_x)
+ssda__track_tab_t *ssda__track_tab_init(const ssda_track_plan_t *plan, uint32_t col0,
+                                        uint32_t col1, uint32_t first_x)
 {
     const ssda_track_grid_t *g = &plan->grid;
     const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
-    uint32_t *base = (uint32_t *)(void *)((uint8_t *)plan->match.work +
-                                          (size_t)((per_window_bytes(g) + 7u) & ~(uint64_t)7u));
+    uint8_t *head = (uint8_t *)plan->match.work +
+                    (size_t)((per_window_bytes(g) + 7u) & ~(uint64_t)7u);
+    ssda__track_tab_t *t = (ssda__track_tab_t *)(void *)head;
+    uint32_t *base = (uint32_t *)(void *)(head + SSDA__TRACK_TAB_HEAD);
     const size_t rows = plan->tab_rows;
     uint32_t col, first_ax = 0u, last_ax = 0u;
     bool any = false;
@@ -62,6 +67,7 @@ void ssda__track_tab_init(ssda__track_tab_t *t, const ssda_track_plan_t *plan, u
     t->y_lo = 0u;
     t->y_end = 0u;
     t->v_row = UINT32_MAX;
+    return t;
 }
 
 /* v[i] += row y's pixel x_lo + i (add) or -= it (modulo 2^32: the sums
@@ -196,8 +202,9 @@ static int tab_rows(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L,
 }
 
 int ssda__track_tab_area(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L,
-                         uint32_t ax, uint32_t y, ssda__match_tab_t *mt, uint64_t *ops)
+                         uint32_t ax, uint32_t y, uint64_t *ops)
 {
+    ssda__match_tab_t *mt = &t->mt;
     int err = tab_rows(t, first, L, y, ops);
     if (err != SSDA_OK) {
         return err;

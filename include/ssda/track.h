@@ -311,7 +311,7 @@ typedef struct {
  * ssda_track_row call (one grid row) builds all its rows. Accumulators:
  * the vertical sums of 4 pixels < 2^18, the 4 x 4 sums < 2^20, the
  * win_w x 4 sums <= 4 * win_w * 65535 < 2^32. Layout: the per-window part
- * (SSDA_TRACK_WORK_SIZE rounded up to 8), then uint32_t tables of
+ * (SSDA_TRACK_WORK_SIZE rounded up to 8), 160 bytes of state, then uint32_t tables of
  * 2 * (search_h - 3) + 1 rows of first_w entries and the window's
  * (win_w / 4) * (win_h / 4) block sums: 590 KB for the 2500-px-wide GOES
  * image, 32 x 32 areas; 29 KB for 128 x 128 images. Wraps like
@@ -319,7 +319,7 @@ typedef struct {
  * 64 bits).
  */
 #define SSDA_TRACK_WORK_SIZE_SHARED(first_w, search_w, search_h, win_w, win_h)            \
-    (((SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h) + 7u) & ~(size_t)7u) +      \
+    (((SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h) + 7u) & ~(size_t)7u) + 160u + \
      ((2u * ((size_t)(search_h) > 3u ? (size_t)(search_h) - 3u : 0u) + 1u) *               \
           (size_t)(first_w) +                                                             \
       ((size_t)(win_w) / 4u) * ((size_t)(win_h) / 4u)) * sizeof(uint32_t))
