@@ -279,6 +279,7 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, uint64_t cut_at)
 {
     const uint32_t nb = (uint32_t)e->L >> 2, pitch = e->gpitch;
+    const uint32_t down = 4u * pitch; /* <= 4 * 65535 */
     const uint32_t *b = e->integ + (size_t)y * pitch + x;
     const uint32_t *w = e->wblk;
     uint32_t k, i;
@@ -290,20 +291,24 @@ static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, u
                 (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
         } else {
             for (i = 0u; i < nb; i++) {
-                const uint32_t a = b[4u * i], c = w[i];
+                const uint32_t a = b[(size_t)4u * i], c = w[i];
                 s += a > c ? a - c : c - a;
             }
         }
         rest = rest - e->term[k] + s; /* s >= term[k] */
         e->term[k] = s;
-        b += (size_t)4u * pitch;
+        b += down;
         w += nb;
         if (rest >= cut_at) {
-            e->ops += (uint64_t)(k + 1u) * nb;
+            const uint32_t terms = (k + 1u) * nb; /* <= M * L / 16 */
+            e->ops += terms;
             return rest;
         }
     }
-    e->ops += (uint64_t)e->ngroups * nb;
+    {
+        const uint32_t terms = (uint32_t)e->ngroups * nb;
+        e->ops += terms;
+    }
     return rest;
 }
 #endif
@@ -473,7 +478,8 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     uint32_t rest = 0u, k;
     e->nbound++; /* n ops each, added by finish */
     if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
-        const uint32_t a0 = g[0], a1 = g[down], a2 = g[2u * down], a3 = g[3u * down];
+        const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
+                       a3 = g[(size_t)3u * down];
         rest = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
                (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
     } else {
@@ -1291,13 +1297,16 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
                 return err;
             }
             if (u8) {
+                const uint8_t *q = p;
                 for (c = 0u; c < nb; c++) {
-                    w[c] += (uint32_t)p[4u * c] + p[4u * c + 1u] + p[4u * c + 2u] + p[4u * c + 3u];
+                    w[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    q += 4;
                 }
             } else {
                 const uint16_t *q = (const uint16_t *)(const void *)p;
                 for (c = 0u; c < nb; c++) {
-                    w[c] += (uint32_t)q[4u * c] + q[4u * c + 1u] + q[4u * c + 2u] + q[4u * c + 3u];
+                    w[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    q += 4;
                 }
             }
         }
@@ -1313,7 +1322,7 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
 /* The bounds from tracking's shared tables (match_rows.h): the area's
    group sums are read there, only the window's are summed here, with its
    4 x 4 block sums when the tables hold them (tab_refine on: e->integ). */
-static int tab_bounds(engine_t *e, const ssda__match_tab_t *tab, uint32_t *wgrp, bool u8,
+static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool u8,
                       uint64_t *ops)
 {
     bool refine = tab->b != NULL && !e->ramp_mode;
@@ -1367,8 +1376,8 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     if ((e->plan->flags & SSDA__MATCH_TAB) != 0u && group == 4u) { /* track_tab.c */
         const size_t at = ((((size_t)nx * e->area->height + 2u * (size_t)e->M) *
                              sizeof(uint32_t) + 7u) & ~(size_t)7u) + SSDA_MATCH_UNIQUE_WORK;
-        err = tab_bounds(e, (const ssda__match_tab_t *)(const void *)((const uint8_t *)work + at),
-                         wgrp, u8, &ops);
+        err = tab_bounds(e, (ssda__match_tab_t *)(void *)((uint8_t *)work + at), wgrp, u8,
+                         &ops);
         e->ops += ops;
         return err;
     }

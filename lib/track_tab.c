@@ -111,7 +111,6 @@ static int v_add(const ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t
    v of row y - 1 when held (2 ops a pixel), else from scratch (4). */
 static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, uint64_t *ops)
 {
-    uint32_t j;
     int err;
     if (t->v_row != UINT32_MAX && t->v_row + 1u == y) {
         err = v_add(t, first, y + 3u, true);
@@ -121,6 +120,7 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
         *ops += 2u * (uint64_t)t->vlen;
     } else {
         (void)memset(t->v, 0, (size_t)t->vlen * sizeof(uint32_t));
+        uint32_t j;
         err = SSDA_OK;
         for (j = 0u; j < 4u && err == SSDA_OK; j++) {
             err = v_add(t, first, y + j, true);
@@ -182,7 +182,8 @@ static int tab_rows(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L,
     if (end > t->y_lo + t->cap) {
         const size_t row = (size_t)t->pitch * sizeof(uint32_t);
         for (r = y; r < t->y_end; r++) { /* ascending: a row never onto one not yet moved */
-            const size_t to = (size_t)(r - y) * t->pitch, from = (size_t)(r - t->y_lo) * t->pitch;
+            const size_t to = ((size_t)r - y) * t->pitch;
+            const size_t from = ((size_t)r - t->y_lo) * t->pitch;
             (void)memcpy(t->g + to, t->g + from, row);
             if (t->blocks) {
                 (void)memcpy(t->b + to, t->b + from, row);
