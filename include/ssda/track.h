@@ -313,8 +313,8 @@ typedef struct {
  * win_w x 4 sums <= 4 * win_w * 65535 < 2^32. Layout: the per-window part
  * (SSDA_TRACK_WORK_SIZE rounded up to 8), 160 bytes of state, then uint32_t tables of
  * 2 * (search_h - 3) + 1 rows of first_w entries and the window's
- * (win_w / 4) * (win_h / 4) block sums: 590 KB for the 2500-px-wide GOES
- * image, 32 x 32 areas; 29 KB for 128 x 128 images. Wraps like
+ * (win_w / 4) * (win_h / 4) block sums: 592 944 B for the 2500-px-wide GOES
+ * image, 32 x 32 areas; 33 152 B for 128 x 128 images. Wraps like
  * SSDA_MATCH_WORK_SIZE where size_t is 32 bits (the library checks in
  * 64 bits).
  */
