@@ -82,6 +82,9 @@ typedef struct {
                               is on, else NULL */
     uint32_t *wblk;        /* blocks: the window's block sums, level after level;
                               shared tables: the window's 4 x 4 sums */
+    const uint32_t *pre; /* shared tables, fast path, AUTO without the uniqueness
+                            list: every position's group bound, nx per row (in
+                            the per-window group table's place), else NULL */
     uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
                             bound, saturated to 32 bits (a lower bound still),
                             nx per row in the group tables' place; else NULL */
@@ -823,7 +826,17 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
 static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
 {
     cand_t c;
-    int err = consider(e, x, y, &c);
+    int err;
+#ifndef SSDA_CFG_NO_BOUNDS
+    /* with every bound known (pre_bounds): a position whose bound exceeds
+       the best SAD is cut by eval_fast too (its cut level is at most that
+       SAD + 1), so it is counted and passed without the call */
+    if (e->pre != NULL && e->ref != NULL && e->pre[(size_t)y * e->nx + x] > e->ref->sad) {
+        e->positions++;
+        return SSDA_OK;
+    }
+#endif
+    err = consider(e, x, y, &c);
     if (err > 0) {
         e->ref = &e->best;
     }
@@ -1342,6 +1355,44 @@ static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool 
     return window_groups(e, wgrp, 4u, e->ngroups, u8, ops);
 }
 
+/* Shared tables, fast path, AUTO without the uniqueness list: every
+   position's group bound in one pass over the tables (rows of the shared
+   table against each window group sum, so the loops run along x and
+   vectorise), into the per-window group table's place, which shared tables
+   leave free (nx * ah >= nx * ny entries). The scans then pass the
+   positions whose bound exceeds the best SAD without evaluating them
+   (consider_best). Counts the nx * ny * ngroups terms here; eval_fast's
+   bound calls for the other positions are not counted again (finish). */
+#ifndef SSDA_CFG_NO_FAST_PATH
+static SSDA_NOINLINE void pre_bounds(engine_t *e)
+{
+    uint32_t *pre = (uint32_t *)e->plan->work;
+    const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    uint32_t x, y, k;
+    for (y = 0u; y < ny; y++) {
+        uint32_t *p = pre + (size_t)y * nx;
+        for (k = 0u; k < e->ngroups; k++) {
+            const uint32_t *g = e->gsum + ((size_t)y + 4u * (size_t)k) * pitch;
+            const uint32_t w = e->wgrp[k];
+            if (k == 0u) {
+                for (x = 0u; x < nx; x++) {
+                    p[x] = g[x] > w ? g[x] - w : w - g[x];
+                }
+            } else {
+                for (x = 0u; x < nx; x++) {
+                    p[x] += g[x] > w ? g[x] - w : w - g[x];
+                }
+            }
+        }
+    }
+    {
+        const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
+        e->ops += terms;
+    }
+    e->pre = pre;
+}
+#endif
+
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -1518,7 +1569,9 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 #ifndef SSDA_CFG_NO_BOUNDS
-    e->ops += (uint64_t)e->nbound * e->ngroups;
+    if (e->pre == NULL) { /* else counted once for every position */
+        e->ops += (uint64_t)e->nbound * e->ngroups;
+    }
 #endif
 #ifdef ENGINE_FALLBACK
     uint64_t fb_sad = 0u; /* the fallback's full SAD: <= 65535^3 */
@@ -1656,6 +1709,10 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
     e.fast = e.fast && e.low == NULL && e.lev_lo > e.lev_hi;
+    if (e.fast && e.bounds && e.list == NULL && e.gsum != NULL &&
+        e.gsum != (const uint32_t *)plan->work && plan->scan != (uint8_t)SSDA_SCAN_COARSE) {
+        pre_bounds(&e); /* shared tables (tab_bounds): every bound at once */
+    }
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
 #ifndef SSDA_CFG_NO_BOUNDS
