@@ -356,7 +356,8 @@ typedef struct {
  * same validation, errors and results (bit-identical: the same code runs).
  * Worst-case stack at -Os (tools/budget.sh, docs/target.md): 320 bytes on
  * the Cortex-M4F (and the other Armv7-M/Armv8-M cores, where the call into
- * the engine is a tail call), 488 on the M0+; about half of ssda_match's.
+ * the engine is a tail call), more on the M0+ (no tail call there); about
+ * half of ssda_match's.
  * Issue 18's 320-byte goal is met by this entry only. For small stacks (an
  * RTOS task, an interrupt-driven job) with the state in static storage.
  *   state:        caller storage, any contents; overwritten by the search
