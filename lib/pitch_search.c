@@ -42,16 +42,19 @@ static bool n_less(const lag_value_t *p, const lag_value_t *q)
     return (uint64_t)d_of(p) * q->s < (uint64_t)d_of(q) * p->s;
 }
 
-/* n <= q15 / 32768, exactly. */
-static bool n_at_most_q15(const lag_value_t *v, uint32_t q15)
-{
-    return ((uint64_t)d_of(v) << 15) <= (uint64_t)q15 * v->s;
-}
-
-/* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s. */
+/* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s, in 32
+   bits (no 64-bit multiply on cores without one): with s = 32768 h + l,
+   q15 * s / 32768 = q15 h + q15 l / 32768, where q15 h < 2^15 * 2^15 and
+   q15 l < 2^30 (q15 <= 32767, s < 2^30). */
 static uint32_t threshold_bound(uint32_t q15, uint32_t s)
 {
-    return (uint32_t)(((uint64_t)q15 * s) >> 15);
+    return q15 * (s >> 15) + ((q15 * (s & 0x7FFFu)) >> 15);
+}
+
+/* n <= q15 / 32768, exactly: 32768 d <= q15 s, i.e. d <= floor(q15 s / 32768). */
+static bool n_at_most_q15(const lag_value_t *v, uint32_t q15)
+{
+    return d_of(v) <= threshold_bound(q15, v->s);
 }
 
 /* Largest d at scale s that still wins against best: n < n(best) for a lag
@@ -315,8 +318,6 @@ static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t pre
         evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, w->mean), NO_BOUND, &w->pred);
         w->best = w->pred;
         w->best_lag = pred;
-    } else {
-        w->pred = w->best;
     }
     /* lag_min - 1 is only a neighbour and the first arming test: needed
        exactly when n <= threshold. */
@@ -509,20 +510,13 @@ void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
         silent_estimate(est);
         return;
     }
-    /* From here A >= K >= 16, so every s(lag) >= A > 0. */
-    w->best.d = 0u;
-    w->best.s = 1u;
-    w->best_left = w->best;
-    w->best_right = w->best;
-    w->run = w->best;
-    w->run_left = w->best;
-    w->run_right = w->best;
-    w->t_left = w->best;
-    w->t_mid = w->best;
-    w->t_right = w->best;
+    /* From here A >= K >= 16, so every s(lag) >= A > 0. No best lag yet
+       (0); the other lag values are written before they are read: the
+       scan's first candidate, lag_min, is summed in full and becomes the
+       best (with its left neighbour, and its right one at the next lag,
+       which the scan always reaches); a run's values are written when it
+       opens; t_* at the end of the scan. */
     w->best_lag = 0u;
-    w->run_lag = 0u;
-    w->t_lag = 0u;
 
     refine(w, scan_lags(w, predict_lag), est);
 }
