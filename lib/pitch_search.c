@@ -39,7 +39,7 @@ typedef ssda_pitch_work_t frame_t;
 /* n(p) < n(q), exactly: d_p * s_q < d_q * s_p (products < 2^59). */
 static bool n_less(const lag_value_t *p, const lag_value_t *q)
 {
-    return (uint64_t)d_of(p) * q->s < (uint64_t)d_of(q) * p->s;
+    return SSDA_MUL64(d_of(p), q->s) < SSDA_MUL64(d_of(q), p->s);
 }
 
 /* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s, in 32
@@ -62,7 +62,7 @@ static bool n_at_most_q15(const lag_value_t *v, uint32_t q15)
    Returns false when no d >= 0 can win. The result is <= s < 2^30. */
 static bool best_bound(const lag_value_t *best, bool after, uint32_t s, uint32_t *bound)
 {
-    uint64_t p = (uint64_t)d_of(best) * s; /* < 2^59 */
+    uint64_t p = SSDA_MUL64(d_of(best), s); /* < 2^59 */
     if (after) {
         if (p == 0u) {
             return false;
@@ -142,7 +142,7 @@ static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t 
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
         int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
-        drop = den > 0 ? ssda__div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
+        drop = den > 0 ? ssda__div64_32(SSDA_MUL64(diff, diff), (uint32_t)den) : 0u;
     } else {
         drop = diff / 2u;
     }
@@ -176,7 +176,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
     k = 2u;
     for (;;) { /* multiples k of the period until k * period passes lag_max */
         /* k * period_q16 <= 1200 * 2^29 < 2^40 */
-        uint32_t c = (uint32_t)(((uint64_t)k * period_q16 + 32768u) >> 16);
+        uint32_t c = (uint32_t)((SSDA_MUL64(k, period_q16) + 32768u) >> 16);
         uint32_t lag, found_lag = 0u;
         /* the best of the three in f->prev, each lag in f->cur: the scan's
            prev and cur are unused by now (kept off the stack) */
@@ -190,7 +190,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
         for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
             uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
             /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
-            uint32_t bound = (uint32_t)(((uint64_t)limit * s - 1u) >> 20);
+            uint32_t bound = (uint32_t)((SSDA_MUL64(limit, s) - 1u) >> 20);
             evaluate(f, lag, s, full ? NO_BOUND : bound, v);
             if (is_exact(v) && (found_lag == 0u || n_less(v, found_v))) {
                 found_lag = lag;
@@ -237,7 +237,7 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
         if (c < 3u) {
             return false;
         }
-        if (c >= info->lag_min || (uint64_t)period_q16 >= (uint64_t)(k - 1u) * (info->lag_min << 16)) {
+        if (c >= info->lag_min || (uint64_t)period_q16 >= SSDA_MUL64(k - 1u, info->lag_min << 16)) {
             continue; /* P / k in range: a dip there would have been found */
         }
         for (lag = c - 2u; lag <= c + 2u; lag++) {
