@@ -250,9 +250,16 @@ typedef struct {
     uint32_t s;
 } ssda_pitch_lag_value_t;
 
+/* Private: a lag with the values of its two neighbours (v[0] at lag - 1,
+   v[1] at lag, v[2] at lag + 1). */
+typedef struct {
+    ssda_pitch_lag_value_t v[3];
+    uint32_t lag;
+} ssda_pitch_dip_t;
+
 /* Private: the working state of one frame's analysis (the frame and its
-   level, the best lag so far, the open dip run and the chosen lag, each
-   with its neighbours). It lives
+   level, the scan's previous and current lag, the best lag so far, the
+   open dip run and the chosen lag, each with its neighbours). It lives
    in ssda_pitch_t, not on the stack, so that ssda_pitch_push needs little
    stack (docs/target.md). */
 typedef struct {
@@ -261,12 +268,9 @@ typedef struct {
     int32_t mean;            /* m */
     uint32_t level;          /* A */
     uint32_t diffs;          /* absolute differences so far */
-    ssda_pitch_lag_value_t prev, cur;
-    ssda_pitch_lag_value_t best, best_left, best_right;
-    ssda_pitch_lag_value_t run, run_left, run_right;
+    ssda_pitch_lag_value_t at[2]; /* the scan: previous lag, current lag */
     ssda_pitch_lag_value_t pred;
-    ssda_pitch_lag_value_t t_left, t_mid, t_right;
-    uint32_t best_lag, run_lag, t_lag;
+    ssda_pitch_dip_t best, run, t;
 } ssda_pitch_work_t;
 
 /* The stream state. Caller-allocated; fields are private (read them through
