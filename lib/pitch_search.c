@@ -398,11 +398,11 @@ static SSDA_ALWAYS_INLINE void note_best(ssda_pitch_work_t *w, uint32_t lag)
    multiple follows). Returns whether it is. */
 static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_armed)
 {
-    const ssda_pitch_info_t *info = w->info;
     const dip_t *r = &w->run;
-    return run_armed &&
-           (r->lag != info->lag_max || !n_less(&r->v[2], &r->v[1])) &&
-           (r->lag != info->lag_min || !n_less(&r->v[0], &r->v[1]));
+    /* the outer neighbour of a minimum at an end of the range (lag_min <
+       lag_max always), else the minimum itself (never below itself) */
+    const uint32_t side = r->lag == w->info->lag_max ? 2u : (r->lag == w->info->lag_min ? 0u : 1u);
+    return run_armed && !n_less(&r->v[side], &r->v[1]);
 }
 
 /*
