@@ -38,9 +38,10 @@ uint64_t ssda__mul_u32_u32(uint32_t a, uint32_t b)
     const uint32_t al = a & 0xFFFFu, ah = a >> 16;
     const uint32_t bl = b & 0xFFFFu, bh = b >> 16;
     /* each product < 2^32; the sum is the exact product < 2^64 */
-    uint64_t r = ((uint64_t)(ah * bh) << 32) | (al * bl);
-    r += (uint64_t)(ah * bl) << 16;
-    r += (uint64_t)(al * bh) << 16;
+    const uint32_t hh = ah * bh, ll = al * bl, hl = ah * bl, lh = al * bh;
+    uint64_t r = ((uint64_t)hh << 32) | ll;
+    r += (uint64_t)hl << 16;
+    r += (uint64_t)lh << 16;
     return r;
 }
 

@@ -7,17 +7,19 @@
 #include "slide.h"
 #include "state.h"
 
+#ifdef SSDA_CFG_NO_PITCH_PUSH
+/* No push intake, so no buffer (include/ssda/config.h). */
+int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes) /* NOLINT(readability-non-const-parameter) */
+{
+    (void)cfg;
+    (void)bytes;
+    return SSDA_ERR_UNSUPPORTED;
+}
+#else
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 {
     ssda_pitch_info_t info;
     int err;
-#ifdef SSDA_CFG_NO_PITCH_PUSH
-    (void)cfg;
-    (void)bytes;
-    (void)info;
-    (void)err;
-    return SSDA_ERR_UNSUPPORTED; /* no push intake, no buffer */
-#else
     if (cfg == NULL || bytes == NULL) {
         return SSDA_ERR_NULL;
     }
@@ -27,8 +29,8 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     }
     *bytes = (size_t)info.span * sizeof(int16_t);
     return SSDA_OK;
-#endif
 }
+#endif
 
 int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
                     void *buffer, size_t buffer_size)
@@ -121,8 +123,9 @@ int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *e
 }
 
 #ifdef SSDA_CFG_NO_PITCH_PUSH
-int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
-                    size_t *consumed, ssda_pitch_estimate_t *est)
+/* Whole frames only (ssda_pitch_frame): nothing consumed or written. */
+int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count, /* NOLINT(readability-non-const-parameter) */
+                    size_t *consumed, ssda_pitch_estimate_t *est) /* NOLINT(readability-non-const-parameter) */
 {
     (void)p;
     (void)samples;

@@ -401,7 +401,14 @@ static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_a
     const dip_t *r = &w->run;
     /* the outer neighbour of a minimum at an end of the range (lag_min <
        lag_max always), else the minimum itself (never below itself) */
-    const uint32_t side = r->lag == w->info->lag_max ? 2u : (r->lag == w->info->lag_min ? 0u : 1u);
+    uint32_t side = 1u;
+    if (r->lag == w->info->lag_max) {
+        side = 2u;
+    } else if (r->lag == w->info->lag_min) {
+        side = 0u;
+    } else {
+        /* inside the range: no side to test */
+    }
     return run_armed && !n_less(&r->v[side], &r->v[1]);
 }
 
@@ -439,7 +446,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
         /* Slide B: drop x[lag - 1], add x[lag - 1 + K]. B stays <= K * 65535. */
         b_sum = b_sum - abs_dev(x[lag - 1u], mean) + abs_dev(x[lag - 1u + k], mean);
         s = w->level + b_sum;
-        if (SSDA_PITCH_HAS_TRACK(info->flags) && lag == pred) {
+        if (lag == pred && SSDA_PITCH_HAS_TRACK(info->flags)) {
             *cur = w->pred;
         } else {
             evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, armed, rearm),
