@@ -95,8 +95,10 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
 }
 
 /* One frame x[0 .. span - 1] analysed as estimate number p->frame: its
-   number and centre, and the prediction carried to the next frame. */
-static void analyze_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *est)
+   number and centre, and the prediction carried to the next frame.
+   Inlined: no frame of its own on push's chain (stack). */
+static SSDA_ALWAYS_INLINE void analyze_frame(ssda_pitch_t *p, const int16_t *x,
+                                             ssda_pitch_estimate_t *est)
 {
     ssda__pitch_analyze_in(&p->work, &p->info, x, p->predict_lag, est);
     est->frame = p->frame;

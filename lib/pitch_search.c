@@ -129,34 +129,40 @@ static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
     evaluate(f, lag, scale_at(f, lag), bound, v);
 }
 
-/*
- * The dip through t's three exact values a, b, c = nq(lag - 1), nq(lag),
- * nq(lag + 1) (Q20): returns the sub-sample period (Q16.16) and writes
- * the interpolated minimum to *floor_q20: b - |a - c| / 2 for the V fit,
- * b - (a - c)^2 / (8 (a - 2b + c)) for the parabola; >= 0.
- */
-static SSDA_NOINLINE uint32_t dip_fit(const frame_t *f, const dip_t *t, uint32_t *floor_q20)
+/* nq = floor(2^20 d / s) of t's value v[i] (Q20), i = 0, 1, 2 for lag - 1,
+   lag, lag + 1. */
+static SSDA_SIZE_NOINLINE uint32_t nq_of(const dip_t *t, uint32_t i)
 {
-    const bool parabolic = SSDA_PITCH_HAS_PARABOLIC(f->info->flags);
-    uint32_t q[3];
-    uint32_t i, diff, drop;
-    int32_t delta;
-    for (i = 0u; i < 3u; i++) {
-        q[i] = ssda__pitch_norm_q20(d_of(&t->v[i]), t->v[i].s);
-    }
-    delta = ssda__pitch_interp_q16(q[0], q[1], q[2], parabolic);
-    diff = q[0] > q[2] ? q[0] - q[2] : q[2] - q[0]; /* <= 2^20 */
-    if (parabolic) {
+    return ssda__pitch_norm_q20(d_of(&t->v[i]), t->v[i].s);
+}
+
+/* Sub-sample period (Q16.16) of the dip through t's three exact values. */
+static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, const dip_t *t)
+{
+    int32_t delta = ssda__pitch_interp_q16(nq_of(t, 0u), nq_of(t, 1u), nq_of(t, 2u),
+                                          SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
+    /* lag <= 4800: 65536 * lag + delta < 2^29 */
+    return (uint32_t)((int32_t)(t->lag << 16) + delta);
+}
+
+/* The interpolated minimum of the dip through t's three exact values a, b,
+   c (Q20): b - |a - c| / 2 for the V fit, b - (a - c)^2 / (8 (a - 2b + c))
+   for the parabola; >= 0. (Apart from the period, so that the below-range
+   check's chain does not reach the interpolation: stack.) */
+static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const dip_t *t)
+{
+    const uint32_t a = nq_of(t, 0u), b = nq_of(t, 1u), c = nq_of(t, 2u);
+    const uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
+    uint32_t drop;
+    if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
-        int32_t den = 8 * ((int32_t)q[0] - 2 * (int32_t)q[1] + (int32_t)q[2]);
+        int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
         drop = den > 0 ? ssda__div64_32(SSDA_MUL64(diff, diff), (uint32_t)den) : 0u;
     } else {
         drop = diff / 2u;
     }
-    *floor_q20 = q[1] > drop ? q[1] - drop : 0u;
-    /* lag <= 4800: 65536 * lag + delta < 2^29 */
-    return (uint32_t)((int32_t)(t->lag << 16) + delta);
+    return b > drop ? b - drop : 0u;
 }
 
 /* The octave margin in Q20: threshold / 3 as (t * 43691) >> 17, exact for
@@ -254,16 +260,12 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
             continue; /* P / k in range: a dip there would have been found */
         }
         for (lag = c - 2u; lag <= c + 2u; lag++) {
-            uint32_t fl;
             u->v[0] = u->v[1];
             u->v[1] = u->v[2];
-            u->lag = lag - 1u;
             value_at(f, lag, NO_BOUND, &u->v[2]);
-            if (lag >= c && !n_less(&u->v[0], &u->v[1]) && !n_less(&u->v[2], &u->v[1])) {
-                (void)dip_fit(f, u, &fl);
-                if (fl <= limit) {
-                    return true;
-                }
+            if (lag >= c && !n_less(&u->v[0], &u->v[1]) && !n_less(&u->v[2], &u->v[1]) &&
+                dip_floor_q20(f, u) <= limit) {
+                return true;
             }
         }
     }
@@ -295,7 +297,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     make_exact(w, w->t.lag - 1u, &w->t.v[0]);
     make_exact(w, w->t.lag + 1u, &w->t.v[2]);
     for (;;) {
-        period = dip_fit(w, &w->t, &floor_q20);
+        period = period_q16_of(w, &w->t);
+        floor_q20 = dip_floor_q20(w, &w->t);
         if (!found || !octave_up(w, period, floor_q20)) {
             break;
         }
