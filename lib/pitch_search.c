@@ -117,16 +117,11 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
     return v < 0 ? (uint32_t)(-v) : (uint32_t)v;
 }
 
-/* The scale s(lag) = A + B(lag), B summed directly. */
+/* The scale s(lag) = A + B(lag), B summed directly (callers pass it to
+   evaluate(): no frame between theirs and evaluate's, for the stack). */
 static uint32_t scale_at(const frame_t *f, uint32_t lag)
 {
     return f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
-}
-
-/* The value of any lag, with its scale computed directly. */
-static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
-{
-    evaluate(f, lag, scale_at(f, lag), bound, v);
 }
 
 /* nq = floor(2^20 d / s) of t's value v[i] (Q20), i = 0, 1, 2 for lag - 1,
@@ -262,7 +257,7 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
         for (lag = c - 2u; lag <= c + 2u; lag++) {
             u->v[0] = u->v[1];
             u->v[1] = u->v[2];
-            value_at(f, lag, NO_BOUND, &u->v[2]);
+            evaluate(f, lag, scale_at(f, lag), NO_BOUND, &u->v[2]);
             if (lag >= c && !n_less(&u->v[0], &u->v[1]) && !n_less(&u->v[2], &u->v[1]) &&
                 dip_floor_q20(f, u) <= limit) {
                 return true;
@@ -302,8 +297,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
         if (!found || !octave_up(w, period, floor_q20)) {
             break;
         }
-        value_at(w, w->t.lag - 1u, NO_BOUND, &w->t.v[0]);
-        value_at(w, w->t.lag + 1u, NO_BOUND, &w->t.v[2]);
+        evaluate(w, w->t.lag - 1u, scale_at(w, w->t.lag - 1u), NO_BOUND, &w->t.v[0]);
+        evaluate(w, w->t.lag + 1u, scale_at(w, w->t.lag + 1u), NO_BOUND, &w->t.v[2]);
     }
     est->lag = w->t.lag;
     est->period_q16 = period;
@@ -334,7 +329,7 @@ static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t pre
     if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
         predict_lag >= info->lag_min && predict_lag <= info->lag_max) {
         pred = predict_lag;
-        value_at(w, pred, NO_BOUND, &w->pred);
+        evaluate(w, pred, scale_at(w, pred), NO_BOUND, &w->pred);
         w->best.v[1] = w->pred;
         w->best.lag = pred;
     }
