@@ -102,14 +102,6 @@ static void evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound, lag_v
     }
 }
 
-/* Make v exact (re-sum without a bound) for the interpolation. */
-static void make_exact(frame_t *f, uint32_t lag, lag_value_t *v)
-{
-    if (!is_exact(v)) {
-        evaluate(f, lag, v->s, NO_BOUND, v);
-    }
-}
-
 /* |x[i] - m| for the sliding sum B(lag) = sum_{i<K} |x[lag + i] - m|. */
 static uint32_t abs_dev(int16_t x, int32_t mean)
 {
@@ -177,16 +169,15 @@ static uint32_t margin_q20_of(const ssda_pitch_info_t *info)
  * floor, not with n at the integer lag, keeps a dip that is only shallow
  * because the period falls between two lags. Only lags that could pass are
  * summed in full (the bound comes from the test itself): still exact.
- * Returns true when it moves, with the new lag and value in f->t.lag and
- * f->t.v[1].
+ * Returns the lag it moves to, its value in f->at[0], or 0 when it stays.
  */
-static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
+static SSDA_NOINLINE uint32_t octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
 {
     const uint32_t margin_q20 = margin_q20_of(f->info);
     const bool full = SSDA_PITCH_HAS_FULL(f->info->flags);
     uint32_t k, limit;
     if (floor_q20 <= margin_q20) {
-        return false; /* nothing can be deeper by the margin */
+        return 0u; /* nothing can be deeper by the margin */
     }
     limit = floor_q20 - margin_q20; /* wanted: nq < limit */
     k = 2u;
@@ -199,7 +190,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
         lag_value_t *found_v = &f->at[0];
         lag_value_t *v = &f->at[1];
         if (c - 1u > f->info->lag_max) {
-            return false;
+            return 0u;
         }
         for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
             uint32_t s = scale_at(f, lag);
@@ -212,9 +203,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
             }
         }
         if (found_lag != 0u && ssda__pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
-            f->t.lag = found_lag;
-            f->t.v[1] = *found_v;
-            return true;
+            return found_lag;
         }
         k++;
     }
@@ -279,7 +268,7 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 }
 
 /*
- * The chosen lag (w->t) refined: exact neighbours, the sub-sample period,
+ * The chosen lag refined: exact neighbours, the sub-sample period,
  * the octave check when it is a dip (found), and the estimate. Kept out of
  * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
@@ -287,27 +276,41 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_estimate_t *est)
 {
     const ssda_pitch_info_t *info = w->info;
-    uint32_t period, floor_q20, n_q15;
-    /* Interpolation needs both neighbours exactly. */
-    make_exact(w, w->t.lag - 1u, &w->t.v[0]);
-    make_exact(w, w->t.lag + 1u, &w->t.v[2]);
+    /* the chosen lag: the first dip (a copy when the scan went on: full
+       search), else the global minimum */
+    dip_t *const t = !found ? &w->best : (SSDA_PITCH_HAS_FULL(info->flags) ? &w->t : &w->run);
+    uint32_t period, floor_q20, n_q15, i;
+    est->dip = found; /* read back below: one register less across the calls */
+    uint32_t moved = 0u; /* the lag an octave move went to, 0 before any */
     for (;;) {
-        period = period_q16_of(w, &w->t);
-        floor_q20 = dip_floor_q20(w, &w->t);
-        if (!found || !octave_up(w, period, floor_q20)) {
+        /* Interpolation needs both neighbours exactly: re-summed in full
+           when cut (the scale kept), summed anew after an octave move. */
+        for (i = 0u; i < 3u; i += 2u) {
+            lag_value_t *v = &t->v[i];
+            const uint32_t lag = t->lag - 1u + i;
+            if (moved != 0u) {
+                v->s = scale_at(w, lag);
+            }
+            if (moved != 0u || !is_exact(v)) {
+                evaluate(w, lag, v->s, NO_BOUND, v);
+            }
+        }
+        period = period_q16_of(w, t);
+        floor_q20 = dip_floor_q20(w, t);
+        moved = est->dip ? octave_up(w, period, floor_q20) : 0u;
+        if (moved == 0u) {
             break;
         }
-        evaluate(w, w->t.lag - 1u, scale_at(w, w->t.lag - 1u), NO_BOUND, &w->t.v[0]);
-        evaluate(w, w->t.lag + 1u, scale_at(w, w->t.lag + 1u), NO_BOUND, &w->t.v[2]);
+        t->lag = moved;
+        t->v[1] = w->at[0];
     }
-    est->lag = w->t.lag;
+    est->lag = t->lag;
     est->period_q16 = period;
     est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, period);
-    n_q15 = ssda__div64_32((uint64_t)d_of(&w->t.v[1]) << 15, w->t.v[1].s); /* d <= s: 0..32768 */
+    n_q15 = ssda__div64_32((uint64_t)d_of(&t->v[1]) << 15, t->v[1].s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
-    est->voiced = found && at_most_q15(&w->t.v[1], info->voicing_q15) &&
+    est->voiced = est->dip && at_most_q15(&t->v[1], info->voicing_q15) &&
                   !below_range(w, period, floor_q20);
-    est->dip = found;
     est->silent = false;
     est->diffs = w->diffs;
 }
@@ -413,7 +416,8 @@ static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_a
 /*
  * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
  * (w set up by ssda__pitch_analyze_in): the first valid dip run's minimum in
- * w->t (returns true), else the global minimum (false). In *w: the best
+ * w->run, or w->t when the scan goes on (full search) (returns true),
+ * else the global minimum in w->best (false). In *w: the best
  * lag so far (the global-minimum fallback) and the open run under the
  * threshold (its minimum), each with its neighbours; the predicted lag's
  * value; the chosen lag (t). Out of line, so that its locals are gone
@@ -475,10 +479,10 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
             in_run = false;
             if (!found && run_is_dip(w, run_armed)) {
                 found = true;
-                w->t = w->run;
                 if (!full) {
-                    break; /* no later lag can change the choice */
+                    break; /* no later lag can change the choice: w->run stays */
                 }
+                w->t = w->run; /* the scan goes on and may open other runs */
             }
         } else {
             /* outside a run, and still outside */
@@ -487,10 +491,6 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
             armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
         }
         w->at[0] = *cur;
-    }
-
-    if (!found) {
-        w->t = w->best;
     }
     return found;
 }
@@ -517,7 +517,7 @@ void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
        the scan's first candidate, lag_min, is summed in full and becomes
        the best (with its left neighbour, and its right one at the next
        lag, which the scan always reaches); a run's values are written when
-       it opens; w->t at the end of the scan. */
+       it opens. */
     w->best.lag = 0u;
     w->run.lag = 0u;
 
