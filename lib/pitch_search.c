@@ -528,5 +528,9 @@ void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     ssda_pitch_work_t w;
+    /* zeroed: every result depends only on values the analysis wrote,
+       but it moves some scratch values before writing them (the below-
+       range check's window), and those are then not indeterminate */
+    (void)memset(&w, 0, sizeof w);
     ssda__pitch_analyze_in(&w, info, x, predict_lag, est);
 }
