@@ -39,6 +39,10 @@ int16_t ssda__vfit_q8(uint64_t l, uint64_t c, uint64_t r)
     uint64_t den = (l > r ? l : r) - c; /* >= |l - r|: c is the smallest */
     uint64_t num = l > r ? l - r : r - l;
     uint32_t q;
+    if (c == 0u) {
+        return 0; /* an exact match: the neighbours' asymmetry is the
+                     window's border, not a fraction (see match.h) */
+    }
     while (den >= 0x80000000u) {
         den >>= 1;
         num >>= 1;

@@ -299,7 +299,7 @@ static uint32_t clamp_to(int32_t v, uint32_t n)
 static int32_t vfit_ref(uint64_t l, uint64_t c, uint64_t r)
 {
     uint64_t den = (l > r ? l : r) - c, num = l > r ? l - r : r - l, q;
-    if (den == 0u) {
+    if (den == 0u || c == 0u) {
         return 0;
     }
     q = (256u * num + den) / (2u * den); /* SADs here < 2^31: no scaling */

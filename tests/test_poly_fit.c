@@ -73,6 +73,21 @@ static void random_map(test_rng_t *r, uint16_t w, uint16_t h, uint8_t order, ssd
     }
 }
 
+/* Pair k: reference point (X, Y), moved by map p, plus uniform noise of
+   +-noise px. */
+static void put_pair(test_rng_t *r, const ssda_poly_t *p, size_t k, double X, double Y,
+                     double noise)
+{
+    double x, y;
+    test_poly_map(p, X, Y, &x, &y);
+    x += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
+    y += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
+    g_pairs[k].ref_x_q8 = q8(X);
+    g_pairs[k].ref_y_q8 = q8(Y);
+    g_pairs[k].mov_x_q8 = q8(x);
+    g_pairs[k].mov_y_q8 = q8(y);
+}
+
 /* n pairs on a jittered grid of the reference (or a small corner region
    when `corner`), moved by map p, plus uniform noise of +-noise px. */
 static void make_pairs(test_rng_t *r, const ssda_poly_t *p, size_t n, double noise, int corner)
@@ -83,14 +98,7 @@ static void make_pairs(test_rng_t *r, const ssda_poly_t *p, size_t n, double noi
         const double span_y = corner ? p->ref_h / 6.0 : p->ref_h - 1.0;
         const double X = span_x * (double)test_rng_next(r) / 4294967296.0;
         const double Y = span_y * (double)test_rng_next(r) / 4294967296.0;
-        double x, y;
-        test_poly_map(p, X, Y, &x, &y);
-        x += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
-        y += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
-        g_pairs[k].ref_x_q8 = q8(X);
-        g_pairs[k].ref_y_q8 = q8(Y);
-        g_pairs[k].mov_x_q8 = q8(x);
-        g_pairs[k].mov_y_q8 = q8(y);
+        put_pair(r, p, k, X, Y, noise);
     }
 }
 
@@ -553,14 +561,7 @@ static size_t make_cells(test_rng_t *r, const ssda_poly_t *p, int grid, double n
         const double cw = p->ref_w / (double)grid, ch = p->ref_h / (double)grid;
         const double X = (k % grid + 0.5) * cw + (test_rng_next(r) / 4294967296.0 - 0.5) * cw / 2;
         const double Y = (k / grid + 0.5) * ch + (test_rng_next(r) / 4294967296.0 - 0.5) * ch / 2;
-        double x, y;
-        test_poly_map(p, X, Y, &x, &y);
-        x += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
-        y += noise * ((double)test_rng_next(r) / 2147483648.0 - 1.0);
-        g_pairs[k].ref_x_q8 = q8(X);
-        g_pairs[k].ref_y_q8 = q8(Y);
-        g_pairs[k].mov_x_q8 = q8(x);
-        g_pairs[k].mov_y_q8 = q8(y);
+        put_pair(r, p, k, X, Y, noise);
         inlier[k] = 1;
         dist[k] = (X - p->ref_w / 2.0) * (X - p->ref_w / 2.0) + (Y - p->ref_h / 2.0) * (Y - p->ref_h / 2.0);
     }

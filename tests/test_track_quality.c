@@ -126,11 +126,12 @@ static uint32_t clampu(int32_t v, uint32_t n)
     return v < 0 ? 0u : ((uint32_t)v >= n ? n - 1u : (uint32_t)v);
 }
 
-/* V fit of match.h: 128 |l - r| / (max(l, r) - c), rounded half away from 0. */
+/* V fit of match.h: 128 |l - r| / (max(l, r) - c), rounded half away from 0;
+   0 for an exact match (c = 0). */
 static int32_t ref_vfit(uint64_t l, uint64_t c, uint64_t r)
 {
     uint64_t den = (l > r ? l : r) - c, num = l > r ? l - r : r - l, q;
-    if (den == 0) {
+    if (den == 0 || c == 0) {
         return 0;
     }
     q = (256u * num + den) / (2u * den);

@@ -2,7 +2,8 @@
 # The project's test command (README, and CI through .ci/run).
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror (with the Python binding and its pytest
-# suite), a host build with ASan + UBSan, a 32-bit (-m32) host build with
+# suite), a host build with ASan + UBSan, the Unity suite on the library
+# built without its fast path (SSDA_CFG_NO_FAST_PATH), a 32-bit (-m32) host build with
 # ASan + UBSan running the Unity suite, the line and
 # branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
 # of lib/ (cppcheck + MISRA C 2012, clang-tidy), a 5-second run of every fuzz
@@ -45,6 +46,13 @@ configure_build_test() { # <dir> <cmake args...>
 configure_build_test build/host -DSSDA_BUILD_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
   configure_build_test build/asan -DSSDA_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug
+
+# The library without its exact fast path (SSDA_CFG_NO_FAST_PATH, issue 18):
+# every search then takes the general evaluation, and the Unity suite must
+# give the same results there (the fast path is an implementation switch
+# only). The library and its tests alone, about half a minute.
+configure_build_test build/nofast -DSSDA_CONFIG=SSDA_CFG_NO_FAST_PATH \
+  -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF -DSSDA_INSTALL=OFF
 
 # Coverage of lib/ from the Unity tests (gcov + lcov; docs/coverage.md):
 # line and branch figures per file, portable and SSE2 kernels merged; fails

@@ -159,7 +159,10 @@ typedef enum {
  * parabola suits squared differences and pulls SAD estimates toward whole
  * pixels). result.sub_x_q8, sub_y_q8: the offset in Q8.8 px (-128 .. 128),
  * rounded half away from zero; 0 on an axis where the best position is on
- * the border of the range (no neighbour) or all three SADs are equal.
+ * the border of the range (no neighbour) or all three SADs are equal, and
+ * 0 on both axes when c = 0: an exact match lies at its whole-pixel
+ * placement (the neighbours' SADs then differ only through the window's
+ * border pixels, which gave identical frames fractions up to 0.4 px).
  * Exact modes only. Cost: at most 4 window SADs.
  */
 #define SSDA_MATCH_SUBPIXEL 0x08u

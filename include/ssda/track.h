@@ -72,7 +72,7 @@
  * SUB-PIXEL MOTION (sub_dx_q8, sub_dy_q8, Q24.8 px, same sign as dx, dy):
  * dx - offset of the equiangular fit of SSDA_MATCH_SUBPIXEL, per axis; 256 *
  * dx where no fit is possible (the border of the range, all three SADs
- * equal) and with SSDA_TRACK_NO_SUBPIXEL or a threshold mode other than
+ * equal), where the window matches exactly (SAD 0), and with SSDA_TRACK_NO_SUBPIXEL or a threshold mode other than
  * AUTO and NONE (the fit needs exact SADs).
  *
  * TEXTURE EXCLUSION (the seed, section 3: windows that are all clear or all
