@@ -35,6 +35,8 @@ typedef struct {
 #ifndef SSDA_CFG_NO_BOUNDS
     uint16_t group;      /* bounds: rows per group (1..4; blocks: M >> level) */
     uint16_t ngroups;    /* bounds: floor(M / group) groups carry a bound term */
+    uint16_t gpitch;     /* bounds: entries between rows of gsum (nx, or the
+                            shared tables' pitch <= FIRST's width) */
     uint8_t lev_lo, lev_hi; /* blocks: levels lev_lo..lev_hi in use; none when
                                lev_lo > lev_hi */
 #endif
@@ -68,15 +70,21 @@ typedef struct {
     uint32_t fb_pixels;  /* <= L * M <= 65535^2 < 2^32 */
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
-    uint32_t *gsum;      /* bounds: area sums over L x group pixels, nx per area
+    const uint32_t *gsum; /* bounds: area sums over L x group pixels, nx per area
                             row; <= 4 * 16384 * 65535 < 2^32 (see build_bounds) */
     uint32_t *wgrp;      /* bounds: window sums per group, same range */
     uint32_t *term;      /* bounds: group terms of the current position */
     uint32_t nbound;     /* bounds: group_bound32 calls, ngroups ops each
                             (<= positions < 2^32), added to ops by finish */
     const uint32_t *integ; /* blocks: the area's integral image, (aw+1) x (ah+1),
-                              modulo 2^32 (block_bound) */
-    uint32_t *wblk;        /* blocks: the window's block sums, level after level */
+                              modulo 2^32 (block_bound); shared tables (no block
+                              levels then): their 4 x 4 sums when tab_refine
+                              is on, else NULL */
+    uint32_t *wblk;        /* blocks: the window's block sums, level after level;
+                              shared tables: the window's 4 x 4 sums */
+    const uint32_t *pre; /* shared tables, fast path, AUTO without the uniqueness
+                            list: every position's group bound, nx per row (in
+                            the per-window group table's place), else NULL */
     uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
                             bound, saturated to 32 bits (a lower bound still),
                             nx per row in the group tables' place; else NULL */
@@ -247,8 +255,8 @@ static void note_cut(engine_t *e, uint32_t x, uint32_t y, uint64_t low, uint32_t
    in e->term for the row loop. */
 static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
 {
-    const uint32_t *g = e->gsum + (size_t)y * e->nx + x;
-    const size_t down = (size_t)e->group * e->nx;
+    const uint32_t *g = e->gsum + (size_t)y * e->gpitch + x;
+    const size_t down = (size_t)e->group * e->gpitch;
     uint64_t rest = 0u;
     uint32_t k;
     for (k = 0u; k < e->ngroups; k++) {
@@ -259,6 +267,51 @@ static uint64_t group_bound(engine_t *e, uint32_t x, uint32_t y)
         rest += d;
     }
     e->ops += e->ngroups;
+    return rest;
+}
+
+/* Tracking's shared tables with 4 x 4 block sums (match_rows.h): a
+   position that passed its group bound gets, group after group, the sum of
+   its L / 4 block terms |area block sum - window block sum| in place of the
+   group's term (never smaller: the triangle inequality, block by block),
+   until the bound reaches cut_at. Gao's successive elimination at 4 x 4
+   blocks, one lookup per term: cheap because the tables are shared by the
+   windows of a grid. A block sum <= 16 * 65535 < 2^20, a group's terms
+   <= 256 of them < 2^28 (L <= 1024); the bound stays <= the position's
+   SAD. One op per term. */
+static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, uint64_t cut_at)
+{
+    const uint32_t nb = (uint32_t)e->L >> 2, pitch = e->gpitch;
+    const uint32_t down = 4u * pitch; /* <= 4 * 65535 */
+    const uint32_t *b = e->integ + (size_t)y * pitch + x;
+    const uint32_t *w = e->wblk;
+    uint32_t k, i;
+    for (k = 0u; k < e->ngroups; k++) {
+        uint32_t s = 0u; /* < 2^28 */
+        if (nb == 4u) { /* 16 to 19 columns: no loop */
+            const uint32_t a0 = b[0], a1 = b[4], a2 = b[8], a3 = b[12];
+            s = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
+                (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+        } else {
+            for (i = 0u; i < nb; i++) {
+                const uint32_t a = b[(size_t)4u * i], c = w[i];
+                s += a > c ? a - c : c - a;
+            }
+        }
+        rest = rest - e->term[k] + s; /* s >= term[k] */
+        e->term[k] = s;
+        b += down;
+        w += nb;
+        if (rest >= cut_at) {
+            const uint32_t terms = (k + 1u) * nb; /* <= M * L / 16 */
+            e->ops += terms;
+            return rest;
+        }
+    }
+    {
+        const uint32_t terms = (uint32_t)e->ngroups * nb;
+        e->ops += terms;
+    }
     return rest;
 }
 #endif
@@ -420,17 +473,24 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
    stored only when the position passes (a second pass): most do not. */
 static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
 {
-    const uint32_t *g0 = e->gsum + (size_t)y * e->nx + x;
+    const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
     const uint32_t *g = g0;
-    const uint32_t down = (uint32_t)e->group * e->nx; /* < 2^32 */
+    const uint32_t down = (uint32_t)e->group * e->gpitch; /* < 2^32 */
     const uint32_t *w = e->wgrp;
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
     e->nbound++; /* n ops each, added by finish */
-    for (k = 0u; k < n; k++) {
-        const uint32_t a = *g, b = w[k];
-        rest += a > b ? a - b : b - a;
-        g += down;
+    if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
+        const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
+                       a3 = g[(size_t)3u * down];
+        rest = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
+               (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+    } else {
+        for (k = 0u; k < n; k++) {
+            const uint32_t a = *g, b = w[k];
+            rest += a > b ? a - b : b - a;
+            g += down;
+        }
     }
     if (rest < cut_at) {
         uint32_t *t = e->term;
@@ -447,8 +507,14 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
 
 /* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
-   at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it). */
-static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y)
+   at most 2^32 - 1; the uniqueness level saturates (a sum never reaches it).
+   With SSDA_MATCH_TIE_NEAREST and a reference of SAD s >= 1 the level is s
+   or s + 1 by the tie rule: with bounds, s + 1 is returned and *tie set,
+   and eval_fast settles the rule only for a position whose bound leaves it
+   open (the distances cost more than most positions' whole test; tracking
+   always sets the flag). */
+static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, uint32_t y,
+                                               bool *tie)
 {
     const cand_t *ref = e->ref;
     if (e->plain_ref && ref != NULL) { /* the usual case, tested first */
@@ -459,6 +525,10 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     }
     if (e->list != NULL) {
         return e->loose > UINT32_MAX ? UINT32_MAX : (uint32_t)e->loose;
+    }
+    if (e->bounds && ref->sad != 0u) {
+        *tie = true;
+        return (uint32_t)ref->sad + 1u;
     }
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
@@ -542,7 +612,8 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
  */
 static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
 {
-    const uint32_t cut_at = cut_level32(e, x, y);
+    bool tie = false;
+    uint32_t cut_at = cut_level32(e, x, y, &tie);
     uint32_t rest = 0u; /* the bound, < 2^32 - 1 */
     e->positions++;
     if (cut_at == 0u) {
@@ -553,6 +624,18 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
         rest = group_bound32(e, x, y, cut_at);
         if (rest >= cut_at) {
             return 0;
+        }
+        if (tie && !pos_before(e, x, y, e->ref->x, e->ref->y)) {
+            cut_at--; /* the tie rule (cut_level32): s >= 1 */
+            if (rest >= cut_at) {
+                return 0;
+            }
+        }
+        if (e->integ != NULL) { /* the bound <= the SAD < 2^32 - 1 */
+            rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
+            if (rest >= cut_at) {
+                return 0;
+            }
         }
     }
 #endif
@@ -602,6 +685,9 @@ static int eval_position(engine_t *e, uint32_t x, uint32_t y, uint64_t *sad)
     }
     if (e->bounds) {
         rest = group_bound(e, x, y);
+        if (rest < cut_at && e->integ != NULL && e->lev_lo > e->lev_hi) { /* tab_refine */
+            rest = tab_refine(e, x, y, rest, cut_at);
+        }
         if (rest >= cut_at) {
             NOTE_CUT(e, x, y, rest, 0u);
             return 0;
@@ -740,7 +826,17 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
 static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
 {
     cand_t c;
-    int err = consider(e, x, y, &c);
+    int err;
+#ifndef SSDA_CFG_NO_BOUNDS
+    /* with every bound known (pre_bounds): a position whose bound exceeds
+       the best SAD is cut by eval_fast too (its cut level is at most that
+       SAD + 1), so it is counted and passed without the call */
+    if (e->pre != NULL && e->ref != NULL && e->pre[(size_t)y * e->nx + x] > e->ref->sad) {
+        e->positions++;
+        return SSDA_OK;
+    }
+#endif
+    err = consider(e, x, y, &c);
     if (err > 0) {
         e->ref = &e->best;
     }
@@ -1191,6 +1287,112 @@ static SSDA_ALWAYS_INLINE int window_groups(const engine_t *e, uint32_t *wgrp, u
     return SSDA_OK;
 }
 
+/* With shared tables holding 4 x 4 block sums: the window's block sums,
+   L / 4 per group of 4 rows (tab_refine), and each group's sum from its
+   blocks into wgrp. A block sum <= 16 * 65535 < 2^20. Adds the work to
+   *ops (the pixels, then nb - 1 additions a group). Returns SSDA_OK or a
+   fetch error. */
+static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint32_t *wgrp,
+                                        bool u8, uint64_t *ops)
+{
+    const uint32_t nb = (uint32_t)e->L >> 2;
+    uint32_t k, yy, c;
+    for (k = 0u; k < e->ngroups; k++) {
+        uint32_t *w = wblk + (size_t)k * nb;
+        uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */
+        for (c = 0u; c < nb; c++) {
+            w[c] = 0u;
+        }
+        for (yy = 4u * k; yy < 4u * k + 4u; yy++) {
+            const uint8_t *p;
+            int err = ssda__rows_get(e->win, 0u, yy, 4u * nb, &p);
+            if (err != SSDA_OK) {
+                return err;
+            }
+            if (u8) {
+                const uint8_t *q = p;
+                for (c = 0u; c < nb; c++) {
+                    w[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    q += 4;
+                }
+            } else {
+                const uint16_t *q = (const uint16_t *)(const void *)p;
+                for (c = 0u; c < nb; c++) {
+                    w[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    q += 4;
+                }
+            }
+        }
+        for (c = 0u; c < nb; c++) {
+            g += w[c];
+        }
+        wgrp[k] = g;
+        *ops += (uint64_t)4u * e->L + nb - 1u;
+    }
+    return SSDA_OK;
+}
+
+/* The bounds from tracking's shared tables (match_rows.h): the area's
+   group sums are read there, only the window's are summed here, with its
+   4 x 4 block sums when the tables hold them (tab_refine on: e->integ). */
+static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool u8,
+                      uint64_t *ops)
+{
+    bool refine = tab->b != NULL && !e->ramp_mode;
+#ifdef ENGINE_FALLBACK
+    /* not with the ramp (its cuts read the bound) nor the all-cut fallback
+       (it keeps the position cut latest): the bound's strength would change
+       their results */
+    refine = refine && !e->need_fb;
+#endif
+    e->gsum = tab->g;
+    e->gpitch = (uint16_t)tab->pitch;
+    if (refine) {
+        e->integ = tab->b;
+        e->wblk = tab->wblk;
+        return window_blocks4(e, tab->wblk, wgrp, u8, ops);
+    }
+    return window_groups(e, wgrp, 4u, e->ngroups, u8, ops);
+}
+
+/* Shared tables, fast path, AUTO without the uniqueness list: every
+   position's group bound in one pass over the tables (rows of the shared
+   table against each window group sum, so the loops run along x and
+   vectorise), into the per-window group table's place, which shared tables
+   leave free (nx * ah >= nx * ny entries). The scans then pass the
+   positions whose bound exceeds the best SAD without evaluating them
+   (consider_best). Counts the nx * ny * ngroups terms here; eval_fast's
+   bound calls for the other positions are not counted again (finish). */
+#ifndef SSDA_CFG_NO_FAST_PATH
+static SSDA_NOINLINE void pre_bounds(engine_t *e)
+{
+    uint32_t *pre = (uint32_t *)e->plan->work;
+    const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    uint32_t x, y, k;
+    for (y = 0u; y < ny; y++) {
+        uint32_t *p = pre + (size_t)y * nx;
+        for (k = 0u; k < e->ngroups; k++) {
+            const uint32_t *g = e->gsum + ((size_t)y + 4u * (size_t)k) * pitch;
+            const uint32_t w = e->wgrp[k];
+            if (k == 0u) {
+                for (x = 0u; x < nx; x++) {
+                    p[x] = g[x] > w ? g[x] - w : w - g[x];
+                }
+            } else {
+                for (x = 0u; x < nx; x++) {
+                    p[x] += g[x] > w ? g[x] - w : w - g[x];
+                }
+            }
+        }
+    }
+    {
+        const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
+        e->ops += terms;
+    }
+    e->pre = pre;
+}
+#endif
+
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -1219,8 +1421,17 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     e->group = (uint16_t)group;   /* 1..4 */
     e->ngroups = (uint16_t)ngroups; /* <= M */
     e->gsum = gsum;
+    e->gpitch = (uint16_t)nx;
     e->wgrp = wgrp;
     e->term = wgrp + e->M;
+    if ((e->plan->flags & SSDA__MATCH_TAB) != 0u && group == 4u) { /* track_tab.c */
+        const size_t at = ((((size_t)nx * e->area->height + 2u * (size_t)e->M) *
+                             sizeof(uint32_t) + 7u) & ~(size_t)7u) + SSDA_MATCH_UNIQUE_WORK;
+        err = tab_bounds(e, (ssda__match_tab_t *)(void *)((uint8_t *)work + at), wgrp, u8,
+                         &ops);
+        e->ops += ops;
+        return err;
+    }
     err = area_row_sums(e, gsum, u8, &ops);
     if (err == SSDA_OK) {
         if (group > 1u) {
@@ -1358,7 +1569,9 @@ static SSDA_NOINLINE int finish(engine_t *e, ssda_match_result_t *result)
     int16_t sx = 0, sy = 0;
     uint16_t uq = (uint16_t)SSDA_MATCH_UNIQUE_NONE;
 #ifndef SSDA_CFG_NO_BOUNDS
-    e->ops += (uint64_t)e->nbound * e->ngroups;
+    if (e->pre == NULL) { /* else counted once for every position */
+        e->ops += (uint64_t)e->nbound * e->ngroups;
+    }
 #endif
 #ifdef ENGINE_FALLBACK
     uint64_t fb_sad = 0u; /* the fallback's full SAD: <= 65535^3 */
@@ -1496,6 +1709,10 @@ int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t *window,
 #endif
 #ifndef SSDA_CFG_NO_BOUNDS
     e.fast = e.fast && e.low == NULL && e.lev_lo > e.lev_hi;
+    if (e.fast && e.bounds && e.list == NULL && e.gsum != NULL &&
+        e.gsum != (const uint32_t *)plan->work && plan->scan != (uint8_t)SSDA_SCAN_COARSE) {
+        pre_bounds(&e); /* shared tables (tab_bounds): every bound at once */
+    }
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
 #ifndef SSDA_CFG_NO_BOUNDS

@@ -88,4 +88,33 @@ SSDA_INTERNAL int ssda__match_rows(const ssda__rows_t *area, const ssda__rows_t 
                                    const ssda_match_plan_t *plan, int32_t predict_x,
                                    int32_t predict_y, ssda_match_result_t *result);
 
+/*
+ * Bound tables shared by the searches of a tracking grid (track_tab.c).
+ * With SSDA__MATCH_TAB in a plan's flags (set by the tracking plan only),
+ * the work buffer holds, at byte SSDA__MATCH_TAB_AT(...) (the per-window
+ * part, SSDA_MATCH_WORK_SIZE_UNIQUE, rounded up to 8), this description of
+ * the tables for the next search, written by the caller before each one;
+ * the engine then reads the area's group sums there instead of building
+ * them: over the search area, with (0, 0) its top-left placement,
+ * g[y * pitch + x] is the sum of the L x 4 pixels at (x, y) (L the window
+ * width; the engine's groups of 4 rows), and b, when not NULL,
+ * b[y * pitch + x] the sum of the 4 x 4 pixels at (x, y), for every
+ * x + 4 i, y + 4 k of a placement's groups and blocks; wblk is scratch for
+ * the window's (M / 4) * (L / 4) block sums. Only with SSDA_MATCH_BOUNDS
+ * in effect, groups of 4 rows (M >= 4, and L <= 16384 for 16-bit samples)
+ * and, with b, L a multiple of 4 up to 1024. Results, positions and
+ * completed are those without; pixel_ops counts the window's sums and the
+ * bound terms, not the shared tables (their builder counts them). Passed
+ * in the buffer, not as an argument: the engine's entry keeps its frame.
+ */
+#define SSDA__MATCH_TAB 0x80u
+#define SSDA__MATCH_TAB_AT(area_w, area_h, win_w, win_h)                      \
+    ((SSDA_MATCH_WORK_SIZE_UNIQUE(area_w, area_h, win_w, win_h) + 7u) & ~(size_t)7u)
+typedef struct {
+    const uint32_t *g;
+    const uint32_t *b;
+    uint32_t *wblk;
+    uint32_t pitch;
+} ssda__match_tab_t;
+
 #endif /* SSDA_MATCH_ROWS_H */

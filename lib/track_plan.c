@@ -1,5 +1,6 @@
 /* track_plan.c - grid layout and configuration checks of grid tracking. */
 #include "track_rows.h"
+#include "track_tab.h"
 
 const ssda_track_config_t ssda__track_defaults; /* all zero */
 
@@ -157,6 +158,19 @@ int ssda__track_plan(const ssda_track_config_t *cfg, uint8_t format, uint32_t fi
             match.scan = (uint8_t)SSDA_SCAN_PREDICT;
         }
     }
-    return ssda__match_plan(&match, plan->grid.search_w, plan->grid.search_h,
-                            plan->grid.win_w, plan->grid.win_h, &plan->match);
+    err = ssda__match_plan(&match, plan->grid.search_w, plan->grid.search_h,
+                           plan->grid.win_w, plan->grid.win_h, &plan->match);
+    plan->tab_rows = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+    /* shared bound tables (track.h): the engine's groups of 4 rows, and a
+       buffer for them */
+    if (err == SSDA_OK && (match.flags & SSDA_MATCH_BOUNDS) != 0u &&
+        match.threshold != (uint8_t)SSDA_THRESHOLD_NONE && plan->grid.win_h >= 4u &&
+        (maxval == 255u || plan->grid.win_w <= 16384u) &&
+        (uint64_t)match.work_size >= ssda__track_tab_size(&plan->grid, first_w)) {
+        plan->tab_rows = (uint16_t)(plan->grid.search_h - 3u);
+        plan->match.flags |= (uint8_t)SSDA__MATCH_TAB; /* the engine reads them */
+    }
+#endif
+    return err;
 }

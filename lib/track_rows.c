@@ -4,6 +4,7 @@
  * window on sub-sources of the two images.
  */
 #include "track_rows.h"
+#include "track_tab.h"
 #include "fixmath.h"
 
 const ssda__track_origin_t ssda__track_origin_whole = {0u, 0u, 0u, 0u};
@@ -316,11 +317,26 @@ static void vector_init(ssda_track_vector_t *v, uint32_t wx, uint32_t wy)
     v->status = (uint8_t)SSDA_TRACK_EDGE;
 }
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* The shared tables' rows for the area at source (ax, ay), their work
+   counted. Out of line: its locals stay off the search's call chain. */
+static SSDA_NOINLINE int tab_area(ssda__track_tab_t *tab, const ssda__rows_t *first,
+                                  const ssda_track_grid_t *g, uint32_t ax, uint32_t ay,
+                                  ssda_track_stats_t *st)
+{
+    uint64_t built = 0u;
+    int err = ssda__track_tab_area(tab, first, g->win_w, ax, ay, &built);
+    add_sat(&st->pixel_ops, built);
+    return err;
+}
+#endif
+
 /* Status and vector of window k; when no test decides it, the search. */
 static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
                         const ssda_track_plan_t *p, ssda_track_vector_t *out, uint32_t col,
                         uint32_t row, uint32_t col1, const ssda__track_origin_t *o,
-                        ssda_track_vector_t *v, ssda_track_stats_t *st)
+                        ssda__track_tab_t *tab, ssda_track_vector_t *v,
+                        ssda_track_stats_t *st)
 {
     const ssda_track_grid_t *g = &p->grid;
     const uint32_t hx = ((uint32_t)g->search_w - g->win_w) / 2u;
@@ -362,6 +378,16 @@ static int solve_window(const ssda__rows_t *first, const ssda__rows_t *second,
     /* the predicted placement (zero motion without prediction): where a
        PREDICT scan starts and what the tie rule is nearest to; |pd| <=
        65535: no overflow; the engine clamps */
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (tab != NULL) { /* shared tables: this area's rows built or kept */
+        err = tab_area(tab, first, g, wx - hx - o->first_x, wy - hy - o->first_y, st);
+        if (err != SSDA_OK) {
+            return err;
+        }
+    }
+#else
+    (void)tab; /* no bounds: no tables */
+#endif
     err = ssda__match_rows(&area, &win, &p->match, (int32_t)hx - pdx, (int32_t)hy - pdy, &res);
     if (err != SSDA_OK) {
         return err;
@@ -394,12 +420,13 @@ static void stats_zero(ssda_track_stats_t *st)
 static int solve_run(const ssda__rows_t *first, const ssda__rows_t *second,
                      const ssda_track_plan_t *plan, uint32_t row, uint32_t col0, uint32_t col1,
                      uint32_t ur_end, const ssda__track_origin_t *origin,
-                     ssda_track_vector_t *out, ssda_track_stats_t *acc)
+                     ssda__track_tab_t *tab, ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
     uint32_t col;
     for (col = col0; col < col1; col++) {
         ssda_track_vector_t v;
-        int err = solve_window(first, second, plan, out, col, row, ur_end, origin, &v, acc);
+        int err = solve_window(first, second, plan, out, col, row, ur_end, origin, tab, &v,
+                               acc);
         if (err != SSDA_OK) {
             return err;
         }
@@ -423,9 +450,15 @@ int ssda__track_part(const ssda__rows_t *first, const ssda__rows_t *second,
                      uint32_t row0, uint32_t row1, const ssda__track_origin_t *origin,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
+    ssda__track_tab_t *t = NULL; /* shared tables, kept from grid row to grid row */
     uint32_t row;
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (plan->tab_rows != 0u) {
+        t = ssda__track_tab_init(plan, col0, col1, origin->first_x);
+    }
+#endif
     for (row = row0; row < row1; row++) {
-        int err = solve_run(first, second, plan, row, col0, col1, col1, origin, out, acc);
+        int err = solve_run(first, second, plan, row, col0, col1, col1, origin, t, out, acc);
         if (err != SSDA_OK) {
             return err;
         }
@@ -437,8 +470,14 @@ int ssda__track_span(const ssda__rows_t *first, const ssda__rows_t *second,
                      const ssda_track_plan_t *plan, uint32_t row, uint32_t col0, uint32_t col1,
                      ssda_track_vector_t *out, ssda_track_stats_t *acc)
 {
+    ssda__track_tab_t *t = NULL;
+#ifndef SSDA_CFG_NO_BOUNDS
+    if (plan->tab_rows != 0u) {
+        t = ssda__track_tab_init(plan, col0, col1, 0u);
+    }
+#endif
     return solve_run(first, second, plan, row, col0, col1, plan->grid.cols,
-                     &ssda__track_origin_whole, out, acc);
+                     &ssda__track_origin_whole, t, out, acc);
 }
 
 int ssda__track_prepare(const ssda__rows_t *first, const ssda__rows_t *second,

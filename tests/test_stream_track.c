@@ -24,6 +24,10 @@ static uint16_t g_first[IH][IW], g_second[IH][IW];
 static uint8_t g_fdev[30000], g_sdev[30000];
 static uint32_t g_farena[3072], g_sarena[1536]; /* 12 KB, 6 KB */
 static uint64_t g_work[(SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) + 7u) / 8u];
+/* bounds tables shared by the windows (track.h), for the bounds configs
+   (12 x 10 in 26 x 23) when g_shared is set */
+static uint64_t g_swork[(SSDA_TRACK_WORK_SIZE_SHARED(IW, 26, 23, 12, 10) + 7u) / 8u];
+static bool g_shared;
 static test_source_t g_tf, g_ts;
 #define MAX_WIN 200u
 static ssda_track_vector_t g_want[MAX_WIN], g_got[MAX_WIN];
@@ -112,8 +116,8 @@ static ssda_track_config_t config(uint32_t i)
         c.mask_value = 4095u;
         c.texture_threshold = 1500u;
         c.match.flags = SSDA_MATCH_BOUNDS;
-        c.match.work = g_work;
-        c.match.work_size = sizeof g_work;
+        c.match.work = g_shared ? g_swork : g_work;
+        c.match.work_size = g_shared ? sizeof g_swork : sizeof g_work;
         c.win_w = 12;
         c.win_h = 10;
         c.search_w = 26;
@@ -165,6 +169,18 @@ static void check_against_ram(ssda_source_t *f, ssda_source_t *s, const ssda_tra
     TEST_ASSERT_EQUAL_UINT32(want.masked, got.masked);
     TEST_ASSERT_EQUAL_UINT32(want.edge, got.edge);
     TEST_ASSERT_EQUAL_UINT64(want.check_pixels, got.check_pixels);
+    if (g_shared && c->match.work == g_swork) {
+        /* the tables' work depends on how the grid is cut into calls; the
+           vectors are those of per-window tables */
+        ssda_track_config_t per = *c;
+        per.match.work = g_work;
+        per.match.work_size = sizeof g_work;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&fv, &sv, &per, g_want, MAX_WIN, NULL));
+        for (k = 0; k < grid.count; k++) {
+            TEST_ASSERT_TRUE(same_vector(&g_want[k], &g_got[k]));
+        }
+        want.pixel_ops = got.pixel_ops;
+    }
     if (one_strip || c->predict == SSDA_TRACK_PREDICT_NONE) {
         TEST_ASSERT_EQUAL_UINT64(want.pixel_ops, got.pixel_ops);
         TEST_ASSERT_EQUAL_UINT64(want.positions, got.positions);
@@ -249,6 +265,17 @@ static void test_one_image_streamed(void)
         check_against_ram(&fview, &s, &c, false);
         check_against_ram(&fview, &sview, &c, false);
     }
+}
+
+/* The same with the bounds tables shared by the windows: streamed rows
+   (plates of FIRST per strip and grid row) against images in RAM, every
+   layout and arena of the first test for the bounds configurations. */
+static void test_shared_tables_streamed(void)
+{
+    g_shared = true;
+    test_one_image_streamed();
+    test_equal_to_ram_over_layouts_arenas_and_modes();
+    g_shared = false;
 }
 
 /* Read once per strip: with brute force (every row needed), FIRST's bytes
@@ -549,6 +576,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_equal_to_ram_over_layouts_arenas_and_modes);
     RUN_TEST(test_one_image_streamed);
+    RUN_TEST(test_shared_tables_streamed);
     RUN_TEST(test_each_strip_reads_its_areas_and_windows_once);
     RUN_TEST(test_bytes_read_are_bounded_for_every_accepted_arena);
     RUN_TEST(test_failure_at_every_read);

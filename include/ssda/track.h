@@ -192,7 +192,9 @@ typedef struct {
        are ignored (set per window). With a prediction mode other than
        NONE, scan must be RASTER or PREDICT and is run as PREDICT.
        SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need work >=
-       SSDA_TRACK_WORK_SIZE(...) bytes, 8-byte aligned. The quality flags
+       SSDA_TRACK_WORK_SIZE(...) bytes, 8-byte aligned; with
+       SSDA_TRACK_WORK_SIZE_SHARED(...) bytes the bounds' tables are
+       shared by the windows (faster, same results). The quality flags
        of the search are set by tracking: TIE_NEAREST always, SUBPIXEL and
        UNIQUE from the flags above (flags given here are kept).
        SSDA_MATCH_BLOCKS is refused (SSDA_ERR_ARG): it pays on single
@@ -224,6 +226,8 @@ typedef struct {
     uint32_t flat_q8;           /* resolved; 0: no flat test */
     uint16_t mask_value;        /* <= the format's maximum */
     uint16_t first_w, first_h;  /* FIRST's size (the EDGE test) */
+    uint16_t tab_rows;          /* shared bound tables: rows held (0: none,
+                                   each search builds its own) */
     uint8_t predict;            /* ssda_track_predict_t */
     uint8_t flags;              /* SSDA_TRACK_* flags */
 } ssda_track_plan_t;
@@ -280,6 +284,45 @@ typedef struct {
    (one, reused by every window; 8-byte aligned). */
 #define SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h)                \
     SSDA_MATCH_WORK_SIZE_UNIQUE(search_w, search_h, win_w, win_h)
+
+/*
+ * SHARED BOUND TABLES (issue 18). With SSDA_MATCH_BOUNDS (threshold other
+ * than NONE) and a work buffer of at least this many bytes, the searches of
+ * one call share their bound tables instead of building them per window:
+ * the search areas of neighbouring windows overlap (4 times for 32 x 32
+ * areas at step 16). For every FIRST row that a grid row's areas cover, the
+ * call builds the sums over win_w x 4 pixels (the bound's row groups) and,
+ * when win_w is a multiple of 4 up to 1024, over 4 x 4 pixels at every
+ * column of the areas, keeps them while the grid moves down, and every
+ * search reads them. The 4 x 4 block sums tighten the bound of each
+ * position that passes the group bound, one group of 4 rows at a time
+ * (Gao's multilevel successive elimination at 4 x 4 blocks: 16 terms for a
+ * 16 x 16 window, one lookup each), so that most such positions are
+ * rejected before any absolute difference; not in the RAMP, AUTO_RAMP and
+ * FIXED modes, whose results depend on the bound's strength.
+ *   first_w: FIRST's width, px; the other sizes as the grid's (resolved).
+ * Needs win_h >= 4, and win_w <= 16384 for 16-bit images; otherwise, or with
+ * a smaller buffer (down to SSDA_TRACK_WORK_SIZE), every search builds its
+ * own tables as before. Results (vectors, SADs, statuses, exact flags,
+ * positions, completed) are those without shared tables; stats.pixel_ops
+ * counts the tables once (one op per pixel read and per sliding-sum step)
+ * and the searches' work, so it depends on how the grid is cut into calls:
+ * one ssda_track call builds each FIRST row's tables once, an
+ * ssda_track_row call (one grid row) builds all its rows. Accumulators:
+ * the vertical sums of 4 pixels < 2^18, the 4 x 4 sums < 2^20, the
+ * win_w x 4 sums <= 4 * win_w * 65535 < 2^32. Layout: the per-window part
+ * (SSDA_TRACK_WORK_SIZE rounded up to 8), 160 bytes of state, then uint32_t tables of
+ * 2 * (search_h - 3) + 1 rows of first_w entries and the window's
+ * (win_w / 4) * (win_h / 4) block sums: 592 944 B for the 2500-px-wide GOES
+ * image, 32 x 32 areas; 33 152 B for 128 x 128 images. Wraps like
+ * SSDA_MATCH_WORK_SIZE where size_t is 32 bits (the library checks in
+ * 64 bits).
+ */
+#define SSDA_TRACK_WORK_SIZE_SHARED(first_w, search_w, search_h, win_w, win_h)            \
+    (((SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h) + 7u) & ~(size_t)7u) + 160u + \
+     ((2u * ((size_t)(search_h) > 3u ? (size_t)(search_h) - 3u : 0u) + 1u) *               \
+          (size_t)(first_w) +                                                             \
+      ((size_t)(win_w) / 4u) * ((size_t)(win_h) / 4u)) * sizeof(uint32_t))
 
 /*
  * Resolve defaults and lay out the grid of cfg on a SECOND image of

@@ -28,7 +28,8 @@ typedef struct {
     uint8_t scan;        /* ssda_scan_t (prediction overrides to PREDICT) */
     uint8_t predict;     /* ssda_track_predict_t */
     uint8_t order;       /* ssda_order_t */
-    uint8_t bounds;      /* 1: SSDA_MATCH_BOUNDS */
+    uint8_t bounds;      /* 1: SSDA_MATCH_BOUNDS; 2: with tables shared by the
+                            windows (SSDA_TRACK_WORK_SIZE_SHARED) */
     uint8_t fixed;       /* 1: FIXED threshold set from the data */
 } bench_mode_t;
 
@@ -36,9 +37,11 @@ static const bench_mode_t k_modes[] = {
     {"`none` (brute force)", SSDA_THRESHOLD_NONE, SSDA_SCAN_RASTER, SSDA_TRACK_PREDICT_NONE, 0, 0, 0},
     {"`auto` raster", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, SSDA_TRACK_PREDICT_NONE, 0, 0, 0},
     {"`auto` raster + bounds", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, SSDA_TRACK_PREDICT_NONE, 0, 1, 0},
+    {"`auto` raster + bounds, shared tables", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, SSDA_TRACK_PREDICT_NONE, 0, 2, 0},
     {"`auto` predicted (left, the seed's)", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_LEFT, 0, 0, 0},
     {"`auto` predicted (median)", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 0, 0, 0},
-    {"**`auto` predicted + bounds**", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 0, 1, 0},
+    {"`auto` predicted + bounds", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 0, 1, 0},
+    {"**`auto` predicted + bounds, shared tables**", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 0, 2, 0},
     {"`auto` predicted + bounds, spread rows", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 1, 1, 0},
     {"`auto_ramp` K=2 predicted", SSDA_THRESHOLD_AUTO_RAMP, SSDA_SCAN_PREDICT, SSDA_TRACK_PREDICT_MEDIAN, 0, 0, 0},
     {"`auto_ramp` K=2 raster", SSDA_THRESHOLD_AUTO_RAMP, SSDA_SCAN_RASTER, SSDA_TRACK_PREDICT_NONE, 0, 0, 0},
@@ -229,7 +232,8 @@ static int run_pair(const char *title, const ssda_view_t *first, const ssda_view
     ssda_track_stats_t st_none = {0};
     row_t rows[NMODES];
     size_t work_size = SSDA_TRACK_WORK_SIZE(32, 32, 16, 16);
-    uint32_t *work = malloc(work_size);
+    size_t shared_size = SSDA_TRACK_WORK_SIZE_SHARED(first->width, 32, 32, 16, 16);
+    uint32_t *work = malloc(shared_size);
     int e;
 
     memset(&base, 0, sizeof base); /* 16 x 16 in 32 x 32, step 16, whole image */
@@ -261,7 +265,7 @@ static int run_pair(const char *title, const ssda_view_t *first, const ssda_view
         if (md->bounds) {
             cfg.match.flags = SSDA_MATCH_BOUNDS;
             cfg.match.work = work;
-            cfg.match.work_size = work_size;
+            cfg.match.work_size = md->bounds == 2 ? shared_size : work_size;
         }
         e = run_mode(first, second, &cfg, &grid, reps, ref, m == 0 ? ref : vec, &st, &rows[m]);
         if (e != SSDA_OK) {

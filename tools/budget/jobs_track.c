@@ -15,7 +15,8 @@
 #define GRID 49u
 
 static uint8_t g_first[IMG * IMG], g_second[IMG * IMG];
-static uint32_t g_work[SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) / 4u];
+/* big enough for the bound tables shared by the windows (the last job) */
+static uint32_t g_work[SSDA_TRACK_WORK_SIZE_SHARED(IMG, 32, 32, 16, 16) / 4u];
 static ssda_view_t g_first_v, g_second_v;
 
 typedef struct {
@@ -31,6 +32,8 @@ static void track_job(void *ctx)
     j->err = ssda_track(&g_first_v, &g_second_v, &j->cfg, j->out, GRID, &j->stats);
 }
 
+/* bounds: 0 none, 1 per-window tables (SSDA_TRACK_WORK_SIZE), 2 shared
+   ones (SSDA_TRACK_WORK_SIZE_SHARED) */
 static void run(const char *name, uint8_t threshold, uint8_t predict, int bounds,
                 const track_job_t *reference)
 {
@@ -46,7 +49,8 @@ static void run(const char *name, uint8_t threshold, uint8_t predict, int bounds
     if (bounds) {
         j.cfg.match.flags = SSDA_MATCH_BOUNDS;
         j.cfg.match.work = g_work;
-        j.cfg.match.work_size = sizeof g_work;
+        j.cfg.match.work_size = bounds == 2 ? sizeof g_work
+                                            : SSDA_TRACK_WORK_SIZE(32, 32, 16, 16);
     }
     stack = budget_stack_peak(track_job, &j);
     instr = budget_instructions(track_job, &j);
@@ -87,4 +91,6 @@ void jobs_track(void)
     track_job(&brute);
     run("track.auto", SSDA_THRESHOLD_AUTO, SSDA_TRACK_PREDICT_NONE, 0, &brute);
     run("track.auto_predict_bounds", SSDA_THRESHOLD_AUTO, SSDA_TRACK_PREDICT_MEDIAN, 1, &brute);
+    run("track.auto_predict_bounds_shared", SSDA_THRESHOLD_AUTO, SSDA_TRACK_PREDICT_MEDIAN, 2,
+        &brute);
 }

@@ -496,7 +496,9 @@ def main():
               " | ".join(f"{n}: instructions" for n in names) + " | pixel ops | stack peak (B) |\n")
             w("|---|" + "---:|" * len(runs) + "---:|---:|\n")
             for key, label in (("track.none", "brute force"), ("track.auto", "`auto`"),
-                               ("track.auto_predict_bounds", "`auto` + median prediction + bounds")):
+                               ("track.auto_predict_bounds", "`auto` + median prediction + bounds"),
+                               ("track.auto_predict_bounds_shared",
+                                "`auto` + median prediction + bounds, shared tables")):
                 r0 = get(runs[0][2], key)
                 w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))
                                               for _, _, r in runs) +

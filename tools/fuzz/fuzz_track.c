@@ -161,7 +161,9 @@ static void read_config(fuzz_in_t *in, case_t *c)
     cfg->match.fixed_threshold = fuzz_u32(in) % 100000u;
     if (cfg->match.flags || (cfg->flags & SSDA_TRACK_UNIQUE)) {
         cfg->match.work = fuzz_one_in(in, 32) ? NULL : g_work;
-        cfg->match.work_size = sizeof g_work - (fuzz_one_in(in, 32) ? sizeof g_work : 0u);
+        /* every size from none to shared tables (SSDA_TRACK_WORK_SIZE_SHARED)
+           for the largest image: below it, per-window tables */
+        cfg->match.work_size = fuzz_one_in(in, 32) ? 0u : sizeof g_work >> fuzz_range(in, 0, 4);
     }
 }
 

@@ -276,7 +276,8 @@ int peers_track(const peers_pair_t *p, unsigned win, int reps, FILE *ratios)
     ssda_track_grid_t grid;
     ssda_track_stats_t st[M_COUNT], st_ref;
     track_run_t r;
-    size_t work_size = SSDA_TRACK_WORK_SIZE(2 * win, 2 * win, win, win);
+    /* the bounds' tables shared by the windows (track.h) */
+    size_t work_size = SSDA_TRACK_WORK_SIZE_SHARED(p->first.width, 2 * win, 2 * win, win, win);
     void *work = malloc(work_size);
     double med[M_COUNT], med_cpu[M_COUNT];
     peers_agree_t vs_ref[M_COUNT], vs_truth[M_COUNT];
