@@ -35,6 +35,16 @@
 #define SSDA_NOINLINE
 #endif
 
+/* One shared copy of a small helper in a build for size (-Os defines
+   __OPTIMIZE_SIZE__: a call is shorter than each inlined copy on Thumb-1),
+   inlined as the compiler sees fit otherwise (-O2, where the instruction
+   counts are measured). Never changes a result. */
+#if (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE_SIZE__)
+#define SSDA_SIZE_NOINLINE __attribute__((noinline))
+#else
+#define SSDA_SIZE_NOINLINE
+#endif
+
 /* Inline a small fast path even at -Os, where a call would stack one more
    frame on a deep chain. Never changes a result. */
 #if defined(__GNUC__) || defined(__clang__)

@@ -33,6 +33,18 @@ uint64_t ssda__mul_shr24(uint32_t a, uint64_t b)
     return hi + (((uint64_t)a * bl) >> 24);     /* a*bl < 2^56; sum < 2^64 - 2^32 + 2^32 */
 }
 
+uint64_t ssda__mul_u32_u32(uint32_t a, uint32_t b)
+{
+    const uint32_t al = a & 0xFFFFu, ah = a >> 16;
+    const uint32_t bl = b & 0xFFFFu, bh = b >> 16;
+    /* each product < 2^32; the sum is the exact product < 2^64 */
+    const uint32_t hh = ah * bh, ll = al * bl, hl = ah * bl, lh = al * bh;
+    uint64_t r = ((uint64_t)hh << 32) | ll;
+    r += (uint64_t)hl << 16;
+    r += (uint64_t)lh << 16;
+    return r;
+}
+
 uint32_t ssda__div64_32(uint64_t n, uint32_t d)
 {
     uint32_t rem = (uint32_t)(n >> 32); /* the remainder, < d once started */

@@ -25,6 +25,21 @@ static inline uint64_t ssda__mul_u32_u16(uint32_t a, uint16_t b)
     return ((uint64_t)hi << 16) + lo;
 }
 
+/* a * b exactly (< 2^64) from four 16 x 16-bit products, each below 2^32:
+   the runtime's 64 x 64 multiply (__aeabi_lmul, 90 B) is not linked on
+   cores without UMULL. Use SSDA_MUL64, which takes the compiler's product
+   where the core has one. */
+SSDA_INTERNAL uint64_t ssda__mul_u32_u32(uint32_t a, uint32_t b);
+
+/* Thumb-1-only cores (Cortex-M0/M0+/M23) have no 32 x 32 -> 64 multiply
+   instruction: there SSDA_MUL64 calls the routine above, elsewhere the
+   compiler's UMULL. The product is the same. */
+#if defined(__ARM_ARCH_ISA_THUMB) && (__ARM_ARCH_ISA_THUMB == 1)
+#define SSDA_MUL64(a, b) ssda__mul_u32_u32((a), (b))
+#else
+#define SSDA_MUL64(a, b) ((uint64_t)(uint32_t)(a) * (uint32_t)(b))
+#endif
+
 /* min(floor(n / d), UINT32_MAX) for d > 0, by restoring shift-and-subtract
    in 32-bit words (32 steps): no 64-bit division routine from the runtime
    library, whose generic code costs about 1 KB of flash on cores without

@@ -7,6 +7,15 @@
 #include "slide.h"
 #include "state.h"
 
+#ifdef SSDA_CFG_NO_PITCH_PUSH
+/* No push intake, so no buffer (include/ssda/config.h). */
+int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes) /* NOLINT(readability-non-const-parameter) */
+{
+    (void)cfg;
+    (void)bytes;
+    return SSDA_ERR_UNSUPPORTED;
+}
+#else
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 {
     ssda_pitch_info_t info;
@@ -21,23 +30,34 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     *bytes = (size_t)info.span * sizeof(int16_t);
     return SSDA_OK;
 }
+#endif
 
 int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
                     void *buffer, size_t buffer_size)
 {
     ssda_pitch_info_t info;
     int err;
+#ifdef SSDA_CFG_NO_PITCH_PUSH
+    /* no push intake: the buffer is not used (may be NULL) */
+    (void)buffer_size;
+    if (p == NULL || cfg == NULL) {
+        return SSDA_ERR_NULL;
+    }
+#else
     if (p == NULL || cfg == NULL || buffer == NULL) {
         return SSDA_ERR_NULL;
     }
+#endif
     err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
+#ifndef SSDA_CFG_NO_PITCH_PUSH
     if (buffer_size / sizeof(int16_t) < info.span ||
         ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
         return SSDA_ERR_BUFFER;
     }
+#endif
     p->info = info;
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
@@ -74,6 +94,49 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     return SSDA_OK;
 }
 
+/* One frame x[0 .. span - 1] analysed as estimate number p->frame: its
+   number and centre, and the prediction carried to the next frame.
+   Inlined: no frame of its own on push's chain (stack). */
+static SSDA_ALWAYS_INLINE void analyze_frame(ssda_pitch_t *p, const int16_t *x,
+                                             ssda_pitch_estimate_t *est)
+{
+    ssda__pitch_analyze_in(&p->work, &p->info, x, p->predict_lag, est);
+    est->frame = p->frame;
+    /* wraps modulo 2^32 by design (unsigned) */
+    est->center = p->frame * p->info.hop +
+                  (est->silent ? p->info.span / 2u : (p->info.frame_len + est->lag) / 2u);
+    p->frame++;
+    p->predict_lag = est->voiced ? est->lag : 0u;
+}
+
+int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *est)
+{
+    if (p == NULL || x == NULL || est == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
+        return SSDA_ERR_STATE;
+    }
+    if (SSDA_PITCH_FILTERED(&p->info)) {
+        return SSDA_ERR_ARG; /* the low-pass runs over the stream, not per frame */
+    }
+    analyze_frame(p, x, est);
+    return SSDA_OK;
+}
+
+#ifdef SSDA_CFG_NO_PITCH_PUSH
+/* Whole frames only (ssda_pitch_frame): nothing consumed or written. */
+int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count, /* NOLINT(readability-non-const-parameter) */
+                    size_t *consumed, ssda_pitch_estimate_t *est) /* NOLINT(readability-non-const-parameter) */
+{
+    (void)p;
+    (void)samples;
+    (void)count;
+    (void)consumed;
+    (void)est;
+    return SSDA_ERR_UNSUPPORTED;
+}
+#else
 #ifndef SSDA_CFG_NO_PITCH_FILTER
 /* Pass n >= 1 samples through the low-pass into out (NULL: filter only).
    Both calls pass n >= 1: a take while used < count, bounded by skip > 0 or
@@ -130,13 +193,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         p->fill += (uint32_t)take;
         used += take;
         if (p->fill == span) {
-            ssda__pitch_analyze_in(&p->work, &p->info, p->buf, p->predict_lag, est);
-            est->frame = p->frame;
-            /* wraps modulo 2^32 by design (unsigned) */
-            est->center = p->frame * p->info.hop +
-                          (est->silent ? span / 2u : (p->info.frame_len + est->lag) / 2u);
-            p->frame++;
-            p->predict_lag = est->voiced ? est->lag : 0u;
+            analyze_frame(p, p->buf, est);
             if (p->info.hop < span) {
                 /* the kept samples slide down by hop */
                 p->fill = span - p->info.hop;
@@ -153,3 +210,4 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
     *consumed = used;
     return 0;
 }
+#endif /* SSDA_CFG_NO_PITCH_PUSH */

@@ -8,6 +8,8 @@
 #include "fixmath.h"
 #include "compiler.h"
 
+#include <string.h>
+
 #define NO_BOUND UINT32_MAX /* larger than any sum (K * 65535 < 2^29) */
 
 /* One lag's value in 8 bytes (pitch.h): bits 0..30 of d hold d (< 2^30),
@@ -36,22 +38,31 @@ static bool is_exact(const lag_value_t *v)
    Under 15 010 lags of K <= 8192: < 2^27. */
 typedef ssda_pitch_work_t frame_t;
 
+/* A lag with its neighbours' values (pitch.h): v[0], v[1], v[2] at lag - 1,
+   lag, lag + 1. */
+typedef ssda_pitch_dip_t dip_t;
+
 /* n(p) < n(q), exactly: d_p * s_q < d_q * s_p (products < 2^59). */
 static bool n_less(const lag_value_t *p, const lag_value_t *q)
 {
-    return (uint64_t)d_of(p) * q->s < (uint64_t)d_of(q) * p->s;
+    return SSDA_MUL64(d_of(p), q->s) < SSDA_MUL64(d_of(q), p->s);
 }
 
-/* n <= q15 / 32768, exactly. */
-static bool n_at_most_q15(const lag_value_t *v, uint32_t q15)
+/* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s, in 32
+   bits (no 64-bit multiply on cores without one): with s = 32768 h + l,
+   q15 * s / 32768 = q15 h + q15 l / 32768, where q15 h < 2^15 * 2^15 and
+   q15 l < 2^30 (q15 <= 32767, s < 2^30). */
+static SSDA_SIZE_NOINLINE uint32_t threshold_bound(uint32_t q15, uint32_t s)
 {
-    return ((uint64_t)d_of(v) << 15) <= (uint64_t)q15 * v->s;
+    return q15 * (s >> 15) + ((q15 * (s & 0x7FFFu)) >> 15);
 }
 
-/* Largest d with d / s <= threshold: floor(q15 * s / 32768) < s. */
-static uint32_t threshold_bound(uint32_t q15, uint32_t s)
+/* v exact and n <= q15 / 32768: 32768 d <= q15 s, i.e. d <= floor(q15 s /
+   32768). A value that is not exact has bit 31 set in d ^ LAG_EXACT, above
+   any bound (< s < 2^30). */
+static SSDA_SIZE_NOINLINE bool at_most_q15(const lag_value_t *v, uint32_t q15)
 {
-    return (uint32_t)(((uint64_t)q15 * s) >> 15);
+    return (v->d ^ LAG_EXACT) <= threshold_bound(q15, v->s);
 }
 
 /* Largest d at scale s that still wins against best: n < n(best) for a lag
@@ -59,7 +70,7 @@ static uint32_t threshold_bound(uint32_t q15, uint32_t s)
    Returns false when no d >= 0 can win. The result is <= s < 2^30. */
 static bool best_bound(const lag_value_t *best, bool after, uint32_t s, uint32_t *bound)
 {
-    uint64_t p = (uint64_t)d_of(best) * s; /* < 2^59 */
+    uint64_t p = SSDA_MUL64(d_of(best), s); /* < 2^59 */
     if (after) {
         if (p == 0u) {
             return false;
@@ -91,14 +102,6 @@ static void evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound, lag_v
     }
 }
 
-/* Make v exact (re-sum without a bound) for the interpolation. */
-static void make_exact(frame_t *f, uint32_t lag, lag_value_t *v)
-{
-    if (!is_exact(v)) {
-        evaluate(f, lag, v->s, NO_BOUND, v);
-    }
-}
-
 /* |x[i] - m| for the sliding sum B(lag) = sum_{i<K} |x[lag + i] - m|. */
 static uint32_t abs_dev(int16_t x, int32_t mean)
 {
@@ -106,44 +109,55 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
     return v < 0 ? (uint32_t)(-v) : (uint32_t)v;
 }
 
-/* The value of any lag, with its scale computed directly. */
-static void value_at(frame_t *f, uint32_t lag, uint32_t bound, lag_value_t *v)
+/* The scale s(lag) = A + B(lag), B summed directly (callers pass it to
+   evaluate(): no frame between theirs and evaluate's, for the stack). */
+static uint32_t scale_at(const frame_t *f, uint32_t lag)
 {
-    uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
-    evaluate(f, lag, s, bound, v);
+    return f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
 }
 
-/* Sub-sample period of the dip at lag, from exact neighbour values. */
-static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, uint32_t lag, const lag_value_t *left,
-                              const lag_value_t *mid, const lag_value_t *right)
+/* nq = floor(2^20 d / s) of t's value v[i] (Q20), i = 0, 1, 2 for lag - 1,
+   lag, lag + 1. */
+static SSDA_SIZE_NOINLINE uint32_t nq_of(const dip_t *t, uint32_t i)
 {
-    int32_t delta = ssda__pitch_interp_q16(ssda__pitch_norm_q20(d_of(left), left->s),
-                                          ssda__pitch_norm_q20(d_of(mid), mid->s),
-                                          ssda__pitch_norm_q20(d_of(right), right->s),
+    return ssda__pitch_norm_q20(d_of(&t->v[i]), t->v[i].s);
+}
+
+/* Sub-sample period (Q16.16) of the dip through t's three exact values. */
+static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, const dip_t *t)
+{
+    int32_t delta = ssda__pitch_interp_q16(nq_of(t, 0u), nq_of(t, 1u), nq_of(t, 2u),
                                           SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
     /* lag <= 4800: 65536 * lag + delta < 2^29 */
-    return (uint32_t)((int32_t)(lag << 16) + delta);
+    return (uint32_t)((int32_t)(t->lag << 16) + delta);
 }
 
-/* The interpolated minimum of the dip through a, b, c (Q20): b - |a - c| / 2
-   for the V fit, b - (a - c)^2 / (8 (a - 2b + c)) for the parabola; >= 0. */
-static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t *left, const lag_value_t *mid,
-                              const lag_value_t *right)
+/* The interpolated minimum of the dip through t's three exact values a, b,
+   c (Q20): b - |a - c| / 2 for the V fit, b - (a - c)^2 / (8 (a - 2b + c))
+   for the parabola; >= 0. (Apart from the period, so that the below-range
+   check's chain does not reach the interpolation: stack.) */
+static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const dip_t *t)
 {
-    uint32_t a = ssda__pitch_norm_q20(d_of(left), left->s);
-    uint32_t b = ssda__pitch_norm_q20(d_of(mid), mid->s);
-    uint32_t c = ssda__pitch_norm_q20(d_of(right), right->s);
-    uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
+    const uint32_t a = nq_of(t, 0u), b = nq_of(t, 1u), c = nq_of(t, 2u);
+    const uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
     uint32_t drop;
     if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
         int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
-        drop = den > 0 ? ssda__div64_32((uint64_t)diff * diff, (uint32_t)den) : 0u;
+        drop = den > 0 ? ssda__div64_32(SSDA_MUL64(diff, diff), (uint32_t)den) : 0u;
     } else {
         drop = diff / 2u;
     }
     return b > drop ? b - drop : 0u;
+}
+
+/* The octave margin in Q20: threshold / 3 as (t * 43691) >> 17, exact for
+   every t < 2^16 (checked exhaustively): cores without a divide
+   instruction would call the runtime's division routine for a constant 3. */
+static uint32_t margin_q20_of(const ssda_pitch_info_t *info)
+{
+    return (((uint32_t)info->threshold_q15 * 43691u) >> 17) << 5;
 }
 
 /*
@@ -155,39 +169,33 @@ static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const lag_value_t 
  * floor, not with n at the integer lag, keeps a dip that is only shallow
  * because the period falls between two lags. Only lags that could pass are
  * summed in full (the bound comes from the test itself): still exact.
- * Returns true and the new lag and value when it moves.
+ * Returns the lag it moves to, its value in f->at[0], or 0 when it stays.
  */
-static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20,
-                      uint32_t *new_lag, lag_value_t *new_v)
+static SSDA_NOINLINE uint32_t octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
 {
-    /* threshold / 3 as (t * 43691) >> 17, exact for every t < 2^16 (checked
-       exhaustively): cores without a divide instruction would call the
-       runtime's division routine for a constant 3 */
-    const uint32_t margin_q20 = (((uint32_t)f->info->threshold_q15 * 43691u) >> 17) << 5;
+    const uint32_t margin_q20 = margin_q20_of(f->info);
     const bool full = SSDA_PITCH_HAS_FULL(f->info->flags);
     uint32_t k, limit;
     if (floor_q20 <= margin_q20) {
-        return false; /* nothing can be deeper by the margin */
+        return 0u; /* nothing can be deeper by the margin */
     }
     limit = floor_q20 - margin_q20; /* wanted: nq < limit */
     k = 2u;
     for (;;) { /* multiples k of the period until k * period passes lag_max */
         /* k * period_q16 <= 1200 * 2^29 < 2^40 */
-        uint32_t c = (uint32_t)(((uint64_t)k * period_q16 + 32768u) >> 16);
+        uint32_t c = (uint32_t)((SSDA_MUL64(k, period_q16) + 32768u) >> 16);
         uint32_t lag, found_lag = 0u;
-        /* the best of the three in f->prev, each lag in f->cur: the scan's
-           prev and cur are unused by now (kept off the stack) */
-        lag_value_t *found_v = &f->prev;
-        lag_value_t *v = &f->cur;
-        found_v->d = 0u;
-        found_v->s = 1u;
+        /* the best of the three in f->at[0], each lag in f->at[1]: the
+           scan's values are unused by now (kept off the stack) */
+        lag_value_t *found_v = &f->at[0];
+        lag_value_t *v = &f->at[1];
         if (c - 1u > f->info->lag_max) {
-            return false;
+            return 0u;
         }
         for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
-            uint32_t s = f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
+            uint32_t s = scale_at(f, lag);
             /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
-            uint32_t bound = (uint32_t)(((uint64_t)limit * s - 1u) >> 20);
+            uint32_t bound = (uint32_t)((SSDA_MUL64(limit, s) - 1u) >> 20);
             evaluate(f, lag, s, full ? NO_BOUND : bound, v);
             if (is_exact(v) && (found_lag == 0u || n_less(v, found_v))) {
                 found_lag = lag;
@@ -195,9 +203,7 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
             }
         }
         if (found_lag != 0u && ssda__pitch_norm_q20(d_of(found_v), found_v->s) < limit) {
-            *new_lag = found_lag;
-            *new_v = *found_v;
-            return true;
+            return found_lag;
         }
         k++;
     }
@@ -212,13 +218,13 @@ static SSDA_NOINLINE bool octave_up(frame_t *f, uint32_t period_q16, uint32_t fl
  * summed in full; if the interpolated floor at a local minimum among
  * c - 1 .. c + 1 is within half the octave margin of F (nq_floor <= F +
  * margin / 2), the period is shorter than the range allows and the frame
- * is unvoiced. Uses the scan's best_* values as scratch (unused by now).
+ * is unvoiced. Uses the scan's best lag as scratch (unused by now).
  */
 static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
 {
     const ssda_pitch_info_t *info = f->info;
-    const uint32_t margin_q20 = (((uint32_t)info->threshold_q15 * 43691u) >> 17) << 5;
-    const uint32_t limit = floor_q20 + margin_q20 / 2u; /* < 2^21 */
+    const uint32_t limit = floor_q20 + margin_q20_of(info) / 2u; /* < 2^21 */
+    dip_t *u = &f->best;
     uint32_t k = 2u;
     if (period_q16 + 32768u < info->lag_min << 16) {
         return true; /* the dip itself is more than half a lag below the range */
@@ -234,16 +240,15 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
         if (c < 3u) {
             return false;
         }
-        if (c >= info->lag_min || (uint64_t)period_q16 >= (uint64_t)(k - 1u) * (info->lag_min << 16)) {
+        if (c >= info->lag_min || (uint64_t)period_q16 >= SSDA_MUL64(k - 1u, info->lag_min << 16)) {
             continue; /* P / k in range: a dip there would have been found */
         }
         for (lag = c - 2u; lag <= c + 2u; lag++) {
-            f->best_left = f->best;
-            f->best = f->best_right;
-            value_at(f, lag, NO_BOUND, &f->best_right);
-            if (lag >= c && !n_less(&f->best_left, &f->best) &&
-                !n_less(&f->best_right, &f->best) &&
-                dip_floor_q20(f, &f->best_left, &f->best, &f->best_right) <= limit) {
+            u->v[0] = u->v[1];
+            u->v[1] = u->v[2];
+            evaluate(f, lag, scale_at(f, lag), NO_BOUND, &u->v[2]);
+            if (lag >= c && !n_less(&u->v[0], &u->v[1]) && !n_less(&u->v[2], &u->v[1]) &&
+                dip_floor_q20(f, u) <= limit) {
                 return true;
             }
         }
@@ -263,7 +268,7 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 }
 
 /*
- * The chosen lag (w->t_*) refined: exact neighbours, the sub-sample period,
+ * The chosen lag refined: exact neighbours, the sub-sample period,
  * the octave check when it is a dip (found), and the estimate. Kept out of
  * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
@@ -271,25 +276,41 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_estimate_t *est)
 {
     const ssda_pitch_info_t *info = w->info;
-    uint32_t period, n_q15;
-    /* Interpolation needs both neighbours exactly. */
-    make_exact(w, w->t_lag - 1u, &w->t_left);
-    make_exact(w, w->t_lag + 1u, &w->t_right);
-    period = period_q16_of(w, w->t_lag, &w->t_left, &w->t_mid, &w->t_right);
-    while (found && octave_up(w, period, dip_floor_q20(w, &w->t_left, &w->t_mid, &w->t_right),
-                              &w->t_lag, &w->t_mid)) {
-        value_at(w, w->t_lag - 1u, NO_BOUND, &w->t_left);
-        value_at(w, w->t_lag + 1u, NO_BOUND, &w->t_right);
-        period = period_q16_of(w, w->t_lag, &w->t_left, &w->t_mid, &w->t_right);
+    /* the chosen lag: the first dip (a copy when the scan went on: full
+       search), else the global minimum */
+    dip_t *const t = !found ? &w->best : (SSDA_PITCH_HAS_FULL(info->flags) ? &w->t : &w->run);
+    uint32_t period, floor_q20, n_q15, i;
+    est->dip = found; /* read back below: one register less across the calls */
+    uint32_t moved = 0u; /* the lag an octave move went to, 0 before any */
+    for (;;) {
+        /* Interpolation needs both neighbours exactly: re-summed in full
+           when cut (the scale kept), summed anew after an octave move. */
+        for (i = 0u; i < 3u; i += 2u) {
+            lag_value_t *v = &t->v[i];
+            const uint32_t lag = t->lag - 1u + i;
+            if (moved != 0u) {
+                v->s = scale_at(w, lag);
+            }
+            if (moved != 0u || !is_exact(v)) {
+                evaluate(w, lag, v->s, NO_BOUND, v);
+            }
+        }
+        period = period_q16_of(w, t);
+        floor_q20 = dip_floor_q20(w, t);
+        moved = est->dip ? octave_up(w, period, floor_q20) : 0u;
+        if (moved == 0u) {
+            break;
+        }
+        t->lag = moved;
+        t->v[1] = w->at[0];
     }
-    est->lag = w->t_lag;
+    est->lag = t->lag;
     est->period_q16 = period;
-    est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, est->period_q16);
-    n_q15 = ssda__div64_32((uint64_t)d_of(&w->t_mid) << 15, w->t_mid.s); /* d <= s: 0..32768 */
+    est->f0_q16 = ssda__pitch_f0_q16(info->sample_rate_hz, period);
+    n_q15 = ssda__div64_32((uint64_t)d_of(&t->v[1]) << 15, t->v[1].s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
-    est->voiced = found && n_at_most_q15(&w->t_mid, info->voicing_q15) &&
-                  !below_range(w, period, dip_floor_q20(w, &w->t_left, &w->t_mid, &w->t_right));
-    est->dip = found;
+    est->voiced = est->dip && at_most_q15(&t->v[1], info->voicing_q15) &&
+                  !below_range(w, period, floor_q20);
     est->silent = false;
     est->diffs = w->diffs;
 }
@@ -297,42 +318,39 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
 /*
  * Before the scan: the predicted lag (SSDA_PITCH_TRACK: the seed's
  * prediction, summed first, in full; its value becomes the best so far and
- * tightens every later bound), then lag_min - 1 and the first arming test.
- * Returns the predicted lag (0: none) and B(lag_min - 1) in *b_sum.
+ * tightens every later bound), then lag_min - 1 (into w->at[0]) and the
+ * first arming test. Returns the predicted lag (0: none) and B(lag_min - 1)
+ * in *b_sum.
  */
 static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t predict_lag,
                                               uint32_t rearm, uint32_t *b_sum, bool *armed)
 {
     const ssda_pitch_info_t *info = w->info;
-    const int16_t *x = w->x;
-    const uint32_t k = info->frame_len;
     const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
-    uint32_t pred = 0u;
+    uint32_t pred = 0u, s;
     if (!full && SSDA_PITCH_HAS_TRACK(info->flags) &&
         predict_lag >= info->lag_min && predict_lag <= info->lag_max) {
         pred = predict_lag;
-        evaluate(w, pred, w->level + ssda__pitch_level(x + pred, k, w->mean), NO_BOUND, &w->pred);
-        w->best = w->pred;
-        w->best_lag = pred;
-    } else {
-        w->pred = w->best;
+        evaluate(w, pred, scale_at(w, pred), NO_BOUND, &w->pred);
+        w->best.v[1] = w->pred;
+        w->best.lag = pred;
     }
     /* lag_min - 1 is only a neighbour and the first arming test: needed
        exactly when n <= threshold. */
-    *b_sum = ssda__pitch_level(x + info->lag_min - 1u, k, w->mean);
-    evaluate(w, info->lag_min - 1u, w->level + *b_sum,
-             full ? NO_BOUND : threshold_bound(thr, w->level + *b_sum), &w->prev);
-    *armed = !(is_exact(&w->prev) && n_at_most_q15(&w->prev, thr));
+    s = scale_at(w, info->lag_min - 1u);
+    *b_sum = s - w->level;
+    evaluate(w, info->lag_min - 1u, s, full ? NO_BOUND : threshold_bound(thr, s), &w->at[0]);
+    *armed = !at_most_q15(&w->at[0], thr);
     if (!*armed) {
         /* lag_min - 1 lies in a dip already: a period just above lag_min
            (f0 just below f0_max), or the lag-0 tail of a slow signal. The
            first has its half-period peak near lag_min / 2, the second stays
            low there. Exact up to rearm; a cut proves n > rearm. */
         const uint32_t half = info->lag_min / 2u; /* >= 2 */
-        const uint32_t sh = w->level + ssda__pitch_level(x + half, k, w->mean);
-        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->cur);
-        *armed = !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm));
+        const uint32_t sh = scale_at(w, half);
+        evaluate(w, half, sh, full ? NO_BOUND : threshold_bound(rearm, sh), &w->at[1]);
+        *armed = !at_most_q15(&w->at[1], rearm);
     }
     return pred;
 }
@@ -348,9 +366,9 @@ static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_
     uint32_t bound = threshold_bound(armed || !candidate ? w->info->threshold_q15 : rearm, s);
     if (candidate) {
         uint32_t bb;
-        if (w->best_lag == 0u) {
+        if (w->best.lag == 0u) {
             bound = NO_BOUND;
-        } else if (best_bound(&w->best, lag > w->best_lag, s, &bb) && bb > bound) {
+        } else if (best_bound(&w->best.v[1], lag > w->best.lag, s, &bb) && bb > bound) {
             bound = bb;
         } else {
             /* the threshold's bound is the tighter one */
@@ -359,30 +377,19 @@ static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_
     return bound;
 }
 
-/* An exact candidate w->cur at lag: the new best lag (the global-minimum
-   fallback) if it beats it by the tie rule (smaller n, then smaller lag).
-   Returns true when the best lag's right neighbour is the next lag. */
-static SSDA_ALWAYS_INLINE bool note_best(ssda_pitch_work_t *w, uint32_t lag)
+/* An exact candidate w->at[1] at lag: the new best lag (the global-minimum
+   fallback), with its left neighbour, if it beats it by the tie rule
+   (smaller n, then smaller lag), or if it is the best lag (the predicted
+   lag reached by the scan: its value is already the best's). */
+static SSDA_ALWAYS_INLINE void note_best(ssda_pitch_work_t *w, uint32_t lag)
 {
-    bool better;
-    if (w->best_lag == 0u) {
-        better = true;
-    } else if (lag > w->best_lag) {
-        better = n_less(&w->cur, &w->best);
-    } else {
-        better = !n_less(&w->best, &w->cur); /* before best: ties win */
+    const lag_value_t *cur = &w->at[1];
+    const lag_value_t *best = &w->best.v[1];
+    if (lag == w->best.lag || w->best.lag == 0u ||
+        (lag > w->best.lag ? n_less(cur, best) : !n_less(best, cur))) {
+        (void)memcpy(w->best.v, w->at, sizeof w->at);
+        w->best.lag = lag;
     }
-    if (better && lag != w->best_lag) {
-        w->best = w->cur;
-        w->best_lag = lag;
-        w->best_left = w->prev;
-        return true;
-    }
-    if (lag == w->best_lag) {
-        w->best_left = w->prev; /* the predicted lag, reached by the scan */
-        return true;
-    }
-    return false; /* not better: the best lag stays */
 }
 
 /* The run ended at lag - 1. It is a dip if it was entered from a peak,
@@ -392,19 +399,28 @@ static SSDA_ALWAYS_INLINE bool note_best(ssda_pitch_work_t *w, uint32_t lag)
    multiple follows). Returns whether it is. */
 static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_armed)
 {
-    const ssda_pitch_info_t *info = w->info;
-    return run_armed &&
-           (w->run_lag != info->lag_max || !n_less(&w->run_right, &w->run)) &&
-           (w->run_lag != info->lag_min || !n_less(&w->run_left, &w->run));
+    const dip_t *r = &w->run;
+    /* the outer neighbour of a minimum at an end of the range (lag_min <
+       lag_max always), else the minimum itself (never below itself) */
+    uint32_t side = 1u;
+    if (r->lag == w->info->lag_max) {
+        side = 2u;
+    } else if (r->lag == w->info->lag_min) {
+        side = 0u;
+    } else {
+        /* inside the range: no side to test */
+    }
+    return run_armed && !n_less(&r->v[side], &r->v[1]);
 }
 
 /*
  * The scan over lag_min - 1 .. lag_max + 1 of a frame that is not silent
  * (w set up by ssda__pitch_analyze_in): the first valid dip run's minimum in
- * w->t_* (returns true), else the global minimum (false). In *w: the best
+ * w->run, or w->t when the scan goes on (full search) (returns true),
+ * else the global minimum in w->best (false). In *w: the best
  * lag so far (the global-minimum fallback) and the open run under the
  * threshold (its minimum), each with its neighbours; the predicted lag's
- * value; the chosen lag (t_*). Out of line, so that its locals are gone
+ * value; the chosen lag (t). Out of line, so that its locals are gone
  * when refine() runs.
  */
 static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
@@ -417,12 +433,12 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
     const uint32_t thr = info->threshold_q15;
     const int32_t mean = w->mean;
     const uint32_t rearm = ssda__pitch_rearm_q15(thr);
+    lag_value_t *const cur = &w->at[1];
     /* Armed: a peak n > rearm was seen since the last run began (at the
        start: n(lag_min - 1) > threshold, or n(lag_min / 2) > rearm), so
        the next run is a real dip. */
     bool armed;
     bool in_run = false, run_armed = false, found = false;
-    bool best_need_right = false, run_need_right = false;
     uint32_t b_sum, lag;
     const uint32_t pred = scan_start(w, predict_lag, rearm, &b_sum, &armed);
 
@@ -432,62 +448,49 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
         /* Slide B: drop x[lag - 1], add x[lag - 1 + K]. B stays <= K * 65535. */
         b_sum = b_sum - abs_dev(x[lag - 1u], mean) + abs_dev(x[lag - 1u + k], mean);
         s = w->level + b_sum;
-        if (lag == pred) {
-            w->cur = w->pred;
+        if (lag == pred && SSDA_PITCH_HAS_TRACK(info->flags)) {
+            *cur = w->pred;
         } else {
             evaluate(w, lag, s, full ? NO_BOUND : lag_bound(w, lag, s, candidate, armed, rearm),
-                     &w->cur);
+                     cur);
         }
-        /* Neighbours wanted by the best lag and by the run minimum. */
-        if (best_need_right) {
-            w->best_right = w->cur;
-            best_need_right = false;
+        /* Right neighbours of the best lag and of the run minimum: the lag
+           after theirs (lag_min - 1 and 0 are never theirs). */
+        if (w->best.lag + 1u == lag) {
+            w->best.v[2] = *cur;
         }
-        if (run_need_right) {
-            w->run_right = w->cur;
-            run_need_right = false;
+        if (w->run.lag + 1u == lag) {
+            w->run.v[2] = *cur;
         }
-        if (candidate && is_exact(&w->cur)) {
-            best_need_right = note_best(w, lag);
+        if (candidate && is_exact(cur)) {
+            note_best(w, lag);
         }
-        if (candidate && is_exact(&w->cur) && n_at_most_q15(&w->cur, thr)) {
+        if (candidate && at_most_q15(cur, thr)) {
             if (!in_run) {
                 run_armed = armed; /* the run uses up the arming */
                 armed = false;
             }
-            if (!in_run || n_less(&w->cur, &w->run)) {
-                w->run = w->cur;
-                w->run_lag = lag;
-                w->run_left = w->prev;
-                run_need_right = true;
+            if (!in_run || n_less(cur, &w->run.v[1])) {
+                (void)memcpy(w->run.v, w->at, sizeof w->at);
+                w->run.lag = lag;
             }
             in_run = true;
         } else if (in_run) {
             in_run = false;
-            if (run_is_dip(w, run_armed) && !found) {
+            if (!found && run_is_dip(w, run_armed)) {
                 found = true;
-                w->t_lag = w->run_lag;
-                w->t_left = w->run_left;
-                w->t_mid = w->run;
-                w->t_right = w->run_right;
                 if (!full) {
-                    break; /* no later lag can change the choice */
+                    break; /* no later lag can change the choice: w->run stays */
                 }
+                w->t = w->run; /* the scan goes on and may open other runs */
             }
         } else {
             /* outside a run, and still outside */
         }
-        if (!in_run && !armed && candidate && !(is_exact(&w->cur) && n_at_most_q15(&w->cur, rearm))) {
+        if (!in_run && candidate && !at_most_q15(cur, rearm)) {
             armed = true; /* n > rearm: exact, or cut at a bound >= rearm's */
         }
-        w->prev = w->cur;
-    }
-
-    if (!found) {
-        w->t_lag = w->best_lag;
-        w->t_left = w->best_left;
-        w->t_mid = w->best;
-        w->t_right = w->best_right;
+        w->at[0] = *cur;
     }
     return found;
 }
@@ -509,20 +512,14 @@ void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
         silent_estimate(est);
         return;
     }
-    /* From here A >= K >= 16, so every s(lag) >= A > 0. */
-    w->best.d = 0u;
-    w->best.s = 1u;
-    w->best_left = w->best;
-    w->best_right = w->best;
-    w->run = w->best;
-    w->run_left = w->best;
-    w->run_right = w->best;
-    w->t_left = w->best;
-    w->t_mid = w->best;
-    w->t_right = w->best;
-    w->best_lag = 0u;
-    w->run_lag = 0u;
-    w->t_lag = 0u;
+    /* From here A >= K >= 16, so every s(lag) >= A > 0. No best lag and no
+       run yet (lag 0); the lag values are written before they are read:
+       the scan's first candidate, lag_min, is summed in full and becomes
+       the best (with its left neighbour, and its right one at the next
+       lag, which the scan always reaches); a run's values are written when
+       it opens. */
+    w->best.lag = 0u;
+    w->run.lag = 0u;
 
     refine(w, scan_lags(w, predict_lag), est);
 }
@@ -531,5 +528,9 @@ void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
     ssda_pitch_work_t w;
+    /* zeroed: every result depends only on values the analysis wrote,
+       but it moves some scratch values before writing them (the below-
+       range check's window), and those are then not indeterminate */
+    (void)memset(&w, 0, sizeof w);
     ssda__pitch_analyze_in(&w, info, x, predict_lag, est);
 }

@@ -4,8 +4,8 @@
  * library's: against the compiler's 64-bit division, at the extremes of
  * dividend and divisor and on random operands of every magnitude, with the
  * saturation at UINT32_MAX when the quotient needs more than 32 bits; and
- * ssda__mul_u32_u16, the 32 x 16 product without a 64-bit multiply routine,
- * against the compiler's product.
+ * ssda__mul_u32_u16 and ssda__mul_u32_u32, the 32 x 16 and 32 x 32
+ * products without a 64-bit multiply routine, against the compiler's product.
  */
 #include "unity.h"
 #include "fixmath.h"
@@ -87,9 +87,33 @@ static void test_mul_u32_u16(void)
     }
 }
 
+/* ssda__mul_u32_u32 (four 16 x 16 products, SSDA_MUL64 on Thumb-1 cores)
+   against the compiler's 64-bit product: extremes and random operands of
+   every size. */
+static void test_mul_u32_u32(void)
+{
+    static const uint32_t vs[] = {0u, 1u, 2u, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u,
+                                  0xFFFF0000u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+    test_rng_t r;
+    uint32_t i, j;
+    for (i = 0; i < 10u; i++) {
+        for (j = 0; j < 10u; j++) {
+            TEST_ASSERT_EQUAL_UINT64((uint64_t)vs[i] * vs[j], ssda__mul_u32_u32(vs[i], vs[j]));
+        }
+    }
+    test_rng_seed(&r, 778u);
+    for (i = 0; i < 100000u; i++) {
+        uint32_t a = test_rng_next(&r) >> (test_rng_next(&r) % 32u);
+        uint32_t b = test_rng_next(&r) >> (test_rng_next(&r) % 32u);
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)a * b, ssda__mul_u32_u32(a, b));
+        TEST_ASSERT_EQUAL_UINT64((uint64_t)a * b, SSDA_MUL64(a, b));
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_mul_u32_u32);
     RUN_TEST(test_div_extremes);
     RUN_TEST(test_div_random);
     RUN_TEST(test_mul_u32_u16);

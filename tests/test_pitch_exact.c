@@ -2,7 +2,8 @@
  * test_pitch_exact.c - the exactness claim of include/ssda/pitch.h: every
  * output but the work counter equals the brute-force full AMDF rule
  * (tests/support/test_pitch_ref.c, int64 arithmetic over full arrays), with
- * early exit, with tracking, with no early exit, and for every chunk size.
+ * early exit, with tracking, with no early exit, and for every chunk size;
+ * and the frame-at-a-time entry gives the push intake's estimates.
  */
 #include "unity.h"
 #include "ssda/pitch.h"
@@ -21,7 +22,35 @@ static int16_t g_buf[8192u + 4800u + 1u];
 static ssda_pitch_estimate_t g_est[EST_MAX];
 static ssda_pitch_estimate_t g_est2[EST_MAX];
 
-/* Push the whole signal at once, collect every estimate. */
+/* The frame-at-a-time entry (ssda_pitch_frame) on the same signal gives
+   push's estimates, every field (the work counter too): the two intakes
+   agree where both apply (streams without the input low-pass). */
+static void check_frame_entry(const ssda_pitch_config_t *cfg, const int16_t *x,
+                              const ssda_pitch_estimate_t *pushed, uint32_t count)
+{
+    ssda_pitch_t p;
+    ssda_pitch_info_t info;
+    ssda_pitch_estimate_t e;
+    uint32_t f;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_init(&p, cfg, g_buf, sizeof g_buf));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_get_info(&p, &info));
+    for (f = 0; f < count; f++) {
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_frame(&p, x + f * info.hop, &e));
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].frame, e.frame);
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].center, e.center);
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].lag, e.lag);
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].period_q16, e.period_q16);
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].f0_q16, e.f0_q16);
+        TEST_ASSERT_EQUAL_UINT32(pushed[f].diffs, e.diffs);
+        TEST_ASSERT_EQUAL_UINT16(pushed[f].confidence_q15, e.confidence_q15);
+        TEST_ASSERT_EQUAL(pushed[f].voiced, e.voiced);
+        TEST_ASSERT_EQUAL(pushed[f].dip, e.dip);
+        TEST_ASSERT_EQUAL(pushed[f].silent, e.silent);
+    }
+}
+
+/* Push the whole signal at once, collect every estimate; without the
+   input low-pass, the frame entry must give the same ones. */
 static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uint32_t n,
                            ssda_pitch_estimate_t *out)
 {
@@ -38,6 +67,9 @@ static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uin
             count++;
             TEST_ASSERT_TRUE(count < EST_MAX);
         }
+    }
+    if ((cfg->flags & SSDA_PITCH_NO_FILTER) != 0u) {
+        check_frame_entry(cfg, x, out, count);
     }
     return count;
 }

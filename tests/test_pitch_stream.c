@@ -1,7 +1,8 @@
 /*
  * test_pitch_stream.c - the stream: the same estimates for any push
  * pattern, frames at the documented sample positions (also when the hop
- * exceeds the span), estimate numbering and centre times, reset.
+ * exceeds the span), estimate numbering and centre times, reset; the
+ * frame-at-a-time entry's refusals.
  */
 #include <string.h>
 
@@ -195,9 +196,40 @@ static void test_reset_starts_over(void)
     TEST_ASSERT_EQUAL_MEMORY(g_ref, g_got, n * sizeof g_ref[0]);
 }
 
+/* ssda_pitch_frame's refusals change nothing: the estimate stays poisoned
+   and the stream's numbering is not advanced. */
+static void test_frame_entry_refusals_change_nothing(void)
+{
+    ssda_pitch_config_t cfg;
+    ssda_pitch_t p, blank;
+    ssda_pitch_estimate_t e, poison;
+    memset(&cfg, 0, sizeof cfg);
+    memset(&blank, 0, sizeof blank);
+    memset(&poison, 0xA5, sizeof poison);
+    cfg.sample_rate_hz = 16000u;
+    make_signal(16000u);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_init(&p, &cfg, g_buf, sizeof g_buf));
+    e = poison;
+    /* the low-pass runs over the stream: a filtered stream is refused */
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_pitch_frame(&p, g_sig, &e));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_frame(NULL, g_sig, &e));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_frame(&p, NULL, &e));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_frame(&p, g_sig, NULL));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_pitch_frame(&blank, g_sig, &e));
+    TEST_ASSERT_EQUAL_MEMORY(&poison, &e, sizeof e);
+    cfg.flags = SSDA_PITCH_NO_FILTER;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_init(&p, &cfg, g_buf, sizeof g_buf));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_NULL, ssda_pitch_frame(&p, NULL, &e));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_frame(&p, g_sig, &e));
+    TEST_ASSERT_EQUAL_UINT32(0u, e.frame); /* the refusal did not count a frame */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_frame(&p, g_sig + 80, &e));
+    TEST_ASSERT_EQUAL_UINT32(1u, e.frame);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
+    RUN_TEST(test_frame_entry_refusals_change_nothing);
     RUN_TEST(test_any_push_pattern_gives_the_same_estimates);
     RUN_TEST(test_frames_start_every_hop_even_beyond_the_span);
     RUN_TEST(test_push_returns_as_soon_as_an_estimate_is_ready);

@@ -25,8 +25,8 @@
  *   search: all SSDA_CFG_NO_* of the search (exact AUTO and NONE thresholds,
  *           raster scan, row order, 8-bit views; no uniqueness, no sub-pixel
  *           fit, no 32-bit fast path)
- *   pitch:  all SSDA_CFG_NO_PITCH_* (streamed AMDF with early exit,
- *           voicing, the dip-run choice and its octave check, V-shaped
+ *   pitch:  all SSDA_CFG_NO_PITCH_* (AMDF of whole frames with early
+ *           exit, voicing, the dip-run choice and its octave check, V-shaped
  *           interpolation)
  *   stream: SSDA_CFG_NO_TILED, SSDA_CFG_NO_READ_SIZE and SSDA_CFG_NO_U16
  *           (raster 8-bit sources read at byte granularity, the plate cache,
@@ -101,6 +101,13 @@
 
 /* V-shaped interpolation only (SSDA_PITCH_PARABOLIC refused). */
 /* #define SSDA_CFG_NO_PITCH_PARABOLIC */
+
+/* No push intake: ssda_pitch_push returns SSDA_ERR_UNSUPPORTED, frames are
+   given whole to ssda_pitch_frame (same estimates), and ssda_pitch_init
+   needs no buffer. The low-pass needs the continuous stream: a stream
+   with it is refused by ssda_pitch_frame, so set SSDA_CFG_NO_PITCH_FILTER
+   too. */
+/* #define SSDA_CFG_NO_PITCH_PUSH */
 
 /* ---- streaming (stream.h) ---- */
 

@@ -250,9 +250,16 @@ typedef struct {
     uint32_t s;
 } ssda_pitch_lag_value_t;
 
+/* Private: a lag with the values of its two neighbours (v[0] at lag - 1,
+   v[1] at lag, v[2] at lag + 1). */
+typedef struct {
+    ssda_pitch_lag_value_t v[3];
+    uint32_t lag;
+} ssda_pitch_dip_t;
+
 /* Private: the working state of one frame's analysis (the frame and its
-   level, the best lag so far, the open dip run and the chosen lag, each
-   with its neighbours). It lives
+   level, the scan's previous and current lag, the best lag so far, the
+   open dip run and the chosen lag, each with its neighbours). It lives
    in ssda_pitch_t, not on the stack, so that ssda_pitch_push needs little
    stack (docs/target.md). */
 typedef struct {
@@ -261,12 +268,9 @@ typedef struct {
     int32_t mean;            /* m */
     uint32_t level;          /* A */
     uint32_t diffs;          /* absolute differences so far */
-    ssda_pitch_lag_value_t prev, cur;
-    ssda_pitch_lag_value_t best, best_left, best_right;
-    ssda_pitch_lag_value_t run, run_left, run_right;
+    ssda_pitch_lag_value_t at[2]; /* the scan: previous lag, current lag */
     ssda_pitch_lag_value_t pred;
-    ssda_pitch_lag_value_t t_left, t_mid, t_right;
-    uint32_t best_lag, run_lag, t_lag;
+    ssda_pitch_dip_t best, run, t;
 } ssda_pitch_work_t;
 
 /* The stream state. Caller-allocated; fields are private (read them through
@@ -292,7 +296,8 @@ typedef struct {
  * Bytes of buffer the config needs (the value of SSDA_PITCH_BUFFER_SIZE),
  * after checking the config as ssda_pitch_init does.
  * Returns SSDA_OK and writes *bytes, or an error of ssda_pitch_init (other
- * than SSDA_ERR_BUFFER) with *bytes untouched.
+ * than SSDA_ERR_BUFFER) with *bytes untouched. Built with
+ * SSDA_CFG_NO_PITCH_PUSH (no buffer needed): SSDA_ERR_UNSUPPORTED.
  */
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
 
@@ -310,6 +315,8 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
  *                    rate / 4; unknown flags
  *   SSDA_ERR_SIZE    frame_len outside 16..8192; chunk > frame_len
  *   SSDA_ERR_BUFFER  buffer_size too small, or buffer not 2-byte aligned
+ * Built with SSDA_CFG_NO_PITCH_PUSH, buffer and buffer_size are not used
+ * (buffer may be NULL; ssda_pitch_frame takes the frames).
  */
 int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
                     void *buffer, size_t buffer_size);
@@ -321,6 +328,8 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
  *   consumed: receives how many samples were taken (<= count).
  *   est:      receives the estimate when 1 is returned; else untouched.
  * Estimates do not depend on how the stream is cut into calls.
+ * Built with SSDA_CFG_NO_PITCH_PUSH: returns SSDA_ERR_UNSUPPORTED, nothing
+ * consumed or written (use ssda_pitch_frame).
  * Returns 1 (estimate written), 0 (all samples taken, no estimate yet), or
  * with nothing consumed and *consumed, *est untouched:
  *   SSDA_ERR_NULL   p, consumed or est NULL, or samples NULL with count > 0
@@ -328,6 +337,27 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
  */
 int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
                     size_t *consumed, ssda_pitch_estimate_t *est);
+
+/*
+ * Analyse one frame given whole (the frame-at-a-time entry, for a caller
+ * that holds its signal in memory, or a firmware built with
+ * SSDA_CFG_NO_PITCH_PUSH): x holds the info.span samples of the stream's
+ * next estimate, number f = est->frame, i.e. stream samples [f hop,
+ * f hop + span), so the caller steps through its signal by hop samples.
+ * The estimate is bit-identical to the one ssda_pitch_push returns for the
+ * same samples (every field, diffs included); the prediction
+ * (SSDA_PITCH_TRACK) is carried to the next frame as push carries it.
+ * The input low-pass runs over the continuous stream, not per frame, so a
+ * stream with the low-pass is refused: set SSDA_PITCH_NO_FILTER. Use one
+ * entry per stream (this one does not touch push's buffered samples).
+ *   x:   info.span samples, read only, not kept.
+ *   est: receives the estimate on success; else untouched.
+ * Returns SSDA_OK, or with *est and the stream untouched:
+ *   SSDA_ERR_NULL   p, x or est NULL
+ *   SSDA_ERR_STATE  p not initialised by ssda_pitch_init
+ *   SSDA_ERR_ARG    the stream has the input low-pass (no SSDA_PITCH_NO_FILTER)
+ */
+int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *est);
 
 /*
  * Forget buffered samples and the prediction; the next estimate is number

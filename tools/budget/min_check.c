@@ -11,7 +11,8 @@
  *   - every feature left out returns SSDA_ERR_UNSUPPORTED and leaves the
  *     result untouched;
  *   - the pitch core finds the period of a 200 Hz vowel at 16 kHz (80
- *     samples) and refuses the options left out;
+ *     samples) from whole frames and refuses the options left out (the
+ *     push intake among them);
  *   - a raster 8-bit source read through a callback gives the streamed
  *     search the same answer as the in-RAM search, and the tiled layout,
  *     granular reads and 16-bit sources are refused.
@@ -118,34 +119,40 @@ static void check_search(void)
 }
 
 static int16_t g_sig[4000];
-static int16_t g_pitch_buf[1200];
 
 static void check_pitch(void)
 {
     ssda_pitch_config_t cfg;
     ssda_pitch_t p;
-    ssda_pitch_estimate_t est;
+    ssda_pitch_info_t info;
+    ssda_pitch_estimate_t est, poison;
     test_voice_t v;
-    size_t used = 0u, at = 0u;
+    size_t used = 777u, bytes = 777u;
+    uint32_t at;
     unsigned frames = 0u, right = 0u;
     static const uint8_t refused[] = {0u, SSDA_PITCH_TRACK, SSDA_PITCH_FULL, SSDA_PITCH_PARABOLIC};
     uint32_t i;
     memset(&cfg, 0, sizeof cfg);
+    memset(&poison, 0xA5, sizeof poison);
     cfg.sample_rate_hz = 16000u;
     for (i = 0u; i < sizeof refused; i++) {
         cfg.flags = (uint8_t)(refused[i] | (i == 0u ? 0u : SSDA_PITCH_NO_FILTER));
-        check(ssda_pitch_init(&p, &cfg, g_pitch_buf, sizeof g_pitch_buf) == SSDA_ERR_UNSUPPORTED,
+        check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_ERR_UNSUPPORTED,
               "pitch: a left-out option (the low-pass by default) is refused");
     }
     cfg.flags = SSDA_PITCH_NO_FILTER;
-    check(ssda_pitch_init(&p, &cfg, g_pitch_buf, sizeof g_pitch_buf) == SSDA_OK,
-          "pitch: the core initialises");
+    check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_OK &&
+              ssda_pitch_get_info(&p, &info) == SSDA_OK,
+          "pitch: the core initialises, without a buffer");
+    est = poison;
+    check(ssda_pitch_push(&p, g_sig, 100u, &used, &est) == SSDA_ERR_UNSUPPORTED &&
+              ssda_pitch_buffer_size(&cfg, &bytes) == SSDA_ERR_UNSUPPORTED &&
+              used == 777u && bytes == 777u && memcmp(&est, &poison, sizeof est) == 0,
+          "pitch: no push intake (whole frames only), nothing written");
     test_voice_vowel_a(&v, 200.0, 12000.0);
     test_signal_voice(g_sig, 4000u, 0u, 16000u, &v);
-    while (at < 4000u) {
-        int r = ssda_pitch_push(&p, g_sig + at, 4000u - at, &used, &est);
-        at += used;
-        if (r == 1) {
+    for (at = 0u; at + info.span <= 4000u; at += info.hop) {
+        if (ssda_pitch_frame(&p, g_sig + at, &est) == SSDA_OK) {
             frames++;
             /* period 80 samples: the lag within one sample, voiced */
             if (est.voiced && est.lag >= 79u && est.lag <= 81u &&

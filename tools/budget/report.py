@@ -327,9 +327,10 @@ def main():
               "built with the feature switches of `include/ssda/config.h` (" +
               ", ".join(f"`{c}`" for c in min_config) + "): the search keeps "
               "the exact `auto` and brute-force thresholds, the raster scan, row "
-              "order and 8-bit views; the pitch keeps the streamed AMDF with early "
-              "exit, voicing, the dip-run choice with its octave check and the "
-              "V-shaped interpolation; the streaming layer keeps raster 8-bit "
+              "order and 8-bit views; the pitch keeps the AMDF of whole frames "
+              "(`ssda_pitch_frame`) with early exit, voicing, the dip-run choice "
+              "with its octave and below-range checks and the V-shaped "
+              "interpolation; the streaming layer keeps raster 8-bit "
               "sources read at byte granularity and the plate cache. A feature "
               "left out returns `SSDA_ERR_UNSUPPORTED`.")
             checks = []
@@ -345,7 +346,7 @@ def main():
                 w(f" The minimal library also runs on the emulated Cortex-M4 "
                   f"(`tools/budget/min_check.c`, {len(checks)} run(s) of {checks[0]} checks, all "
                   "passed): its search returns the brute-force minimum, its pitch the period "
-                  "of a 200 Hz vowel, its streamed search the in-RAM answer, and every option "
+                  "of a 200 Hz vowel from whole frames, its streamed search the in-RAM answer, and every option "
                   "left out is refused with the result untouched.")
             w("\n\n")
         w("| feature | " + " | ".join(n for n, _ in targets) + " | Cortex-M0+ target |\n")
