@@ -1360,7 +1360,7 @@ static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool 
    position's group bound in one pass over the tables (rows of the shared
    table against each window group sum, so the loops run along x and
    vectorise), into the per-window group table's place, which shared tables
-   leave free (nx * ah >= nx * ny entries). The scans then pass the
+   leave unused (nx * ah >= nx * ny entries). The scans then pass the
    positions whose bound exceeds the best SAD without evaluating them
    (consider_best). Counts the nx * ny * ngroups terms here; eval_fast's
    bound calls for the other positions are not counted again (finish). */
