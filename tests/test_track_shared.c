@@ -91,13 +91,7 @@ static void make_images(uint32_t seed, uint32_t kind)
 
 static void views(bool wide, ssda_view_t *a, ssda_view_t *b)
 {
-    if (wide) {
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(a, g_a16, IW, IH, IW * 2u, SSDA_PIX_U16));
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(b, g_b16, IW, IH, IW * 2u, SSDA_PIX_U16));
-    } else {
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(a, g_a8, IW, IH, IW, SSDA_PIX_U8));
-        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(b, g_b8, IW, IH, IW, SSDA_PIX_U8));
-    }
+    test_view_pair(wide, g_a16, g_b16, g_a8, g_b8, IW, IH, a, b);
 }
 
 static bool searched(uint8_t status)

@@ -1,3 +1,4 @@
+#include "unity.h"
 #include "test_image.h"
 
 uint32_t test_px(const ssda_view_t *v, uint32_t x, uint32_t y)
@@ -93,4 +94,13 @@ void test_fill_texture_u16(uint16_t *p, uint32_t w, uint32_t h, uint32_t stride,
                            uint32_t maxval, test_rng_t *r)
 {
     smooth_fill(p, 2u, w, h, stride, maxval, r);
+}
+
+void test_view_pair(int wide, const void *a16, const void *b16, const void *a8, const void *b8,
+                    uint16_t w, uint16_t h, ssda_view_t *a, ssda_view_t *b)
+{
+    const ssda_pixfmt_t fmt = wide ? SSDA_PIX_U16 : SSDA_PIX_U8;
+    const uint32_t stride = wide ? 2u * w : w;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(a, wide ? a16 : a8, w, h, stride, fmt));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(b, wide ? b16 : b8, w, h, stride, fmt));
 }
