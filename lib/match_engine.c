@@ -1059,14 +1059,16 @@ static uint32_t *blocks_room(const engine_t *e)
    one: most runs hold none that the best SAD leaves open. */
 #define PRE_RUN 8u
 
-/* A single search with every position's group bound known (e->pre_scan;
-   SSDA_MATCH_BLOCKS where no level applies, AUTO raster, eval_fast): the
-   bounds at once (ssda__pre_groups), the candidate of the smallest bound
-   in each of 16 tiles summed first, smallest first, so that the best SAD
-   is near the minimum from the start; then in raster order only the
-   positions whose bound does not exceed the best SAD so far go to
-   eval_fast (its cut level and tie rule as in the raster scan); the others
-   cannot win. The result does not depend on the order (exact modes). A
+/* A single search with every position's group bound known (e->pre_scan:
+   SSDA_MATCH_BLOCKS left to it by pre_first, AUTO raster, eval_fast; the
+   group tables from ssda__pre_tables): the bounds at once, each row's
+   smallest and the candidate of the smallest bound in each of 16 tiles
+   (ssda__pre_bounds), the candidates summed first, smallest first, so that
+   the best SAD is near the minimum from the start; then in raster order,
+   in the rows whose smallest bound does not exceed the best SAD so far,
+   only the positions whose bound does not go to eval_fast (its cut level
+   and tie rule as in the raster scan); the others cannot win. The result
+   does not depend on the order (exact modes). A
    visited candidate's entry becomes UINT32_MAX, above every bound (the
    bound <= the SAD < 2^32 - 1: e->fast). Each position counts once. */
 static SSDA_NOINLINE int scan_pre(engine_t *e)
@@ -1075,15 +1077,16 @@ static SSDA_NOINLINE int scan_pre(engine_t *e)
     uint32_t *pre = blocks_room(e); /* no level: the room is unused */
     uint32_t *cx = pre + (size_t)nx * ny; /* after the bounds (match.h's room) */
     uint32_t *cy = cx + SSDA__PRE_CANDS, *cb = cy + SSDA__PRE_CANDS;
+    uint32_t *rmin = cb + SSDA__PRE_CANDS;
     uint32_t n, i, x, y;
     cand_t c;
-    ssda__pre_groups(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx, ny, pre);
+    n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx, ny, pre, rmin,
+                         cx, cy, cb); /* >= 1: nx, ny >= 1 */
     {
         const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
         e->ops += terms;
     }
     e->pre = pre; /* its terms counted: eval_fast's are not (finish) */
-    n = ssda__pre_seeds(pre, nx, ny, cx, cy, cb); /* >= 1: nx, ny >= 1 */
     for (i = 0u; i < n; i++) {
         const int err = consider(e, cx[i], cy[i], &c); /* the first completes */
         if (err < 0) {
@@ -1094,6 +1097,9 @@ static SSDA_NOINLINE int scan_pre(engine_t *e)
     }
     for (y = 0u; y < ny; y++) {
         const uint32_t *p = pre + (size_t)y * nx;
+        if (rmin[y] > e->best.sad) {
+            continue; /* no position of the row can win */
+        }
         for (x = 0u; x < nx; x += PRE_RUN) {
             const uint32_t t = (uint32_t)e->best.sad; /* < 2^32 - 1 */
             const uint32_t end = nx - x < PRE_RUN ? nx : x + PRE_RUN;
@@ -1478,6 +1484,35 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
 }
 #endif
 
+/* Windows with no side above it search by scan_pre rather than the block
+   levels: every bound at once and tile candidates cost less than the levels
+   up to 64 x 64 px, more from 80 x 80 on textured photographs
+   (docs/benchmarks.md, issue 18 session 6). */
+#define PRE_MAX_SIDE 64u
+
+/* SSDA_MATCH_BLOCKS left to scan_pre (engine_setup sets pre_scan when
+   eval_fast's conditions hold, which these imply): AUTO, raster scan, no
+   uniqueness list, rows in memory in row order, every SAD below 2^32 - 1,
+   a window with no level (a side below 2 * BLOCK_MIN_SIDE) or no side
+   above PRE_MAX_SIDE. */
+static bool pre_first(const engine_t *e)
+{
+#ifndef SSDA_CFG_NO_FAST_PATH
+    const ssda_match_plan_t *plan = e->plan;
+    const uint32_t L = e->L, M = e->M;
+    return (plan->flags & SSDA_MATCH_BLOCKS) != 0u &&
+           plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO &&
+           plan->scan == (uint8_t)SSDA_SCAN_RASTER && (plan->flags & SSDA__MATCH_TAB) == 0u &&
+           e->list == NULL && e->row_step == 1u && e->area->base != NULL &&
+           e->win->base != NULL && L * M <= (e->u8 ? 16843008u : 65536u) &&
+           (L < 2u * BLOCK_MIN_SIDE || M < 2u * BLOCK_MIN_SIDE ||
+            (L <= PRE_MAX_SIDE && M <= PRE_MAX_SIDE));
+#else
+    (void)e;
+    return false;
+#endif
+}
+
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -1517,6 +1552,16 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
         e->ops += ops;
         return err;
     }
+#ifndef SSDA_CFG_NO_FAST_PATH
+    if (pre_first(e)) { /* scan_pre's case: rows in memory, and room for v */
+        uint32_t *v = blocks_room(e) + (size_t)nx * e->ny + 3u * SSDA__PRE_CANDS + e->ny;
+        ops = ssda__pre_tables(e->area->base, e->area->stride, u8, e->area->width,
+                               e->area->height, e->L, group, gsum, v);
+        err = window_groups(e, wgrp, group, ngroups, u8, &ops);
+        e->ops += ops;
+        return err;
+    }
+#endif
     err = area_row_sums(e, gsum, u8, &ops);
     if (err == SSDA_OK) {
         if (group > 1u) {
@@ -1640,36 +1685,6 @@ static SSDA_NOINLINE int build_blocks(engine_t *e)
     return err;
 }
 
-#endif
-
-#ifndef SSDA_CFG_NO_BOUNDS
-/* Windows with no side above it search by scan_pre rather than the block
-   levels: every bound at once and tile candidates cost less than the levels
-   up to 64 x 64 px, more from 80 x 80 on textured photographs
-   (docs/benchmarks.md, issue 18 session 6). */
-#define PRE_MAX_SIDE 64u
-
-/* SSDA_MATCH_BLOCKS left to scan_pre (engine_setup sets pre_scan when
-   eval_fast's conditions hold, which these imply): AUTO, raster scan, no
-   uniqueness list, rows in memory in row order, every SAD below 2^32 - 1,
-   a window with no level (a side below 2 * BLOCK_MIN_SIDE) or no side
-   above PRE_MAX_SIDE. */
-static bool pre_first(const engine_t *e)
-{
-#ifndef SSDA_CFG_NO_FAST_PATH
-    const ssda_match_plan_t *plan = e->plan;
-    const uint32_t L = e->L, M = e->M;
-    return plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO &&
-           plan->scan == (uint8_t)SSDA_SCAN_RASTER && (plan->flags & SSDA__MATCH_TAB) == 0u &&
-           e->list == NULL && e->row_step == 1u && e->area->base != NULL &&
-           e->win->base != NULL && L * M <= (e->u8 ? 16843008u : 65536u) &&
-           (L < 2u * BLOCK_MIN_SIDE || M < 2u * BLOCK_MIN_SIDE ||
-            (L <= PRE_MAX_SIDE && M <= PRE_MAX_SIDE));
-#else
-    (void)e;
-    return false;
-#endif
-}
 #endif
 
 /* The result of a finished scan, with the quality the plan asks for
