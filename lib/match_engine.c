@@ -1077,7 +1077,7 @@ static SSDA_NOINLINE int scan_pre(engine_t *e)
     uint32_t *pre = blocks_room(e); /* no level: the room is unused */
     uint32_t *cx = pre + (size_t)nx * ny; /* after the bounds (match.h's room) */
     uint32_t *cy = cx + SSDA__PRE_CANDS, *cb = cy + SSDA__PRE_CANDS;
-    uint32_t *rmin = cb + SSDA__PRE_CANDS;
+    uint32_t *rmin = cx + SSDA__PRE_CAND_WORDS;
     uint32_t n, i, x, y;
     cand_t c;
     n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx, ny, pre, rmin,
@@ -1554,7 +1554,7 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
     }
 #ifndef SSDA_CFG_NO_FAST_PATH
     if (pre_first(e)) { /* scan_pre's case: rows in memory, and room for v */
-        uint32_t *v = blocks_room(e) + (size_t)nx * e->ny + 3u * SSDA__PRE_CANDS + e->ny;
+        uint32_t *v = blocks_room(e) + ((size_t)nx * e->ny + SSDA__PRE_CAND_WORDS + e->ny);
         ops = ssda__pre_tables(e->area->base, e->area->stride, u8, e->area->width,
                                e->area->height, e->L, group, gsum, v);
         err = window_groups(e, wgrp, group, ngroups, u8, &ops);

@@ -147,12 +147,13 @@ uint32_t ssda__pre_bounds(const uint32_t *g, uint32_t pitch, uint32_t group, con
             /* each tile's smallest, read while the row is in the cache */
             for (tc = 0u; tc < SSDA__PRE_TILES; tc++) {
                 const uint32_t x0 = tile_start(tc, nx), x1 = tile_start(tc + 1u, nx);
-                uint32_t v, x;
+                uint32_t v;
                 if (x0 >= x1) {
                     continue; /* an empty tile: fewer positions than tiles */
                 }
                 v = row_min(p, x0, x1);
                 if (y == y0 || v < cb[slot]) { /* strictly: the first row wins a tie */
+                    uint32_t x;
                     for (x = x0; p[x] != v; x++) {
                         /* its first place: v is in the range */
                     }

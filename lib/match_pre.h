@@ -17,6 +17,7 @@
    of SSDA__PRE_TILES x SSDA__PRE_TILES tiles of the positions. */
 #define SSDA__PRE_TILES 4u
 #define SSDA__PRE_CANDS 16u
+#define SSDA__PRE_CAND_WORDS 48u /* their x, y and bound */
 
 /*
  * The area's group sums for the bounds from its pixels in memory (base,
