@@ -1059,6 +1059,23 @@ static uint32_t *blocks_room(const engine_t *e)
    one: most runs hold none that the best SAD leaves open. */
 #define PRE_RUN 8u
 
+/* scan_pre's bound pass (ssda__pre_bounds): out of line, so that its many
+   arguments stay off scan_pre's frame, which lies under consider's.
+   Returns the number of candidates. */
+static SSDA_NOINLINE uint32_t pre_pass(engine_t *e, uint32_t *pre)
+{
+    const uint32_t nx = e->nx, ny = e->ny;
+    uint32_t *cx = pre + (size_t)nx * ny; /* after the bounds (match.h's room) */
+    uint32_t *cy = cx + SSDA__PRE_CANDS;
+    const uint32_t n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx,
+                                        ny, pre, cx + SSDA__PRE_CAND_WORDS, cx, cy,
+                                        cy + SSDA__PRE_CANDS); /* >= 1: nx, ny >= 1 */
+    const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
+    e->ops += terms;
+    e->pre = pre; /* its terms counted: eval_fast's are not (finish) */
+    return n;
+}
+
 /* A single search with every position's group bound known (e->pre_scan:
    SSDA_MATCH_BLOCKS left to it by pre_first, AUTO raster, eval_fast; the
    group tables from ssda__pre_tables): the bounds at once, each row's
@@ -1075,18 +1092,10 @@ static SSDA_NOINLINE int scan_pre(engine_t *e)
 {
     const uint32_t nx = e->nx, ny = e->ny;
     uint32_t *pre = blocks_room(e); /* no level: the room is unused */
-    uint32_t *cx = pre + (size_t)nx * ny; /* after the bounds (match.h's room) */
-    uint32_t *cy = cx + SSDA__PRE_CANDS, *cb = cy + SSDA__PRE_CANDS;
-    uint32_t *rmin = cx + SSDA__PRE_CAND_WORDS;
-    uint32_t n, i, x, y;
+    const uint32_t *cx = pre + (size_t)nx * ny, *cy = cx + SSDA__PRE_CANDS;
+    const uint32_t *rmin = cx + SSDA__PRE_CAND_WORDS;
+    uint32_t n = pre_pass(e, pre), i, x, y;
     cand_t c;
-    n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx, ny, pre, rmin,
-                         cx, cy, cb); /* >= 1: nx, ny >= 1 */
-    {
-        const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
-        e->ops += terms;
-    }
-    e->pre = pre; /* its terms counted: eval_fast's are not (finish) */
     for (i = 0u; i < n; i++) {
         const int err = consider(e, cx[i], cy[i], &c); /* the first completes */
         if (err < 0) {
