@@ -305,12 +305,15 @@ typedef struct {
  * a smaller buffer (down to SSDA_TRACK_WORK_SIZE), every search builds its
  * own tables as before. Results (vectors, SADs, statuses, exact flags,
  * positions, completed) are those without shared tables; stats.pixel_ops
- * counts the tables once (one op per pixel read and per sliding-sum step)
- * and the searches' work, so it depends on how the grid is cut into calls:
+ * counts the tables once (one op per pixel read, per sliding-sum step and
+ * per table entry) and the searches' work, so it depends on how the grid
+ * is cut into calls:
  * one ssda_track call builds each FIRST row's tables once, an
  * ssda_track_row call (one grid row) builds all its rows. Accumulators:
  * the vertical sums of 4 pixels < 2^18, the 4 x 4 sums < 2^20, the
- * win_w x 4 sums <= 4 * win_w * 65535 < 2^32. Layout: the per-window part
+ * win_w x 4 sums <= 4 * win_w * 65535 < 2^32; these two are differences
+ * of the vertical sums' prefix sums along a row, modulo 2^32 (exact: the
+ * true sums fit). Layout: the per-window part
  * (SSDA_TRACK_WORK_SIZE rounded up to 8), 160 bytes of state, then uint32_t tables of
  * 2 * (search_h - 3) + 1 rows of first_w entries and the window's
  * (win_w / 4) * (win_h / 4) block sums: 592 944 B for the 2500-px-wide GOES
