@@ -1372,6 +1372,20 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
     uint32_t x, y, k;
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
+        if (e->ngroups == 4u) { /* 16..19 rows, the seed's windows: one pass */
+            const uint32_t *g0 = e->gsum + (size_t)y * pitch;
+            const uint32_t *g1 = g0 + (size_t)4u * pitch, *g2 = g1 + (size_t)4u * pitch;
+            const uint32_t *g3 = g2 + (size_t)4u * pitch;
+            const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
+            size_t i;
+            for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */
+                p[i] = (g0[i] > w0 ? g0[i] - w0 : w0 - g0[i]) +
+                       (g1[i] > w1 ? g1[i] - w1 : w1 - g1[i]) +
+                       (g2[i] > w2 ? g2[i] - w2 : w2 - g2[i]) +
+                       (g3[i] > w3 ? g3[i] - w3 : w3 - g3[i]);
+            }
+            continue;
+        }
         for (k = 0u; k < e->ngroups; k++) {
             const uint32_t *g = e->gsum + ((size_t)y + 4u * (size_t)k) * pitch;
             const uint32_t w = e->wgrp[k];
