@@ -1301,6 +1301,32 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t *w = wblk + (size_t)k * nb;
         uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */
+        if (nb == 4u) { /* 16..19 columns, the seed's windows: the sums in locals */
+            uint32_t b[4] = {0u, 0u, 0u, 0u}; /* < 2^20 each */
+            for (yy = 4u * k; yy < 4u * k + 4u; yy++) {
+                const uint8_t *p;
+                int err = ssda__rows_get(e->win, 0u, yy, 16u, &p);
+                if (err != SSDA_OK) {
+                    return err;
+                }
+                for (c = 0u; c < 4u; c++) {
+                    if (u8) {
+                        const uint8_t *q = p + 4u * c;
+                        b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    } else {
+                        const uint16_t *q = (const uint16_t *)(const void *)p + 4u * c;
+                        b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    }
+                }
+            }
+            w[0] = b[0];
+            w[1] = b[1];
+            w[2] = b[2];
+            w[3] = b[3];
+            wgrp[k] = b[0] + b[1] + b[2] + b[3];
+            *ops += (uint64_t)4u * e->L + 3u;
+            continue;
+        }
         for (c = 0u; c < nb; c++) {
             w[c] = 0u;
         }
