@@ -470,8 +470,9 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 #ifndef SSDA_CFG_NO_FAST_PATH
 #ifndef SSDA_CFG_NO_BOUNDS
 /* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
-   SAD < 2^32 - 1 (triangle inequality), each term likewise. The terms are
-   stored only when the position passes (a second pass): most do not. */
+   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from the
+   table when pre_bounds made it. The terms are stored only when the
+   position passes (a second pass): most do not. */
 static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
@@ -481,7 +482,9 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
     e->nbound++; /* n ops each, added by finish */
-    if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
+    if (e->pre != NULL) { /* every bound known (pre_bounds) */
+        rest = e->pre[(size_t)y * e->nx + x];
+    } else if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
         const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
                        a3 = g[(size_t)3u * down];
         rest = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
