@@ -499,10 +499,19 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     if (rest < cut_at) {
         uint32_t *t = e->term;
         g = g0;
-        for (k = 0u; k < n; k++) {
-            const uint32_t a = *g, b = w[k];
-            t[k] = a > b ? a - b : b - a;
-            g += down;
+        if (n == 4u) {
+            const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
+                           a3 = g[(size_t)3u * down];
+            t[0] = a0 > w[0] ? a0 - w[0] : w[0] - a0;
+            t[1] = a1 > w[1] ? a1 - w[1] : w[1] - a1;
+            t[2] = a2 > w[2] ? a2 - w[2] : w[2] - a2;
+            t[3] = a3 > w[3] ? a3 - w[3] : w[3] - a3;
+        } else {
+            for (k = 0u; k < n; k++) {
+                const uint32_t a = *g, b = w[k];
+                t[k] = a > b ? a - b : b - a;
+                g += down;
+            }
         }
     }
     return rest;
