@@ -1475,6 +1475,14 @@ static SSDA_ALWAYS_INLINE uint32_t low_bit(uint32_t m)
     return k_pos[((m & (0u - m)) * 0x077CB531u) >> 27];
 }
 
+/* Bit x of a word, x < 32. */
+static const uint32_t k_bit[OPEN_MAX] = {
+    0x1u,       0x2u,       0x4u,       0x8u,       0x10u,       0x20u,       0x40u,
+    0x80u,      0x100u,     0x200u,     0x400u,     0x800u,      0x1000u,     0x2000u,
+    0x4000u,    0x8000u,    0x10000u,   0x20000u,   0x40000u,    0x80000u,    0x100000u,
+    0x200000u,  0x400000u,  0x800000u,  0x1000000u, 0x2000000u,  0x4000000u,  0x8000000u,
+    0x10000000u, 0x20000000u, 0x40000000u, 0x80000000u};
+
 /* Bits lo .. hi of a word (lo <= hi < 32). */
 static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
 {
@@ -1521,10 +1529,10 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
         const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
         const uint32_t *pre = e->pre;
         for (i = 0; i < ny; i++) {
-            uint32_t m = 0u, x = (uint32_t)nx;
-            while (x > 0u) { /* descending: bit x - 1 shifted into place */
-                x--;
-                m = (m << 1) | (pre[x] <= s ? 1u : 0u);
+            uint32_t m = 0u;
+            size_t x;
+            for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
+                m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
             }
             open[i] = m;
             pre += nx;
