@@ -1323,10 +1323,10 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
                 }
                 for (c = 0u; c < 4u; c++) {
                     if (u8) {
-                        const uint8_t *q = p + 4u * c;
+                        const uint8_t *q = p + (size_t)4u * c;
                         b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
                     } else {
-                        const uint16_t *q = (const uint16_t *)(const void *)p + 4u * c;
+                        const uint16_t *q = (const uint16_t *)(const void *)p + (size_t)4u * c;
                         b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
                     }
                 }
@@ -1475,14 +1475,6 @@ static SSDA_ALWAYS_INLINE uint32_t low_bit(uint32_t m)
     return k_pos[((m & (0u - m)) * 0x077CB531u) >> 27];
 }
 
-/* Bit x of a word, x < 32. */
-static const uint32_t k_bit[OPEN_MAX] = {
-    0x1u,       0x2u,       0x4u,       0x8u,       0x10u,       0x20u,       0x40u,
-    0x80u,      0x100u,     0x200u,     0x400u,     0x800u,      0x1000u,     0x2000u,
-    0x4000u,    0x8000u,    0x10000u,   0x20000u,   0x40000u,    0x80000u,    0x100000u,
-    0x200000u,  0x400000u,  0x800000u,  0x1000000u, 0x2000000u,  0x4000000u,  0x8000000u,
-    0x10000000u, 0x20000000u, 0x40000000u, 0x80000000u};
-
 /* Bits lo .. hi of a word (lo <= hi < 32). */
 static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
 {
@@ -1520,13 +1512,22 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 {
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
     const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
-    int32_t d, i, dmax = px;
+    int32_t d, dmax = px;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
     if (err != SSDA_OK) {
         return err;
     }
     {
+        /* bit x of a word, x < 32 */
+        static const uint32_t k_bit[OPEN_MAX] = {
+            0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
+            0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
+            0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
+            0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
+            0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
+            0x40000000u, 0x80000000u};
         const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+        int32_t i;
         const uint32_t *pre = e->pre;
         for (i = 0; i < ny; i++) {
             uint32_t m = 0u;
@@ -1547,16 +1548,16 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
         const int32_t y0 = py - d + 1 < 0 ? 0 : py - d + 1;
         const int32_t y1 = py + d - 1 >= ny ? ny - 1 : py + d - 1;
         if (py - d >= 0) { /* top */
-            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)(py - d));
+            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)py - (uint32_t)d);
         }
         if (py + d < ny && err == SSDA_OK) { /* bottom */
-            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)(py + d));
+            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)py + (uint32_t)d);
         }
         if (px - d >= 0 && err == SSDA_OK) { /* left */
-            err = open_column(e, open, (uint32_t)(px - d), y0, y1);
+            err = open_column(e, open, (uint32_t)px - (uint32_t)d, y0, y1);
         }
         if (px + d < nx && err == SSDA_OK) { /* right */
-            err = open_column(e, open, (uint32_t)(px + d), y0, y1);
+            err = open_column(e, open, (uint32_t)px + (uint32_t)d, y0, y1);
         }
     }
     /* every position once, as scan_predict counts them */
