@@ -281,7 +281,9 @@ typedef struct {
      sizeof(ssda_track_vector_t))
 
 /* Bytes of match work buffer SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need
-   (one, reused by every window; 8-byte aligned). */
+   (one, reused by every window; 8-byte aligned). SSDA_MATCH_BOUNDS alone
+   needs only SSDA_MATCH_WORK_SIZE(search_w, search_h, win_w, win_h) bytes,
+   4-byte aligned, as ssda_match. */
 #define SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h)                \
     SSDA_MATCH_WORK_SIZE_UNIQUE(search_w, search_h, win_w, win_h)
 
@@ -364,8 +366,10 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
  *                     NONE or the COARSE scan; SSDA_MATCH_BLOCKS in
  *                     match.flags; and every SSDA_ERR_ARG of
  *                     ssda_match (unique_q8, unique_radius)
- *   SSDA_ERR_BUFFER   out_count below the grid count; bounds or uniqueness
- *                     work buffer below SSDA_TRACK_WORK_SIZE or misaligned
+ *   SSDA_ERR_BUFFER   out_count below the grid count; a work buffer below
+ *                     what the flags need (SSDA_TRACK_WORK_SIZE with
+ *                     SSDA_TRACK_UNIQUE; SSDA_MATCH_WORK_SIZE of the search
+ *                     area for SSDA_MATCH_BOUNDS alone) or misaligned
  *   SSDA_ERR_UNSUPPORTED  uniqueness or the sub-pixel fit in a build without
  *                     them (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL: set
  *                     SSDA_TRACK_NO_SUBPIXEL there)
