@@ -4,6 +4,7 @@
 #include "track_wave.h"
 #include "img_source.h"
 #include "json_out.h"
+#include "median.h"
 #include "progress.h"
 #include "ssda/grad.h"
 #include "ssda/ncc.h"
@@ -1057,28 +1058,22 @@ uint64_t track_work_ops(const track_result_t *r)
     return r->stats.pixel_ops + r->stats.check_pixels;
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 double track_median_motion(const track_result_t *r, int axis)
 {
-    double *v = malloc((r->grid.count + 1u) * sizeof *v), m = 0.0;
+    int32_t *v = malloc((r->grid.count + 1u) * sizeof *v);
+    double m;
     uint32_t k, n = 0;
     if (v == NULL) {
         return 0.0;
     }
     for (k = 0; k < r->grid.count; k++) {
         if (r->vec[k].status == SSDA_TRACK_OK) {
-            v[n++] = (axis == 0 ? r->vec[k].sub_dx_q8 : r->vec[k].sub_dy_q8) / 256.0;
+            v[n++] = axis == 0 ? r->vec[k].sub_dx_q8 : r->vec[k].sub_dy_q8;
         }
     }
-    if (n > 0) {
-        qsort(v, n, sizeof *v, cmp_double);
-        m = n % 2u ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    }
+    /* a selection: a qsort of every ok vector, four times a run, cost
+       about 1 % of a GOES run */
+    m = median_q8(v, n);
     free(v);
     return m;
 }
@@ -1206,16 +1201,16 @@ static cJSON *json_window(void *ctx, size_t k)
     cJSON_AddNumberToObject(item, "dx", v->dx);
     cJSON_AddNumberToObject(item, "dy", v->dy);
     /* Q8 values: exact in 8 decimals */
-    json_out_add_fixed(item, "sub_dx", v->sub_dx_q8 / 256.0, 8);
-    json_out_add_fixed(item, "sub_dy", v->sub_dy_q8 / 256.0, 8);
+    json_out_add_q8(item, "sub_dx", v->sub_dx_q8);
+    json_out_add_q8(item, "sub_dy", v->sub_dy_q8);
     json_out_add_u64(item, "sad", v->sad);
     if (v->texture_q8 != 0u || v->status == SSDA_TRACK_FLAT) {
-        json_out_add_fixed(item, "texture", v->texture_q8 / 256.0, 8);
+        json_out_add_q8(item, "texture", v->texture_q8);
     } else {
         cJSON_AddNullToObject(item, "texture");
     }
     if (v->unique_q8 != SSDA_MATCH_UNIQUE_NONE) {
-        json_out_add_fixed(item, "unique", v->unique_q8 / 256.0, 8);
+        json_out_add_q8(item, "unique", v->unique_q8);
     } else {
         cJSON_AddNullToObject(item, "unique");
     }

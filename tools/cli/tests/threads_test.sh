@@ -32,11 +32,24 @@ run 0 compare a.png b.png --threads 2 && grep -q "on 2 threads" out.txt || fail 
 # that disagree (and ties go to the prediction): any window solved before
 # its neighbours would show. Small steps give many rows.
 "$gen" texture c.png --size 160x128 --seed 12
+# The summary's median motion (track_median_motion: a selection, not a
+# sort) against the JSON's ok vectors sorted here; sub_dx, sub_dy are
+# multiples of 1/256 written exactly, so awk's mean of the middle two is
+# the tool's value.
+median_of() {
+  grep '"status":"ok"' "$1" | grep -o "\"sub_$2\":[-0-9.]*" | cut -d: -f2 | sort -g |
+    awk '{v[NR] = $1} END {if (NR % 2) m = v[(NR + 1) / 2]; else m = (v[NR / 2] + v[NR / 2 + 1]) / 2
+                           printf "%d ok vectors dx=%+.2f", NR, m}'
+}
+parities=""
 for pred in neighbour left none; do
   for pair in "a.png b.png" "a.png c.png"; do
     # shellcheck disable=SC2086
     run 0 track $pair --predict "$pred" --window 8 --search 24 --step 4 --threads 1 --json t1.json --quiet ||
       continue
+    want=$(median_of t1.json dx)
+    grep -qF "median of the $want" out.txt || fail "track $pair --predict $pred: summary '$(grep median out.txt)', JSON gives '$want'"
+    parities="$parities $(( $(grep -c '"status":"ok"' t1.json) % 2 ))"
     for t in 2 3 7 0; do
       # shellcheck disable=SC2086
       run 0 track $pair --predict "$pred" --window 8 --search 24 --step 4 --threads "$t" --json "t$t.json" \
@@ -46,6 +59,9 @@ for pred in neighbour left none; do
     done
   done
 done
+case $parities in *0*) ;; *) fail "no even count of ok vectors among the medians checked ($parities)" ;; esac
+case $parities in *1*) ;; *) fail "no odd count of ok vectors among the medians checked ($parities)" ;; esac
+
 # 16-bit samples with a fill value (masked windows and areas), unrelated
 # images: 49 grid columns, 7 bands a row (the last one column wide)
 "$gen" texture g1.png --size 200x96 --seed 21 --kind gray16 --max 4000 --fill 4095,60,30,100,60
