@@ -109,15 +109,13 @@ static void *worker_main(void *arg)
     wave_t *w = k->w;
     ssda_track_config_t cfg = *w->cfg;
     void *work = NULL;
-    /* the caller's thread uses the caller's buffer, the others a copy */
+    /* the caller's thread uses the caller's buffer, the others a copy; a
+       thread that cannot have one leaves its rows to the others (the
+       caller's thread always runs), like one that cannot start: the bands,
+       and so the output, stay the same (shared tables can take megabytes
+       a thread on wide images) */
     if (cfg.match.work != NULL && !k->caller) {
         if ((work = malloc(cfg.match.work_size)) == NULL) {
-            pthread_mutex_lock(&w->lock);
-            if (w->err == SSDA_OK) {
-                w->err = SSDA_ERR_BUFFER;
-            }
-            pthread_cond_broadcast(&w->moved);
-            pthread_mutex_unlock(&w->lock);
             return NULL;
         }
         cfg.match.work = work;

@@ -21,9 +21,10 @@
  * each call builds the tables of its band, so pixel_ops counts the tables
  * of these calls, which the fixed bands make the same for any thread count.
  * The caller's thread runs on cfg->match.work; each other thread on its
- * own copy (cfg->match.work_size bytes). prog (may be NULL) is advanced by
- * whole rows. Returns an ssda error code (SSDA_ERR_BUFFER when a work
- * buffer cannot be allocated).
+ * own copy (cfg->match.work_size bytes), or, when that cannot be
+ * allocated, not at all (the others take its rows: the same output).
+ * prog (may be NULL) is advanced by whole rows. Returns an ssda error code
+ * (SSDA_ERR_BUFFER when the progress table cannot be allocated).
  */
 int track_wave(const ssda_view_t *a, const ssda_view_t *b, const ssda_track_config_t *cfg,
                const ssda_track_grid_t *g, unsigned threads, ssda_track_vector_t *out,
