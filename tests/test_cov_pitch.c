@@ -85,20 +85,6 @@ static void test_f0_conversion_closed_form_and_saturation(void)
                              ssda__pitch_f0_q16(48000u, 48001u));
 }
 
-static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info)
-{
-    test_pitch_ref_cfg_t rc;
-    rc.rate = info->sample_rate_hz;
-    rc.lag_min = info->lag_min;
-    rc.lag_max = info->lag_max;
-    rc.frame_len = info->frame_len;
-    rc.threshold_q15 = info->threshold_q15;
-    rc.voicing_q15 = info->voicing_q15;
-    rc.silence_mad = info->silence_mad;
-    rc.parabolic = (info->flags & SSDA_PITCH_PARABOLIC) != 0u;
-    return rc;
-}
-
 /* One frame (span samples of x) through a stream; compared with the
    brute-force reference field by field. */
 static void analyse_one_frame(const ssda_pitch_config_t *c, const int16_t *x,
@@ -112,7 +98,7 @@ static void analyse_one_frame(const ssda_pitch_config_t *c, const int16_t *x,
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_get_info(&p, &info));
     TEST_ASSERT_EQUAL_INT(1, ssda_pitch_push(&p, x, info.span, &used, est));
     TEST_ASSERT_EQUAL_UINT32(info.span, (uint32_t)used);
-    rc = ref_cfg_of(&info);
+    rc = test_pitch_ref_cfg_of(&info);
     test_pitch_reference(x, &rc, ref);
     TEST_ASSERT_EQUAL_UINT32(ref->lag, est->lag);
     TEST_ASSERT_EQUAL_UINT32(ref->period_q16, est->period_q16);

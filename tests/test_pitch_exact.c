@@ -74,7 +74,6 @@ static uint32_t run_stream(const ssda_pitch_config_t *cfg, const int16_t *x, uin
     return count;
 }
 
-static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info);
 static void assert_same(const test_pitch_ref_t *r, const ssda_pitch_estimate_t *e);
 
 static int16_t g_filtered[SIG_MAX];
@@ -110,7 +109,7 @@ static uint32_t reference_frames(const ssda_pitch_config_t *cfg, const int16_t *
     test_pitch_ref_cfg_t rc;
     uint32_t count, f;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
-    rc = ref_cfg_of(&info);
+    rc = test_pitch_ref_cfg_of(&info);
     count = (n - info.span) / info.hop + 1u;
     TEST_ASSERT_TRUE(count <= EST_MAX);
     if ((cfg->flags & SSDA_PITCH_NO_FILTER) == 0u) {
@@ -331,20 +330,6 @@ static void test_modes_differ_only_in_work(void)
     TEST_ASSERT_TRUE(work_track <= work_exit);
 }
 
-static test_pitch_ref_cfg_t ref_cfg_of(const ssda_pitch_info_t *info)
-{
-    test_pitch_ref_cfg_t rc;
-    rc.rate = info->sample_rate_hz;
-    rc.lag_min = info->lag_min;
-    rc.lag_max = info->lag_max;
-    rc.frame_len = info->frame_len;
-    rc.threshold_q15 = info->threshold_q15;
-    rc.voicing_q15 = info->voicing_q15;
-    rc.silence_mad = info->silence_mad;
-    rc.parabolic = (info->flags & SSDA_PITCH_PARABOLIC) != 0u;
-    return rc;
-}
-
 static void assert_same(const test_pitch_ref_t *r, const ssda_pitch_estimate_t *e)
 {
     TEST_ASSERT_EQUAL_UINT32_MESSAGE(r->lag, e->lag, "lag");
@@ -366,7 +351,7 @@ static void check_every_prediction(const ssda_pitch_config_t *cfg, const int16_t
     ssda_pitch_estimate_t e;
     uint32_t pred;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
-    rc = ref_cfg_of(&info);
+    rc = test_pitch_ref_cfg_of(&info);
     test_pitch_reference(x, &rc, &r);
     for (pred = 0u; pred <= info.lag_max + 2u; pred++) {
         ssda__pitch_analyze(&info, x, pred, &e);
@@ -433,7 +418,7 @@ static void test_ties_go_to_the_smaller_lag(void)
     test_signal_square(g_sig, 400u, 25u, 0u, 5000, -5000);
     g_sig[200] = (int16_t)(g_sig[200] + 700);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
-    rc = ref_cfg_of(&info);
+    rc = test_pitch_ref_cfg_of(&info);
     test_pitch_reference(g_sig, &rc, &r);
     TEST_ASSERT_EQUAL_UINT32(25u, r.lag); /* the reference itself */
     TEST_ASSERT_FALSE(r.dip);
@@ -516,7 +501,7 @@ static void test_dip_beyond_lag_max_is_not_a_dip(void)
     test_voice_sine(&v, 8000.0 / 81.5, 10000.0);
     test_signal_voice(g_sig, 400u, 0u, 8000u, &v);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(&cfg, &info));
-    rc = ref_cfg_of(&info);
+    rc = test_pitch_ref_cfg_of(&info);
     test_pitch_reference(g_sig, &rc, &r);
     TEST_ASSERT_FALSE(r.dip);
     TEST_ASSERT_EQUAL_UINT32(80u, r.lag);

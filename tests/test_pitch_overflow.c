@@ -89,14 +89,7 @@ static void check_frame(const ssda_pitch_config_t *cfg, const int16_t *x, uint32
     ssda_pitch_estimate_t e;
     uint32_t pred;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda__pitch_resolve(cfg, &info));
-    rc.rate = info.sample_rate_hz;
-    rc.lag_min = info.lag_min;
-    rc.lag_max = info.lag_max;
-    rc.frame_len = info.frame_len;
-    rc.threshold_q15 = info.threshold_q15;
-    rc.voicing_q15 = info.voicing_q15;
-    rc.silence_mad = info.silence_mad;
-    rc.parabolic = (info.flags & SSDA_PITCH_PARABOLIC) != 0u;
+    rc = test_pitch_ref_cfg_of(&info);
     test_pitch_reference(x, &rc, &r);
     TEST_ASSERT_EQUAL_UINT32(expect_lag, r.lag);
     for (pred = 0u; pred <= info.lag_max; pred += info.lag_max / 3u) {

@@ -65,14 +65,7 @@ static void compare(const ssda_pitch_config_t *cfg, const char *name)
         check(0, name);
         return;
     }
-    rc.rate = info.sample_rate_hz;
-    rc.lag_min = info.lag_min;
-    rc.lag_max = info.lag_max;
-    rc.frame_len = info.frame_len;
-    rc.threshold_q15 = info.threshold_q15;
-    rc.voicing_q15 = info.voicing_q15;
-    rc.silence_mad = info.silence_mad;
-    rc.parabolic = false;
+    rc = test_pitch_ref_cfg_of(&info);
     frames = (SIG_N - info.span) / info.hop + 1u;
     for (f = 0u; f < frames; f++) {
         const int16_t *x = g_sig + f * info.hop;

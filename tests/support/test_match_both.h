@@ -16,6 +16,12 @@
 int test_match_both(const ssda_view_t *area, const ssda_view_t *window,
                     const ssda_match_config_t *cfg, ssda_match_result_t *result);
 
+/* Fails the test unless a and b give the same answer: position, SAD,
+   sub-pixel offsets, uniqueness, exact flag and positions searched (the
+   work counts, pixel_ops and completed, may differ). */
+void test_match_same_answer(const ssda_match_result_t *a, const ssda_match_result_t *b,
+                            const char *msg);
+
 /* Fails the test unless a and b hold the same values, field by field. */
 void test_match_same_result(const ssda_match_result_t *a, const ssda_match_result_t *b,
                             const char *msg);

@@ -7,6 +7,20 @@ static int64_t g_s[TEST_PITCH_REF_MAX_LAG + 2u];
 int64_t test_pitch_ref_d(uint32_t lag) { return g_d[lag]; }
 int64_t test_pitch_ref_s(uint32_t lag) { return g_s[lag]; }
 
+test_pitch_ref_cfg_t test_pitch_ref_cfg_of(const ssda_pitch_info_t *info)
+{
+    test_pitch_ref_cfg_t rc;
+    rc.rate = info->sample_rate_hz;
+    rc.lag_min = info->lag_min;
+    rc.lag_max = info->lag_max;
+    rc.frame_len = info->frame_len;
+    rc.threshold_q15 = info->threshold_q15;
+    rc.voicing_q15 = info->voicing_q15;
+    rc.silence_mad = info->silence_mad;
+    rc.parabolic = (info->flags & SSDA_PITCH_PARABOLIC) != 0u;
+    return rc;
+}
+
 static int64_t floor_div(int64_t a, int64_t b) /* b > 0 */
 {
     int64_t q = a / b;

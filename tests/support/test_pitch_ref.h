@@ -8,6 +8,7 @@
 #define SSDA_TEST_PITCH_REF_H
 #include <stdbool.h>
 #include <stdint.h>
+#include "ssda/pitch.h"
 
 #define TEST_PITCH_REF_MAX_LAG 4800u
 
@@ -23,6 +24,10 @@ typedef struct {
     uint16_t confidence_q15;
     bool voiced, dip, silent;
 } test_pitch_ref_t;
+
+/* The reference configuration of a resolved pitch job: its lags, frame,
+   thresholds and sub-sample fit (the parameters only; no rule is shared). */
+test_pitch_ref_cfg_t test_pitch_ref_cfg_of(const ssda_pitch_info_t *info);
 
 /* x holds frame_len + lag_max + 1 samples. */
 void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_pitch_ref_t *out);
