@@ -87,7 +87,7 @@ int main(void)
         }
         check(v, n, "descending");
         for (i = 0; i < n; i++) {
-            v[i] = INT32_MIN + (int32_t)(i % 2u) * -1; /* extremes */
+            v[i] = INT32_MIN + (int32_t)(i % 3u); /* the least values */
         }
         check(v, n, "extremes");
         for (i = 0; i < n; i++) {
