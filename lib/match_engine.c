@@ -470,8 +470,9 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 #ifndef SSDA_CFG_NO_FAST_PATH
 #ifndef SSDA_CFG_NO_BOUNDS
 /* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
-   SAD < 2^32 - 1 (triangle inequality), each term likewise. The terms are
-   stored only when the position passes (a second pass): most do not. */
+   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from the
+   table when pre_bounds made it. The terms are stored only when the
+   position passes (a second pass): most do not. */
 static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
@@ -481,7 +482,9 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     const uint32_t n = e->ngroups;
     uint32_t rest = 0u, k;
     e->nbound++; /* n ops each, added by finish */
-    if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
+    if (e->pre != NULL) { /* every bound known (pre_bounds) */
+        rest = e->pre[(size_t)y * e->nx + x];
+    } else if (n == 4u) { /* 16..19 rows, the seed's windows: no loop */
         const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
                        a3 = g[(size_t)3u * down];
         rest = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
@@ -496,10 +499,19 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     if (rest < cut_at) {
         uint32_t *t = e->term;
         g = g0;
-        for (k = 0u; k < n; k++) {
-            const uint32_t a = *g, b = w[k];
-            t[k] = a > b ? a - b : b - a;
-            g += down;
+        if (n == 4u) {
+            const uint32_t a0 = g[0], a1 = g[down], a2 = g[(size_t)2u * down],
+                           a3 = g[(size_t)3u * down];
+            t[0] = a0 > w[0] ? a0 - w[0] : w[0] - a0;
+            t[1] = a1 > w[1] ? a1 - w[1] : w[1] - a1;
+            t[2] = a2 > w[2] ? a2 - w[2] : w[2] - a2;
+            t[3] = a3 > w[3] ? a3 - w[3] : w[3] - a3;
+        } else {
+            for (k = 0u; k < n; k++) {
+                const uint32_t a = *g, b = w[k];
+                t[k] = a > b ? a - b : b - a;
+                g += down;
+            }
         }
     }
     return rest;
@@ -1301,6 +1313,32 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t *w = wblk + (size_t)k * nb;
         uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */
+        if (nb == 4u) { /* 16..19 columns, the seed's windows: the sums in locals */
+            uint32_t b[4] = {0u, 0u, 0u, 0u}; /* < 2^20 each */
+            for (yy = 4u * k; yy < 4u * k + 4u; yy++) {
+                const uint8_t *p;
+                int err = ssda__rows_get(e->win, 0u, yy, 16u, &p);
+                if (err != SSDA_OK) {
+                    return err;
+                }
+                for (c = 0u; c < 4u; c++) {
+                    if (u8) {
+                        const uint8_t *q = p + (size_t)4u * c;
+                        b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    } else {
+                        const uint16_t *q = (const uint16_t *)(const void *)p + (size_t)4u * c;
+                        b[c] += (uint32_t)q[0] + q[1] + q[2] + q[3];
+                    }
+                }
+            }
+            w[0] = b[0];
+            w[1] = b[1];
+            w[2] = b[2];
+            w[3] = b[3];
+            wgrp[k] = b[0] + b[1] + b[2] + b[3];
+            *ops += (uint64_t)4u * e->L + 3u;
+            continue;
+        }
         for (c = 0u; c < nb; c++) {
             w[c] = 0u;
         }
@@ -1372,6 +1410,20 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
     uint32_t x, y, k;
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
+        if (e->ngroups == 4u) { /* 16..19 rows, the seed's windows: one pass */
+            const uint32_t *g0 = e->gsum + (size_t)y * pitch;
+            const uint32_t *g1 = g0 + (size_t)4u * pitch, *g2 = g1 + (size_t)4u * pitch;
+            const uint32_t *g3 = g2 + (size_t)4u * pitch;
+            const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
+            size_t i;
+            for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */
+                p[i] = (g0[i] > w0 ? g0[i] - w0 : w0 - g0[i]) +
+                       (g1[i] > w1 ? g1[i] - w1 : w1 - g1[i]) +
+                       (g2[i] > w2 ? g2[i] - w2 : w2 - g2[i]) +
+                       (g3[i] > w3 ? g3[i] - w3 : w3 - g3[i]);
+            }
+            continue;
+        }
         for (k = 0u; k < e->ngroups; k++) {
             const uint32_t *g = e->gsum + ((size_t)y + 4u * (size_t)k) * pitch;
             const uint32_t w = e->wgrp[k];
@@ -1392,6 +1444,127 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
     }
     e->pre = pre;
 }
+
+/* The predict scan with every bound known (pre_bounds) and at most
+   OPEN_MAX positions a row and a column: scan_predict's square rings, in
+   the same order, visiting only the positions whose bound does not exceed
+   the SAD of the first (bit x of open[y]; the others would be passed by
+   consider_best as well, since the best SAD only falls). The same
+   positions are evaluated in the same order, so the result, positions and
+   completed are scan_predict's, with one compare a position to build the
+   masks instead of the ring loop's test of each (GOES-16, 16 x 16 in
+   32 x 32: 117 -> 78 million host instructions for the grid; issue 18).
+   open: 32 words in the uniqueness list's place, unused here. */
+#ifndef SSDA_CFG_NO_PREDICT
+#define OPEN_MAX 32u
+
+/* Byte offset of the uniqueness list in the work buffer (match.h's layout:
+   after the bounds tables, rounded up to 8). */
+static size_t open_at(const engine_t *e)
+{
+    return (((size_t)e->nx * e->area->height + 2u * (size_t)e->M) * sizeof(uint32_t) + 7u) &
+           ~(size_t)7u;
+}
+
+/* Index of the lowest set bit of m != 0 (a de Bruijn sequence). */
+static SSDA_ALWAYS_INLINE uint32_t low_bit(uint32_t m)
+{
+    static const uint8_t k_pos[32] = {0u,  1u,  28u, 2u,  29u, 14u, 24u, 3u,  30u, 22u, 20u,
+                                      15u, 25u, 17u, 4u,  8u,  31u, 27u, 13u, 23u, 21u, 19u,
+                                      16u, 7u,  26u, 12u, 18u, 6u,  11u, 5u,  10u, 9u};
+    return k_pos[((m & (0u - m)) * 0x077CB531u) >> 27];
+}
+
+/* Bits lo .. hi of a word (lo <= hi < 32). */
+static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
+{
+    return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
+}
+
+/* The open positions of row y, columns lo .. hi, ascending. */
+static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t y)
+{
+    int err = SSDA_OK;
+    while (m != 0u && err == SSDA_OK) {
+        err = consider_best(e, low_bit(m), y);
+        m &= m - 1u;
+    }
+    return err;
+}
+
+/* The open positions of column x, rows y0 .. y1, ascending. */
+static SSDA_ALWAYS_INLINE int open_column(engine_t *e, const uint32_t *open, uint32_t x,
+                                          int32_t y0, int32_t y1)
+{
+    int32_t i;
+    for (i = y0; i <= y1; i++) {
+        if (((open[i] >> x) & 1u) != 0u) {
+            int err = consider_best(e, x, (uint32_t)i);
+            if (err != SSDA_OK) {
+                return err;
+            }
+        }
+    }
+    return SSDA_OK;
+}
+
+static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
+{
+    const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
+    const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
+    int32_t d, dmax = px;
+    int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
+    if (err != SSDA_OK) {
+        return err;
+    }
+    {
+        /* bit x of a word, x < 32 */
+        static const uint32_t k_bit[OPEN_MAX] = {
+            0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
+            0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
+            0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
+            0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
+            0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
+            0x40000000u, 0x80000000u};
+        const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+        int32_t i;
+        const uint32_t *pre = e->pre;
+        for (i = 0; i < ny; i++) {
+            uint32_t m = 0u;
+            size_t x;
+            for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
+                m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
+            }
+            open[i] = m;
+            pre += nx;
+        }
+    }
+    dmax = nx - 1 - px > dmax ? nx - 1 - px : dmax;
+    dmax = py > dmax ? py : dmax;
+    dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;
+    for (d = 1; d <= dmax && err == SSDA_OK; d++) {
+        const uint32_t lo = (uint32_t)(px - d < 0 ? 0 : px - d);
+        const uint32_t hi = (uint32_t)(px + d >= nx ? nx - 1 : px + d);
+        const int32_t y0 = py - d + 1 < 0 ? 0 : py - d + 1;
+        const int32_t y1 = py + d - 1 >= ny ? ny - 1 : py + d - 1;
+        if (py - d >= 0) { /* top */
+            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)py - (uint32_t)d);
+        }
+        if (py + d < ny && err == SSDA_OK) { /* bottom */
+            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)py + (uint32_t)d);
+        }
+        if (px - d >= 0 && err == SSDA_OK) { /* left */
+            err = open_column(e, open, (uint32_t)px - (uint32_t)d, y0, y1);
+        }
+        if (px + d < nx && err == SSDA_OK) { /* right */
+            err = open_column(e, open, (uint32_t)px + (uint32_t)d, y0, y1);
+        }
+    }
+    /* every position once, as scan_predict counts them */
+    e->positions = (uint32_t)nx * (uint32_t)ny;
+    return err;
+}
+#endif /* SSDA_CFG_NO_PREDICT */
 #endif
 
 /*
@@ -1743,6 +1916,14 @@ static SSDA_ALWAYS_INLINE int engine_go(engine_t *e, int32_t predict_x, int32_t 
     } else
 #endif
 #ifndef SSDA_CFG_NO_PREDICT
+#if !defined(SSDA_CFG_NO_FAST_PATH) && !defined(SSDA_CFG_NO_BOUNDS)
+    if (e->pre != NULL && e->plan->scan == (uint8_t)SSDA_SCAN_PREDICT && e->nx <= OPEN_MAX &&
+        e->ny <= OPEN_MAX) {
+        /* the uniqueness list's place: list == NULL with pre_bounds */
+        err = scan_predict_open(e, (uint32_t *)(void *)((uint8_t *)e->plan->work +
+                                                         open_at(e)));
+    } else
+#endif
     if (e->plan->scan == (uint8_t)SSDA_SCAN_PREDICT) {
         err = scan_predict(e);
     } else

@@ -131,40 +131,49 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
     return err;
 }
 
-/* Row y of the tables into slot s: g, the sliding sums of L vertical sums
-   (<= 4 * L * 65535 < 2^32 with L <= 16384 for 16-bit samples; the steps
-   run modulo 2^32, the sums are exact); b, those of 4 (< 2^20). */
+/* Row y of the tables into slot s, from the prefix sums p[k] = v[0] + ...
+   + v[k - 1] modulo 2^32, k = 0 .. vlen (one op an entry), written first
+   in g's slot and the 4 (blocks) or L entries after it: the next slots,
+   not built yet (rows are built in ascending slots), or for the last slot
+   the tables' slack (each g slot leaves first_w - pitch >= 3 entries
+   unused, b's region follows). Then b[i] = p[i + 4] - p[i] (4 vertical
+   sums, < 2^20) and g[i] = p[i + L] - p[i] in place, ascending (it reads
+   only entries not yet replaced; L of them, <= 4 * L * 65535 < 2^32 with
+   L <= 16384 for 16-bit samples): differences of sums modulo 2^32, exact
+   since the true sums are below 2^32; one op an entry. Five ops a pixel
+   with v's two, where sliding sums for g and b took six (issue 18). */
 static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L, uint32_t y,
                      uint32_t s, uint64_t *ops)
 {
     /* the fields in locals: the stores below could alias them */
     const uint32_t *v = t->v;
-    const uint32_t npos = t->npos, pitch = t->pitch;
-    uint32_t *g = t->g + (size_t)s * pitch;
-    uint32_t sum = 0u, i;
+    const uint32_t npos = t->npos, pitch = t->pitch, vlen = t->vlen;
+    uint32_t *p = t->g + (size_t)s * pitch;
+    const uint32_t *ahead = p + L; /* size_t indices below: loops that vectorise */
+    uint32_t sum = 0u;
+    size_t i;
     int err = v_row(t, first, y, ops);
     if (err != SSDA_OK) {
         return err;
     }
-    for (i = 0u; i < L; i++) {
-        sum += v[i];
+    p[0] = 0u;
+    for (i = 0u; i < vlen; i++) {
+        sum += v[i]; /* modulo 2^32 */
+        p[i + 1u] = sum;
     }
-    g[0] = sum;
-    for (i = 1u; i < npos; i++) {
-        sum = sum + v[i + L - 1u] - v[i - 1u];
-        g[i] = sum;
-    }
-    *ops += L + 2u * ((uint64_t)npos - 1u);
+    *ops += vlen;
     if (t->blocks) {
         uint32_t *b = t->b + (size_t)s * pitch;
-        sum = v[0] + v[1] + v[2] + v[3];
-        b[0] = sum;
-        for (i = 1u; i < pitch; i++) {
-            sum = sum + v[i + 3u] - v[i - 1u];
-            b[i] = sum;
+        const uint32_t *p4 = p + 4;
+        for (i = 0u; i < pitch; i++) {
+            b[i] = p4[i] - p[i];
         }
-        *ops += 4u + 2u * ((uint64_t)pitch - 1u);
+        *ops += pitch;
     }
+    for (i = 0u; i < npos; i++) {
+        p[i] = ahead[i] - p[i];
+    }
+    *ops += npos;
     return SSDA_OK;
 }
 

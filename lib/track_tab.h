@@ -58,8 +58,8 @@ SSDA_INTERNAL ssda__track_tab_t *ssda__track_tab_init(const ssda_track_plan_t *p
  * For a window L pixels wide: make rows y .. y + need - 1 of the source present (y ascending from call
  * to call keeps the rows already built; any other y rebuilds), and fill
  * t->mt for the area whose top-left is source column ax, row y. The work is
- * added to *ops (one per pixel read and per sliding-sum step). Returns
- * SSDA_OK or a fetch error unchanged.
+ * added to *ops (one per pixel read, per sliding-sum step and per entry of
+ * a row). Returns SSDA_OK or a fetch error unchanged.
  */
 SSDA_INTERNAL int ssda__track_tab_area(ssda__track_tab_t *t, const ssda__rows_t *first,
                                        uint32_t L, uint32_t ax, uint32_t y, uint64_t *ops);

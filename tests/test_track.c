@@ -754,6 +754,12 @@ static void test_bad_arguments_write_nothing(void)
     cfg.match.work = (uint8_t *)g_work + 2;
     cfg.match.work_size = sizeof g_work - 4u;
     expect_error(SSDA_ERR_BUFFER, &a, &b, &cfg, NWIN);
+    cfg.flags = SSDA_TRACK_UNIQUE; /* with uniqueness: the tables and the list */
+    cfg.match.work = g_work;
+    cfg.match.work_size = SSDA_TRACK_WORK_SIZE(32, 32, 16, 16) - 1u;
+    expect_error(SSDA_ERR_BUFFER, &a, &b, &cfg, NWIN);
+    cfg.match.work_size = SSDA_MATCH_WORK_SIZE(32, 32, 16, 16);
+    expect_error(SSDA_ERR_BUFFER, &a, &b, &cfg, NWIN);
 
     /* the limits themselves are accepted */
     seed_config(&cfg);
@@ -761,6 +767,14 @@ static void test_bad_arguments_write_nothing(void)
     cfg.mask_value = 255;
     cfg.texture_threshold = 254;
     cfg.texture_min_count = 128;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, NWIN, NULL));
+    seed_config(&cfg); /* bounds alone: their tables suffice (track.h) */
+    cfg.match.flags = SSDA_MATCH_BOUNDS;
+    cfg.match.work = g_work;
+    cfg.match.work_size = SSDA_MATCH_WORK_SIZE(32, 32, 16, 16);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, NWIN, NULL));
+    cfg.flags = SSDA_TRACK_UNIQUE;
+    cfg.match.work_size = SSDA_TRACK_WORK_SIZE(32, 32, 16, 16);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a, &b, &cfg, g_out, NWIN, NULL));
 
     memset(&g, 0x33, sizeof g);

@@ -41,6 +41,8 @@ static const geom_t k_geoms[] = {
     {4, 4, 12, 12, 3, 3},
     {16, 3, 24, 9, 8, 4},  /* under 4 rows: per-window tables */
     {24, 20, 40, 36, 30, 25}, /* steps beyond the area: no row kept */
+    {16, 16, 47, 40, 15, 13}, /* 32 x 25 placements: the predict scan's masks full */
+    {16, 16, 56, 24, 24, 12}, /* 41 placements a row: the predict scan without masks */
 };
 #define NGEOMS (sizeof k_geoms / sizeof k_geoms[0])
 

@@ -281,7 +281,9 @@ typedef struct {
      sizeof(ssda_track_vector_t))
 
 /* Bytes of match work buffer SSDA_MATCH_BOUNDS and SSDA_TRACK_UNIQUE need
-   (one, reused by every window; 8-byte aligned). */
+   (one, reused by every window; 8-byte aligned). SSDA_MATCH_BOUNDS alone
+   needs only SSDA_MATCH_WORK_SIZE(search_w, search_h, win_w, win_h) bytes,
+   4-byte aligned, as ssda_match. */
 #define SSDA_TRACK_WORK_SIZE(search_w, search_h, win_w, win_h)                \
     SSDA_MATCH_WORK_SIZE_UNIQUE(search_w, search_h, win_w, win_h)
 
@@ -305,12 +307,15 @@ typedef struct {
  * a smaller buffer (down to SSDA_TRACK_WORK_SIZE), every search builds its
  * own tables as before. Results (vectors, SADs, statuses, exact flags,
  * positions, completed) are those without shared tables; stats.pixel_ops
- * counts the tables once (one op per pixel read and per sliding-sum step)
- * and the searches' work, so it depends on how the grid is cut into calls:
+ * counts the tables once (one op per pixel read, per sliding-sum step and
+ * per table entry) and the searches' work, so it depends on how the grid
+ * is cut into calls:
  * one ssda_track call builds each FIRST row's tables once, an
  * ssda_track_row call (one grid row) builds all its rows. Accumulators:
  * the vertical sums of 4 pixels < 2^18, the 4 x 4 sums < 2^20, the
- * win_w x 4 sums <= 4 * win_w * 65535 < 2^32. Layout: the per-window part
+ * win_w x 4 sums <= 4 * win_w * 65535 < 2^32; these two are differences
+ * of the vertical sums' prefix sums along a row, modulo 2^32 (exact: the
+ * true sums fit). Layout: the per-window part
  * (SSDA_TRACK_WORK_SIZE rounded up to 8), 160 bytes of state, then uint32_t tables of
  * 2 * (search_h - 3) + 1 rows of first_w entries and the window's
  * (win_w / 4) * (win_h / 4) block sums: 592 944 B for the 2500-px-wide GOES
@@ -361,8 +366,10 @@ int ssda_track_grid(const ssda_track_config_t *cfg, uint16_t width, uint16_t hei
  *                     NONE or the COARSE scan; SSDA_MATCH_BLOCKS in
  *                     match.flags; and every SSDA_ERR_ARG of
  *                     ssda_match (unique_q8, unique_radius)
- *   SSDA_ERR_BUFFER   out_count below the grid count; bounds or uniqueness
- *                     work buffer below SSDA_TRACK_WORK_SIZE or misaligned
+ *   SSDA_ERR_BUFFER   out_count below the grid count; a work buffer below
+ *                     what the flags need (SSDA_TRACK_WORK_SIZE with
+ *                     SSDA_TRACK_UNIQUE; SSDA_MATCH_WORK_SIZE of the search
+ *                     area for SSDA_MATCH_BOUNDS alone) or misaligned
  *   SSDA_ERR_UNSUPPORTED  uniqueness or the sub-pixel fit in a build without
  *                     them (SSDA_CFG_NO_UNIQUE, SSDA_CFG_NO_SUBPIXEL: set
  *                     SSDA_TRACK_NO_SUBPIXEL there)

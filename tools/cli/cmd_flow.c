@@ -43,6 +43,7 @@ static const char help[] =
     "                     rho, std; with cleaning also relax_dx, relax_dy, changed\n"
     "  --overlay FILE.png REF with the vectors: yellow as matched, pink those the\n"
     "                     cleaning changed, cyan as cleaned\n"
+    "  -q, --quiet        no summary\n"
     "  -h, --help         this text\n"
     "\n"
     "Exit codes: 0 ok, 1 bad input, 2 usage.\n";
@@ -51,7 +52,7 @@ typedef struct {
     ssda_composite_config_t cfg;
     const char *ref_path, *next_path, *json_path, *overlay_path;
     uint32_t relax;        /* iterations, 0 = none */
-    int keep, median;
+    int keep, median, quiet;
 } flow_opts_t;
 
 typedef struct {
@@ -130,6 +131,8 @@ static int take_option(cli_args_t *a, void *opts)
         o->json_path = v;
     } else if (cli_opt(a, "--overlay", &v)) {
         o->overlay_path = v;
+    } else if (cli_flag(a, "--quiet") || cli_flag(a, "-q")) {
+        o->quiet = 1;
     } else {
         return 0;
     }
@@ -446,7 +449,7 @@ int cmd_flow(int argc, char **argv)
     }
     rc = rc == CLI_OK ? cli_outputs_commit(&out) : rc;
     cli_outputs_abort(&out);
-    if (rc == CLI_OK && (o.json_path == NULL || strcmp(o.json_path, "-") != 0)) {
+    if (rc == CLI_OK && !o.quiet && (o.json_path == NULL || strcmp(o.json_path, "-") != 0)) {
         summary(&o, &r);
     }
     free(r.tp);

@@ -252,10 +252,12 @@ static int input_valid(case_t *c)
            !(cfg->predict != 0u && cfg->match.scan == SSDA_SCAN_COARSE) &&
            cfg->match.threshold <= 4u &&
            !(cfg->match.threshold == SSDA_THRESHOLD_RAMP && cfg->match.lambda_q8 == 0u) &&
+           /* bounds alone need their tables only (track.h), with
+              SSDA_TRACK_UNIQUE the list too (checked above) */
            !(cfg->match.flags &&
              (cfg->match.work == NULL ||
               cfg->match.work_size <
-                  SSDA_TRACK_WORK_SIZE(c->axx.search, c->axy.search, c->axx.win, c->axy.win)));
+                  SSDA_MATCH_WORK_SIZE(c->axx.search, c->axy.search, c->axx.win, c->axy.win)));
 }
 
 /* The window's texture by track.h: floor(256 * sum |p - m| / n) with

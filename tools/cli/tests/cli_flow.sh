@@ -48,6 +48,9 @@ flow)
     "$flowtool" check f.json 2 -3 0.95 || fail "flow under a brightness change"
   [ -s f.png ] || fail "no overlay"
   grep -q "^templates: " out.txt && grep -q "^origin: " out.txt || fail "summary: $(cat out.txt)"
+  run 0 flow r.png nb.png --region 20,20,70,60 -q --json q.json &&
+    "$flowtool" check q.json 2 -3 0.95 || fail "flow -q"
+  [ -s out.txt ] && fail "-q still printed: $(cat out.txt)"
   run 0 flow r.png nb.png --region 20,20,70,60 --tp 16 --tp-step 8 --relax 30 --json f.json &&
     "$flowtool" check f.json 2 -3 0.95 --relaxed || fail "relaxed field"
   run 0 flow r.png nb.png --region 20,20,70,60 --relax-median --subpixel --json - &&
