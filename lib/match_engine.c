@@ -10,6 +10,7 @@
  */
 #include "match_rows.h"
 #include "match_quality.h"
+#include "match_pre.h"
 #include "kernel/kernels.h"
 #include "fixmath.h"
 #include "compiler.h"
@@ -55,6 +56,9 @@ typedef struct {
 #ifndef SSDA_CFG_NO_FAST_PATH
     bool fast;           /* positions are evaluated by eval_fast (see there) */
     bool plain_ref;      /* use_ref, no uniqueness list, no TIE_NEAREST */
+#ifndef SSDA_CFG_NO_BOUNDS
+    bool pre_scan;       /* blocks with no level, AUTO raster: scan_pre */
+#endif
 #endif
 #ifdef ENGINE_FALLBACK
     bool need_fb;        /* FIXED or RAMP: the all-cut fallback may be needed */
@@ -1048,6 +1052,101 @@ static SSDA_NOINLINE int scan_seeded(engine_t *e)
 }
 #endif
 
+#ifndef SSDA_CFG_NO_BOUNDS
+/* SSDA_MATCH_BLOCKS's room after the bounds tables and the uniqueness list
+   (match.h's layout): the levels' integral image and the window's block
+   sums, or scan_pre's bounds. */
+static uint32_t *blocks_room(const engine_t *e)
+{
+    const uint64_t tables = ((((uint64_t)e->nx * e->area->height) + 2u * (uint64_t)e->M) *
+                                 sizeof(uint32_t) + 7u) & ~(uint64_t)7u;
+    return (uint32_t *)(void *)((uint8_t *)e->plan->work + (size_t)tables +
+                                SSDA_MATCH_UNIQUE_WORK);
+}
+
+#endif
+
+#if !defined(SSDA_CFG_NO_BOUNDS) && !defined(SSDA_CFG_NO_FAST_PATH)
+/* Positions whose bounds scan_pre tests together before looking at any
+   one: most runs hold none that the best SAD leaves open. */
+#define PRE_RUN 8u
+
+/* scan_pre's bound pass (ssda__pre_bounds): out of line, so that its many
+   arguments stay off scan_pre's frame, which lies under consider's.
+   Returns the number of candidates. */
+static SSDA_NOINLINE uint32_t pre_pass(engine_t *e, uint32_t *pre)
+{
+    const uint32_t nx = e->nx, ny = e->ny;
+    uint32_t *cx = pre + (size_t)nx * ny; /* after the bounds (match.h's room) */
+    uint32_t *cy = cx + SSDA__PRE_CANDS;
+    const uint32_t n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx,
+                                        ny, pre, cx + SSDA__PRE_CAND_WORDS, cx, cy,
+                                        cy + SSDA__PRE_CANDS); /* >= 1: nx, ny >= 1 */
+    const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
+    e->ops += terms;
+    e->pre = pre; /* its terms counted: eval_fast's are not (finish) */
+    return n;
+}
+
+/* A single search with every position's group bound known (e->pre_scan:
+   SSDA_MATCH_BLOCKS left to it by pre_first, AUTO raster, eval_fast; the
+   group tables from ssda__pre_tables): the bounds at once, each row's
+   smallest and the candidate of the smallest bound in each of 16 tiles
+   (ssda__pre_bounds), the candidates summed first, smallest first, so that
+   the best SAD is near the minimum from the start; then in raster order,
+   in the rows whose smallest bound does not exceed the best SAD so far,
+   only the positions whose bound does not go to eval_fast (its cut level
+   and tie rule as in the raster scan); the others cannot win. The result
+   does not depend on the order (exact modes). A
+   visited candidate's entry becomes UINT32_MAX, above every bound (the
+   bound <= the SAD < 2^32 - 1: e->fast). Each position counts once. */
+static SSDA_NOINLINE int scan_pre(engine_t *e)
+{
+    const uint32_t nx = e->nx, ny = e->ny;
+    uint32_t *pre = blocks_room(e); /* no level: the room is unused */
+    const uint32_t *cx = pre + (size_t)nx * ny, *cy = cx + SSDA__PRE_CANDS;
+    const uint32_t *rmin = cx + SSDA__PRE_CAND_WORDS;
+    uint32_t n = pre_pass(e, pre), i, x, y;
+    cand_t c;
+    for (i = 0u; i < n; i++) {
+        const int err = consider(e, cx[i], cy[i], &c); /* the first completes */
+        if (err < 0) {
+            return err;
+        }
+        e->ref = &e->best;
+        pre[(size_t)cy[i] * nx + cx[i]] = UINT32_MAX; /* visited */
+    }
+    for (y = 0u; y < ny; y++) {
+        const uint32_t *p = pre + (size_t)y * nx;
+        if (rmin[y] > e->best.sad) {
+            continue; /* no position of the row can win */
+        }
+        for (x = 0u; x < nx; x += PRE_RUN) {
+            const uint32_t t = (uint32_t)e->best.sad; /* < 2^32 - 1 */
+            const uint32_t end = nx - x < PRE_RUN ? nx : x + PRE_RUN;
+            uint32_t open = 0u;
+            if (end == x + PRE_RUN) {
+                for (i = 0u; i < PRE_RUN; i++) { /* no branch: vectorised */
+                    open |= p[x + i] <= t ? 1u : 0u;
+                }
+            } else {
+                open = 1u;
+            }
+            for (i = x; open != 0u && i < end; i++) {
+                if (p[i] <= e->best.sad) {
+                    const int err = consider(e, i, y, &c);
+                    if (err < 0) {
+                        return err;
+                    }
+                }
+            }
+        }
+    }
+    e->positions = nx * ny; /* each once: < 2^32 */
+    return SSDA_OK;
+}
+#endif
+
 #ifndef SSDA_CFG_NO_PREDICT
 
 /* Square rings of growing Chebyshev radius around the prediction: the top
@@ -1567,6 +1666,35 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 #endif /* SSDA_CFG_NO_PREDICT */
 #endif
 
+/* Windows with no side above it search by scan_pre rather than the block
+   levels: every bound at once and tile candidates cost less than the levels
+   up to 64 x 64 px, more from 80 x 80 on textured photographs
+   (docs/benchmarks.md, issue 18 session 6). */
+#define PRE_MAX_SIDE 64u
+
+/* SSDA_MATCH_BLOCKS left to scan_pre (engine_setup sets pre_scan when
+   eval_fast's conditions hold, which these imply): AUTO, raster scan, no
+   uniqueness list, rows in memory in row order, every SAD below 2^32 - 1,
+   a window with no level (a side below 2 * BLOCK_MIN_SIDE) or no side
+   above PRE_MAX_SIDE. */
+static bool pre_first(const engine_t *e)
+{
+#ifndef SSDA_CFG_NO_FAST_PATH
+    const ssda_match_plan_t *plan = e->plan;
+    const uint32_t L = e->L, M = e->M;
+    return (plan->flags & SSDA_MATCH_BLOCKS) != 0u &&
+           plan->threshold == (uint8_t)SSDA_THRESHOLD_AUTO &&
+           plan->scan == (uint8_t)SSDA_SCAN_RASTER && (plan->flags & SSDA__MATCH_TAB) == 0u &&
+           e->list == NULL && e->row_step == 1u && e->area->base != NULL &&
+           e->win->base != NULL && L * M <= (e->u8 ? 16843008u : 65536u) &&
+           (L < 2u * BLOCK_MIN_SIDE || M < 2u * BLOCK_MIN_SIDE ||
+            (L <= PRE_MAX_SIDE && M <= PRE_MAX_SIDE));
+#else
+    (void)e;
+    return false;
+#endif
+}
+
 /*
  * Bounds tables. First every area row's sliding sums of L pixels, H(x, yy),
  * then in place the vertical sums of `group` consecutive H (rows yy ..
@@ -1606,6 +1734,16 @@ static SSDA_NOINLINE int build_bounds(engine_t *e)
         e->ops += ops;
         return err;
     }
+#ifndef SSDA_CFG_NO_FAST_PATH
+    if (pre_first(e)) { /* scan_pre's case: rows in memory, and room for v */
+        uint32_t *v = blocks_room(e) + ((size_t)nx * e->ny + SSDA__PRE_CAND_WORDS + e->ny);
+        ops = ssda__pre_tables(e->area->base, e->area->stride, u8, e->area->width,
+                               e->area->height, e->L, group, gsum, v);
+        err = window_groups(e, wgrp, group, ngroups, u8, &ops);
+        e->ops += ops;
+        return err;
+    }
+#endif
     err = area_row_sums(e, gsum, u8, &ops);
     if (err == SSDA_OK) {
         if (group > 1u) {
@@ -1699,10 +1837,7 @@ static SSDA_NOINLINE int window_blocks(engine_t *e, uint32_t *wblk)
 static SSDA_NOINLINE int build_blocks(engine_t *e)
 {
     const uint32_t max_px = e->u8 ? 16843009u : 65537u; /* floor((2^32 - 1) / maxval) */
-    const uint64_t tables = ((((uint64_t)e->nx * e->area->height) + 2u * (uint64_t)e->M) *
-                                 sizeof(uint32_t) + 7u) & ~(uint64_t)7u;
-    uint32_t *integ = (uint32_t *)(void *)((uint8_t *)e->plan->work + (size_t)tables +
-                                           SSDA_MATCH_UNIQUE_WORK);
+    uint32_t *integ = blocks_room(e);
     uint32_t *wblk;
     uint32_t l;
     int err;
@@ -1858,7 +1993,7 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
     e->lev_lo = 1u; /* no block levels */
     if (e->bounds) {
         int err = SSDA_OK;
-        if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u) {
+        if ((plan->flags & SSDA_MATCH_BLOCKS) != 0u && !pre_first(e)) {
             err = build_blocks(e);
         }
         if (e->lev_lo <= e->lev_hi && mode == (uint8_t)SSDA_THRESHOLD_AUTO &&
@@ -1893,6 +2028,12 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
         e->gsum != (const uint32_t *)plan->work && plan->scan != (uint8_t)SSDA_SCAN_COARSE) {
         pre_bounds(e); /* shared tables (tab_bounds): every bound at once */
     }
+    if (e->fast && e->bounds && e->list == NULL && (plan->flags & SSDA_MATCH_BLOCKS) != 0u &&
+        mode == (uint8_t)SSDA_THRESHOLD_AUTO && plan->scan == (uint8_t)SSDA_SCAN_RASTER &&
+        e->gsum == (const uint32_t *)plan->work) {
+        /* no level (e->low NULL): their room holds the bounds (scan_pre) */
+        e->pre_scan = true;
+    }
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
     return SSDA_OK;
@@ -1910,6 +2051,11 @@ static SSDA_ALWAYS_INLINE int engine_go(engine_t *e, int32_t predict_x, int32_t 
     if (err != SSDA_OK) {
         return err;
     }
+#if !defined(SSDA_CFG_NO_BOUNDS) && !defined(SSDA_CFG_NO_FAST_PATH)
+    if (e->pre_scan) {
+        err = scan_pre(e);
+    } else
+#endif
 #ifndef SSDA_CFG_NO_BOUNDS
     if (e->low != NULL) {
         err = scan_seeded(e);

@@ -4,9 +4,12 @@
  * and row order, equal to the brute-force minimum computed here (tie rule
  * included) and to the search with SSDA_MATCH_BOUNDS alone in every result
  * field but the work counts (and ssda_match_search equal to ssda_match in
- * every field, test_match_both.h); the 32-bit worst case of a block sum (16-bit
- * blocks of 65536 pixels of 65535, an integral image that wraps); argument
- * and buffer errors.
+ * every field, test_match_both.h); scan_pre, the single search's path for
+ * windows up to 64 px (every bound at once, tile candidates first) in larger
+ * areas with ties; the 32-bit worst cases of a block sum (16-bit blocks of
+ * 65536 pixels of 65535, an integral image that wraps) and of scan_pre's
+ * bounds (a 16-bit window of 65534 px of 65535 over zeros); argument and
+ * buffer errors.
  */
 #include <stdio.h>
 #include <string.h>
@@ -56,17 +59,19 @@ static uint32_t get(const uint16_t *buf, ssda_pixfmt_t fmt, uint32_t i)
 
 /* A random case: noise, flat (all tie), binary, periodic (ties), a smooth
    ramp with noise, or an unrelated window; the window is cut from the area
-   and perturbed, or not. Windows mostly 16 px and up (the block levels). */
-static void make_case(test_rng_t *r, geom_t *g, ssda_view_t *area, ssda_view_t *win)
+   and perturbed, or not. Windows of 1..wmax px, mostly 16 px and up (the
+   block levels), in areas up to margin px larger. */
+static void make_case_in(test_rng_t *r, geom_t *g, ssda_view_t *area, ssda_view_t *win,
+                         uint32_t wmax, uint32_t margin)
 {
     const uint32_t kind = test_rng_range(r, 0, 5);
     uint32_t maxv, x, y, wx, wy;
     g->fmt = test_rng_range(r, 0, 1) ? SSDA_PIX_U16 : SSDA_PIX_U8;
     maxv = g->fmt == SSDA_PIX_U8 ? 255u : (test_rng_range(r, 0, 1) ? 65535u : 4095u);
-    g->ww = test_rng_range(r, 0, 4) == 0u ? test_rng_range(r, 1, 15) : test_rng_range(r, 16, WMAX);
-    g->wh = test_rng_range(r, 0, 4) == 0u ? test_rng_range(r, 1, 15) : test_rng_range(r, 16, WMAX);
-    g->aw = g->ww + test_rng_range(r, 0, MARGIN);
-    g->ah = g->wh + test_rng_range(r, 0, MARGIN);
+    g->ww = test_rng_range(r, 0, 4) == 0u ? test_rng_range(r, 1, 15) : test_rng_range(r, 16, wmax);
+    g->wh = test_rng_range(r, 0, 4) == 0u ? test_rng_range(r, 1, 15) : test_rng_range(r, 16, wmax);
+    g->aw = g->ww + test_rng_range(r, 0, margin);
+    g->ah = g->wh + test_rng_range(r, 0, margin);
     g->astride = g->aw + test_rng_range(r, 0, 2);
     g->wstride = g->ww + test_rng_range(r, 0, 2);
     for (y = 0; y < g->ah; y++) {
@@ -99,6 +104,11 @@ static void make_case(test_rng_t *r, geom_t *g, ssda_view_t *area, ssda_view_t *
                                                   g->astride * (uint32_t)g->fmt, g->fmt));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(win, g_win, (uint16_t)g->ww, (uint16_t)g->wh,
                                                   g->wstride * (uint32_t)g->fmt, g->fmt));
+}
+
+static void make_case(test_rng_t *r, geom_t *g, ssda_view_t *area, ssda_view_t *win)
+{
+    make_case_in(r, g, area, win, WMAX, MARGIN);
 }
 
 /* AUTO and NONE, raster and predict scans, both row orders, with or without
@@ -154,6 +164,61 @@ static void test_blocks_equal_brute_force(void)
         }
     }
     TEST_ASSERT_TRUE(leveled > CASES / 3u);
+}
+
+/* scan_pre (SSDA_MATCH_BLOCKS, AUTO, raster, windows with no side above
+   64 px or one below 32): every position's group bound at once, 16 tile
+   candidates first, then only positions whose bound does not exceed the
+   best SAD. Areas up to 100 px wider and taller than windows of 1..64 px,
+   so that tiles hold many positions (and fewer positions than tiles too),
+   ties everywhere (flat, binary, periodic images): the brute-force minimum
+   by the tie rule, every position counted once, and every field of the
+   search with SSDA_MATCH_BOUNDS alone but the work counts. */
+static void test_blocks_pre_scan(void)
+{
+    const uint32_t wmax = WMAX < 64u ? WMAX : 64u;
+    test_rng_t r;
+    uint32_t n;
+    test_rng_seed(&r, 6464u);
+    for (n = 0; n < CASES; n++) {
+        ssda_view_t area, win;
+        geom_t g;
+        ssda_match_config_t cfg;
+        ssda_match_result_t with, without;
+        uint32_t bx = 0, by = 0;
+        uint64_t bsad = 0;
+        char msg[128];
+        make_case_in(&r, &g, &area, &win, wmax, AMAX - wmax);
+        test_best(&area, &win, &bx, &by, &bsad);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.flags = SSDA_MATCH_BOUNDS;
+        if (test_rng_range(&r, 0, 1) != 0u) { /* TIE_NEAREST and SUBPIXEL at random */
+            cfg.flags = (uint8_t)(cfg.flags | (test_rng_range(&r, 0, 1) ? SSDA_MATCH_TIE_NEAREST : 0u) |
+                                  (test_rng_range(&r, 0, 1) ? SSDA_MATCH_SUBPIXEL : 0u));
+        }
+        cfg.work = g_work;
+        cfg.work_size = sizeof g_work;
+        cfg.predict_x = (int32_t)test_rng_range(&r, 0, 120) - 10;
+        cfg.predict_y = (int32_t)test_rng_range(&r, 0, 120) - 10;
+        snprintf(msg, sizeof msg, "case %u flags %u area %ux%u win %ux%u fmt %d", (unsigned)n,
+                 (unsigned)cfg.flags, (unsigned)g.aw, (unsigned)g.ah, (unsigned)g.ww,
+                 (unsigned)g.wh, (int)g.fmt);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(SSDA_OK, ssda_match(&area, &win, &cfg, &without), msg);
+        cfg.flags = (uint8_t)(cfg.flags | SSDA_MATCH_BLOCKS);
+        TEST_ASSERT_EQUAL_INT_MESSAGE(SSDA_OK, test_match_both(&area, &win, &cfg, &with), msg);
+        test_match_same_answer(&without, &with, msg);
+        TEST_ASSERT_TRUE_MESSAGE(with.exact, msg);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE((g.aw - g.ww + 1u) * (g.ah - g.wh + 1u), with.positions,
+                                         msg);
+        TEST_ASSERT_TRUE_MESSAGE(with.completed >= 1u, msg);
+        TEST_ASSERT_EQUAL_UINT64_MESSAGE(bsad, with.sad, msg);
+        if ((cfg.flags & SSDA_MATCH_TIE_NEAREST) == 0u) {
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(bx, with.x, msg);
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(by, with.y, msg);
+        } else {
+            TEST_ASSERT_EQUAL_UINT64_MESSAGE(bsad, test_sad(&area, &win, with.x, with.y), msg);
+        }
+    }
 }
 
 /* FIXED with a threshold at or above the minimum is exact with the levels
@@ -251,6 +316,61 @@ static void test_blocks_worst_case_16bit(void)
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&area, &win, &cfg, &plain));
         /* the levels did work: the integral image alone is 2 ops a pixel */
         TEST_ASSERT_TRUE(res.pixel_ops != plain.pixel_ops);
+    }
+}
+#endif
+
+#ifndef SSDA_TEST_SMALL
+/* scan_pre's 32-bit worst case: a 16-bit window of 31 x 2114 = 65534 px
+   (a side below 32: scan_pre; the largest a 32-bit search takes is 65536
+   px) of 65535 over an area of zeros, so every bound and SAD is 65534 *
+   65535 = 4 294 770 690, just below 2^32 - 1: all positions tie, the first
+   in raster order wins; then the window's own pixels at (5, 3) but one,
+   SAD 65535 there. Brute force is the reference. */
+#define PW 40u
+#define PH 2120u
+#define PWW 31u
+#define PWH 2114u
+static uint16_t g_tall_area[PW * PH];
+static uint16_t g_tall_win[PWW * PWH];
+static uint64_t g_tall_work[(SSDA_MATCH_WORK_SIZE_BLOCKS(PW, PH, PWW, PWH) + 7u) / 8u];
+
+static void test_blocks_pre_worst_case(void)
+{
+    uint32_t k, x, y;
+    for (k = 0; k < 2u; k++) {
+        ssda_view_t area, win;
+        ssda_match_config_t cfg;
+        ssda_match_result_t res;
+        uint32_t bx = 0, by = 0;
+        uint64_t bsad = 0;
+        memset(g_tall_area, 0, sizeof g_tall_area);
+        for (y = 0; y < PWH; y++) {
+            for (x = 0; x < PWW; x++) {
+                g_tall_win[y * PWW + x] = 65535u;
+                if (k == 1u) {
+                    g_tall_area[(y + 3u) * PW + x + 5u] = (x == 7u && y == 9u) ? 0u : 65535u;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&area, g_tall_area, PW, PH, PW * 2u,
+                                                      SSDA_PIX_U16));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&win, g_tall_win, PWW, PWH, PWW * 2u,
+                                                      SSDA_PIX_U16));
+        test_best(&area, &win, &bx, &by, &bsad);
+        TEST_ASSERT_EQUAL_UINT64(k == 0u ? 4294770690u : 65535u, bsad);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.flags = SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS;
+        cfg.work = g_tall_work;
+        cfg.work_size = sizeof g_tall_work;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, test_match_both(&area, &win, &cfg, &res));
+        TEST_ASSERT_TRUE(res.exact);
+        TEST_ASSERT_EQUAL_UINT64(bsad, res.sad);
+        TEST_ASSERT_EQUAL_UINT32(bx, res.x);
+        TEST_ASSERT_EQUAL_UINT32(by, res.y);
+        TEST_ASSERT_EQUAL_UINT32(k == 0u ? 0u : 5u, res.x);
+        TEST_ASSERT_EQUAL_UINT32(k == 0u ? 0u : 3u, res.y);
+        TEST_ASSERT_EQUAL_UINT32((PW - PWW + 1u) * (PH - PWH + 1u), res.positions);
     }
 }
 #endif
@@ -359,9 +479,11 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_blocks_equal_brute_force);
+    RUN_TEST(test_blocks_pre_scan);
     RUN_TEST(test_blocks_fixed);
 #ifndef SSDA_TEST_SMALL
     RUN_TEST(test_blocks_worst_case_16bit);
+    RUN_TEST(test_blocks_pre_worst_case);
 #endif
     RUN_TEST(test_blocks_streamed_rows);
     RUN_TEST(test_blocks_errors);

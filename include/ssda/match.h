@@ -179,7 +179,7 @@ typedef enum {
  * operations each), before its pixels; a level is used when both block
  * sides are at least 16 px and a block's sum fits in 32 bits (16-bit
  * windows: (L >> l) * (M >> l) <= 65537), so windows narrower or lower than
- * 32 px use none (the search is then SSDA_MATCH_BOUNDS's). Block sums come
+ * 32 px use none (the search is then SSDA_MATCH_BOUNDS's, or the one below). Block sums come
  * from the area's integral image in the work buffer (uint32_t modulo 2^32:
  * a block's sum is exact when it fits 32 bits).
  * With AUTO and the raster scan: a first pass computes every position's
@@ -192,6 +192,16 @@ typedef enum {
  * (finer ones cost more than they reject), and in row order that level's
  * rows of blocks serve as the row groups of SSDA_MATCH_BOUNDS.
  * Other scans and modes test the levels before the row groups.
+ * Windows with no side above 64 px, or a side below 32 px (no level), with
+ * AUTO, the raster scan, no SSDA_MATCH_UNIQUE, row order, pixels in memory
+ * (ssda_match) and every SAD below 2^32 - 1 (L * M * maxval; 16-bit:
+ * L * M <= 65536) use no level either: every position's
+ * SSDA_MATCH_BOUNDS bound is computed at once into the levels' room (one
+ * op per group term), the position of the smallest bound in each of 4 x 4
+ * tiles of the positions is summed first, smallest first, and then in
+ * raster order only the positions whose bound does not exceed the best SAD
+ * so far are evaluated (there cheaper than the levels: issue 18,
+ * docs/benchmarks.md).
  * Exact as SSDA_MATCH_BOUNDS: every result field but pixel_ops, positions
  * and completed is that of the search without the flag (FIXED and RAMP's
  * all-cut fallback: the bound at a rejection is the level's). pixel_ops

@@ -22,7 +22,7 @@ static uint8_t g_first[IMG * IMG];
 static uint8_t g_win[WINDOWS][WIN * WIN];
 static ssda_view_t g_area_v[WINDOWS], g_win_v[WINDOWS];
 static int32_t g_truth_x[WINDOWS], g_truth_y[WINDOWS];
-static uint32_t g_work[SSDA_MATCH_WORK_SIZE(AREA, AREA, WIN, WIN) / 4u];
+static uint32_t g_work[SSDA_MATCH_WORK_SIZE_BLOCKS(AREA, AREA, WIN, WIN) / 4u];
 
 typedef struct {
     ssda_match_config_t cfg;
@@ -80,10 +80,11 @@ static void run(const char *name, uint8_t threshold, uint8_t scan, int bounds,
     j.cfg.threshold = threshold;
     j.cfg.scan = scan;
     j.predict = scan == (uint8_t)SSDA_SCAN_PREDICT;
-    if (bounds) {
-        j.cfg.flags = SSDA_MATCH_BOUNDS;
+    if (bounds) { /* 2: with SSDA_MATCH_BLOCKS (scan_pre at this size) */
+        j.cfg.flags = bounds == 2 ? SSDA_MATCH_BOUNDS | SSDA_MATCH_BLOCKS : SSDA_MATCH_BOUNDS;
         j.cfg.work = g_work;
-        j.cfg.work_size = sizeof g_work;
+        j.cfg.work_size = bounds == 2 ? sizeof g_work
+                                      : SSDA_MATCH_WORK_SIZE(AREA, AREA, WIN, WIN);
     }
     j.first = 0u;
     j.count = 1u;
@@ -116,5 +117,6 @@ void jobs_match(void)
     run("match.auto", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, 0, &brute);
     run("match.auto_predict", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, 0, &brute);
     run("match.auto_bounds", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, 1, &brute);
+    run("match.auto_blocks", SSDA_THRESHOLD_AUTO, SSDA_SCAN_RASTER, 2, &brute);
     run("match.auto_predict_bounds", SSDA_THRESHOLD_AUTO, SSDA_SCAN_PREDICT, 1, &brute);
 }

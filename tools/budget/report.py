@@ -486,6 +486,7 @@ def main():
                                ("match.auto", "`auto` (raster)"),
                                ("match.auto_predict", "`auto` + prediction"),
                                ("match.auto_bounds", "`auto` + bounds"),
+                               ("match.auto_blocks", "`auto` + bounds + blocks (whole bounds at once, tile candidates)"),
                                ("match.auto_predict_bounds", "`auto` + prediction + bounds")):
                 r0 = get(runs[0][2], key)
                 w(f"| {label} | " + " | ".join(fmt(round(get(r, key)[0] / max(1, get(r, key)[1])))

@@ -5,7 +5,7 @@
  *
  * usage: ssda-peers-match [--reps N] [--search-reps N] [--ratios FILE]
  *            [--pair FIRST.png SECOND.png] [--pair-name NAME] [--mask V]
- *            [--image PNG] [--size N] [--quick] [--searches-only]
+ *            [--image PNG]... [--size N] [--quick] [--searches-only]
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,7 +21,8 @@
 typedef struct {
     int reps, search_reps, size, quick, use_mask, searches_only;
     uint16_t mask;
-    const char *ratios, *pair[2], *pair_name, *image;
+    const char *ratios, *pair[2], *pair_name, *image[4];
+    int nimage;
 } options_t;
 
 static const char *base_name(const char *path)
@@ -40,7 +41,8 @@ static int usage(void)
             "  --pair A.png B.png  a real pair (earlier, later) to track\n"
             "  --pair-name NAME    its label (\"real pair\")\n"
             "  --mask V            fill value of the pair: windows touching it are left out\n"
-            "  --image PNG         an 8-bit image for single searches (e.g. camera.png)\n"
+            "  --image PNG         an image for single searches (e.g. camera.png), as 8-bit\n"
+            "                      gray, its centre 640x480 when larger; up to 4\n"
             "  --size N            side of the synthetic tracking pair (1024)\n"
             "  --quick             3 repetitions, fewer template sizes (a smoke run)\n"
             "  --searches-only     single searches only, no grid tracking\n");
@@ -120,7 +122,7 @@ static int parse_options(int argc, char **argv, options_t *o)
         else if (!strcmp(a, "--pair") && i + 2 < argc) { o->pair[0] = argv[++i]; o->pair[1] = argv[++i]; }
         else if (!strcmp(a, "--pair-name") && i + 1 < argc) o->pair_name = argv[++i];
         else if (!strcmp(a, "--mask") && i + 1 < argc) { o->use_mask = 1; o->mask = (uint16_t)atoi(argv[++i]); }
-        else if (!strcmp(a, "--image") && i + 1 < argc) o->image = argv[++i];
+        else if (!strcmp(a, "--image") && i + 1 < argc && o->nimage < 4) o->image[o->nimage++] = argv[++i];
         else if (!strcmp(a, "--size") && i + 1 < argc) o->size = atoi(argv[++i]);
         else if (!strcmp(a, "--quick")) o->quick = 1;
         else if (!strcmp(a, "--searches-only")) o->searches_only = 1;
@@ -254,15 +256,18 @@ static int run_synthetic_scene(const options_t *o, FILE *ratios, int *fatal)
     return rc;
 }
 
-/* Single searches in the given image (--image), against its moved copy. */
-static int run_image_scene(const options_t *o, FILE *ratios, int *fatal)
+/* Single searches in the given image (--image; its centre 640 x 480 when
+   larger), against its moved copy. */
+static int run_image_scene(const options_t *o, const char *path, FILE *ratios, int *fatal)
 {
+    ssda_view_t whole, moved;
+    uint32_t cw, ch;
     gray_image_t img;
     peers_scene_t s;
     uint8_t *b;
     char err[512], desc[512];
     int rc;
-    if (png_read_gray(o->image, PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
+    if (png_read_gray(path, PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
         fprintf(stderr, "ssda-peers-match: %s\n", err);
         *fatal = 1;
         return 1;
@@ -275,14 +280,21 @@ static int run_image_scene(const options_t *o, FILE *ratios, int *fatal)
     }
     synth_moved(img.pixels, b, (int)img.width, (int)img.height, 7u);
     memset(&s, 0, sizeof s);
-    s.name = base_name(o->image);
+    s.name = base_name(path);
+    cw = img.width > 640 ? 640 : img.width;
+    ch = img.height > 480 ? 480 : img.height;
     snprintf(desc, sizeof desc,
-             "`%s`, %ux%u 8-bit; templates from its copy moved by the smooth known field "
+             "`%s`, %ux%u 8-bit%s; templates from its copy moved by the smooth known field "
              "of the synthetic pair plus noise +-2",
-             base_name(o->image), img.width, img.height);
+             base_name(path), img.width, img.height,
+             cw < img.width || ch < img.height ? ", its centre 640x480" : "");
     s.description = desc;
-    gray_image_view(&img, &s.image);
-    ssda_view_init(&s.moved, b, (uint16_t)img.width, (uint16_t)img.height, img.width, SSDA_PIX_U8);
+    gray_image_view(&img, &whole);
+    ssda_view_init(&moved, b, (uint16_t)img.width, (uint16_t)img.height, img.width, SSDA_PIX_U8);
+    ssda_view_roi(&s.image, &whole, (uint16_t)((img.width - cw) / 2), (uint16_t)((img.height - ch) / 2),
+                  (uint16_t)cw, (uint16_t)ch);
+    ssda_view_roi(&s.moved, &moved, (uint16_t)((img.width - cw) / 2), (uint16_t)((img.height - ch) / 2),
+                  (uint16_t)cw, (uint16_t)ch);
     s.synthetic_truth = 1;
     rc = search_scene(&s, o, ratios);
     free(b);
@@ -292,7 +304,7 @@ static int run_image_scene(const options_t *o, FILE *ratios, int *fatal)
 
 int main(int argc, char **argv)
 {
-    options_t o = {7, 5, 1024, 0, 0, 0, 0, NULL, {NULL, NULL}, "real pair", NULL};
+    options_t o = {7, 5, 1024, 0, 0, 0, 0, NULL, {NULL, NULL}, "real pair", {NULL}, 0};
     FILE *ratios = NULL;
     char info[256];
     int rc = parse_options(argc, argv, &o), fatal = 0;
@@ -313,8 +325,8 @@ int main(int argc, char **argv)
     }
     rc |= fatal || o.searches_only ? 0 : run_synthetic_pair(&o, ratios, &fatal);
     rc |= fatal ? 0 : run_synthetic_scene(&o, ratios, &fatal);
-    if (o.image != NULL && !fatal) {
-        rc |= run_image_scene(&o, ratios, &fatal);
+    for (int k = 0; k < o.nimage && !fatal; k++) {
+        rc |= run_image_scene(&o, o.image[k], ratios, &fatal);
     }
     if (fatal) {
         return 1;
