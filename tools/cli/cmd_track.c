@@ -19,9 +19,10 @@ static void help(void)
           stdout);
     fputs(track_opts_help, stdout);
     fputs("  --threads N       decode the images and track on N threads (default: every\n"
-          "                    core, 0 too): grid rows as a wavefront, each window\n"
-          "                    solved after its neighbours, so the output is the same\n"
-          "                    for any N (not with --mem: one thread)\n"
+          "                    core, 0 too): grid rows in fixed bands of columns as a\n"
+          "                    wavefront, each window solved after its neighbours, so\n"
+          "                    the output is the same for any N (not with --mem: one\n"
+          "                    thread)\n"
           "  -h, --help        this text\n"
           "\n"
           "JSON: {\"windows\":[{\"x\",\"y\",\"dx\",\"dy\",\"sub_dx\",\"sub_dy\",\"sad\",\"texture\",\n"

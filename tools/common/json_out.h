@@ -39,6 +39,10 @@ cJSON *json_out_fixed(double v, int decimals);
 /* An unsigned or signed 64-bit integer, every digit exact. */
 cJSON *json_out_u64(uint64_t v);
 cJSON *json_out_i64(int64_t v);
+/* A Q8 fixed-point value (v_q8 / 256) with its 8 decimals, exact: the
+   bytes of json_out_fixed(v_q8 / 256.0, 8) for |v_q8| < 2^53, any int64_t
+   accepted, without floating point. */
+cJSON *json_out_q8(int64_t v_q8);
 /* A string as valid UTF-8: each byte that does not start a well-formed
    UTF-8 sequence becomes U+FFFD (a file name on Linux may hold any bytes;
    cJSON would copy them, and the document would not be JSON). Use it for
@@ -48,6 +52,7 @@ cJSON *json_out_string(const char *s);
 /* The same, added to obj under name. Return the item or NULL. */
 cJSON *json_out_add_string(cJSON *obj, const char *name, const char *s);
 cJSON *json_out_add_fixed(cJSON *obj, const char *name, double v, int decimals);
+cJSON *json_out_add_q8(cJSON *obj, const char *name, int64_t v_q8);
 cJSON *json_out_add_u64(cJSON *obj, const char *name, uint64_t v);
 cJSON *json_out_add_i64(cJSON *obj, const char *name, int64_t v);
 

@@ -2,7 +2,8 @@
  * json_out_test.c - tools/common/json_out (the JSON every tool writes):
  * escaping of any key and string (quotes, backslashes, control characters,
  * bytes that are not UTF-8), exact 64-bit integers, fixed decimals and
- * non-finite values, the layout byte for byte, a lazily made array, and an
+ * non-finite values, Q8 values and integers against printf, the layout
+ * byte for byte, a lazily made array, and an
  * atomic file. Documents are read back with jansson, a different library
  * from the writer's (cJSON). Exit 0 when every check passes.
  *   json_out_test WORKDIR
@@ -110,6 +111,73 @@ static void test_numbers(void)
     }
     free(text);
     cJSON_Delete(doc);
+}
+
+/* item's raw text (json_out's numbers are raw items). */
+static const char *raw_of(const cJSON *item)
+{
+    return item != NULL && cJSON_IsRaw(item) ? item->valuestring : "(not raw)";
+}
+
+/* json_out_q8 against printf's %.8f of v / 256 (exact while |v| < 2^53),
+   and the integers against printf's %llu / %lld. */
+static void test_q8_and_integers(void)
+{
+    static const int64_t edges[] = {0,
+                                    1,
+                                    -1,
+                                    255,
+                                    -255,
+                                    256,
+                                    -256,
+                                    INT32_MAX,
+                                    INT32_MIN,
+                                    (INT64_C(1) << 40) + 129,
+                                    -(INT64_C(1) << 40) - 129,
+                                    (INT64_C(1) << 53) - 1,
+                                    -(INT64_C(1) << 53) + 1};
+    char want[64];
+    int64_t v;
+    size_t i;
+    uint64_t x = 0x9e3779b97f4a7c15u;
+    for (v = -70000; v <= 70000; v++) {
+        cJSON *a = json_out_q8(v), *b = json_out_fixed((double)v / 256.0, 8);
+        CHECK(strcmp(raw_of(a), raw_of(b)) == 0, "q8 %lld: %s, printf %s", (long long)v, raw_of(a),
+              raw_of(b));
+        cJSON_Delete(a);
+        cJSON_Delete(b);
+    }
+    for (i = 0; i < sizeof edges / sizeof edges[0]; i++) {
+        cJSON *a = json_out_q8(edges[i]);
+        snprintf(want, sizeof want, "%.8f", (double)edges[i] / 256.0);
+        CHECK(strcmp(raw_of(a), want) == 0, "q8 %lld: %s, printf %s", (long long)edges[i],
+              raw_of(a), want);
+        cJSON_Delete(a);
+    }
+    /* beyond 2^53 by hand: 2^63 / 256 = 2^55; (2^63 - 1) / 256 = 2^55 - 1 + 255 / 256 */
+    {
+        cJSON *a = json_out_q8(INT64_MIN), *b = json_out_q8(INT64_MAX);
+        CHECK(strcmp(raw_of(a), "-36028797018963968.00000000") == 0, "q8 INT64_MIN: %s", raw_of(a));
+        CHECK(strcmp(raw_of(b), "36028797018963967.99609375") == 0, "q8 INT64_MAX: %s", raw_of(b));
+        cJSON_Delete(a);
+        cJSON_Delete(b);
+    }
+    for (i = 0; i < 20000; i++) { /* xorshift: every digit count, both signs */
+        cJSON *u, *s;
+        uint64_t w;
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        w = x >> (i % 64u);
+        u = json_out_u64(w);
+        s = json_out_i64((int64_t)w);
+        snprintf(want, sizeof want, "%llu", (unsigned long long)w);
+        CHECK(strcmp(raw_of(u), want) == 0, "u64: %s, printf %s", raw_of(u), want);
+        snprintf(want, sizeof want, "%lld", (long long)(int64_t)w);
+        CHECK(strcmp(raw_of(s), want) == 0, "i64: %s, printf %s", raw_of(s), want);
+        cJSON_Delete(u);
+        cJSON_Delete(s);
+    }
 }
 
 static cJSON *make_item(void *ctx, size_t i)
@@ -239,6 +307,7 @@ int main(int argc, char **argv)
     }
     test_strings();
     test_numbers();
+    test_q8_and_integers();
     test_layout();
     test_lazy_numbers_as_cjson();
     test_write(argv[1]);
