@@ -952,23 +952,11 @@ static SSDA_NOINLINE void seed_pass(engine_t *e, uint32_t *keep)
     }
 }
 
-/* Sum the candidates first, smallest bound first (insertion sort of 16). */
+/* Sum the candidates first, smallest bound first. */
 static int seed_visit(engine_t *e, uint32_t *cx, uint32_t *cy, uint32_t *cb)
 {
-    uint32_t i, j;
-    for (i = 1u; i < SEED_CANDS; i++) {
-        for (j = i; j > 0u && cb[j] < cb[j - 1u]; j--) {
-            uint32_t t = cb[j];
-            cb[j] = cb[j - 1u];
-            cb[j - 1u] = t;
-            t = cx[j];
-            cx[j] = cx[j - 1u];
-            cx[j - 1u] = t;
-            t = cy[j];
-            cy[j] = cy[j - 1u];
-            cy[j - 1u] = t;
-        }
-    }
+    uint32_t i;
+    ssda__pre_sort(SEED_CANDS, cx, cy, cb);
     for (i = 0u; i < SEED_CANDS; i++) {
         if (cx[i] != UINT32_MAX) {
             int err = consider_best(e, cx[i], cy[i]);

@@ -12,9 +12,7 @@ static SSDA_ALWAYS_INLINE uint32_t absdiff(uint32_t a, uint32_t b)
     return a > b ? a - b : b - a;
 }
 
-/* v[i] += row[i] (add) or -= it, i < n: one op a pixel, modulo 2^32 (the
-   sums end exact). Plain loops, for vectorising. */
-static void v_step(uint32_t *v, const uint8_t *row, bool u8, uint32_t n, bool add)
+void ssda__pre_vstep(uint32_t *v, const uint8_t *row, bool u8, uint32_t n, bool add)
 {
     uint32_t i;
     if (u8) {
@@ -51,14 +49,14 @@ uint64_t ssda__pre_tables(const uint8_t *base, uint32_t stride, bool u8, uint32_
         v[i] = 0u;
     }
     for (y = 0u; y < group; y++) {
-        v_step(v, base + (size_t)y * stride, u8, aw, true);
+        ssda__pre_vstep(v, base + (size_t)y * stride, u8, aw, true);
     }
     for (y = 0u; y + group <= ah; y++) {
         uint32_t *r = g + (size_t)y * nx;
         uint32_t s = 0u; /* <= group * L * 65535 < 2^32 (match_pre.h) */
         if (y > 0u) { /* v: rows y .. y + group - 1 (<= 4 * 65535) */
-            v_step(v, base + ((size_t)y + group - 1u) * stride, u8, aw, true);
-            v_step(v, base + ((size_t)y - 1u) * stride, u8, aw, false);
+            ssda__pre_vstep(v, base + ((size_t)y + group - 1u) * stride, u8, aw, true);
+            ssda__pre_vstep(v, base + ((size_t)y - 1u) * stride, u8, aw, false);
             ops += 2u * (uint64_t)aw;
         }
         for (i = 0u; i < L; i++) {
@@ -112,8 +110,7 @@ static void row_bounds(const uint32_t *g, uint32_t pitch, uint32_t group, const 
     }
 }
 
-/* Insertion sort of the n candidates by bound, stable. */
-static void sort_seeds(uint32_t n, uint32_t *cx, uint32_t *cy, uint32_t *cb)
+void ssda__pre_sort(uint32_t n, uint32_t *cx, uint32_t *cy, uint32_t *cb)
 {
     uint32_t i, j;
     for (i = 1u; i < n; i++) {
@@ -168,7 +165,7 @@ uint32_t ssda__pre_bounds(const uint32_t *g, uint32_t pitch, uint32_t group, con
             n = slot;
         }
     }
-    sort_seeds(n, cx, cy, cb);
+    ssda__pre_sort(n, cx, cy, cb);
     return n;
 }
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "track_tab.h"
+#include "match_pre.h"
 
 #ifndef SSDA_CFG_NO_BOUNDS
 
@@ -71,39 +72,15 @@ ssda__track_tab_t *ssda__track_tab_init(const ssda_track_plan_t *plan, uint32_t 
 }
 
 /* v[i] += row y's pixel x_lo + i (add) or -= it (modulo 2^32: the sums
-   end exact), i < vlen: one op a pixel. Plain loops, for vectorising. */
+   end exact), i < vlen: one op a pixel. */
 static int v_add(const ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, bool add)
 {
     const uint8_t *p;
-    const uint32_t n = t->vlen;
-    uint32_t *v = t->v;
-    uint32_t i;
-    int err = ssda__rows_get(first, t->x_lo, y, n, &p);
+    int err = ssda__rows_get(first, t->x_lo, y, t->vlen, &p);
     if (err != SSDA_OK) {
         return err;
     }
-    if (first->format == (uint8_t)SSDA_PIX_U8) {
-        if (add) {
-            for (i = 0u; i < n; i++) {
-                v[i] += p[i];
-            }
-        } else {
-            for (i = 0u; i < n; i++) {
-                v[i] -= p[i];
-            }
-        }
-    } else {
-        const uint16_t *q = (const uint16_t *)(const void *)p;
-        if (add) {
-            for (i = 0u; i < n; i++) {
-                v[i] += q[i];
-            }
-        } else {
-            for (i = 0u; i < n; i++) {
-                v[i] -= q[i];
-            }
-        }
-    }
+    ssda__pre_vstep(t->v, p, first->format == (uint8_t)SSDA_PIX_U8, t->vlen, add);
     return SSDA_OK;
 }
 
