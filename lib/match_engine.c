@@ -1070,8 +1070,8 @@ static SSDA_NOINLINE uint32_t pre_pass(engine_t *e, uint32_t *pre)
     const uint32_t n = ssda__pre_bounds(e->gsum, e->gpitch, e->group, e->wgrp, e->ngroups, nx,
                                         ny, pre, cx + SSDA__PRE_CAND_WORDS, cx, cy,
                                         cy + SSDA__PRE_CANDS); /* >= 1: nx, ny >= 1 */
-    const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
-    e->ops += terms;
+    /* positions x groups: may exceed 2^32 for very large areas */
+    e->ops += (uint64_t)nx * ny * e->ngroups;
     e->pre = pre; /* its terms counted: eval_fast's are not (finish) */
     return n;
 }
@@ -1083,7 +1083,7 @@ static SSDA_NOINLINE uint32_t pre_pass(engine_t *e, uint32_t *pre)
    (ssda__pre_bounds), the candidates summed first, smallest first, so that
    the best SAD is near the minimum from the start; then in raster order,
    in the rows whose smallest bound does not exceed the best SAD so far,
-   only the positions whose bound does not go to eval_fast (its cut level
+   only the positions whose bound does not exceed it go to eval_fast (its cut level
    and tie rule as in the raster scan); the others cannot win. The result
    does not depend on the order (exact modes). A
    visited candidate's entry becomes UINT32_MAX, above every bound (the
@@ -1525,10 +1525,7 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             }
         }
     }
-    {
-        const uint32_t terms = nx * ny * e->ngroups; /* <= the area's pixels */
-        e->ops += terms;
-    }
+    e->ops += (uint64_t)nx * ny * e->ngroups; /* positions x groups: may exceed 2^32 */
     e->pre = pre;
 }
 

@@ -33,6 +33,16 @@ SSDA_INTERNAL uint64_t ssda__pre_tables(const uint8_t *base, uint32_t stride, bo
                                         uint32_t aw, uint32_t ah, uint32_t L, uint32_t group,
                                         uint32_t *g, uint32_t *v);
 
+/* v[i] += row[i] (add) or -= it, i < n, the row 8-bit when u8, else
+   16-bit: one op a pixel, modulo 2^32 (vertical sums end exact). Plain
+   loops, for vectorising; also the tracking's shared tables' step. */
+SSDA_INTERNAL void ssda__pre_vstep(uint32_t *v, const uint8_t *row, bool u8, uint32_t n,
+                                   bool add);
+
+/* Insertion sort of n candidates (x, y, bound) by bound, smallest first,
+   stable (equal bounds keep their order). */
+SSDA_INTERNAL void ssda__pre_sort(uint32_t n, uint32_t *cx, uint32_t *cy, uint32_t *cb);
+
 /*
  * pre[y * nx + x] = sum over k < ngroups of |g[(y + k * group) * pitch + x] - w[k]|
  * for x < nx, y < ny: the successive-elimination bound of every position
@@ -48,16 +58,6 @@ SSDA_INTERNAL uint64_t ssda__pre_tables(const uint8_t *base, uint32_t stride, bo
  * (tiles holding a position: nx or ny below SSDA__PRE_TILES leave some
  * empty). pre, rmin and the candidates must not overlap g or w.
  */
-/* v[i] += row[i] (add) or -= it, i < n, the row 8-bit when u8, else
-   16-bit: one op a pixel, modulo 2^32 (vertical sums end exact). Plain
-   loops, for vectorising; also the tracking's shared tables' step. */
-SSDA_INTERNAL void ssda__pre_vstep(uint32_t *v, const uint8_t *row, bool u8, uint32_t n,
-                                   bool add);
-
-/* Insertion sort of n candidates (x, y, bound) by bound, smallest first,
-   stable (equal bounds keep their order). */
-SSDA_INTERNAL void ssda__pre_sort(uint32_t n, uint32_t *cx, uint32_t *cy, uint32_t *cb);
-
 SSDA_INTERNAL uint32_t ssda__pre_bounds(const uint32_t *g, uint32_t pitch, uint32_t group,
                                         const uint32_t *w, uint32_t ngroups, uint32_t nx,
                                         uint32_t ny, uint32_t *pre, uint32_t *rmin, uint32_t *cx,

@@ -112,8 +112,10 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
    + v[k - 1] modulo 2^32, k = 0 .. vlen (one op an entry), written first
    in g's slot and the 4 (blocks) or L entries after it: the next slots,
    not built yet (rows are built in ascending slots), or for the last slot
-   the tables' slack (each g slot leaves first_w - pitch >= 3 entries
-   unused, b's region follows). Then b[i] = p[i + 4] - p[i] (4 vertical
+   the tables' slack. With one slot (search_h = 4) and areas over FIRST's
+   whole width there is none: p[vlen] is b's first entry, which the b loop
+   writes first, so p[vlen] is read from a local (test_track_shared's
+   one-row, whole-width case). Then b[i] = p[i + 4] - p[i] (4 vertical
    sums, < 2^20) and g[i] = p[i + L] - p[i] in place, ascending (it reads
    only entries not yet replaced; L of them, <= 4 * L * 65535 < 2^32 with
    L <= 16384 for 16-bit samples): differences of sums modulo 2^32, exact
@@ -139,17 +141,21 @@ static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L
         p[i + 1u] = sum;
     }
     *ops += vlen;
+    /* sum = p[vlen]; pitch, npos >= 1 (an area is searched: vlen >= search_w
+       >= win_w, and blocks need win_w >= 4) */
     if (t->blocks) {
         uint32_t *b = t->b + (size_t)s * pitch;
         const uint32_t *p4 = p + 4;
-        for (i = 0u; i < pitch; i++) {
+        for (i = 0u; i + 1u < pitch; i++) {
             b[i] = p4[i] - p[i];
         }
+        b[pitch - 1u] = sum - p[pitch - 1u]; /* p4[pitch - 1] = p[vlen] */
         *ops += pitch;
     }
-    for (i = 0u; i < npos; i++) {
+    for (i = 0u; i + 1u < npos; i++) {
         p[i] = ahead[i] - p[i];
     }
+    p[npos - 1u] = sum - p[npos - 1u]; /* ahead[npos - 1] = p[vlen] */
     *ops += npos;
     return SSDA_OK;
 }

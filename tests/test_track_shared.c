@@ -243,6 +243,39 @@ static void test_shared_equals_per_window(void)
     }
 }
 
+/* One table row (search_h = win_h = 4) and areas over FIRST's whole width
+   (the ROI starts half the margin in): the tables' last slot has no
+   entries to spare after it. Shared = per-window = the brute force. */
+static void test_one_row_whole_width(void)
+{
+    static const geom_t gm = {16, 4, 32, 4, 16, 4};
+    uint32_t wide, pred, x, y;
+    make_images(23u, 0u);
+    for (y = 0; y < IH; y++) { /* SECOND = FIRST moved 8 px left: every
+                                  minimum at its area's last column */
+        for (x = 0; x + 8u < IW; x++) {
+            g_b16[y * IW + x] = g_a16[y * IW + x + 8u];
+            g_b8[y * IW + x] = g_a8[y * IW + x + 8u];
+        }
+    }
+    for (wide = 0; wide < 2u; wide++) {
+        for (pred = 0; pred < 2u; pred++) {
+            ssda_view_t a, b;
+            ssda_track_config_t c;
+            ssda_track_stats_t want, got;
+            ssda_track_grid_t grid;
+            views(wide != 0u, &a, &b);
+            config(&gm, &c);
+            c.roi_x = 8u; /* areas from column 0 */
+            c.roi_w = (uint16_t)(IW - 16u); /* to column IW - 1 */
+            c.predict = pred != 0u ? SSDA_TRACK_PREDICT_MEDIAN : SSDA_TRACK_PREDICT_NONE;
+            compare(&a, &b, &c, shared_size(&gm), &want, &got);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &grid));
+            check_brute(&a, &b, &grid, g_got);
+        }
+    }
+}
+
 /* The seed's geometry on a grid of many windows: the shared tables cost
    fewer operations than tables per window (the point of sharing). */
 static void test_shared_costs_less(void)
@@ -393,6 +426,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_shared_equals_per_window);
+    RUN_TEST(test_one_row_whole_width);
     RUN_TEST(test_shared_costs_less);
     RUN_TEST(test_buffer_sizes);
     RUN_TEST(test_track_row_shared);
