@@ -76,11 +76,12 @@ ssda__track_tab_t *ssda__track_tab_init(const ssda_track_plan_t *plan, uint32_t 
 static int v_add(const ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, bool add)
 {
     const uint8_t *p;
+    uint32_t *v = t->v;
     int err = ssda__rows_get(first, t->x_lo, y, t->vlen, &p);
     if (err != SSDA_OK) {
         return err;
     }
-    ssda__pre_vstep(t->v, p, first->format == (uint8_t)SSDA_PIX_U8, t->vlen, add);
+    ssda__pre_vstep(v, p, first->format == (uint8_t)SSDA_PIX_U8, t->vlen, add);
     return SSDA_OK;
 }
 
