@@ -26,6 +26,18 @@
 #else
 #define SSDA_PITCH_HAS_PARABOLIC(flags) (((flags) & SSDA_PITCH_PARABOLIC) != 0u)
 #endif
+/* Steps 4 and 6 of the definition: on unless the reduced definition is
+   asked for (a build without them requires the flags, pitch_config.c). */
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+#define SSDA_PITCH_HAS_OCTAVE(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_OCTAVE(flags) (((flags) & SSDA_PITCH_NO_OCTAVE) == 0u)
+#endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+#define SSDA_PITCH_HAS_BELOW_RANGE(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_BELOW_RANGE(flags) (((flags) & SSDA_PITCH_NO_BELOW_RANGE) == 0u)
+#endif
 /* Input low-pass in use (its coefficient is 0 when off). */
 #ifdef SSDA_CFG_NO_PITCH_FILTER
 #define SSDA_PITCH_FILTERED(info) ((void)(info), false)

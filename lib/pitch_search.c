@@ -269,7 +269,9 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
 
 /*
  * The chosen lag refined: exact neighbours, the sub-sample period,
- * the octave check when it is a dip (found), and the estimate. Kept out of
+ * the octave check when it is a dip (found; unless SSDA_PITCH_NO_OCTAVE),
+ * and the estimate (with the below-range check unless
+ * SSDA_PITCH_NO_BELOW_RANGE). Kept out of
  * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
  */
@@ -296,8 +298,11 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
             }
         }
         period = period_q16_of(w, t);
-        floor_q20 = dip_floor_q20(w, t);
-        moved = est->dip ? octave_up(w, period, floor_q20) : 0u;
+        /* F: only the checks of steps 4 and 6 read it */
+        floor_q20 = (SSDA_PITCH_HAS_OCTAVE(info->flags) || SSDA_PITCH_HAS_BELOW_RANGE(info->flags))
+                        ? dip_floor_q20(w, t) : 0u;
+        moved = (est->dip && SSDA_PITCH_HAS_OCTAVE(info->flags)) ? octave_up(w, period, floor_q20)
+                                                                  : 0u;
         if (moved == 0u) {
             break;
         }
@@ -310,7 +315,7 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     n_q15 = ssda__div64_32((uint64_t)d_of(&t->v[1]) << 15, t->v[1].s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
     est->voiced = est->dip && at_most_q15(&t->v[1], info->voicing_q15) &&
-                  !below_range(w, period, floor_q20);
+                  !(SSDA_PITCH_HAS_BELOW_RANGE(info->flags) && below_range(w, period, floor_q20));
     est->silent = false;
     est->diffs = w->diffs;
 }
