@@ -58,19 +58,27 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
         return SSDA_ERR_BUFFER;
     }
 #endif
-    p->info = info;
+    (void)memcpy(&p->info, &info, sizeof info);
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
     return ssda_pitch_reset(p);
 }
 
-int ssda_pitch_reset(ssda_pitch_t *p)
+/* SSDA_OK for a state that ssda_pitch_init filled, else SSDA_ERR_NULL
+   (p NULL) or SSDA_ERR_STATE. One copy of the test (M0+ flash). */
+static SSDA_SIZE_NOINLINE int state_error(const ssda_pitch_t *p)
 {
     if (p == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
-        return SSDA_ERR_STATE;
+    return ssda__valid(p->magic, SSDA__MAGIC_PITCH) ? SSDA_OK : SSDA_ERR_STATE;
+}
+
+int ssda_pitch_reset(ssda_pitch_t *p)
+{
+    const int err = state_error(p);
+    if (err != SSDA_OK) {
+        return err;
     }
     p->fill = 0u;
     p->skip = 0u;
@@ -84,13 +92,12 @@ int ssda_pitch_reset(ssda_pitch_t *p)
 
 int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
 {
-    if (p == NULL || info == NULL) {
-        return SSDA_ERR_NULL;
+    const int err = info == NULL ? SSDA_ERR_NULL : state_error(p);
+    if (err != SSDA_OK) {
+        return err;
     }
-    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
-        return SSDA_ERR_STATE;
-    }
-    *info = p->info;
+    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash */
+    (void)memcpy(info, &p->info, sizeof *info);
     return SSDA_OK;
 }
 
@@ -111,11 +118,9 @@ static SSDA_ALWAYS_INLINE void analyze_frame(ssda_pitch_t *p, const int16_t *x,
 
 int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *est)
 {
-    if (p == NULL || x == NULL || est == NULL) {
-        return SSDA_ERR_NULL;
-    }
-    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
-        return SSDA_ERR_STATE;
+    const int err = (x == NULL || est == NULL) ? SSDA_ERR_NULL : state_error(p);
+    if (err != SSDA_OK) {
+        return err;
     }
     if (SSDA_PITCH_FILTERED(&p->info)) {
         return SSDA_ERR_ARG; /* the low-pass runs over the stream, not per frame */
