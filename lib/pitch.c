@@ -118,9 +118,11 @@ static SSDA_ALWAYS_INLINE void analyze_frame(ssda_pitch_t *p, const int16_t *x,
 
 int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *est)
 {
-    const int err = (x == NULL || est == NULL) ? SSDA_ERR_NULL : state_error(p);
-    if (err != SSDA_OK) {
-        return err;
+    if (p == NULL || x == NULL || est == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
+        return SSDA_ERR_STATE;
     }
     if (SSDA_PITCH_FILTERED(&p->info)) {
         return SSDA_ERR_ARG; /* the low-pass runs over the stream, not per frame */
