@@ -35,30 +35,34 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
                     void *buffer, size_t buffer_size)
 {
-    ssda_pitch_info_t info;
     int err;
 #ifdef SSDA_CFG_NO_PITCH_PUSH
-    /* no push intake: the buffer is not used (may be NULL) */
+    /* no push intake: the buffer is not used (may be NULL), and nothing is
+       checked after the config, which is resolved straight into p->info
+       (written on success only) */
     (void)buffer_size;
     if (p == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
     }
+    err = ssda__pitch_resolve(cfg, &p->info);
+    if (err != SSDA_OK) {
+        return err;
+    }
 #else
+    ssda_pitch_info_t info;
     if (p == NULL || cfg == NULL || buffer == NULL) {
         return SSDA_ERR_NULL;
     }
-#endif
     err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
-#ifndef SSDA_CFG_NO_PITCH_PUSH
     if (buffer_size / sizeof(int16_t) < info.span ||
         ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
         return SSDA_ERR_BUFFER;
     }
-#endif
     (void)memcpy(&p->info, &info, sizeof info);
+#endif
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
     return ssda_pitch_reset(p);
