@@ -126,7 +126,8 @@ SSDA_INTERNAL uint32_t ssda__pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16)
  * Analyse one frame x[0 .. info->span - 1] (the rule in pitch.h).
  *   predict_lag: with SSDA_PITCH_TRACK, a lag to sum first (0 or out of
  *                range = none). Changes work only.
- *   est:         written in full except est->frame and est->center.
+ *   est:         written in full; est->frame and est->center are the
+ *                caller's to set after (0 or untouched here).
  */
 SSDA_INTERNAL void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est);

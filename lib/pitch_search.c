@@ -257,13 +257,8 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
 
 static void silent_estimate(ssda_pitch_estimate_t *est)
 {
-    est->lag = 0u;
-    est->period_q16 = 0u;
-    est->f0_q16 = 0u;
-    est->diffs = 0u;
-    est->confidence_q15 = 0u;
-    est->voiced = false;
-    est->dip = false;
+    /* every field 0 (the caller sets frame and center after), silent set */
+    (void)memset(est, 0, sizeof *est);
     est->silent = true;
 }
 
