@@ -390,7 +390,7 @@ def main():
             if goal and m0 is not None:
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
                 if reduced:  # never a verdict that hides the reduced definition
-                    verdict += " with the reduced definition only"
+                    verdict += " (reduced definition)"
             if feat == "all":
                 label = "everything"
             elif reduced:
