@@ -38,6 +38,16 @@
 #else
 #define SSDA_PITCH_HAS_BELOW_RANGE(flags) (((flags) & SSDA_PITCH_NO_BELOW_RANGE) == 0u)
 #endif
+/* Either check in use (both read the dip's interpolated floor F). A build
+   without one requires its flag (pitch_config.c), so this is false exactly
+   when both checks are off. */
+#if defined(SSDA_CFG_NO_PITCH_OCTAVE) && defined(SSDA_CFG_NO_PITCH_BELOW_RANGE)
+#define SSDA_PITCH_NEEDS_FLOOR(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_NEEDS_FLOOR(flags) \
+    (((flags) & (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)) != \
+     (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE))
+#endif
 /* Input low-pass in use (its coefficient is 0 when off). */
 #ifdef SSDA_CFG_NO_PITCH_FILTER
 #define SSDA_PITCH_FILTERED(info) ((void)(info), false)

@@ -276,7 +276,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     /* the chosen lag: the first dip (a copy when the scan went on: full
        search), else the global minimum */
     dip_t *const t = !found ? &w->best : (SSDA_PITCH_HAS_FULL(info->flags) ? &w->t : &w->run);
-    uint32_t period, floor_q20, n_q15, i;
+    uint32_t period, n_q15, i;
+    uint32_t floor_q20 = 0u; /* F: read by the checks of steps 4 and 6 only */
     est->dip = found; /* read back below: one register less across the calls */
     uint32_t moved = 0u; /* the lag an octave move went to, 0 before any */
     for (;;) {
@@ -293,9 +294,9 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
             }
         }
         period = period_q16_of(w, t);
-        /* F: only the checks of steps 4 and 6 read it */
-        floor_q20 = (SSDA_PITCH_HAS_OCTAVE(info->flags) || SSDA_PITCH_HAS_BELOW_RANGE(info->flags))
-                        ? dip_floor_q20(w, t) : 0u;
+        if (SSDA_PITCH_NEEDS_FLOOR(info->flags)) {
+            floor_q20 = dip_floor_q20(w, t);
+        }
         moved = (est->dip && SSDA_PITCH_HAS_OCTAVE(info->flags)) ? octave_up(w, period, floor_q20)
                                                                   : 0u;
         if (moved == 0u) {
