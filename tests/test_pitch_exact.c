@@ -513,7 +513,7 @@ static void test_dip_beyond_lag_max_is_not_a_dip(void)
     assert_same(&r, &e);
 }
 
-/* Voiced frames and frames whose lag differs between two estimate arrays. */
+/* Voiced frames of an estimate array. */
 static uint32_t count_voiced(const ssda_pitch_estimate_t *e, uint32_t n)
 {
     uint32_t f, v = 0u;
@@ -556,6 +556,16 @@ static void test_reduced_definitions_match_reference(void)
         moved += g_est[f].lag != g_est_full[f].lag ? 1u : 0u;
     }
     TEST_ASSERT_TRUE(moved > 0u); /* step 4 really is skipped */
+    cfg.flags = SSDA_PITCH_PARABOLIC; /* and with the parabola too (review, session 7) */
+    TEST_ASSERT_EQUAL_UINT32(count, run_stream(&cfg, g_sig, n, g_est_full));
+    cfg.flags = SSDA_PITCH_PARABOLIC | SSDA_PITCH_NO_OCTAVE;
+    TEST_ASSERT_EQUAL_UINT32(count, run_stream(&cfg, g_sig, n, g_est));
+    for (f = 0u, moved = 0u; f < count; f++) {
+        moved += g_est[f].lag != g_est_full[f].lag ? 1u : 0u;
+    }
+    TEST_ASSERT_TRUE(moved > 0u);
+    compare_stream(&cfg, g_sig, n, g_refs, reference_frames(&cfg, g_sig, n, g_refs));
+    cfg.flags = SSDA_PITCH_NO_OCTAVE;
     g_reduced = SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE;
     check_all_modes(cfg, g_sig, n);
 
@@ -569,6 +579,13 @@ static void test_reduced_definitions_match_reference(void)
     count = run_stream(&cfg, g_sig, n, g_est_full);
     TEST_ASSERT_EQUAL_UINT32(0u, count_voiced(g_est_full, count));
     g_reduced = SSDA_PITCH_NO_BELOW_RANGE;
+    check_all_modes(cfg, g_sig, n);
+    /* Without step 4 alone, step 6 still finds the tone's period below the
+       range (its floor F is still computed): unvoiced as with both steps. */
+    cfg.flags = SSDA_PITCH_NO_OCTAVE;
+    count = run_stream(&cfg, g_sig, n, g_est);
+    TEST_ASSERT_EQUAL_UINT32(0u, count_voiced(g_est, count));
+    g_reduced = SSDA_PITCH_NO_OCTAVE;
     check_all_modes(cfg, g_sig, n);
     g_reduced = 0u;
 }

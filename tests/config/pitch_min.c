@@ -7,10 +7,12 @@
  * test_pitch_ref.c, written from pitch.h alone), with early exit doing
  * less work than the plain AMDF, and everything left out must be refused
  * with its outputs untouched. Exit 0 on success.
- * Built twice: pitch_min (the octave and below-range checks compiled in;
- * the reduced definitions still accepted and checked) and pitch_min_reduced
- * (SSDA_CFG_NO_PITCH_OCTAVE and SSDA_CFG_NO_PITCH_BELOW_RANGE too: only the
- * reduced definition is accepted).
+ * Built four times: pitch_min (the octave and below-range checks compiled
+ * in; the reduced definitions still accepted and checked),
+ * pitch_min_reduced (SSDA_CFG_NO_PITCH_OCTAVE and SSDA_CFG_NO_PITCH_BELOW_RANGE
+ * too: only the reduced definition is accepted), and pitch_min_no_octave,
+ * pitch_min_no_below_range (one switch each: configurations must carry its
+ * flag and may carry the other).
  */
 #include <stdio.h>
 #include <string.h>
@@ -25,14 +27,19 @@
 #error "pitch_min must be built with every SSDA_CFG_NO_PITCH_* switch"
 #endif
 
-#if defined(SSDA_CFG_NO_PITCH_OCTAVE) != defined(SSDA_CFG_NO_PITCH_BELOW_RANGE)
-#error "pitch_min_reduced leaves out both checks"
-#endif
+/* The flags this build requires: those of the checks it leaves out. */
 #ifdef SSDA_CFG_NO_PITCH_OCTAVE
-#define REDUCED (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE) /* required */
+#define REDUCED_OCTAVE SSDA_PITCH_NO_OCTAVE
 #else
-#define REDUCED 0u
+#define REDUCED_OCTAVE 0u
 #endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+#define REDUCED_BELOW SSDA_PITCH_NO_BELOW_RANGE
+#else
+#define REDUCED_BELOW 0u
+#endif
+#define REDUCED (REDUCED_OCTAVE | REDUCED_BELOW)
+#define BOTH_CHECKS_OFF (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)
 
 #define SIG_N 20000u
 
@@ -110,11 +117,17 @@ static void check_refusals(void)
     static const uint8_t left_out[] = {REDUCED, SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_TRACK,
                                        SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_FULL,
                                        SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_PARABOLIC
+#if defined(SSDA_CFG_NO_PITCH_OCTAVE) || defined(SSDA_CFG_NO_PITCH_BELOW_RANGE)
+                                       , /* the full definition */
+                                       SSDA_PITCH_NO_FILTER
+#endif
 #ifdef SSDA_CFG_NO_PITCH_OCTAVE
-                                       , /* the full definition, or half of it */
-                                       SSDA_PITCH_NO_FILTER,
-                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE,
+                                       , /* step 4 asked for */
                                        SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_BELOW_RANGE
+#endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+                                       , /* step 6 asked for */
+                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE
 #endif
     };
     ssda_pitch_config_t cfg;
@@ -150,14 +163,18 @@ int main(void)
     cfg.sample_rate_hz = 16000u;
     cfg.flags = SSDA_PITCH_NO_FILTER | REDUCED;
     compare(&cfg, "16 kHz, defaults");
-#ifndef SSDA_CFG_NO_PITCH_OCTAVE
-    /* the reduced definitions, accepted by every build */
-    cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE;
-    compare(&cfg, "16 kHz, defaults, no octave check");
-    cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE;
+    /* the reduced definitions this build accepts: each that carries its flags */
+    if ((SSDA_PITCH_NO_OCTAVE & REDUCED) == REDUCED) {
+        cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE;
+        compare(&cfg, "16 kHz, defaults, no octave check");
+    }
+    if ((SSDA_PITCH_NO_BELOW_RANGE & REDUCED) == REDUCED) {
+        cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_BELOW_RANGE;
+        compare(&cfg, "16 kHz, defaults, no below-range check");
+    }
+    cfg.flags = SSDA_PITCH_NO_FILTER | BOTH_CHECKS_OFF;
     compare(&cfg, "16 kHz, defaults, no octave or below-range check");
-    cfg.flags = SSDA_PITCH_NO_FILTER;
-#endif
+    cfg.flags = SSDA_PITCH_NO_FILTER | REDUCED;
     cfg.f0_min_hz = 70u;
     cfg.f0_max_hz = 400u;
     cfg.frame_len = 200u;
