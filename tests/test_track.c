@@ -482,6 +482,71 @@ static void test_mask_value_u16(void)
     TEST_ASSERT_EQUAL_UINT32(NWIN - 1u, st.excluded);
 }
 
+/* One mask pixel at a time on the edges of a window (SECOND) or a search
+   area (FIRST): first and last rows, columns 0, 15, 16 and 31, where a
+   shortcut over 16- or 32-px rows could miss it (review, session 7). The
+   statuses follow the definition (a window is MASKED when its window or
+   its area holds the value), and 16-bit data give 8-bit data's vectors,
+   statuses and check_pixels exactly. */
+static void test_mask_pixel_on_row_and_column_edges(void)
+{
+    static const struct {
+        uint8_t in_first;       /* 1: FIRST (areas), 0: SECOND (windows) */
+        uint16_t x, y;
+    } spots[] = {
+        {0, 40, 56}, {0, 55, 71}, {0, 55, 56}, {0, 40, 71}, /* window (2, 3)'s corners */
+        {1, 48, 32}, {1, 63, 63}, {1, 64, 37}, {1, 79, 63}, /* area of (3, 2): cols 0, 15, 16, 31 */
+        {1, 79, 32}, {1, 48, 63},
+    };
+    ssda_track_config_t cfg;
+    ssda_track_stats_t st8, st16;
+    ssda_view_t a8, b8, a16, b16;
+    uint32_t s, i, k;
+    make_pair_u8(field_smooth, 21);
+    for (i = 0; i < IMG * IMG; i++) { /* 255 is the mask value alone */
+        g_first[i] = g_first[i] == 255u ? 254u : g_first[i];
+        g_second[i] = g_second[i] == 255u ? 254u : g_second[i];
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&a8, g_first, IMG, IMG, IMG, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&b8, g_second, IMG, IMG, IMG, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK,
+                          ssda_view_init(&a16, g_first16, IMG, IMG, IMG * 2u, SSDA_PIX_U16));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK,
+                          ssda_view_init(&b16, g_second16, IMG, IMG, IMG * 2u, SSDA_PIX_U16));
+    seed_config(&cfg);
+    cfg.flags = SSDA_TRACK_MASK;
+    cfg.mask_value = 255;
+    for (s = 0; s < sizeof spots / sizeof spots[0]; s++) {
+        uint8_t *img = spots[s].in_first ? g_first : g_second;
+        const uint32_t at = (uint32_t)spots[s].y * IMG + spots[s].x;
+        const uint8_t keep = img[at];
+        img[at] = 255u;
+        for (i = 0; i < IMG * IMG; i++) {
+            g_first16[i] = g_first[i];
+            g_second16[i] = g_second[i];
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a8, &b8, &cfg, g_out, NWIN, &st8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a16, &b16, &cfg, g_out2, NWIN, &st16));
+        for (k = 0; k < NWIN; k++) {
+            const uint32_t wx = 8u + 16u * (k % GRID), wy = 8u + 16u * (k / GRID);
+            const uint32_t x = spots[s].x, y = spots[s].y;
+            const bool hit = spots[s].in_first
+                                 ? (x >= wx - 8u && x < wx + 24u && y >= wy - 8u && y < wy + 24u)
+                                 : (x >= wx && x < wx + 16u && y >= wy && y < wy + 16u);
+            TEST_ASSERT_EQUAL_UINT8_MESSAGE(hit ? SSDA_TRACK_MASKED : SSDA_TRACK_OK,
+                                            g_out2[k].status, "16-bit status");
+            TEST_ASSERT_EQUAL_UINT8(g_out[k].status, g_out2[k].status);
+            TEST_ASSERT_EQUAL_INT32(g_out[k].dx, g_out2[k].dx);
+            TEST_ASSERT_EQUAL_INT32(g_out[k].dy, g_out2[k].dy);
+            TEST_ASSERT_EQUAL_UINT64(g_out[k].sad, g_out2[k].sad);
+        }
+        TEST_ASSERT_TRUE(st16.masked > 0u);
+        TEST_ASSERT_EQUAL_UINT32(st8.masked, st16.masked);
+        TEST_ASSERT_EQUAL_UINT64(st8.check_pixels, st16.check_pixels);
+        img[at] = keep;
+    }
+}
+
 /* Whole-image region: windows whose 32 x 32 area leaves FIRST are EDGE. */
 static void test_edge_status(void)
 {
@@ -849,6 +914,7 @@ int main(void)
     RUN_TEST(test_median_prediction_hits_uniform_field);
     RUN_TEST(test_texture_exclusion_rule);
     RUN_TEST(test_mask_value_u16);
+    RUN_TEST(test_mask_pixel_on_row_and_column_edges);
     RUN_TEST(test_edge_status);
     RUN_TEST(test_extreme_geometry);
     RUN_TEST(test_flat_test_worst_case);
