@@ -226,6 +226,56 @@ static void test_equal_to_ram_in_every_mode_layout_and_arena(void)
     }
 }
 
+/* 16-px-wide windows of 16 to 19 and 22 rows, where the host's fast path
+   sums rows in batches and cuts between them: a streamed search (the
+   general row-by-row path) must give the same result in RAM in every
+   field, pixel_ops and completed included (review, session 7: a batch
+   that skipped a cut changed only those two and passed every test). */
+static void test_sixteen_wide_windows_count_as_the_general_path(void)
+{
+    static const uint16_t heights[] = {16u, 17u, 18u, 19u, 22u};
+    static const geometry_t g = {SSDA_LAYOUT_RASTER, 0, 0, 0, 0, 1};
+    uint32_t hi, fi, i;
+    make_images(23u);
+    for (hi = 0; hi < sizeof heights / sizeof heights[0]; hi++) {
+        const ssda_rect_t wr = {9, 2, 16, heights[hi]};
+        for (fi = 1; fi <= 2; fi++) {
+            const uint8_t f = (uint8_t)fi;
+            ssda_view_t a = view_of(f, true), w = view_of(f, false), av, wv;
+            ssda_match_config_t c0;
+            ssda_match_result_t first;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&av, &a, k_area.x, k_area.y,
+                                                         k_area.width, k_area.height));
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&wv, &w, wr.x, wr.y, wr.width, wr.height));
+            memset(&c0, 0, sizeof c0);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&av, &wv, &c0, &first));
+#ifdef SSDA_TEST_SMALL
+            for (i = hi; i < N_CONFIGS; i += 4u) { /* a quarter of them on the boards */
+#else
+            for (i = 0; i < N_CONFIGS; i++) {
+#endif
+                ssda_match_config_t c = config(i, first.sad);
+                ssda_match_result_t want, got;
+                ssda_source_t as, ws;
+                make_source(&as, true, &g, f, sizeof g_aarena);
+                make_source(&ws, false, &g, f, sizeof g_warena);
+                memset(&want, 0, sizeof want);
+                memset(&got, 0, sizeof got);
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_match(&av, &wv, &c, &want));
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_stream_match(&as, &k_area, &ws, &wr, &c, &got));
+                if (!same_result(&want, &got)) {
+                    char msg[160];
+                    snprintf(msg, sizeof msg,
+                             "16 x %u, config %u: ops %llu completed %u vs ops %llu completed %u",
+                             (unsigned)heights[hi], (unsigned)i, (unsigned long long)want.pixel_ops,
+                             want.completed, (unsigned long long)got.pixel_ops, got.completed);
+                    TEST_FAIL_MESSAGE(msg);
+                }
+            }
+        }
+    }
+}
+
 /* Ties everywhere: a flat area and window (every position has SAD 0 or
    the same SAD); the tie rule must survive streaming. */
 static void test_ties_survive_streaming(void)
@@ -565,6 +615,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_equal_to_ram_in_every_mode_layout_and_arena);
     RUN_TEST(test_ties_survive_streaming);
+    RUN_TEST(test_sixteen_wide_windows_count_as_the_general_path);
     RUN_TEST(test_reads_each_byte_once_when_the_arena_allows);
     RUN_TEST(test_failure_at_every_read_leaves_result_untouched);
     RUN_TEST(test_short_arena_is_refused_before_reading);
