@@ -293,14 +293,16 @@ static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, u
     uint32_t k, i;
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t s = 0u; /* < 2^28 */
+        /* block sums < 2^20: signed differences, no compare and branch */
         if (nb == 4u) { /* 16 to 19 columns: no loop */
-            const uint32_t a0 = b[0], a1 = b[4], a2 = b[8], a3 = b[12];
-            s = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
-                (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+            const int32_t d0 = (int32_t)b[0] - (int32_t)w[0], d1 = (int32_t)b[4] - (int32_t)w[1];
+            const int32_t d2 = (int32_t)b[8] - (int32_t)w[2], d3 = (int32_t)b[12] - (int32_t)w[3];
+            s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
         } else {
             for (i = 0u; i < nb; i++) {
-                const uint32_t a = b[(size_t)4u * i], c = w[i];
-                s += a > c ? a - c : c - a;
+                const int32_t d = (int32_t)b[(size_t)4u * i] - (int32_t)w[i];
+                s += (uint32_t)(d < 0 ? -d : d);
             }
         }
         rest = rest - e->term[k] + s; /* s >= term[k] */
@@ -477,7 +479,7 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
    SAD < 2^32 - 1 (triangle inequality), each term likewise; read from the
    table when pre_bounds made it. The terms are stored only when the
    position passes (a second pass): most do not. */
-static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
+static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at, bool store)
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
     const uint32_t *g = g0;
@@ -500,7 +502,7 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
             g += down;
         }
     }
-    if (rest < cut_at) {
+    if (store && rest < cut_at) {
         uint32_t *t = e->term;
         g = g0;
         if (n == 4u) {
@@ -521,6 +523,41 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     return rest;
 }
 #endif
+
+/* tab_refine for eval_fast with 4 groups of 4 blocks (the seed's 16 x 16
+   windows; 16..19 px a side), in 32 bits (the bound <= the SAD < 2^32 - 1):
+   the same terms, order, exits and count. A block sum < 2^20, so the
+   differences are signed, with no compare and branch. */
+static uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest, uint32_t cut_at)
+{
+    const size_t down = (size_t)4u * e->gpitch; /* b and g: one pitch */
+    const size_t at = (size_t)y * e->gpitch + x;
+    const uint32_t *b = e->integ + at;
+    const uint32_t *g = e->gsum + at;
+    const uint32_t *w = e->wblk;
+    uint32_t *t = e->term;
+    uint32_t k;
+    for (k = 0u; k < 4u; k++) {
+        /* the group's term of the bound, |group sums| (< 2^23 for 19 px of
+           16 bits: signed too), replaced by its blocks' terms */
+        const int32_t dg = (int32_t)g[0] - (int32_t)e->wgrp[k];
+        const int32_t d0 = (int32_t)b[0] - (int32_t)w[0], d1 = (int32_t)b[4] - (int32_t)w[1];
+        const int32_t d2 = (int32_t)b[8] - (int32_t)w[2], d3 = (int32_t)b[12] - (int32_t)w[3];
+        const uint32_t s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
+        t[k] = s;
+        if (rest >= cut_at) {
+            e->ops += 4u * (k + 1u);
+            return rest;
+        }
+        b += down;
+        g += down;
+        w += 4;
+    }
+    e->ops += 16u;
+    return rest;
+}
 
 /* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
@@ -550,18 +587,39 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
 
+/* Rows k .. k + rows - 1 of position (x, y) added to *partial, stopping
+   after the first row where it reaches limit (the kernels' rows loop).
+   Returns the rows added. */
+static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
+                                            const uint8_t *w, uint32_t n, uint32_t rows,
+                                            uint32_t limit, uint32_t *partial)
+{
+    const size_t as = e->area->stride, ws = e->win->stride;
+#ifndef SSDA_CFG_NO_U16
+    if (!e->u8) {
+        return ssda__sad_rows_u16((const uint16_t *)(const void *)a, as,
+                                  (const uint16_t *)(const void *)w, ws, n, rows, limit,
+                                  partial);
+    }
+#endif
+    return ssda__sad_rows_u8(a, as, w, ws, n, rows, limit, partial);
+}
+
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
-   eval_position. Returns 1 and sets *sad, or 0 when cut. */
+   eval_position, rest constant between the starts of two groups, so the
+   rows from one start to the next go to the kernel in one call. rest <
+   cut_at on entry and partial + rest <= the position's SAD < 2^32 - 1.
+   Returns 1 and sets *sad, or 0 when cut. */
 static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
                                    uint32_t rest, uint64_t *sad)
 {
-    const uint32_t L = e->L;
+    const uint32_t L = e->L, M = e->M;
     const uint32_t as = e->area->stride, ws = e->win->stride;
     const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
     const uint8_t *w = e->win->base;
     uint32_t partial = 0u; /* < 2^32 - 1: e->fast */
-    uint32_t k;
+    uint32_t k = 0u;
 #ifndef SSDA_CFG_NO_BOUNDS
     uint32_t g = 0u, next_start = 0u; /* the next group and its first row */
 #endif
@@ -591,26 +649,31 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             return 0;
         }
         k = 1u;
-    } else {
-        k = 0u;
     }
-    for (; k < e->M; k++) {
+    while (k < M) {
+        uint32_t end = M, n;
 #ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u && k == next_start) { /* as in eval_position */
             rest -= e->term[g];
             g++;
             next_start += e->group;
         }
+        if (rest != 0u && next_start < M) {
+            end = next_start; /* > k: rest changes there */
+        }
 #endif
-        partial += row_sad(e, &a[(size_t)k * as], &w[(size_t)k * ws], L);
+        /* partial + rest < cut_at here, so the limit is above partial */
+        n = rows_sad(e, a + (size_t)k * as, w + (size_t)k * ws, L, end - k, cut_at - rest,
+                     &partial);
+        k += n;
         if (partial + rest >= cut_at) {
-            const uint32_t summed = (k + 1u) * L; /* <= L * M < 2^32 */
+            const uint32_t summed = k * L; /* <= L * M < 2^32 */
             e->ops += summed;
             return 0;
         }
     }
     {
-        const uint32_t summed = e->M * L; /* < 2^32 */
+        const uint32_t summed = M * L; /* < 2^32 */
         e->ops += summed;
     }
     *sad = partial;
@@ -638,7 +701,9 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
     }
 #ifndef SSDA_CFG_NO_BOUNDS
     if (e->bounds) {
-        rest = group_bound32(e, x, y, cut_at);
+        /* 4 groups of 4 blocks: tab_refine4 takes the group terms itself */
+        const bool quad = e->integ != NULL && e->L >> 2 == 4u && e->ngroups == 4u;
+        rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
             return 0;
         }
@@ -649,7 +714,8 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
             }
         }
         if (e->integ != NULL) { /* the bound <= the SAD < 2^32 - 1 */
-            rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
+            rest = quad ? tab_refine4(e, x, y, rest, cut_at)
+                        : (uint32_t)tab_refine(e, x, y, rest, cut_at);
             if (rest >= cut_at) {
                 return 0;
             }
@@ -1494,6 +1560,10 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
 {
     uint32_t *pre = (uint32_t *)e->plan->work;
     const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    /* every group sum (of area and window) below 2^31: 4 * L * 65535 < 2^31
+       for L <= 8191 (8-bit: always), so group sums fit int32_t and so do
+       their differences */
+    const bool small = e->u8 || e->L <= 8191u;
     uint32_t x, y, k;
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
@@ -1503,6 +1573,18 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             const uint32_t *g3 = g2 + (size_t)4u * pitch;
             const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
             size_t i;
+            if (small) { /* signed differences: loops that vectorise to a few
+                            instructions a lane (no unsigned compare in SSE2) */
+                const int32_t s0 = (int32_t)w0, s1 = (int32_t)w1, s2 = (int32_t)w2,
+                              s3 = (int32_t)w3;
+                for (i = 0u; i < nx; i++) {
+                    const int32_t d0 = (int32_t)g0[i] - s0, d1 = (int32_t)g1[i] - s1;
+                    const int32_t d2 = (int32_t)g2[i] - s2, d3 = (int32_t)g3[i] - s3;
+                    p[i] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+                }
+                continue;
+            }
             for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */
                 p[i] = (g0[i] > w0 ? g0[i] - w0 : w0 - g0[i]) +
                        (g1[i] > w1 ? g1[i] - w1 : w1 - g1[i]) +
@@ -1565,83 +1647,97 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
-/* The open positions of row y, columns lo .. hi, ascending. */
-static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t y)
+/* The open positions of mask m, ascending: columns of row `fix` (row),
+   or rows of column `fix` (column). Each bit visited leaves *left. */
+static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t fix, bool row,
+                                       uint32_t *left)
 {
     int err = SSDA_OK;
     while (m != 0u && err == SSDA_OK) {
-        err = consider_best(e, low_bit(m), y);
+        const uint32_t i = low_bit(m);
+        err = row ? consider_best(e, i, fix) : consider_best(e, fix, i);
         m &= m - 1u;
+        (*left)--;
     }
     return err;
 }
 
-/* The open positions of column x, rows y0 .. y1, ascending. */
-static SSDA_ALWAYS_INLINE int open_column(engine_t *e, const uint32_t *open, uint32_t x,
-                                          int32_t y0, int32_t y1)
+/* The open positions in bit masks by row (open[y], bit x) and by column
+   (open[OPEN_MAX + x], bit y), built once: a ring's four sides are then
+   four masked runs, and the rings stop once no open position is left. */
+static SSDA_ALWAYS_INLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
 {
-    int32_t i;
-    for (i = y0; i <= y1; i++) {
-        if (((open[i] >> x) & 1u) != 0u) {
-            int err = consider_best(e, x, (uint32_t)i);
-            if (err != SSDA_OK) {
-                return err;
-            }
-        }
+    /* bit x of a word, x < 32 */
+    static const uint32_t k_bit[OPEN_MAX] = {
+        0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
+        0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
+        0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
+        0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
+        0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
+        0x40000000u, 0x80000000u};
+    const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+    const uint32_t nx = e->nx, ny = e->ny;
+    uint32_t *cols = open + OPEN_MAX;
+    const uint32_t *pre = e->pre;
+    uint32_t i, left = 0u;
+    for (i = 0u; i < nx; i++) {
+        cols[i] = 0u;
     }
-    return SSDA_OK;
+    for (i = 0u; i < ny; i++) {
+        uint32_t m = 0u;
+        size_t x;
+        for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
+            m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
+        }
+        if (i == e->ty) {
+            m &= ~k_bit[e->tx]; /* visited first */
+        }
+        open[i] = m;
+        while (m != 0u) { /* few: most bounds exceed s */
+            cols[low_bit(m)] |= k_bit[i];
+            m &= m - 1u;
+            left++;
+        }
+        pre += nx;
+    }
+    return left;
 }
 
 static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 {
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
     const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
+    const uint32_t *cols = open + OPEN_MAX;
     int32_t d, dmax = px;
+    uint32_t left;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
     if (err != SSDA_OK) {
         return err;
     }
-    {
-        /* bit x of a word, x < 32 */
-        static const uint32_t k_bit[OPEN_MAX] = {
-            0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
-            0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
-            0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
-            0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
-            0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
-            0x40000000u, 0x80000000u};
-        const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
-        int32_t i;
-        const uint32_t *pre = e->pre;
-        for (i = 0; i < ny; i++) {
-            uint32_t m = 0u;
-            size_t x;
-            for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
-                m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
-            }
-            open[i] = m;
-            pre += nx;
-        }
-    }
+    left = open_masks(e, open);
     dmax = nx - 1 - px > dmax ? nx - 1 - px : dmax;
     dmax = py > dmax ? py : dmax;
     dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;
-    for (d = 1; d <= dmax && err == SSDA_OK; d++) {
+    for (d = 1; d <= dmax && left != 0u && err == SSDA_OK; d++) {
         const uint32_t lo = (uint32_t)(px - d < 0 ? 0 : px - d);
         const uint32_t hi = (uint32_t)(px + d >= nx ? nx - 1 : px + d);
-        const int32_t y0 = py - d + 1 < 0 ? 0 : py - d + 1;
-        const int32_t y1 = py + d - 1 >= ny ? ny - 1 : py + d - 1;
+        const uint32_t y0 = (uint32_t)(py - d + 1 < 0 ? 0 : py - d + 1);
+        const uint32_t y1 = (uint32_t)(py + d - 1 >= ny ? ny - 1 : py + d - 1);
         if (py - d >= 0) { /* top */
-            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)py - (uint32_t)d);
+            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)(py - d), true, &left);
         }
         if (py + d < ny && err == SSDA_OK) { /* bottom */
-            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)py + (uint32_t)d);
+            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)(py + d), true, &left);
         }
-        if (px - d >= 0 && err == SSDA_OK) { /* left */
-            err = open_column(e, open, (uint32_t)px - (uint32_t)d, y0, y1);
-        }
-        if (px + d < nx && err == SSDA_OK) { /* right */
-            err = open_column(e, open, (uint32_t)px + (uint32_t)d, y0, y1);
+        if (y0 <= y1) { /* d = 1 on a range one row high has no side column */
+            if (px - d >= 0 && err == SSDA_OK) { /* left */
+                err = open_run(e, cols[px - d] & bit_span(y0, y1), (uint32_t)(px - d), false,
+                               &left);
+            }
+            if (px + d < nx && err == SSDA_OK) { /* right */
+                err = open_run(e, cols[px + d] & bit_span(y0, y1), (uint32_t)(px + d), false,
+                               &left);
+            }
         }
     }
     /* every position once, as scan_predict counts them */

@@ -11,6 +11,7 @@
  * has it) as well as the run-time choice; the QEMU builds test the armv7em
  * set (mps2-an386, mps2-an500) and the portable set (mps2-an385).
  */
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "unity.h"
@@ -128,6 +129,8 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u8);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->absdiff_row_i16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u8);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -376,6 +379,89 @@ static void test_dot_worst_case(void)
                              ssda__dot_u16(g_big + 1, 0, g_big, 0, 65535, 1));
 }
 
+/* The rows loops (ssda__sad_rows_u8/u16) against the reference row by
+   row: rows of n pixels at byte strides through one buffer (rows overlap,
+   as the rows of an image's areas do), stopping after the first row whose
+   running sum reaches the limit; every variant. */
+#define ROWS_MAX 6u
+static uint8_t g_rows8[MAX_LEN * ROWS_MAX * 2u + 64u];
+static uint16_t g_rows16[MAX_LEN * ROWS_MAX * 2u + 64u];
+
+static void check_rows(bool u16, const void *a, size_t as, const void *b, size_t bs, uint32_t n,
+                       uint32_t rows, uint32_t limit, uint32_t start)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want = start, want_rows = 0u, got = start, got_rows, v;
+    do { /* the reference: rows one by one */
+        const uint8_t *pa = (const uint8_t *)a + want_rows * as;
+        const uint8_t *pb = (const uint8_t *)b + want_rows * bs;
+        want += (uint32_t)(u16 ? ref_u16((const uint16_t *)(const void *)pa,
+                                         (const uint16_t *)(const void *)pb, n)
+                               : ref_u8(pa, pb, n));
+        want_rows++;
+    } while (want_rows < rows && want < limit);
+    got_rows = u16 ? ssda__sad_rows_u16(a, as, b, bs, n, rows, limit, &got)
+                   : ssda__sad_rows_u8(a, as, b, bs, n, rows, limit, &got);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_rows, got_rows, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got = start;
+        got_rows = u16 ? k->sad_rows_u16(a, as, b, bs, n, rows, limit, &got)
+                       : k->sad_rows_u8(a, as, b, bs, n, rows, limit, &got);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_rows, got_rows, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+    }
+}
+
+static void test_sad_rows_random(void)
+{
+    test_rng_t r;
+    uint32_t i, n, rows, t;
+    test_rng_seed(&r, 0x5AD5u);
+    for (i = 0; i < sizeof g_rows8; i++) {
+        g_rows8[i] = (uint8_t)sample(&r, 255u);
+    }
+    for (i = 0; i < sizeof g_rows16 / sizeof g_rows16[0]; i++) {
+        g_rows16[i] = (uint16_t)sample(&r, 65535u);
+    }
+    for (n = 0u; n <= MAX_LEN; n += (n < 40u ? 1u : 13u)) {
+        for (rows = 1u; rows <= ROWS_MAX; rows++) {
+            for (t = 0u; t < 6u; t++) {
+                /* strides of n or more pixels, odd offsets: unaligned rows */
+                const uint32_t oa = test_rng_range(&r, 0u, 7u), ob = test_rng_range(&r, 0u, 7u);
+                const uint32_t sa = n + test_rng_range(&r, 0u, 5u);
+                const uint32_t sb = n + test_rng_range(&r, 0u, 5u);
+                const uint32_t start = t == 0u ? 0u : test_rng_range(&r, 0u, 100000u);
+                /* limits: reached at once, never, or somewhere in between */
+                const uint32_t limit = t == 1u ? 0u
+                                       : t == 2u ? UINT32_MAX
+                                                 : start + test_rng_range(&r, 0u, n * rows * 200u);
+                check_rows(false, g_rows8 + oa, sa, g_rows8 + MAX_LEN * ROWS_MAX + ob, sb, n,
+                           rows, limit, start);
+                check_rows(true, g_rows16 + oa, 2u * sa, g_rows16 + MAX_LEN * ROWS_MAX + ob,
+                           2u * sb, n, rows, limit > UINT32_MAX / 256u ? limit : limit * 200u,
+                           start);
+            }
+        }
+    }
+}
+
+/* The largest sums the callers allow: 65536 pixels of the largest
+   difference, 4096 rows of 16 (stride 0: one row read again). */
+static void test_sad_rows_worst_case(void)
+{
+    uint32_t i;
+    for (i = 0; i < 16u; i++) {
+        g_rows16[i] = 65535u;
+        g_rows16[16u + i] = 0u;
+        g_rows8[i] = 255u;
+        g_rows8[16u + i] = 0u;
+    }
+    check_rows(true, g_rows16, 0u, g_rows16 + 16, 0u, 16u, 4096u, UINT32_MAX, 0u);
+    check_rows(true, g_rows16 + 16, 0u, g_rows16, 0u, 16u, 4096u, 4294901760u, 0u);
+    check_rows(false, g_rows8, 0u, g_rows8 + 16, 0u, 16u, 65535u, UINT32_MAX, 0u);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -389,6 +475,8 @@ int main(void)
     RUN_TEST(test_sad_u16_worst_case);
     RUN_TEST(test_absdiff_i16_worst_case);
     RUN_TEST(test_long_random_rows);
+    RUN_TEST(test_sad_rows_random);
+    RUN_TEST(test_sad_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

@@ -222,6 +222,62 @@ uint32_t avx2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 }
 #endif
 
+/* The rows loops (kernels.h). A 16-pixel row (the seed's windows) is
+   straight-line code, its total from one horizontal sum; other widths go
+   through the variant's row function. Both variants share the 16-pixel
+   code: one 128-bit PSADBW (8-bit) or two 8-lane halves (16-bit) a row,
+   where 256-bit registers would cost their setup (see the public loops). */
+static SSDA_ALWAYS_INLINE uint32_t sad16_u8(const uint8_t *a, const uint8_t *b)
+{
+    const __m128i s = _mm_sad_epu8(load128(a), load128(b)); /* two 64-bit lanes */
+    return (uint32_t)_mm_cvtsi128_si32(_mm_add_epi64(s, _mm_unpackhi_epi64(s, s)));
+}
+
+static SSDA_ALWAYS_INLINE uint32_t sad16_u16(const uint16_t *a, const uint16_t *b)
+{
+    const __m128i a0 = load128(a), a1 = load128(a + 8), b0 = load128(b), b1 = load128(b + 8);
+    const __m128i d0 = _mm_or_si128(_mm_subs_epu16(a0, b0), _mm_subs_epu16(b0, a0));
+    const __m128i d1 = _mm_or_si128(_mm_subs_epu16(a1, b1), _mm_subs_epu16(b1, a1));
+    const __m128i lo = _mm_set1_epi32(0xFFFF);
+    /* each 32-bit lane: four |d| <= 65535, < 2^18 */
+    const __m128i v = _mm_add_epi32(_mm_add_epi32(_mm_and_si128(d0, lo), _mm_srli_epi32(d0, 16)),
+                                    _mm_add_epi32(_mm_and_si128(d1, lo), _mm_srli_epi32(d1, 16)));
+    return hsum_u32x4(v);
+}
+
+#define SSDA_SSE2_ROWS(name, type, row16, rowfn)                                            \
+    static uint32_t name(const type *a, size_t astride, const type *b, size_t bstride,     \
+                         uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)         \
+    {                                                                                      \
+        const uint8_t *pa = (const uint8_t *)(const void *)a;                              \
+        const uint8_t *pb = (const uint8_t *)(const void *)b;                              \
+        uint32_t s = *sum, r = 0u;                                                         \
+        if (n == 16u) {                                                                    \
+            do {                                                                           \
+                s += row16((const type *)(const void *)pa, (const type *)(const void *)pb); \
+                pa += astride;                                                             \
+                pb += bstride;                                                             \
+                r++;                                                                       \
+            } while (r < rows && s < limit);                                               \
+        } else {                                                                           \
+            do {                                                                           \
+                s += rowfn((const type *)(const void *)pa, (const type *)(const void *)pb, n); \
+                pa += astride;                                                             \
+                pb += bstride;                                                             \
+                r++;                                                                       \
+            } while (r < rows && s < limit);                                               \
+        }                                                                                  \
+        *sum = s;                                                                          \
+        return r;                                                                          \
+    }
+
+SSDA_SSE2_ROWS(sse2_sad_rows_u8, uint8_t, sad16_u8, sse2_sad_row_u8)
+SSDA_SSE2_ROWS(sse2_sad_rows_u16, uint16_t, sad16_u16, sse2_sad_row_u16)
+#if defined(__GNUC__) || defined(__clang__)
+SSDA_SSE2_ROWS(avx2_sad_rows_u8, uint8_t, sad16_u8, avx2_sad_row_u8)
+SSDA_SSE2_ROWS(avx2_sad_rows_u16, uint16_t, sad16_u16, avx2_sad_row_u16)
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -278,12 +334,39 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
     return sse2_absdiff_row_i16(a, b, n);
 }
 
+/* The rows loops: the variant of the public row loops (AVX2 only for the
+   long rows, as there). */
+uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                           uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 128u && x86_avx2() != 0u) {
+        return avx2_sad_rows_u8(a, astride, b, bstride, n, rows, limit, sum);
+    }
+#endif
+    return sse2_sad_rows_u8(a, astride, b, bstride, n, rows, limit, sum);
+}
+
+uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                            size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                            uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 32u && x86_avx2() != 0u) {
+        return avx2_sad_rows_u16(a, astride, b, bstride, n, rows, limit, sum);
+    }
+#endif
+    return sse2_sad_rows_u16(a, astride, b, bstride, n, rows, limit, sum);
+}
+
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
-        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16 },
+        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
+          sse2_sad_rows_u16 },
 #if defined(__GNUC__) || defined(__clang__)
-        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16 },
+        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
+          avx2_sad_rows_u16 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

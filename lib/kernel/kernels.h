@@ -21,6 +21,22 @@ SSDA_INTERNAL uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint
    Worst case 65535 * 65535 = 4 294 836 225 < 2^32 - 1. */
 SSDA_INTERNAL uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n);
 
+/* The SAD rows of a placement, cut as the engine cuts them: rows of n
+   pixels (row r of a at a + r * astride bytes, of b likewise) added one
+   after another to *sum, stopping after the first row at which *sum
+   reaches limit. Returns the rows added (1 .. rows, rows >= 1): rows when
+   the limit was never reached after a row before the last; the caller
+   compares *sum with limit. The caller guarantees that *sum stays below
+   2^32 (the engine's fast path: every SAD of the window < 2^32 - 1). The
+   same sums as ssda__sad_row_u8/u16 row by row; one call for several rows
+   (issue 18: a call per 16-pixel row cost more than the row). */
+SSDA_INTERNAL uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                         size_t bstride, uint32_t n, uint32_t rows,
+                                         uint32_t limit, uint32_t *sum);
+SSDA_INTERNAL uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                          size_t bstride, uint32_t n, uint32_t rows,
+                                          uint32_t limit, uint32_t *sum);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -46,6 +62,11 @@ typedef struct {
     uint32_t (*sad_row_u8)(const uint8_t *a, const uint8_t *b, uint32_t n);
     uint32_t (*sad_row_u16)(const uint16_t *a, const uint16_t *b, uint32_t n);
     uint32_t (*absdiff_row_i16)(const int16_t *a, const int16_t *b, uint32_t n);
+    uint32_t (*sad_rows_u8)(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                            uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum);
+    uint32_t (*sad_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
+                             size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                             uint32_t *sum);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in
