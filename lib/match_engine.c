@@ -864,6 +864,8 @@ static void list_insert(engine_t *e, const cand_t *c)
 }
 #endif
 
+static void keep(engine_t *e, uint32_t x, uint32_t y, cand_t *c);
+
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
 static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
@@ -876,6 +878,14 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     if (done <= 0) {
         return done;
     }
+    keep(e, x, y, c);
+    return 1;
+}
+
+/* A completed position (c->sad set) at (x, y): counted, and kept if it is
+   among the best two (and in the uniqueness list). */
+static void keep(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
+{
     e->completed++;
     c->x = x;
     c->y = y;
@@ -900,7 +910,6 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     } else {
         /* behind both kept positions */
     }
-    return 1;
 }
 
 /* Raster, seeded and predict scans: the reference is always the best so
@@ -1647,15 +1656,43 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
+/* consider_best for scan_predict_open with 4 groups of 4 blocks (the
+   seed's windows, tab_refine4): eval_fast's steps on what that case
+   knows already (a reference, the bound in the table, no list), the same
+   cut level, terms, rows and count. Rows in memory: no fetch error. */
+static SSDA_ALWAYS_INLINE void open_quad(engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+    const uint32_t bound = e->pre[(size_t)y * e->nx + x];
+    uint32_t cut, rest;
+    cand_t c;
+    if (bound > s) {
+        return;
+    }
+    /* cut_level32: s + 1 for a position before the best by the tie rule */
+    cut = s + (pos_before(e, x, y, e->best.x, e->best.y) ? 1u : 0u);
+    if (bound >= cut) { /* also cut == 0 */
+        return;
+    }
+    rest = tab_refine4(e, x, y, bound, cut);
+    if (rest < cut && fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+        keep(e, x, y, &c);
+    }
+}
+
 /* The open positions of mask m, ascending: columns of row `fix` (row),
    or rows of column `fix` (column). Each bit visited leaves *left. */
 static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t fix, bool row,
-                                       uint32_t *left)
+                                       bool quad, uint32_t *left)
 {
     int err = SSDA_OK;
     while (m != 0u && err == SSDA_OK) {
         const uint32_t i = low_bit(m);
-        err = row ? consider_best(e, i, fix) : consider_best(e, fix, i);
+        if (quad) {
+            open_quad(e, row ? i : fix, row ? fix : i);
+        } else {
+            err = row ? consider_best(e, i, fix) : consider_best(e, fix, i);
+        }
         m &= m - 1u;
         (*left)--;
     }
@@ -1708,6 +1745,8 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
     const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
     const uint32_t *cols = open + OPEN_MAX;
+    /* tab_refine4's case, as in eval_fast */
+    const bool quad = e->integ != NULL && e->L >> 2 == 4u && e->ngroups == 4u;
     int32_t d, dmax = px;
     uint32_t left;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
@@ -1724,19 +1763,19 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
         const uint32_t y0 = (uint32_t)(py - d + 1 < 0 ? 0 : py - d + 1);
         const uint32_t y1 = (uint32_t)(py + d - 1 >= ny ? ny - 1 : py + d - 1);
         if (py - d >= 0) { /* top */
-            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)(py - d), true, &left);
+            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)(py - d), true, quad, &left);
         }
         if (py + d < ny && err == SSDA_OK) { /* bottom */
-            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)(py + d), true, &left);
+            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)(py + d), true, quad, &left);
         }
         if (y0 <= y1) { /* d = 1 on a range one row high has no side column */
             if (px - d >= 0 && err == SSDA_OK) { /* left */
                 err = open_run(e, cols[px - d] & bit_span(y0, y1), (uint32_t)(px - d), false,
-                               &left);
+                               quad, &left);
             }
             if (px + d < nx && err == SSDA_OK) { /* right */
                 err = open_run(e, cols[px + d] & bit_span(y0, y1), (uint32_t)(px + d), false,
-                               &left);
+                               quad, &left);
             }
         }
     }

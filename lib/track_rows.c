@@ -52,18 +52,31 @@ static bool has_value_u8(const uint8_t *p, uint32_t n, uint32_t v)
     return hit != 0u;
 }
 
-static bool has_value_u16(const uint16_t *p, uint32_t n, uint32_t v)
+/* Sum of (p[i] == t) over a span of n, a constant where inlined below (the
+   seed's 16- and 32-px rows: straight vector code, no loop set-up). */
+static SSDA_ALWAYS_INLINE uint16_t hits_u16(const uint16_t *p, size_t n, uint16_t t)
 {
-    const uint16_t t = (uint16_t)v;
     uint16_t hit = 0u;
     size_t i;
-    if (v > 65535u) {
-        return false;
-    }
     for (i = 0u; i < n; i++) {
         hit |= (uint16_t)(p[i] == t ? 1u : 0u);
     }
-    return hit != 0u;
+    return hit;
+}
+
+static bool has_value_u16(const uint16_t *p, uint32_t n, uint32_t v)
+{
+    const uint16_t t = (uint16_t)v;
+    if (v > 65535u) {
+        return false;
+    }
+    if (n == 16u) {
+        return hits_u16(p, 16u, t) != 0u;
+    }
+    if (n == 32u) {
+        return hits_u16(p, 32u, t) != 0u;
+    }
+    return hits_u16(p, n, t) != 0u;
 }
 
 /* Pixels > thr in a span: <= n <= 65535. */
