@@ -524,38 +524,18 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
 }
 #endif
 
-/* tab_refine for eval_fast with 4 groups of 4 blocks (the seed's 16 x 16
-   windows; 16..19 px a side), in 32 bits (the bound <= the SAD < 2^32 - 1):
-   the same terms, order, exits and count. A block sum < 2^20, so the
-   differences are signed, with no compare and branch. */
+/* tab_refine for eval_fast with 4 groups of 4 blocks (16 x 16 windows:
+   shared tables hold blocks only for widths that are multiples of 4; 16..19
+   rows), in 32 bits (the bound <= the SAD < 2^32 - 1): the same terms,
+   order, exits and count, in the kernels' ssda__refine4 (SSE2 on x86). The
+   group terms are taken there, so group_bound32 need not store them. */
 static uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest, uint32_t cut_at)
 {
-    const size_t down = (size_t)4u * e->gpitch; /* b and g: one pitch */
-    const size_t at = (size_t)y * e->gpitch + x;
-    const uint32_t *b = e->integ + at;
-    const uint32_t *g = e->gsum + at;
-    const uint32_t *w = e->wblk;
-    uint32_t *t = e->term;
-    uint32_t k;
-    for (k = 0u; k < 4u; k++) {
-        /* the group's term of the bound, |group sums| (< 2^23 for 19 px of
-           16 bits: signed too), replaced by its blocks' terms */
-        const int32_t dg = (int32_t)g[0] - (int32_t)e->wgrp[k];
-        const int32_t d0 = (int32_t)b[0] - (int32_t)w[0], d1 = (int32_t)b[4] - (int32_t)w[1];
-        const int32_t d2 = (int32_t)b[8] - (int32_t)w[2], d3 = (int32_t)b[12] - (int32_t)w[3];
-        const uint32_t s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
-                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
-        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
-        t[k] = s;
-        if (rest >= cut_at) {
-            e->ops += 4u * (k + 1u);
-            return rest;
-        }
-        b += down;
-        g += down;
-        w += 4;
-    }
-    e->ops += 16u;
+    const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
+    uint32_t groups;
+    rest = ssda__refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp, e->wblk,
+                         rest, cut_at, e->term, &groups);
+    e->ops += 4u * groups;
     return rest;
 }
 

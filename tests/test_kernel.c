@@ -131,6 +131,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->absdiff_row_i16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u8);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -462,6 +463,68 @@ static void test_sad_rows_worst_case(void)
     check_rows(false, g_rows8, 0u, g_rows8 + 16, 0u, 16u, 65535u, UINT32_MAX, 0u);
 }
 
+/* ssda__refine4 against its reference on random sums in the stated ranges
+   (block sums < 2^20, group sums < 2^31), strides and cut levels that stop
+   it after each group; every variant. */
+static uint32_t g_tab_b[4u * 64u + 16u], g_tab_g[4u * 64u + 16u];
+
+static void check_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                          const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest, uint32_t cut)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want_t[4] = {0u, 0u, 0u, 0u}, got_t[4] = {0u, 0u, 0u, 0u};
+    uint32_t want_n = 0u, got_n = 0u, v, i;
+    const uint32_t want = ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, want_t, &want_n);
+    uint32_t got = ssda__refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, ssda__kernel_name());
+    TEST_ASSERT_TRUE(want_n >= 1u && want_n <= 4u);
+    for (i = 0u; i < want_n; i++) {
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_t[i], got_t[i], ssda__kernel_name());
+    }
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got_n = 0u;
+        got = k->refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, k->name);
+        for (i = 0u; i < want_n; i++) {
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_t[i], got_t[i], k->name);
+        }
+    }
+}
+
+static void test_refine4_random(void)
+{
+    test_rng_t r;
+    uint32_t i, t, wgrp[4], wblk[16];
+    test_rng_seed(&r, 0x4EF14Eu);
+    for (t = 0u; t < 2000u; t++) {
+        const uint32_t bmax = t % 3u == 0u ? (1u << 20) - 1u : 4095u * 16u;
+        const uint32_t gmax = t % 3u == 0u ? 0x7FFFFFFFu : 4095u * 64u;
+        const size_t down = 16u + test_rng_range(&r, 0u, 48u); /* a row pitch */
+        const uint32_t at = test_rng_range(&r, 0u, 15u);
+        uint32_t rest, cut;
+        for (i = 0u; i < sizeof g_tab_b / sizeof g_tab_b[0]; i++) {
+            g_tab_b[i] = test_rng_range(&r, 0u, bmax);
+            g_tab_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            wgrp[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 16u; i++) {
+            wblk[i] = test_rng_range(&r, 0u, bmax);
+        }
+        /* rest: the sum of the group terms, as the engine passes it */
+        rest = 0u;
+        for (i = 0u; i < 4u; i++) {
+            const uint32_t a = g_tab_g[at + i * down];
+            rest += a > wgrp[i] ? a - wgrp[i] : wgrp[i] - a;
+        }
+        cut = t % 4u == 0u ? UINT32_MAX : rest + test_rng_range(&r, 0u, 4u * bmax);
+        check_refine4(g_tab_b + at, g_tab_g + at, down, wgrp, wblk, rest, cut);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -477,6 +540,7 @@ int main(void)
     RUN_TEST(test_long_random_rows);
     RUN_TEST(test_sad_rows_random);
     RUN_TEST(test_sad_rows_worst_case);
+    RUN_TEST(test_refine4_random);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

@@ -199,6 +199,13 @@ uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b
     return r;
 }
 
+uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                       const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                       uint32_t *groups)
+{
+    return ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
 /* Products of four byte pairs added to acc (see the file comment). */
 static inline uint32_t dot_u8x4(uint32_t a, uint32_t b, uint32_t acc)
 {

@@ -278,6 +278,40 @@ SSDA_SSE2_ROWS(avx2_sad_rows_u8, uint8_t, sad16_u8, avx2_sad_row_u8)
 SSDA_SSE2_ROWS(avx2_sad_rows_u16, uint16_t, sad16_u16, avx2_sad_row_u16)
 #endif
 
+/* ssda__refine4 (kernels.h): a group's four block sums (every fourth
+   entry: b0 b4 b1 b5 and b8 b12 b9 0, then their low halves) gathered into
+   one register by unpacks, their differences
+   with the window's (signed: < 2^20) made absolute as x ^ m - m with m
+   the sign mask, and summed across the lanes. */
+static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                             const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
+                             uint32_t cut, uint32_t *term_out, uint32_t *groups)
+{
+    uint32_t k;
+    for (k = 0u; k < 4u; k++) {
+        /* no entry past b[12] is read: it may end the table's row */
+        const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)b),
+                                             _mm_loadl_epi64((const __m128i *)(const void *)(b + 4)));
+        const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(b + 8)),
+                                             _mm_cvtsi32_si128((int)b[12])); /* b8 b12 b9 0 */
+        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(wblk));
+        const __m128i m = _mm_srai_epi32(d, 31);
+        const uint32_t s = hsum_u32x4(_mm_sub_epi32(_mm_xor_si128(d, m), m));
+        const int32_t dg = (int32_t)g[0] - (int32_t)wgrp[k];
+        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
+        term_out[k] = s;
+        if (rest >= cut) {
+            *groups = k + 1u;
+            return rest;
+        }
+        b += down;
+        g += down;
+        wblk += 4;
+    }
+    *groups = 4u;
+    return rest;
+}
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -359,14 +393,21 @@ uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b
     return sse2_sad_rows_u16(a, astride, b, bstride, n, rows, limit, sum);
 }
 
+uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                       const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                       uint32_t *groups)
+{
+    return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
-          sse2_sad_rows_u16 },
+          sse2_sad_rows_u16, sse2_refine4 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16 },
+          avx2_sad_rows_u16, sse2_refine4 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

@@ -37,6 +37,17 @@ SSDA_INTERNAL uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, con
                                           size_t bstride, uint32_t n, uint32_t rows,
                                           uint32_t limit, uint32_t *sum);
 
+/* Tracking's 4 x 4 block terms for a 16-column window of 4 groups of 4
+   rows (the engine's tab_refine4): for group k = 0, 1, ... the sum s_k of
+   |b[k * down + 4 j] - wblk[4 k + j]|, j < 4 (block sums < 2^20), replaces
+   the group's term |g[k * down] - wgrp[k]| (group sums < 2^31) in rest:
+   rest = rest - term + s_k, term_out[k] = s_k, stopping after the first
+   group at which rest reaches cut. Returns rest (< 2^32: the caller's
+   bound, at most the SAD) and sets *groups to the groups done (1..4). */
+SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                                     const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
+                                     uint32_t cut, uint32_t *term_out, uint32_t *groups);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -67,6 +78,9 @@ typedef struct {
     uint32_t (*sad_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
                              size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
                              uint32_t *sum);
+    uint32_t (*refine4)(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                        const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                        uint32_t *groups);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

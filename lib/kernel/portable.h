@@ -62,4 +62,34 @@ static inline uint64_t ssda__portable_dot_row_u16(const uint16_t *a, const uint1
     return sum;
 }
 
+/* ssda__refine4 (kernels.h), the reference: signed differences (block
+   sums < 2^20, group sums < 2^31), no compare and branch. */
+static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                                              const uint32_t *wgrp, const uint32_t *wblk,
+                                              uint32_t rest, uint32_t cut, uint32_t *term_out,
+                                              uint32_t *groups)
+{
+    uint32_t k;
+    for (k = 0u; k < 4u; k++) {
+        const int32_t dg = (int32_t)g[0] - (int32_t)wgrp[k];
+        const int32_t d0 = (int32_t)b[0] - (int32_t)wblk[0];
+        const int32_t d1 = (int32_t)b[4] - (int32_t)wblk[1];
+        const int32_t d2 = (int32_t)b[8] - (int32_t)wblk[2];
+        const int32_t d3 = (int32_t)b[12] - (int32_t)wblk[3];
+        const uint32_t s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
+        term_out[k] = s;
+        if (rest >= cut) {
+            *groups = k + 1u;
+            return rest;
+        }
+        b += down;
+        g += down;
+        wblk += 4;
+    }
+    *groups = 4u;
+    return rest;
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
