@@ -1562,16 +1562,8 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             const uint32_t *g3 = g2 + (size_t)4u * pitch;
             const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
             size_t i;
-            if (small) { /* signed differences: loops that vectorise to a few
-                            instructions a lane (no unsigned compare in SSE2) */
-                const int32_t s0 = (int32_t)w0, s1 = (int32_t)w1, s2 = (int32_t)w2,
-                              s3 = (int32_t)w3;
-                for (i = 0u; i < nx; i++) {
-                    const int32_t d0 = (int32_t)g0[i] - s0, d1 = (int32_t)g1[i] - s1;
-                    const int32_t d2 = (int32_t)g2[i] - s2, d3 = (int32_t)g3[i] - s3;
-                    p[i] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
-                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
-                }
+            if (small) { /* signed differences: the kernels' row (AVX2 on x86) */
+                ssda__bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
                 continue;
             }
             for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */

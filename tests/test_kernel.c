@@ -13,6 +13,7 @@
  */
 #include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "unity.h"
 #include "kernel/kernels.h"
@@ -132,6 +133,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u8);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -525,6 +527,53 @@ static void test_refine4_random(void)
     }
 }
 
+/* ssda__bounds4 against its reference: random sums below 2^31 (bounds
+   below 2^32), every row length 0..70 and a few strides; every variant. */
+static uint32_t g_bnd_g[4u * 96u + 80u], g_bnd_want[80], g_bnd_got[80];
+
+static void test_bounds4_random(void)
+{
+    test_rng_t r;
+    uint32_t i, n, t, w[4];
+    const ssda__kernel_variant_t *k;
+    test_rng_seed(&r, 0xB0D4u);
+    for (t = 0u; t < 40u; t++) {
+        const uint32_t gmax = t % 2u == 0u ? 0x3FFFFFFFu : 4095u * 64u; /* 4 terms < 2^32 */
+        const size_t down = 80u + test_rng_range(&r, 0u, 16u);
+        for (i = 0u; i < sizeof g_bnd_g / sizeof g_bnd_g[0]; i++) {
+            g_bnd_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            w[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (n = 0u; n <= 70u; n++) {
+            const uint32_t at = test_rng_range(&r, 0u, 9u);
+            ssda__portable_bounds4(g_bnd_want, g_bnd_g + at, down, w, n);
+            for (i = 0u; i < n; i++) { /* the reference against the definition */
+                uint64_t want = 0u;
+                uint32_t q;
+                for (q = 0u; q < 4u; q++) {
+                    const uint32_t a = g_bnd_g[at + i + q * down];
+                    want += a > w[q] ? a - w[q] : w[q] - a;
+                }
+                TEST_ASSERT_EQUAL_UINT64(want, g_bnd_want[i]);
+            }
+            g_bnd_got[n] = 0xDEADu; /* nothing past n written */
+            ssda__bounds4(g_bnd_got, g_bnd_g + at, down, w, n);
+            TEST_ASSERT_EQUAL_UINT32(0xDEADu, g_bnd_got[n]);
+            if (n == 0u) {
+                continue; /* nothing written: checked above */
+            }
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bnd_want, g_bnd_got, n);
+            for (i = 0u; (k = ssda__kernel_variant(i)) != NULL; i++) {
+                (void)memset(g_bnd_got, 0, sizeof g_bnd_got);
+                k->bounds4(g_bnd_got, g_bnd_g + at, down, w, n);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_bnd_want, g_bnd_got, n, k->name);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -541,6 +590,7 @@ int main(void)
     RUN_TEST(test_sad_rows_random);
     RUN_TEST(test_sad_rows_worst_case);
     RUN_TEST(test_refine4_random);
+    RUN_TEST(test_bounds4_random);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

@@ -206,6 +206,11 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
     return ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
 }
 
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    ssda__portable_bounds4(p, g, down, w, n);
+}
+
 /* Products of four byte pairs added to acc (see the file comment). */
 static inline uint32_t dot_u8x4(uint32_t a, uint32_t b, uint32_t acc)
 {

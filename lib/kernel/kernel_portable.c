@@ -79,6 +79,11 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
     return ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
 }
 
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    ssda__portable_bounds4(p, g, down, w, n);
+}
+
 const char *ssda__kernel_name(void)
 {
     return "portable";

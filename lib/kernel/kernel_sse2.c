@@ -312,6 +312,50 @@ static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
     return rest;
 }
 
+/* ssda__bounds4 (kernels.h): 4 (SSE2) or 8 (AVX2) positions a step, the
+   absolute values by the sign mask (SSE2) or VPABSD, the last 0..7 by
+   the reference. */
+static void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+                         uint32_t n)
+{
+    const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
+    const __m128i w2 = _mm_set1_epi32((int)w[2]), w3 = _mm_set1_epi32((int)w[3]);
+    uint32_t i = 0u;
+    for (; i + 4u <= n; i += 4u) {
+        const __m128i d0 = _mm_sub_epi32(load128(g + i), w0);
+        const __m128i d1 = _mm_sub_epi32(load128(g + down + i), w1);
+        const __m128i d2 = _mm_sub_epi32(load128(g + 2u * down + i), w2);
+        const __m128i d3 = _mm_sub_epi32(load128(g + 3u * down + i), w3);
+        const __m128i m0 = _mm_srai_epi32(d0, 31), m1 = _mm_srai_epi32(d1, 31);
+        const __m128i m2 = _mm_srai_epi32(d2, 31), m3 = _mm_srai_epi32(d3, 31);
+        const __m128i a = _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d0, m0), m0),
+                                        _mm_sub_epi32(_mm_xor_si128(d1, m1), m1));
+        const __m128i b = _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d2, m2), m2),
+                                        _mm_sub_epi32(_mm_xor_si128(d3, m3), m3));
+        _mm_storeu_si128((__m128i *)(void *)(p + i), _mm_add_epi32(a, b));
+    }
+    ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+static __attribute__((target("avx2")))
+void avx2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    const __m256i w0 = _mm256_set1_epi32((int)w[0]), w1 = _mm256_set1_epi32((int)w[1]);
+    const __m256i w2 = _mm256_set1_epi32((int)w[2]), w3 = _mm256_set1_epi32((int)w[3]);
+    uint32_t i = 0u;
+    for (; i + 8u <= n; i += 8u) {
+        const __m256i a0 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + i), w0));
+        const __m256i a1 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + down + i), w1));
+        const __m256i a2 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 2u * down + i), w2));
+        const __m256i a3 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 3u * down + i), w3));
+        _mm256_storeu_si256((__m256i *)(void *)(p + i),
+                            _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3)));
+    }
+    ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -400,14 +444,25 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
     return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
 }
 
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 8u && x86_avx2() != 0u) {
+        avx2_bounds4(p, g, down, w, n);
+        return;
+    }
+#endif
+    sse2_bounds4(p, g, down, w, n);
+}
+
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
-          sse2_sad_rows_u16, sse2_refine4 },
+          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16, sse2_refine4 },
+          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

@@ -48,6 +48,13 @@ SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_
                                      const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
                                      uint32_t cut, uint32_t *term_out, uint32_t *groups);
 
+/* One row of tracking's group bounds (the engine's pre_bounds, 4 groups):
+   p[i] = sum over k < 4 of |g[i + k * down] - w[k]|, i < n, with every g
+   and w below 2^31 (signed differences) and every p[i] below 2^32 (the
+   caller's: a bound <= a SAD). p must not overlap g. */
+SSDA_INTERNAL void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+                                 uint32_t n);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -81,6 +88,7 @@ typedef struct {
     uint32_t (*refine4)(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
                         const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
                         uint32_t *groups);
+    void (*bounds4)(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

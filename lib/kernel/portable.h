@@ -92,4 +92,19 @@ static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t 
     return rest;
 }
 
+/* ssda__bounds4 (kernels.h), the reference. */
+static inline void ssda__portable_bounds4(uint32_t *p, const uint32_t *g, size_t down,
+                                          const uint32_t *w, uint32_t n)
+{
+    const int32_t w0 = (int32_t)w[0], w1 = (int32_t)w[1], w2 = (int32_t)w[2], w3 = (int32_t)w[3];
+    const uint32_t *g1 = g + down, *g2 = g1 + down, *g3 = g2 + down;
+    size_t i;
+    for (i = 0u; i < n; i++) {
+        const int32_t d0 = (int32_t)g[i] - w0, d1 = (int32_t)g1[i] - w1;
+        const int32_t d2 = (int32_t)g2[i] - w2, d3 = (int32_t)g3[i] - w3;
+        p[i] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+               (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+    }
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
