@@ -87,9 +87,11 @@ typedef struct {
                               is on, else NULL */
     uint32_t *wblk;        /* blocks: the window's block sums, level after level;
                               shared tables: the window's 4 x 4 sums */
-    const uint32_t *pre; /* shared tables, fast path, AUTO without the uniqueness
-                            list: every position's group bound, nx per row (in
-                            the per-window group table's place), else NULL */
+    const uint32_t *pre; /* fast path, AUTO, no uniqueness list: every position's
+                            group bound, nx per row, else NULL. Made by
+                            pre_bounds from tracking's shared tables (in the
+                            per-window group table's place) or by scan_pre's
+                            pre_pass (in the blocks' room) */
     uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
                             bound, saturated to 32 bits (a lower bound still),
                             nx per row in the group tables' place; else NULL */
@@ -476,9 +478,10 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 #ifndef SSDA_CFG_NO_FAST_PATH
 #ifndef SSDA_CFG_NO_BOUNDS
 /* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
-   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from the
-   table when pre_bounds made it. The terms are stored only when the
-   position passes (a second pass): most do not. */
+   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from
+   e->pre when every bound is known (pre_bounds, pre_pass). The terms are
+   stored (a second pass) only when store is set and the position passes:
+   most do not, and tab_refine4 takes the terms itself. */
 static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at, bool store)
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
@@ -892,7 +895,8 @@ static void keep(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     }
 }
 
-/* Raster, seeded and predict scans: the reference is always the best so
+/* Raster, seeded and predict scans (and scan_predict_open outside
+   tracking's 4 x 4 case, open_quad): the reference is always the best so
    far. Inlined: its candidate on the scan's frame costs less stack than a
    frame of its own (issue 18). */
 static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
@@ -900,9 +904,10 @@ static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
     cand_t c;
     int err;
 #ifndef SSDA_CFG_NO_BOUNDS
-    /* with every bound known (pre_bounds): a position whose bound exceeds
-       the best SAD is cut by eval_fast too (its cut level is at most that
-       SAD + 1), so it is counted and passed without the call */
+    /* with every bound known (e->pre; scan_pre calls consider itself): a
+       position whose bound exceeds the best SAD is cut by eval_fast too (its
+       cut level is at most that SAD + 1), so it is counted and passed
+       without the call */
     if (e->pre != NULL && e->ref != NULL && e->pre[(size_t)y * e->nx + x] > e->ref->sad) {
         e->positions++;
         return SSDA_OK;
@@ -2120,12 +2125,10 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
         e->gsum != (const uint32_t *)plan->work && plan->scan != (uint8_t)SSDA_SCAN_COARSE) {
         pre_bounds(e); /* shared tables (tab_bounds): every bound at once */
     }
-    if (e->fast && e->bounds && e->list == NULL && (plan->flags & SSDA_MATCH_BLOCKS) != 0u &&
-        mode == (uint8_t)SSDA_THRESHOLD_AUTO && plan->scan == (uint8_t)SSDA_SCAN_RASTER &&
-        e->gsum == (const uint32_t *)plan->work) {
-        /* no level (e->low NULL): their room holds the bounds (scan_pre) */
-        e->pre_scan = true;
-    }
+    /* pre_first's case (BLOCKS implies BOUNDS, match.c; tracking refuses
+       BLOCKS, so no shared tables): with e->fast no level was built, and
+       their room holds the bounds (scan_pre) */
+    e->pre_scan = e->fast && pre_first(e);
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
     return SSDA_OK;
