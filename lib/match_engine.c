@@ -12,6 +12,7 @@
 #include "match_quality.h"
 #include "match_pre.h"
 #include "kernel/kernels.h"
+#include "kernel/portable.h"
 #include "fixmath.h"
 #include "compiler.h"
 #include <string.h>
@@ -536,8 +537,13 @@ static uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest, 
 {
     const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
     uint32_t groups;
+#if SSDA__KERNEL_LOOPS
     rest = ssda__refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp, e->wblk,
                          rest, cut_at, e->term, &groups);
+#else
+    rest = ssda__portable_refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp,
+                                  e->wblk, rest, cut_at, e->term, &groups);
+#endif
     e->ops += 4u * groups;
     return rest;
 }
@@ -578,6 +584,15 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
                                             uint32_t limit, uint32_t *partial)
 {
     const size_t as = e->area->stride, ws = e->win->stride;
+#if !SSDA__KERNEL_LOOPS
+    /* the same loop here: a set without SIMD gains nothing from the call */
+    uint32_t r = 0u;
+    do {
+        *partial += row_sad(e, a + r * as, w + r * ws, n);
+        r++;
+    } while (r < rows && *partial < limit);
+    return r;
+#else
 #ifndef SSDA_CFG_NO_U16
     if (!e->u8) {
         return ssda__sad_rows_u16((const uint16_t *)(const void *)a, as,
@@ -586,6 +601,7 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
     }
 #endif
     return ssda__sad_rows_u8(a, as, w, ws, n, rows, limit, partial);
+#endif
 }
 
 /* The rows of a position that passed eval_fast's checks: partial + rest
@@ -1568,7 +1584,11 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
             size_t i;
             if (small) { /* signed differences: the kernels' row (AVX2 on x86) */
+#if SSDA__KERNEL_LOOPS
                 ssda__bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
+#else
+                ssda__portable_bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
+#endif
                 continue;
             }
             for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */
@@ -1739,21 +1759,24 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
         const uint32_t hi = (uint32_t)(px + d >= nx ? nx - 1 : px + d);
         const uint32_t y0 = (uint32_t)(py - d + 1 < 0 ? 0 : py - d + 1);
         const uint32_t y1 = (uint32_t)(py + d - 1 >= ny ? ny - 1 : py + d - 1);
-        if (py - d >= 0) { /* top */
-            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)(py - d), true, quad, &left);
-        }
-        if (py + d < ny && err == SSDA_OK) { /* bottom */
-            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)(py + d), true, quad, &left);
-        }
-        if (y0 <= y1) { /* d = 1 on a range one row high has no side column */
-            if (px - d >= 0 && err == SSDA_OK) { /* left */
-                err = open_run(e, cols[px - d] & bit_span(y0, y1), (uint32_t)(px - d), false,
-                               quad, &left);
+        uint32_t side;
+        /* top, bottom: rows py -+ d, columns lo .. hi; left, right: columns
+           px -+ d, rows y0 .. y1 (none when y0 > y1: d = 1 on a range one
+           row high). One call site of open_run: one copy of the evaluation
+           (flash). */
+        for (side = 0u; side < 4u && err == SSDA_OK; side++) {
+            const int32_t fix = side < 2u ? (side == 0u ? py - d : py + d)
+                                          : (side == 2u ? px - d : px + d);
+            const bool row = side < 2u;
+            uint32_t m = 0u;
+            if (row && fix >= 0 && fix < ny) {
+                m = open[fix] & bit_span(lo, hi);
+            } else if (!row && fix >= 0 && fix < nx && y0 <= y1) {
+                m = cols[fix] & bit_span(y0, y1);
+            } else {
+                /* the side lies outside the range */
             }
-            if (px + d < nx && err == SSDA_OK) { /* right */
-                err = open_run(e, cols[px + d] & bit_span(y0, y1), (uint32_t)(px + d), false,
-                               quad, &left);
-            }
+            err = open_run(e, m, fix < 0 ? 0u : (uint32_t)fix, row, quad, &left);
         }
     }
     /* every position once, as scan_predict counts them */
