@@ -576,23 +576,14 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
 
-/* Rows k .. k + rows - 1 of position (x, y) added to *partial, stopping
-   after the first row where it reaches limit (the kernels' rows loop).
-   Returns the rows added. */
+#if SSDA__KERNEL_LOOPS
+/* Rows of a position added to *partial, stopping after the first row where
+   it reaches limit (the kernels' rows loop). Returns the rows added. */
 static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
                                             const uint8_t *w, uint32_t n, uint32_t rows,
                                             uint32_t limit, uint32_t *partial)
 {
     const size_t as = e->area->stride, ws = e->win->stride;
-#if !SSDA__KERNEL_LOOPS
-    /* the same loop here: a set without SIMD gains nothing from the call */
-    uint32_t r = 0u;
-    do {
-        *partial += row_sad(e, a + r * as, w + r * ws, n);
-        r++;
-    } while (r < rows && *partial < limit);
-    return r;
-#else
 #ifndef SSDA_CFG_NO_U16
     if (!e->u8) {
         return ssda__sad_rows_u16((const uint16_t *)(const void *)a, as,
@@ -601,15 +592,15 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
     }
 #endif
     return ssda__sad_rows_u8(a, as, w, ws, n, rows, limit, partial);
-#endif
 }
+#endif
 
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
-   eval_position, rest constant between the starts of two groups, so the
-   rows from one start to the next go to the kernel in one call. rest <
-   cut_at on entry and partial + rest <= the position's SAD < 2^32 - 1.
-   Returns 1 and sets *sad, or 0 when cut. */
+   eval_position. With the kernels' loops (x86) rest is constant between
+   the starts of two groups, so the rows from one start to the next go to
+   the kernel in one call. rest < cut_at on entry and partial + rest <= the
+   position's SAD < 2^32 - 1. Returns 1 and sets *sad, or 0 when cut. */
 static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
                                    uint32_t rest, uint64_t *sad)
 {
@@ -649,7 +640,8 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
         }
         k = 1u;
     }
-    while (k < M) {
+#if SSDA__KERNEL_LOOPS
+    while (k < M) { /* the rows from one group start to the next in one call */
         uint32_t end = M, n;
 #ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u && k == next_start) { /* as in eval_position */
@@ -671,6 +663,23 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             return 0;
         }
     }
+#else
+    for (; k < M; k++) { /* a row a call: the same sums and cuts */
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u && k == next_start) { /* as in eval_position */
+            rest -= e->term[g];
+            g++;
+            next_start += e->group;
+        }
+#endif
+        partial += row_sad(e, &a[(size_t)k * as], &w[(size_t)k * ws], L);
+        if (partial + rest >= cut_at) {
+            const uint32_t summed = (k + 1u) * L; /* <= L * M < 2^32 */
+            e->ops += summed;
+            return 0;
+        }
+    }
+#endif
     {
         const uint32_t summed = M * L; /* < 2^32 */
         e->ops += summed;
@@ -1699,7 +1708,7 @@ static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t fix, bo
 /* The open positions in bit masks by row (open[y], bit x) and by column
    (open[OPEN_MAX + x], bit y), built once: a ring's four sides are then
    four masked runs, and the rings stop once no open position is left. */
-static SSDA_ALWAYS_INLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
+static SSDA_NOINLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
 {
     /* bit x of a word, x < 32 */
     static const uint32_t k_bit[OPEN_MAX] = {
@@ -1742,8 +1751,10 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
     const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
     const uint32_t *cols = open + OPEN_MAX;
-    /* tab_refine4's case, as in eval_fast */
-    const bool quad = e->integ != NULL && e->L >> 2 == 4u && e->ngroups == 4u;
+    /* tab_refine4's case, as in eval_fast; on x86 only: on the Cortex-M4
+       open_quad saved instructions but cost 64 B of stack (tools/budget.sh) */
+    const bool quad = SSDA__KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+                      e->ngroups == 4u;
     int32_t d, dmax = px;
     uint32_t left;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
