@@ -596,6 +596,7 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
 }
 #endif
 
+#if SSDA__KERNEL_LOOPS
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
    eval_position. With the kernels' loops (x86) rest is constant between
@@ -641,7 +642,6 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
         }
         k = 1u;
     }
-#if SSDA__KERNEL_LOOPS
     while (k < M) { /* the rows from one group start to the next in one call */
         uint32_t end = M, n;
 #ifndef SSDA_CFG_NO_BOUNDS
@@ -664,8 +664,58 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             return 0;
         }
     }
+    {
+        const uint32_t summed = M * L; /* < 2^32 */
+        e->ops += summed;
+    }
+    *sad = partial;
+    return 1;
+}
 #else
-    for (; k < M; k++) { /* a row a call: the same sums and cuts */
+/* fast_rows without the kernels' loops: a row a call (tools/budget.sh: the
+   restructured loop above cost the M4 about 0.5 % more instructions). */
+static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
+                                   uint32_t rest, uint64_t *sad)
+{
+    const uint32_t L = e->L;
+    const uint32_t as = e->area->stride, ws = e->win->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
+    const uint8_t *w = e->win->base;
+    uint32_t partial = 0u; /* < 2^32 - 1: e->fast */
+    uint32_t k;
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t g = 0u, next_start = 0u; /* the next group and its first row */
+#endif
+    if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
+        /* the first row in chunks: most positions are cut there. Group 0
+           starts with it when rest != 0, as in eval_position */
+        const uint32_t fmt = e->area->format;
+        uint32_t done = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u) {
+            rest -= e->term[0];
+            g = 1u;
+            next_start = e->group;
+        }
+#endif
+        while (done < L) {
+            const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
+            partial += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
+            done += n;
+            if (done < L && partial + rest >= cut_at) {
+                e->ops += done;
+                return 0;
+            }
+        }
+        if (partial + rest >= cut_at) {
+            e->ops += L;
+            return 0;
+        }
+        k = 1u;
+    } else {
+        k = 0u;
+    }
+    for (; k < e->M; k++) {
 #ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u && k == next_start) { /* as in eval_position */
             rest -= e->term[g];
@@ -680,14 +730,14 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             return 0;
         }
     }
-#endif
     {
-        const uint32_t summed = M * L; /* < 2^32 */
+        const uint32_t summed = e->M * L; /* < 2^32 */
         e->ops += summed;
     }
     *sad = partial;
     return 1;
 }
+#endif
 
 /*
  * eval_position for the common exact case (e->fast, set once per search):
@@ -710,8 +760,11 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
     }
 #ifndef SSDA_CFG_NO_BOUNDS
     if (e->bounds) {
-        /* 4 groups of 4 blocks: tab_refine4 takes the group terms itself */
-        const bool quad = e->integ != NULL && e->L >> 2 == 4u && e->ngroups == 4u;
+        /* 4 groups of 4 blocks: tab_refine4 takes the group terms itself.
+           x86 only: on the M4 it made every bounded search's path heavier
+           (tools/budget.sh: +6 % instructions) for 0.2 % on tracking */
+        const bool quad = SSDA__KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+                          e->ngroups == 4u;
         rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
             return 0;
