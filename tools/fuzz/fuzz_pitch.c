@@ -215,24 +215,15 @@ static uint32_t read_sizes(fuzz_in_t *in, uint32_t sizes[16])
 }
 
 /* Every estimate against the brute-force reference of the definition. */
-static void check_definition(const ssda_pitch_info_t *info, int parabolic, uint32_t n,
-                             uint32_t n_ref)
+static void check_definition(const ssda_pitch_info_t *info, uint32_t n, uint32_t n_ref)
 {
-    test_pitch_ref_cfg_t rc_;
+    const test_pitch_ref_cfg_t rc_ = test_pitch_ref_cfg_of(info);
     const int16_t *x = g_sig;
     uint32_t i;
     if (info->lowpass_q15 != 0u) {
         filter(g_sig, g_filt, n, info->lowpass_q15);
         x = g_filt;
     }
-    rc_.rate = info->sample_rate_hz;
-    rc_.lag_min = info->lag_min;
-    rc_.lag_max = info->lag_max;
-    rc_.frame_len = info->frame_len;
-    rc_.threshold_q15 = info->threshold_q15;
-    rc_.voicing_q15 = info->voicing_q15;
-    rc_.silence_mad = info->silence_mad;
-    rc_.parabolic = parabolic;
     for (i = 0; i < n_ref; i++) {
         test_pitch_ref_t r;
         uint32_t start = i * info->hop;
@@ -287,6 +278,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (i = 0; i < n_ref; i++) {
         same_estimate(&g_ref[i], &g_got[i], 0);
     }
-    check_definition(&info, (cfg.flags & SSDA_PITCH_PARABOLIC) != 0u, n, n_ref);
+    check_definition(&info, n, n_ref);
     return 0;
 }

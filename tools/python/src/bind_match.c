@@ -127,6 +127,27 @@ static int search_args(PyObject *args, PyObject *kw, const char *func, Py_ssize_
     return 0;
 }
 
+/* blocks=None (default) is the ssda tool's choice: the block levels
+   (SSDA_MATCH_BLOCKS) with the bounds under the AUTO threshold, where they
+   change the work only; True asks for them anyway (the library refuses them
+   without bounds: SSDA_ERR_ARG), False leaves them out. */
+static int match_blocks(PyObject *kw, ssda_match_config_t *cfg)
+{
+    PyObject *v = ssdapy_kw_take(kw, "blocks");
+    int on = (cfg->flags & SSDA_MATCH_BOUNDS) != 0u && cfg->threshold == SSDA_THRESHOLD_AUTO;
+    if (v != NULL) {
+        on = v == Py_None ? on : PyObject_IsTrue(v);
+        Py_DECREF(v);
+        if (on < 0) {
+            return -1;
+        }
+    }
+    if (on) {
+        cfg->flags |= SSDA_MATCH_BLOCKS;
+    }
+    return 0;
+}
+
 /* The search runs in ssda_match_search with its state in one heap block
    with the bounds' work buffer (state first: PyMem_Malloc's alignment, and
    sizeof(ssda_match_state_t) a multiple of 8 keeps the work aligned too),
@@ -145,16 +166,18 @@ static PyObject *py_match(PyObject *self, PyObject *args, PyObject *kw)
     if (search_args(args, kw, "match", 0, &area, &win, NULL, &kwc) != 0) {
         return NULL;
     }
-    if (ssdapy_match_options(kwc, &cfg, 1) != 0 || ssdapy_kw_done(kwc, "match") != 0) {
+    if (ssdapy_match_options(kwc, &cfg, 1) != 0 || match_blocks(kwc, &cfg) != 0 ||
+        ssdapy_kw_done(kwc, "match") != 0) {
         goto done;
     }
-    if ((cfg.flags & SSDA_MATCH_BOUNDS) != 0u) {
-        if (win.view.width > area.view.width || win.view.height > area.view.height) {
-            cfg.flags = 0; /* the library reports the size error */
-        } else {
-            work_size = SSDA_MATCH_WORK_SIZE(area.view.width, area.view.height,
-                                             win.view.width, win.view.height);
-        }
+    if (win.view.width > area.view.width || win.view.height > area.view.height) {
+        cfg.flags = 0; /* the library reports the size error */
+    } else if ((cfg.flags & SSDA_MATCH_BLOCKS) != 0u) {
+        work_size = SSDA_MATCH_WORK_SIZE_BLOCKS(area.view.width, area.view.height,
+                                                win.view.width, win.view.height);
+    } else if ((cfg.flags & SSDA_MATCH_BOUNDS) != 0u) {
+        work_size = SSDA_MATCH_WORK_SIZE(area.view.width, area.view.height, win.view.width,
+                                         win.view.height);
     }
     if ((block = PyMem_Malloc(sizeof(ssda_match_state_t) + work_size)) == NULL) {
         PyErr_NoMemory();
@@ -202,7 +225,8 @@ done:
 static PyMethodDef methods[] = {
     {"match", (PyCFunction)(void (*)(void))py_match, METH_VARARGS | METH_KEYWORDS,
      "match(area, window, /, *, threshold='auto', scan='raster', order='rows', "
-     "bounds=True, predict=None, k_q8=0, lambda_q8=0, fixed_threshold=0, coarse_step=0)\n"
+     "bounds=True, blocks=None, predict=None, k_q8=0, lambda_q8=0, fixed_threshold=0,\n"
+     "coarse_step=0)\n"
      "--\n\n"
      "Where window fits best in area: ssda_match_search (ssda/match.h; the results of\n"
      "ssda_match, its state in the binding's memory). Both are 2-D uint8 or\n"
@@ -213,7 +237,9 @@ static PyMethodDef methods[] = {
      "'ramp' (lambda_q8, k_q8), 'auto_ramp' (k_q8); scan: 'raster', 'predict'\n"
      "(rings around predict=(x, y), implied by predict), 'coarse' (coarse_step);\n"
      "order: 'rows' or 'spread'; bounds: successive-elimination bounds (exact\n"
-     "either way; the binding allocates their work buffer).\n"
+     "either way; the binding allocates their work buffer); blocks: the multilevel\n"
+     "block bounds too (SSDA_MATCH_BLOCKS; None: with bounds under 'auto', as the\n"
+     "ssda tool; exact either way, less work on large windows; needs bounds).\n"
      "The GIL is released during the search."},
     {"sad_at", (PyCFunction)(void (*)(void))py_sad_at, METH_VARARGS | METH_KEYWORDS,
      "sad_at(area, window, x, y, /)\n--\n\n"

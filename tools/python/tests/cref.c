@@ -205,7 +205,10 @@ static int run_match(int argc, char **argv)
             return 2;
         }
     }
-    if (cfg.flags & SSDA_MATCH_BOUNDS) {
+    if (cfg.flags & SSDA_MATCH_BLOCKS) {
+        cfg.work_size = SSDA_MATCH_WORK_SIZE_BLOCKS(va.width, va.height, vw.width, vw.height);
+        cfg.work = malloc(cfg.work_size);
+    } else if (cfg.flags & SSDA_MATCH_BOUNDS) {
         cfg.work_size = SSDA_MATCH_WORK_SIZE(va.width, va.height, vw.width, vw.height);
         cfg.work = malloc(cfg.work_size);
     }

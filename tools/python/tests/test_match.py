@@ -47,14 +47,26 @@ OPTION_SETS = [
     {"threshold": "auto_ramp", "bounds": False},
     {"scan": "coarse", "coarse_step": 5},
     {"scan": "predict", "predict": (-4, 100), "order": "spread"},
+    {"blocks": False},
+    {"threshold": "fixed", "fixed_threshold": 20000, "blocks": True},
 ]
+
+
+def flags_of(opts):
+    """SSDA_MATCH_BOUNDS (1), and SSDA_MATCH_BLOCKS (16) where blocks=None
+    adds them: with the bounds under the auto threshold."""
+    bounds = opts.get("bounds", True)
+    blocks = opts.get("blocks")
+    if blocks is None:
+        blocks = bounds and opts.get("threshold", "auto") == "auto"
+    return (1 if bounds else 0) | (16 if blocks else 0)
 
 
 def cref_args(opts):
     args = ["threshold=%d" % THRESHOLDS[opts.get("threshold", "auto")],
             "scan=%d" % SCANS[opts.get("scan", "predict" if "predict" in opts else "raster")],
             "order=%d" % ORDERS[opts.get("order", "rows")],
-            "flags=%d" % (1 if opts.get("bounds", True) else 0)]
+            "flags=%d" % flags_of(opts)]
     for k in ("k_q8", "lambda_q8", "fixed_threshold", "coarse_step"):
         if k in opts:
             args.append("%s=%d" % (k, opts[k]))
@@ -90,10 +102,39 @@ def test_equals_the_ssda_tool(cli, tmp_path, dtype, cli_opts, opts):
     write_png(tmp_path / "w.png", window)
     j = json.loads(cli("match", "s.png", "w.png", "--json", *cli_opts).stdout)
     r = ssda.match(area, window, **opts)
-    assert (r.x, r.y, r.sad, r.exact, r.positions) == (
-        j["x"], j["y"], j["sad"], j["exact"], j["positions"])
-    if opts.get("threshold", "auto") != "auto":  # under auto the tool adds SSDA_MATCH_BLOCKS
-        assert (r.pixel_ops, r.completed) == (j["pixel_ops"], j["completed"])  # (docs/cli.md)
+    # the binding's defaults are the tool's, block levels included (docs/cli.md)
+    assert (r.x, r.y, r.sad, r.exact, r.positions, r.pixel_ops, r.completed) == (
+        j["x"], j["y"], j["sad"], j["exact"], j["positions"], j["pixel_ops"], j["completed"])
+
+
+@pytest.mark.parametrize("dtype", [np.uint8, np.uint16])
+def test_block_levels_on_a_large_window(cref, dtype):
+    """A 40 x 48 window (block levels in use): the brute-force minimum with
+    and without them, every field the C library's, less work with them."""
+    area = texture(100, 120, seed=13, dtype=dtype)
+    window = area[37:77, 51:99].copy()
+    window[5, 7] ^= 3
+    _, x, y, sad = brute(area, window)
+    bpp = np.dtype(dtype).itemsize
+    a, w = cref.raw("a.raw", area), cref.raw("w.raw", window)
+    got = {}
+    for blocks in (None, True, False):
+        r = ssda.match(area, window, blocks=blocks)
+        assert (r.x, r.y, r.sad, r.exact) == (x, y, sad, True), blocks
+        (c,) = cref("match", a, 120, 100, w, 48, 40, bpp,
+                    *cref_args({"blocks": blocks}))
+        assert [r.x, r.y, r.sad, int(r.exact), r.pixel_ops, r.positions, r.completed] == c
+        got[blocks] = r
+    assert got[None] == got[True]
+    assert got[True].pixel_ops < got[False].pixel_ops
+
+
+def test_blocks_need_bounds():
+    area = texture(40, 40, seed=2, dtype=np.uint8)
+    with pytest.raises(ssda.Error) as e:
+        ssda.match(area, area[:16, :16], bounds=False, blocks=True)
+    assert e.value.code == ssda.ERR_ARG
+    assert ssda.match(area, area[:16, :16], bounds=False).exact  # None: none without bounds
 
 
 def test_views_are_used_where_the_layout_allows():

@@ -53,7 +53,7 @@ def test_stream_match_rects_file_and_read_size(tmp_path):
     img = texture(90, 70, seed=42, dtype=np.uint16)
     data, stride = device(img)
     (tmp_path / "img.raw").write_bytes(data)
-    want = ssda.match(img[10:80, 5:65], img[40:52, 30:44])
+    want = ssda.match(img[10:80, 5:65], img[40:52, 30:44], blocks=False)  # streams: no levels
     with open(tmp_path / "img.raw", "rb") as f:
         src = ssda.Source(f, 70, 90, dtype="uint16", read_size=64, memory=8000)
         got = ssda.stream_match(src, img, area_rect=(5, 10, 60, 70),
@@ -78,7 +78,8 @@ def test_tiled_source():
     data = b"".join(tiles[ty * th:(ty + 1) * th, tx * tw:(tx + 1) * tw].tobytes()
                     for ty in range(down) for tx in range(across))
     src = ssda.Source(reader(data), 45, 50, layout="tiled", tile=(tw, th), memory=3000)
-    assert ssda.stream_match(src, img[20:30, 11:20]) == ssda.match(img, img[20:30, 11:20])
+    assert ssda.stream_match(src, img[20:30, 11:20]) == ssda.match(img, img[20:30, 11:20],
+                                                                   blocks=False)
 
 
 class Unplugged(Exception):
