@@ -17,6 +17,18 @@
 #include "compiler.h"
 #include <string.h>
 
+/* 1 when the compiled kernel set's tracking loops (ssda__sad_rows_u16,
+   ssda__refine4, ssda__bounds4, kernels.h) are worth their call: the x86
+   set's SIMD. Elsewhere the engine runs the same loops inline (portable.h,
+   or its own row loop): on the Cortex-M4 a call per loop cost more than it
+   saved, and the paths around them cost every bounded search instructions
+   and stack (tools/budget.sh, issue 18 session 7). */
+#if defined(SSDA_KERNEL_sse2)
+#define KERNEL_LOOPS 1
+#else
+#define KERNEL_LOOPS 0
+#endif
+
 /* A candidate ordered by the tie rule: (sad, y, x) lexicographically, or
    (sad, distance to the prediction, y, x) with SSDA_MATCH_TIE_NEAREST. */
 typedef ssda__cand_t cand_t;
@@ -538,14 +550,14 @@ static SSDA_NOINLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, u
 {
     const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
     uint32_t groups;
-#if SSDA__KERNEL_LOOPS
+#if KERNEL_LOOPS
     rest = ssda__refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp, e->wblk,
                          rest, cut_at, e->term, &groups);
 #else
     rest = ssda__portable_refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp,
                                   e->wblk, rest, cut_at, e->term, &groups);
 #endif
-    e->ops += 4u * groups;
+    e->ops += (uint64_t)4u * groups;
     return rest;
 }
 
@@ -577,7 +589,7 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
 
-#if SSDA__KERNEL_LOOPS
+#if KERNEL_LOOPS
 /* Rows of a position added to *partial, stopping after the first row where
    it reaches limit. Returns the rows added. 16-bit rows: the kernels' rows
    loop (a 16-px row in straight-line SSE2); 8-bit rows: a row a call, as
@@ -604,7 +616,7 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
 }
 #endif
 
-#if SSDA__KERNEL_LOOPS
+#if KERNEL_LOOPS
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
    eval_position. With the kernels' loops (x86) rest is constant between
@@ -771,7 +783,7 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
         /* 4 groups of 4 blocks: tab_refine4 takes the group terms itself.
            x86 only: on the M4 it made every bounded search's path heavier
            (tools/budget.sh: +6 % instructions) for 0.2 % on tracking */
-        const bool quad = SSDA__KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+        const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
                           e->ngroups == 4u;
         rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
@@ -934,7 +946,7 @@ static void list_insert(engine_t *e, const cand_t *c)
 }
 #endif
 
-static void keep(engine_t *e, uint32_t x, uint32_t y, cand_t *c);
+static void keep_completed(engine_t *e, uint32_t x, uint32_t y, cand_t *c);
 
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
@@ -948,13 +960,13 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     if (done <= 0) {
         return done;
     }
-    keep(e, x, y, c);
+    keep_completed(e, x, y, c);
     return 1;
 }
 
 /* A completed position (c->sad set) at (x, y): counted, and kept if it is
    among the best two (and in the uniqueness list). */
-static void keep(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
+static void keep_completed(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
 {
     e->completed++;
     c->x = x;
@@ -1655,7 +1667,7 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
             size_t i;
             if (small) { /* signed differences: the kernels' row (AVX2 on x86) */
-#if SSDA__KERNEL_LOOPS
+#if KERNEL_LOOPS
                 ssda__bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
 #else
                 ssda__portable_bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
@@ -1744,7 +1756,7 @@ static SSDA_ALWAYS_INLINE void open_quad(engine_t *e, uint32_t x, uint32_t y)
     }
     rest = tab_refine4(e, x, y, bound, cut);
     if (rest < cut && fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
-        keep(e, x, y, &c);
+        keep_completed(e, x, y, &c);
     }
 }
 
@@ -1815,7 +1827,7 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     const uint32_t *cols = open + OPEN_MAX;
     /* tab_refine4's case, as in eval_fast; on x86 only: on the Cortex-M4
        open_quad saved instructions but cost 64 B of stack (tools/budget.sh) */
-    const bool quad = SSDA__KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+    const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
                       e->ngroups == 4u;
     int32_t d, dmax = px;
     uint32_t left;

@@ -74,7 +74,8 @@ static inline uint32_t lanes_sum(uint32_t d)
     return (d & 0xFFFFu) + (d >> 16);
 }
 
-uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+/* The row loops, shared by the public functions and the rows loops. */
+static SSDA_ALWAYS_INLINE uint32_t row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 255 * 65535 = 16 711 425 */
     const uint8_t *end16;
@@ -110,7 +111,7 @@ uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
     return sum;
 }
 
-uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
     const uint16_t *end8 = a + (n & ~7u);
@@ -137,6 +138,16 @@ uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
         sum += ssda__portable_sad_row_u16(a, b, n & 1u);
     }
     return sum;
+}
+
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+    return row_u8(a, b, n);
+}
+
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+    return row_u16(a, b, n);
 }
 
 uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
@@ -175,7 +186,7 @@ uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, s
     uint32_t s = *sum; /* < 2^32: the caller's condition */
     uint32_t r = 0u;
     do {
-        s += ssda__sad_row_u8(a + r * astride, b + r * bstride, n);
+        s += row_u8(a + r * astride, b + r * bstride, n);
         r++;
     } while (r < rows && s < limit);
     *sum = s;
@@ -191,8 +202,8 @@ uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b
     uint32_t s = *sum; /* < 2^32: the caller's condition */
     uint32_t r = 0u;
     do {
-        s += ssda__sad_row_u16((const uint16_t *)(const void *)(pa + r * astride),
-                               (const uint16_t *)(const void *)(pb + r * bstride), n);
+        s += row_u16((const uint16_t *)(const void *)(pa + r * astride),
+                     (const uint16_t *)(const void *)(pb + r * bstride), n);
         r++;
     } while (r < rows && s < limit);
     *sum = s;

@@ -48,7 +48,7 @@ uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, s
     uint32_t s = *sum; /* < 2^32: the caller's condition */
     uint32_t r = 0u;
     do {
-        s += ssda__sad_row_u8(a + r * astride, b + r * bstride, n);
+        s += ssda__portable_sad_row_u8(a + r * astride, b + r * bstride, n);
         r++;
     } while (r < rows && s < limit);
     *sum = s;
@@ -64,8 +64,8 @@ uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b
     uint32_t s = *sum; /* < 2^32: the caller's condition */
     uint32_t r = 0u;
     do {
-        s += ssda__sad_row_u16((const uint16_t *)(const void *)(pa + r * astride),
-                               (const uint16_t *)(const void *)(pb + r * bstride), n);
+        s += ssda__portable_sad_row_u16((const uint16_t *)(const void *)(pa + r * astride),
+                                        (const uint16_t *)(const void *)(pb + r * bstride), n);
         r++;
     } while (r < rows && s < limit);
     *sum = s;

@@ -245,37 +245,76 @@ static SSDA_ALWAYS_INLINE uint32_t sad16_u16(const uint16_t *a, const uint16_t *
     return hsum_u32x4(v);
 }
 
-#define SSDA_SSE2_ROWS(name, type, row16, rowfn)                                            \
-    static uint32_t name(const type *a, size_t astride, const type *b, size_t bstride,     \
-                         uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)         \
-    {                                                                                      \
-        const uint8_t *pa = (const uint8_t *)(const void *)a;                              \
-        const uint8_t *pb = (const uint8_t *)(const void *)b;                              \
-        uint32_t s = *sum, r = 0u;                                                         \
-        if (n == 16u) {                                                                    \
-            do {                                                                           \
-                s += row16((const type *)(const void *)pa, (const type *)(const void *)pb); \
-                pa += astride;                                                             \
-                pb += bstride;                                                             \
-                r++;                                                                       \
-            } while (r < rows && s < limit);                                               \
-        } else {                                                                           \
-            do {                                                                           \
-                s += rowfn((const type *)(const void *)pa, (const type *)(const void *)pb, n); \
-                pa += astride;                                                             \
-                pb += bstride;                                                             \
-                r++;                                                                       \
-            } while (r < rows && s < limit);                                               \
-        }                                                                                  \
-        *sum = s;                                                                          \
-        return r;                                                                          \
-    }
+/* The rows loop over 8-bit rows, row the variant's row function (called
+   for widths other than 16: inlined where it is constant). */
+static SSDA_ALWAYS_INLINE uint32_t rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                           size_t bstride, uint32_t n, uint32_t rows,
+                                           uint32_t limit, uint32_t *sum,
+                                           uint32_t (*row)(const uint8_t *, const uint8_t *,
+                                                           uint32_t))
+{
+    uint32_t s = *sum, r = 0u;
+    size_t oa = 0u, ob = 0u;
+    do {
+        s += n == 16u ? sad16_u8(a + oa, b + ob) : row(a + oa, b + ob, n);
+        oa += astride;
+        ob += bstride;
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
 
-SSDA_SSE2_ROWS(sse2_sad_rows_u8, uint8_t, sad16_u8, sse2_sad_row_u8)
-SSDA_SSE2_ROWS(sse2_sad_rows_u16, uint16_t, sad16_u16, sse2_sad_row_u16)
+static SSDA_ALWAYS_INLINE uint32_t rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                            size_t bstride, uint32_t n, uint32_t rows,
+                                            uint32_t limit, uint32_t *sum,
+                                            uint32_t (*row)(const uint16_t *, const uint16_t *,
+                                                            uint32_t))
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = *sum, r = 0u;
+    size_t oa = 0u, ob = 0u;
+    do {
+        const uint16_t *qa = (const uint16_t *)(const void *)(pa + oa);
+        const uint16_t *qb = (const uint16_t *)(const void *)(pb + ob);
+        s += n == 16u ? sad16_u16(qa, qb) : row(qa, qb, n);
+        oa += astride;
+        ob += bstride;
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+static uint32_t sse2_sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                 size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                 uint32_t *sum)
+{
+    return rows_u8(a, astride, b, bstride, n, rows, limit, sum, sse2_sad_row_u8);
+}
+
+static uint32_t sse2_sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                  size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                  uint32_t *sum)
+{
+    return rows_u16(a, astride, b, bstride, n, rows, limit, sum, sse2_sad_row_u16);
+}
+
 #if defined(__GNUC__) || defined(__clang__)
-SSDA_SSE2_ROWS(avx2_sad_rows_u8, uint8_t, sad16_u8, avx2_sad_row_u8)
-SSDA_SSE2_ROWS(avx2_sad_rows_u16, uint16_t, sad16_u16, avx2_sad_row_u16)
+static uint32_t avx2_sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                 size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                 uint32_t *sum)
+{
+    return rows_u8(a, astride, b, bstride, n, rows, limit, sum, avx2_sad_row_u8);
+}
+
+static uint32_t avx2_sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                  size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                  uint32_t *sum)
+{
+    return rows_u16(a, astride, b, bstride, n, rows, limit, sum, avx2_sad_row_u16);
+}
 #endif
 
 /* ssda__refine4 (kernels.h): a group's four block sums (every fourth
@@ -288,25 +327,25 @@ static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
                              uint32_t cut, uint32_t *term_out, uint32_t *groups)
 {
     uint32_t k;
+    size_t o = 0u; /* group k's row */
     for (k = 0u; k < 4u; k++) {
         /* no entry past b[12] is read: it may end the table's row */
-        const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)b),
-                                             _mm_loadl_epi64((const __m128i *)(const void *)(b + 4)));
-        const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(b + 8)),
-                                             _mm_cvtsi32_si128((int)b[12])); /* b8 b12 b9 0 */
-        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(wblk));
+        const uint32_t *bk = &b[o];
+        const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)bk),
+                                             _mm_loadl_epi64((const __m128i *)(const void *)&bk[4]));
+        const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&bk[8]),
+                                             _mm_cvtsi32_si128((int)bk[12])); /* b8 b12 b9 0 */
+        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(&wblk[4u * k]));
         const __m128i m = _mm_srai_epi32(d, 31);
         const uint32_t s = hsum_u32x4(_mm_sub_epi32(_mm_xor_si128(d, m), m));
-        const int32_t dg = (int32_t)g[0] - (int32_t)wgrp[k];
+        const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];
         rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
         term_out[k] = s;
         if (rest >= cut) {
             *groups = k + 1u;
             return rest;
         }
-        b += down;
-        g += down;
-        wblk += 4;
+        o += down;
     }
     *groups = 4u;
     return rest;

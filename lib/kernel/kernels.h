@@ -13,17 +13,6 @@
 
 #include "compiler.h"
 
-/* 1 when the compiled set's tracking loops (ssda__sad_rows_*,
-   ssda__refine4, ssda__bounds4) are worth their call: the x86 set's SIMD.
-   Elsewhere the engine runs the same loops inline (portable.h, or its own
-   row loop): on the Cortex-M4 a call per loop cost more than it saved
-   (tools/budget.sh, issue 18). Every set has them, for the tests. */
-#if defined(SSDA_KERNEL_sse2)
-#define SSDA__KERNEL_LOOPS 1
-#else
-#define SSDA__KERNEL_LOOPS 0
-#endif
-
 /* Sum of |a[i] - b[i]| for i < n, n <= 65535.
    Worst case 255 * 65535 = 16 711 425 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n);

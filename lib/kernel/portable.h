@@ -70,12 +70,14 @@ static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t 
                                               uint32_t *groups)
 {
     uint32_t k;
+    size_t o = 0u; /* group k's row */
     for (k = 0u; k < 4u; k++) {
-        const int32_t dg = (int32_t)g[0] - (int32_t)wgrp[k];
-        const int32_t d0 = (int32_t)b[0] - (int32_t)wblk[0];
-        const int32_t d1 = (int32_t)b[4] - (int32_t)wblk[1];
-        const int32_t d2 = (int32_t)b[8] - (int32_t)wblk[2];
-        const int32_t d3 = (int32_t)b[12] - (int32_t)wblk[3];
+        const uint32_t *w = &wblk[4u * k];
+        const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];
+        const int32_t d0 = (int32_t)b[o] - (int32_t)w[0];
+        const int32_t d1 = (int32_t)b[o + 4u] - (int32_t)w[1];
+        const int32_t d2 = (int32_t)b[o + 8u] - (int32_t)w[2];
+        const int32_t d3 = (int32_t)b[o + 12u] - (int32_t)w[3];
         const uint32_t s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
                            (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
         rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
@@ -84,9 +86,7 @@ static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t 
             *groups = k + 1u;
             return rest;
         }
-        b += down;
-        g += down;
-        wblk += 4;
+        o += down;
     }
     *groups = 4u;
     return rest;
@@ -97,7 +97,7 @@ static inline void ssda__portable_bounds4(uint32_t *p, const uint32_t *g, size_t
                                           const uint32_t *w, uint32_t n)
 {
     const int32_t w0 = (int32_t)w[0], w1 = (int32_t)w[1], w2 = (int32_t)w[2], w3 = (int32_t)w[3];
-    const uint32_t *g1 = g + down, *g2 = g1 + down, *g3 = g2 + down;
+    const uint32_t *g1 = &g[down], *g2 = &g1[down], *g3 = &g2[down];
     size_t i;
     for (i = 0u; i < n; i++) {
         const int32_t d0 = (int32_t)g[i] - w0, d1 = (int32_t)g1[i] - w1;
