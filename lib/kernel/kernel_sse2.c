@@ -335,7 +335,7 @@ static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
                                              _mm_loadl_epi64((const __m128i *)(const void *)&bk[4]));
         const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&bk[8]),
                                              _mm_cvtsi32_si128((int)bk[12])); /* b8 b12 b9 0 */
-        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(&wblk[4u * k]));
+        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(&wblk[(size_t)4u * k]));
         const __m128i m = _mm_srai_epi32(d, 31);
         const uint32_t s = hsum_u32x4(_mm_sub_epi32(_mm_xor_si128(d, m), m));
         const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];

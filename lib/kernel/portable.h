@@ -72,7 +72,7 @@ static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t 
     uint32_t k;
     size_t o = 0u; /* group k's row */
     for (k = 0u; k < 4u; k++) {
-        const uint32_t *w = &wblk[4u * k];
+        const uint32_t *w = &wblk[(size_t)4u * k];
         const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];
         const int32_t d0 = (int32_t)b[o] - (int32_t)w[0];
         const int32_t d1 = (int32_t)b[o + 4u] - (int32_t)w[1];
