@@ -35,42 +35,54 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
 int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
                     void *buffer, size_t buffer_size)
 {
-    ssda_pitch_info_t info;
     int err;
 #ifdef SSDA_CFG_NO_PITCH_PUSH
-    /* no push intake: the buffer is not used (may be NULL) */
+    /* no push intake: the buffer is not used (may be NULL), and nothing is
+       checked after the config, which is resolved straight into p->info
+       (written on success only) */
     (void)buffer_size;
     if (p == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
     }
+    err = ssda__pitch_resolve(cfg, &p->info);
+    if (err != SSDA_OK) {
+        return err;
+    }
 #else
+    ssda_pitch_info_t info;
     if (p == NULL || cfg == NULL || buffer == NULL) {
         return SSDA_ERR_NULL;
     }
-#endif
     err = ssda__pitch_resolve(cfg, &info);
     if (err != SSDA_OK) {
         return err;
     }
-#ifndef SSDA_CFG_NO_PITCH_PUSH
     if (buffer_size / sizeof(int16_t) < info.span ||
         ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
         return SSDA_ERR_BUFFER;
     }
+    (void)memcpy(&p->info, &info, sizeof info);
 #endif
-    p->info = info;
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
     return ssda_pitch_reset(p);
 }
 
-int ssda_pitch_reset(ssda_pitch_t *p)
+/* SSDA_OK for a state that ssda_pitch_init filled, else SSDA_ERR_NULL
+   (p NULL) or SSDA_ERR_STATE. One copy of the test (M0+ flash). */
+static SSDA_SIZE_NOINLINE int state_error(const ssda_pitch_t *p)
 {
     if (p == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
-        return SSDA_ERR_STATE;
+    return ssda__valid(p->magic, SSDA__MAGIC_PITCH) ? SSDA_OK : SSDA_ERR_STATE;
+}
+
+int ssda_pitch_reset(ssda_pitch_t *p)
+{
+    const int err = state_error(p);
+    if (err != SSDA_OK) {
+        return err;
     }
     p->fill = 0u;
     p->skip = 0u;
@@ -84,13 +96,12 @@ int ssda_pitch_reset(ssda_pitch_t *p)
 
 int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
 {
-    if (p == NULL || info == NULL) {
-        return SSDA_ERR_NULL;
+    const int err = info == NULL ? SSDA_ERR_NULL : state_error(p);
+    if (err != SSDA_OK) {
+        return err;
     }
-    if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
-        return SSDA_ERR_STATE;
-    }
-    *info = p->info;
+    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash */
+    (void)memcpy(info, &p->info, sizeof *info);
     return SSDA_OK;
 }
 

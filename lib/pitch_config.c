@@ -3,8 +3,9 @@
 #include "pitch_internal.h"
 #include "fixmath.h"
 
-#define KNOWN_FLAGS \
-    (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC)
+#define KNOWN_FLAGS                                                              \
+    (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC | \
+     SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)
 
 /* Whether every flag asks for a feature this build has (include/ssda/config.h). */
 static bool flags_built(uint32_t flags)
@@ -21,6 +22,12 @@ static bool flags_built(uint32_t flags)
 #endif
 #ifdef SSDA_CFG_NO_PITCH_PARABOLIC
     ok = ok && (flags & SSDA_PITCH_PARABOLIC) == 0u;
+#endif
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+    ok = ok && (flags & SSDA_PITCH_NO_OCTAVE) != 0u;
+#endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+    ok = ok && (flags & SSDA_PITCH_NO_BELOW_RANGE) != 0u;
 #endif
     (void)flags;
     return ok;

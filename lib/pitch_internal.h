@@ -26,6 +26,28 @@
 #else
 #define SSDA_PITCH_HAS_PARABOLIC(flags) (((flags) & SSDA_PITCH_PARABOLIC) != 0u)
 #endif
+/* Steps 4 and 6 of the definition: on unless the reduced definition is
+   asked for (a build without them requires the flags, pitch_config.c). */
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+#define SSDA_PITCH_HAS_OCTAVE(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_OCTAVE(flags) (((flags) & SSDA_PITCH_NO_OCTAVE) == 0u)
+#endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+#define SSDA_PITCH_HAS_BELOW_RANGE(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_HAS_BELOW_RANGE(flags) (((flags) & SSDA_PITCH_NO_BELOW_RANGE) == 0u)
+#endif
+/* Either check in use (both read the dip's interpolated floor F). A build
+   without one requires its flag (pitch_config.c), so this is false exactly
+   when both checks are off. */
+#if defined(SSDA_CFG_NO_PITCH_OCTAVE) && defined(SSDA_CFG_NO_PITCH_BELOW_RANGE)
+#define SSDA_PITCH_NEEDS_FLOOR(flags) ((void)(flags), false)
+#else
+#define SSDA_PITCH_NEEDS_FLOOR(flags) \
+    (((flags) & (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)) != \
+     (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE))
+#endif
 /* Input low-pass in use (its coefficient is 0 when off). */
 #ifdef SSDA_CFG_NO_PITCH_FILTER
 #define SSDA_PITCH_FILTERED(info) ((void)(info), false)
@@ -114,7 +136,8 @@ SSDA_INTERNAL uint32_t ssda__pitch_f0_q16(uint32_t rate_hz, uint32_t period_q16)
  * Analyse one frame x[0 .. info->span - 1] (the rule in pitch.h).
  *   predict_lag: with SSDA_PITCH_TRACK, a lag to sum first (0 or out of
  *                range = none). Changes work only.
- *   est:         written in full except est->frame and est->center.
+ *   est:         written in full; est->frame and est->center are the
+ *                caller's to set after (0 or untouched here).
  */
 SSDA_INTERNAL void ssda__pitch_analyze(const ssda_pitch_info_t *info, const int16_t *x,
                         uint32_t predict_lag, ssda_pitch_estimate_t *est);

@@ -14,7 +14,10 @@ int32_t ssda__pitch_interp_q16(uint32_t a_q20, uint32_t b_q20, uint32_t c_q20, b
     /* a, b, c <= 2^20: |den| <= 2^23 in int32_t, |a - c| <= 2^20, numerator
        65536 * |a - c| <= 2^36 in uint64_t. */
     int32_t a = (int32_t)a_q20, b = (int32_t)b_q20, c = (int32_t)c_q20;
-    int32_t den = parabolic ? 2 * (a - 2 * b + c) : 2 * ((a > c ? a : c) - b);
+    /* a build without the parabola (SSDA_CFG_NO_PITCH_PARABOLIC) never asks
+       for it: its code is left out */
+    int32_t den = SSDA_PITCH_HAS_PARABOLIC(parabolic ? SSDA_PITCH_PARABOLIC : 0u)
+                      ? 2 * (a - 2 * b + c) : 2 * ((a > c ? a : c) - b);
     uint64_t num = (uint64_t)65536u * (uint32_t)(a > c ? a - c : c - a);
     uint32_t q;
     if (den <= 0) {

@@ -257,19 +257,16 @@ static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t 
 
 static void silent_estimate(ssda_pitch_estimate_t *est)
 {
-    est->lag = 0u;
-    est->period_q16 = 0u;
-    est->f0_q16 = 0u;
-    est->diffs = 0u;
-    est->confidence_q15 = 0u;
-    est->voiced = false;
-    est->dip = false;
+    /* every field 0 (the caller sets frame and center after), silent set */
+    (void)memset(est, 0, sizeof *est);
     est->silent = true;
 }
 
 /*
  * The chosen lag refined: exact neighbours, the sub-sample period,
- * the octave check when it is a dip (found), and the estimate. Kept out of
+ * the octave check when it is a dip (found; unless SSDA_PITCH_NO_OCTAVE),
+ * and the estimate (with the below-range check unless
+ * SSDA_PITCH_NO_BELOW_RANGE). Kept out of
  * ssda__pitch_analyze_in (noinline, called last): the scan's locals are off
  * the stack while the octave check sums its lags.
  */
@@ -279,7 +276,8 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     /* the chosen lag: the first dip (a copy when the scan went on: full
        search), else the global minimum */
     dip_t *const t = !found ? &w->best : (SSDA_PITCH_HAS_FULL(info->flags) ? &w->t : &w->run);
-    uint32_t period, floor_q20, n_q15, i;
+    uint32_t period, n_q15, i;
+    uint32_t floor_q20 = 0u; /* F: read by the checks of steps 4 and 6 only */
     est->dip = found; /* read back below: one register less across the calls */
     uint32_t moved = 0u; /* the lag an octave move went to, 0 before any */
     for (;;) {
@@ -296,8 +294,11 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
             }
         }
         period = period_q16_of(w, t);
-        floor_q20 = dip_floor_q20(w, t);
-        moved = est->dip ? octave_up(w, period, floor_q20) : 0u;
+        if (SSDA_PITCH_NEEDS_FLOOR(info->flags)) {
+            floor_q20 = dip_floor_q20(w, t);
+        }
+        moved = (est->dip && SSDA_PITCH_HAS_OCTAVE(info->flags)) ? octave_up(w, period, floor_q20)
+                                                                  : 0u;
         if (moved == 0u) {
             break;
         }
@@ -310,7 +311,7 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
     n_q15 = ssda__div64_32((uint64_t)d_of(&t->v[1]) << 15, t->v[1].s); /* d <= s: 0..32768 */
     est->confidence_q15 = (uint16_t)(n_q15 >= 32767u ? 0u : 32767u - n_q15);
     est->voiced = est->dip && at_most_q15(&t->v[1], info->voicing_q15) &&
-                  !below_range(w, period, floor_q20);
+                  !(SSDA_PITCH_HAS_BELOW_RANGE(info->flags) && below_range(w, period, floor_q20));
     est->silent = false;
     est->diffs = w->diffs;
 }

@@ -154,7 +154,8 @@ static void test_bad_configurations_are_rejected_with_the_right_error(void)
     c = base(); c.threshold_q15 = 32768u;   expect_rejected(&c, SSDA_ERR_ARG);
     c = base(); c.voicing_q15 = 40000u;     expect_rejected(&c, SSDA_ERR_ARG);
     c = base(); c.lowpass_hz = 4001u;       expect_rejected(&c, SSDA_ERR_ARG);
-    c = base(); c.flags = 0x10u;            expect_rejected(&c, SSDA_ERR_ARG);
+    c = base(); c.flags = 0x40u;            expect_rejected(&c, SSDA_ERR_ARG);
+    c = base(); c.flags = 0x80u;            expect_rejected(&c, SSDA_ERR_ARG);
     c = base(); c.frame_len = 15u;          expect_rejected(&c, SSDA_ERR_SIZE);
     c = base(); c.frame_len = 8193u;        expect_rejected(&c, SSDA_ERR_SIZE);
     c = base(); c.frame_len = 100u; c.chunk = 101u; expect_rejected(&c, SSDA_ERR_SIZE);
@@ -169,7 +170,8 @@ static void test_limits_themselves_are_accepted(void)
     c.sample_rate_hz = 48000u; c.f0_min_hz = 10u; c.f0_max_hz = 12000u;
     c.frame_len = 8192u; c.chunk = 8192u; c.threshold_q15 = 32767u; c.voicing_q15 = 32767u;
     c.lowpass_hz = 12000u; c.silence_mad = 65535u; c.hop = 65535u;
-    c.flags = SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC;
+    c.flags = SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC |
+              SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_init(&p, &c, g_buf, sizeof g_buf));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_pitch_get_info(&p, &info));
     TEST_ASSERT_EQUAL_UINT32(4u, info.lag_min);

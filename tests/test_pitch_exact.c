@@ -159,6 +159,10 @@ static uint32_t check_against_reference(const ssda_pitch_config_t *cfg, const in
     return compare_stream(cfg, x, n, g_refs, nref);
 }
 
+/* Reduced-definition flags (SSDA_PITCH_NO_OCTAVE, SSDA_PITCH_NO_BELOW_RANGE)
+   that check_all_modes adds to every mode. */
+static uint8_t g_reduced;
+
 /* All modes of one config give the reference's results: for each analysed
    signal (filtered or not) and fit (V or parabola), early exit with several
    chunk sizes, tracking, and no early exit. */
@@ -169,20 +173,20 @@ static void check_all_modes(ssda_pitch_config_t cfg, const int16_t *x, uint32_t 
                                        SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC};
     uint32_t i, j, nref;
     for (i = 0; i < sizeof variants; i++) {
-        cfg.flags = variants[i];
+        cfg.flags = (uint8_t)(variants[i] | g_reduced);
         cfg.chunk = 0u;
         nref = reference_frames(&cfg, x, n, g_refs);
         for (j = 0; j < sizeof chunks / sizeof chunks[0]; j++) {
             cfg.chunk = chunks[j];
-            cfg.flags = variants[i];
+            cfg.flags = (uint8_t)(variants[i] | g_reduced);
             compare_stream(&cfg, x, n, g_refs, nref);
-            cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_TRACK);
+            cfg.flags = (uint8_t)(variants[i] | g_reduced | SSDA_PITCH_TRACK);
             compare_stream(&cfg, x, n, g_refs, nref);
         }
         cfg.chunk = 0u;
-        cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_FULL);
+        cfg.flags = (uint8_t)(variants[i] | g_reduced | SSDA_PITCH_FULL);
         compare_stream(&cfg, x, n, g_refs, nref);
-        cfg.flags = (uint8_t)(variants[i] | SSDA_PITCH_FULL | SSDA_PITCH_TRACK);
+        cfg.flags = (uint8_t)(variants[i] | g_reduced | SSDA_PITCH_FULL | SSDA_PITCH_TRACK);
         compare_stream(&cfg, x, n, g_refs, nref);
     }
 }
@@ -276,7 +280,7 @@ static void test_thresholds_and_random_configs_match_reference(void)
         cfg.voicing_q15 = (uint16_t)test_rng_range(&r, 0u, 20000u);
         cfg.silence_mad = (uint16_t)test_rng_range(&r, 0u, 300u);
         cfg.chunk = (uint16_t)(trial == 0u ? 1u : test_rng_range(&r, 0u, 16u));
-        cfg.flags = (uint8_t)test_rng_range(&r, 0u, 15u);
+        cfg.flags = (uint8_t)test_rng_range(&r, 0u, 63u); /* the reduced definitions too */
         cfg.lowpass_hz = (uint16_t)(test_rng_range(&r, 0u, 1u) * test_rng_range(&r, 100u, 2000u));
         if (trial % 3u == 0u) {
             test_voice_sine(&v, 80.0 + 40.0 * trial, 6000.0);
@@ -509,6 +513,66 @@ static void test_dip_beyond_lag_max_is_not_a_dip(void)
     assert_same(&r, &e);
 }
 
+/* Voiced frames and frames whose lag differs between two estimate arrays. */
+static uint32_t count_voiced(const ssda_pitch_estimate_t *e, uint32_t n)
+{
+    uint32_t f, v = 0u;
+    for (f = 0u; f < n; f++) {
+        v += e[f].voiced ? 1u : 0u;
+    }
+    return v;
+}
+
+static ssda_pitch_estimate_t g_est_full[EST_MAX];
+
+static void test_reduced_definitions_match_reference(void)
+{
+    /* The octave case of test_octave_check_matches_reference without step 4:
+       the reference of the reduced definition keeps the first dip (T / 2),
+       and so must the library, in every mode; with step 4 the lag differs. */
+    ssda_pitch_config_t cfg = {0};
+    test_voice_t v;
+    test_rng_t r;
+    uint32_t n = 6000u, count, nref, f, moved = 0u;
+    test_voice_vowel_i(&v, 135.0, 12000.0);
+    v.vibrato_hz = 5.0;
+    v.vibrato_depth = 0.01;
+    test_signal_voice(g_sig, n, 0u, 16000u, &v);
+    test_rng_seed(&r, 4u);
+    test_signal_add_noise(g_sig, n, 35.0, &r);
+    cfg.sample_rate_hz = 16000u;
+    cfg.hop = 150u;
+    cfg.flags = SSDA_PITCH_NO_OCTAVE;
+    nref = reference_frames(&cfg, g_sig, n, g_refs);
+    for (f = 0u; f < nref; f++) {
+        TEST_ASSERT_TRUE(g_refs[f].first_dip == 0u || g_refs[f].first_dip == g_refs[f].lag);
+    }
+    compare_stream(&cfg, g_sig, n, g_refs, nref);
+    cfg.flags = 0u;
+    count = run_stream(&cfg, g_sig, n, g_est_full);
+    cfg.flags = SSDA_PITCH_NO_OCTAVE;
+    TEST_ASSERT_EQUAL_UINT32(count, run_stream(&cfg, g_sig, n, g_est));
+    for (f = 0u; f < count; f++) {
+        moved += g_est[f].lag != g_est_full[f].lag ? 1u : 0u;
+    }
+    TEST_ASSERT_TRUE(moved > 0u); /* step 4 really is skipped */
+    g_reduced = SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE;
+    check_all_modes(cfg, g_sig, n);
+
+    /* A 1 500 Hz tone above f0_max = 1 000 Hz: unvoiced by step 6; without
+       it the dip at twice its period is voiced, as the reference says. */
+    test_voice_sine(&v, 1500.0, 9000.0);
+    test_signal_voice(g_sig, n, 0u, 16000u, &v);
+    cfg.flags = SSDA_PITCH_NO_BELOW_RANGE;
+    TEST_ASSERT_TRUE(check_against_reference(&cfg, g_sig, n) > 0u);
+    cfg.flags = 0u;
+    count = run_stream(&cfg, g_sig, n, g_est_full);
+    TEST_ASSERT_EQUAL_UINT32(0u, count_voiced(g_est_full, count));
+    g_reduced = SSDA_PITCH_NO_BELOW_RANGE;
+    check_all_modes(cfg, g_sig, n);
+    g_reduced = 0u;
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -523,5 +587,6 @@ int main(void)
     RUN_TEST(test_runs_after_an_invalid_edge_run_match_reference);
     RUN_TEST(test_a_wiggle_under_the_rearm_level_does_not_arm);
     RUN_TEST(test_dip_beyond_lag_max_is_not_a_dip);
+    RUN_TEST(test_reduced_definitions_match_reference);
     return UNITY_END();
 }

@@ -25,9 +25,11 @@
  *   search: all SSDA_CFG_NO_* of the search (exact AUTO and NONE thresholds,
  *           raster scan, row order, 8-bit views; no uniqueness, no sub-pixel
  *           fit, no 32-bit fast path)
- *   pitch:  all SSDA_CFG_NO_PITCH_* (AMDF of whole frames with early
- *           exit, voicing, the dip-run choice and its octave check, V-shaped
- *           interpolation)
+ *   pitch:  all SSDA_CFG_NO_PITCH_* but OCTAVE and BELOW_RANGE (AMDF of
+ *           whole frames with early exit, voicing, the dip-run choice with
+ *           its octave and below-range checks, V-shaped interpolation); and
+ *           apart, the reduced core: every SSDA_CFG_NO_PITCH_* (the checks
+ *           left out, configurations must ask for the reduced definition)
  *   stream: SSDA_CFG_NO_TILED, SSDA_CFG_NO_READ_SIZE and SSDA_CFG_NO_U16
  *           (raster 8-bit sources read at byte granularity, the plate cache,
  *           the streamed search)
@@ -101,6 +103,14 @@
 
 /* V-shaped interpolation only (SSDA_PITCH_PARABOLIC refused). */
 /* #define SSDA_CFG_NO_PITCH_PARABOLIC */
+
+/* No octave check (step 4 of pitch.h's definition): configurations must set
+   SSDA_PITCH_NO_OCTAVE, the reduced definition this build computes. */
+/* #define SSDA_CFG_NO_PITCH_OCTAVE */
+
+/* No below-range check (step 6): configurations must set
+   SSDA_PITCH_NO_BELOW_RANGE. */
+/* #define SSDA_CFG_NO_PITCH_BELOW_RANGE */
 
 /* No push intake: ssda_pitch_push returns SSDA_ERR_UNSUPPORTED, frames are
    given whole to ssda_pitch_frame (same estimates), and ssda_pitch_init

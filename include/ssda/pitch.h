@@ -62,6 +62,22 @@
  *   confidence_q15 = 32767 - min(32767, floor(32768 n(t))).
  * Voiced: a dip was found, n(t) <= voicing_q15 / 32768, and step 6 does
  * not find the period below the range.
+ * REDUCED DEFINITIONS (opt-in flags; every build gives the same estimate
+ * for a configuration it accepts):
+ *   SSDA_PITCH_NO_OCTAVE       step 4 is skipped: t is the first dip's
+ *                              minimum as found in step 3. A harmonic that
+ *                              dominates the fundamental can then read an
+ *                              octave (or more) high.
+ *   SSDA_PITCH_NO_BELOW_RANGE  step 6 is skipped: voiced = a dip was found
+ *                              and n(t) <= voicing. A tone above f0_max then
+ *                              reads, voiced, at a multiple of its period.
+ * For a source whose f0 is known to lie well inside [f0_min, f0_max] with a
+ * fundamental that is not much weaker than its harmonics (a tuner for one
+ * instrument, a sine or a whistle), the estimates rarely differ; measured
+ * on speech, singing and synthetic songs in docs/pitch.md. The compile
+ * switches SSDA_CFG_NO_PITCH_OCTAVE and SSDA_CFG_NO_PITCH_BELOW_RANGE
+ * (include/ssda/config.h) leave the checks' code out; such a build refuses
+ * configurations without the matching flag (SSDA_ERR_UNSUPPORTED).
  * All comparisons of n are exact (cross-multiplied), except those written
  * with nq.
  *
@@ -146,6 +162,9 @@ extern "C" {
 #define SSDA_PITCH_FULL      0x02u /* no early exit: every lag summed in full (the reference) */
 #define SSDA_PITCH_NO_FILTER 0x04u /* analyse the samples as pushed, without the low-pass */
 #define SSDA_PITCH_PARABOLIC 0x08u /* parabolic instead of V-shaped sub-sample fit */
+/* Reduced definitions (change results; see "REDUCED DEFINITIONS" above): */
+#define SSDA_PITCH_NO_OCTAVE 0x10u /* skip step 4, the octave check */
+#define SSDA_PITCH_NO_BELOW_RANGE 0x20u /* skip step 6, the below-range check */
 
 /* Internal: f0_min after defaulting. */
 #define SSDA_PITCH_F0_MIN_(f0_min_hz) \
@@ -198,7 +217,8 @@ typedef struct {
     uint16_t lowpass_hz;     /* cutoff of the input low-pass, Hz: 1..rate / 4
                                 (0 = f0_max); see "Input filter" above */
     uint8_t flags;           /* SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER
-                                | SSDA_PITCH_PARABOLIC */
+                                | SSDA_PITCH_PARABOLIC | SSDA_PITCH_NO_OCTAVE
+                                | SSDA_PITCH_NO_BELOW_RANGE */
 } ssda_pitch_config_t;
 
 /* The resolved parameters (every default filled in). */
@@ -315,6 +335,12 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
  *                    rate / 4; unknown flags
  *   SSDA_ERR_SIZE    frame_len outside 16..8192; chunk > frame_len
  *   SSDA_ERR_BUFFER  buffer_size too small, or buffer not 2-byte aligned
+ *   SSDA_ERR_UNSUPPORTED  a flag asks for a feature this build left out
+ *                    (include/ssda/config.h: SSDA_CFG_NO_PITCH_TRACK, _FULL,
+ *                    _PARABOLIC), or omits one the build requires
+ *                    (SSDA_CFG_NO_PITCH_FILTER: SSDA_PITCH_NO_FILTER;
+ *                    SSDA_CFG_NO_PITCH_OCTAVE: SSDA_PITCH_NO_OCTAVE;
+ *                    SSDA_CFG_NO_PITCH_BELOW_RANGE: SSDA_PITCH_NO_BELOW_RANGE)
  * Built with SSDA_CFG_NO_PITCH_PUSH, buffer and buffer_size are not used
  * (buffer may be NULL; ssda_pitch_frame takes the frames).
  */

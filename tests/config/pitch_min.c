@@ -7,6 +7,10 @@
  * test_pitch_ref.c, written from pitch.h alone), with early exit doing
  * less work than the plain AMDF, and everything left out must be refused
  * with its outputs untouched. Exit 0 on success.
+ * Built twice: pitch_min (the octave and below-range checks compiled in;
+ * the reduced definitions still accepted and checked) and pitch_min_reduced
+ * (SSDA_CFG_NO_PITCH_OCTAVE and SSDA_CFG_NO_PITCH_BELOW_RANGE too: only the
+ * reduced definition is accepted).
  */
 #include <stdio.h>
 #include <string.h>
@@ -19,6 +23,15 @@
     !defined(SSDA_CFG_NO_PITCH_TRACK) || !defined(SSDA_CFG_NO_PITCH_FULL) ||   \
     !defined(SSDA_CFG_NO_PITCH_PARABOLIC)
 #error "pitch_min must be built with every SSDA_CFG_NO_PITCH_* switch"
+#endif
+
+#if defined(SSDA_CFG_NO_PITCH_OCTAVE) != defined(SSDA_CFG_NO_PITCH_BELOW_RANGE)
+#error "pitch_min_reduced leaves out both checks"
+#endif
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+#define REDUCED (SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE) /* required */
+#else
+#define REDUCED 0u
 #endif
 
 #define SIG_N 20000u
@@ -94,9 +107,16 @@ static void compare(const ssda_pitch_config_t *cfg, const char *name)
 
 static void check_refusals(void)
 {
-    static const uint8_t left_out[] = {0u, SSDA_PITCH_NO_FILTER | SSDA_PITCH_TRACK,
-                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_FULL,
-                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC};
+    static const uint8_t left_out[] = {REDUCED, SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_TRACK,
+                                       SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_FULL,
+                                       SSDA_PITCH_NO_FILTER | REDUCED | SSDA_PITCH_PARABOLIC
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+                                       , /* the full definition, or half of it */
+                                       SSDA_PITCH_NO_FILTER,
+                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE,
+                                       SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_BELOW_RANGE
+#endif
+    };
     ssda_pitch_config_t cfg;
     ssda_pitch_t p;
     ssda_pitch_estimate_t e, poison;
@@ -110,7 +130,7 @@ static void check_refusals(void)
         check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_ERR_UNSUPPORTED,
               "a left-out option (the low-pass by default) is refused");
     }
-    cfg.flags = SSDA_PITCH_NO_FILTER;
+    cfg.flags = SSDA_PITCH_NO_FILTER | REDUCED;
     check(ssda_pitch_buffer_size(&cfg, &bytes) == SSDA_ERR_UNSUPPORTED && bytes == 12345u,
           "no buffer size without the push intake");
     check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_OK, "init needs no buffer");
@@ -128,8 +148,16 @@ int main(void)
     check_refusals();
     memset(&cfg, 0, sizeof cfg);
     cfg.sample_rate_hz = 16000u;
-    cfg.flags = SSDA_PITCH_NO_FILTER;
+    cfg.flags = SSDA_PITCH_NO_FILTER | REDUCED;
     compare(&cfg, "16 kHz, defaults");
+#ifndef SSDA_CFG_NO_PITCH_OCTAVE
+    /* the reduced definitions, accepted by every build */
+    cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE;
+    compare(&cfg, "16 kHz, defaults, no octave check");
+    cfg.flags = SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE;
+    compare(&cfg, "16 kHz, defaults, no octave or below-range check");
+    cfg.flags = SSDA_PITCH_NO_FILTER;
+#endif
     cfg.f0_min_hz = 70u;
     cfg.f0_max_hz = 400u;
     cfg.frame_len = 200u;

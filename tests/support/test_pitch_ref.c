@@ -18,6 +18,8 @@ test_pitch_ref_cfg_t test_pitch_ref_cfg_of(const ssda_pitch_info_t *info)
     rc.voicing_q15 = info->voicing_q15;
     rc.silence_mad = info->silence_mad;
     rc.parabolic = (info->flags & SSDA_PITCH_PARABOLIC) != 0u;
+    rc.no_octave = (info->flags & SSDA_PITCH_NO_OCTAVE) != 0u;
+    rc.no_below_range = (info->flags & SSDA_PITCH_NO_BELOW_RANGE) != 0u;
     return rc;
 }
 
@@ -206,9 +208,10 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
     }
     out->first_dip = found ? chosen : 0u;
     period = interp_period(c, chosen);
-    /* Octave check: a much deeper value near a multiple of the period means
-       the dip was a fraction of it. */
-    if (found) {
+    /* Octave check (step 4, unless the reduced definition skips it): a much
+       deeper value near a multiple of the period means the dip was a
+       fraction of it. */
+    if (found && !c->no_octave) {
         int64_t margin = (int64_t)(c->threshold_q15 / 3u) * 32;
         bool moved = true;
         while (moved) {
@@ -244,7 +247,7 @@ void test_pitch_reference(const int16_t *x, const test_pitch_ref_cfg_t *c, test_
         const int64_t f = found ? dip_floor(c, chosen) : 0;
         const int64_t d = g_d[chosen], sc = g_s[chosen];
         out->voiced = found && under(chosen, c->voicing_q15) &&
-                      !below_range(x, c, mean, level, period, f);
+                      (c->no_below_range || !below_range(x, c, mean, level, period, f));
         g_d[chosen] = d;
         g_s[chosen] = sc;
     }

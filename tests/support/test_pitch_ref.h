@@ -16,6 +16,8 @@ typedef struct {
     uint32_t rate, lag_min, lag_max, frame_len;
     uint32_t threshold_q15, voicing_q15, silence_mad;
     bool parabolic;  /* sub-sample fit: parabola instead of V */
+    bool no_octave;  /* reduced definition: step 4 skipped (SSDA_PITCH_NO_OCTAVE) */
+    bool no_below_range; /* step 6 skipped (SSDA_PITCH_NO_BELOW_RANGE) */
 } test_pitch_ref_cfg_t;
 
 typedef struct {
@@ -26,7 +28,8 @@ typedef struct {
 } test_pitch_ref_t;
 
 /* The reference configuration of a resolved pitch job: its lags, frame,
-   thresholds and sub-sample fit (the parameters only; no rule is shared). */
+   thresholds, sub-sample fit and reduced steps (the parameters only; no
+   rule is shared). */
 test_pitch_ref_cfg_t test_pitch_ref_cfg_of(const ssda_pitch_info_t *info);
 
 /* x holds frame_len + lag_max + 1 samples. */

@@ -297,10 +297,14 @@ def main():
         # Minimal cores (fw_min-<row>.elf: the library with the switches of
         # min_config.txt), keyed "min-<row>".
         mins = {"min-" + k: v for k, v in read_features(targets[0][1], "min").items()}
-        min_config = ""
+        min_config, min_reduced_config = "", []
         if mins:
             with open(os.path.join(targets[0][1], "min_config.txt")) as f:
                 min_config = f.read().split()
+            red = os.path.join(targets[0][1], "min_reduced_config.txt")
+            if os.path.exists(red):
+                with open(red) as f:
+                    min_reduced_config = f.read().split()
         sizes = {}
         for name, build in targets:
             tool = cache_value(build, "CMAKE_SIZE")
@@ -330,7 +334,11 @@ def main():
               "order and 8-bit views; the pitch keeps the AMDF of whole frames "
               "(`ssda_pitch_frame`) with early exit, voicing, the dip-run choice "
               "with its octave and below-range checks and the V-shaped "
-              "interpolation; the streaming layer keeps raster 8-bit "
+              "interpolation (its *reduced core* row also leaves out those two "
+              "checks, steps 4 and 6 of the definition in `pitch.h`: a build that "
+              "accepts only configurations asking for the reduced definition, "
+              "`SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE`, whose "
+              "estimates differ; docs/pitch.md); the streaming layer keeps raster 8-bit "
               "sources read at byte granularity and the plate cache. A feature "
               "left out returns `SSDA_ERR_UNSUPPORTED`.")
             checks = []
@@ -359,6 +367,8 @@ def main():
             rows.append(feat)
             if "min-" + feat in mins:
                 rows.append("min-" + feat)
+            if "min-" + feat + "-reduced" in mins:
+                rows.append("min-" + feat + "-reduced")
             for p in sorted(p for p in parts if p.startswith(feat + "-")):
                 rows.append(p)
                 rows += sorted(m for m in mins if m == "min-" + p or m.startswith("min-" + p + "+"))
@@ -370,15 +380,22 @@ def main():
                     continue
                 fl, ram = sizes[(name, feat)]
                 cells.append(fmt(fl) + ("" if ram == 0 else f" (+{ram} RAM)"))
-            goal = M0_FLASH_TARGETS.get(feat[4:].split("+")[0] if feat in mins and "+" not in feat
+            reduced = feat in mins and feat.endswith("-reduced")
+            goal = M0_FLASH_TARGETS.get(feat[4:-len("-reduced")] if reduced else
+                                        feat[4:].split("+")[0] if feat in mins and "+" not in feat
                                         else feat)
             m0 = next((sizes[(n, feat)][0] for n, _ in targets
                        if "m0" in n.lower() and sizes[(n, feat)] is not None), None)
             verdict = ""
             if goal and m0 is not None:
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
+                if reduced:  # never a verdict that hides the reduced definition
+                    verdict += " (reduced definition)"
             if feat == "all":
                 label = "everything"
+            elif reduced:
+                label = ("&nbsp;&nbsp;reduced core (no octave or below-range check: `" +
+                         "`, `".join(min_reduced_config) + "`)")
             elif feat in mins:
                 pad = "&nbsp;" * (4 if "-" in feat[4:] else 2)
                 label = pad + ("minimal core" if "+" not in feat else
@@ -396,14 +413,16 @@ def main():
         name0, build0 = targets[0]
         nm = cache_value(build0, "CMAKE_OBJDUMP")[: -len("objdump")] + "nm"
         lib_syms = set()
-        for lib in (os.path.join(build0, "ssda", "lib", "libssda.a"), os.path.join(build0, "libssda_min.a")):
+        for lib in (os.path.join(build0, "ssda", "lib", "libssda.a"), os.path.join(build0, "libssda_min.a"),
+                    os.path.join(build0, "libssda_min_reduced.a")):
             if os.path.exists(lib):
                 lib_syms |= set(subprocess.run([nm, "--defined-only", lib],
                                                capture_output=True, text=True).stdout.split())
         base_syms = set(subprocess.run([nm, os.path.join(build0, "fw_base.elf")],
                                        capture_output=True, text=True).stdout.split())
         for feat in [f for f in rows if f in M0_FLASH_TARGETS or
-                     (f in mins and "+" not in f and f[4:] in M0_FLASH_TARGETS)]:
+                     (f in mins and "+" not in f and
+                      re.sub("-reduced$", "", f[4:]) in M0_FLASH_TARGETS)]:
             elf = os.path.join(build0, f"fw_{feat}.elf")
             if not os.path.exists(elf):
                 continue
@@ -417,12 +436,12 @@ def main():
                 # GCC's clones (f.constprop.0, f.isra.0, f.part.0) are the library's too
                 parts.append((int(p[1], 16), p[3], p[3] in lib_syms or p[3].split(".")[0] in lib_syms))
             lib = sum(n for n, _, own in parts if own)
-            key = feat[4:] if feat in mins else feat
+            key = re.sub("-reduced$", "", feat[4:]) if feat in mins else feat
             title = FEATURE_NAMES.get(key) or ("`ssda_" + key.split("-", 1)[-1] + "*` (" +
                                                {"match-match": "search core",
                                                 "stream-source": "streaming layer"}.get(key, key) + ")")
             if feat in mins:
-                title += ", minimal core"
+                title += ", reduced core" if feat.endswith("-reduced") else ", minimal core"
             w(f"\n<details><summary>{name0}, {title}: "
               f"{fmt(lib)} B library, {fmt(sum(n for n, _, own in parts) - lib)} B runtime "
               "(libgcc, C library)</summary>\n\n")

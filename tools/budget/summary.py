@@ -68,6 +68,14 @@ def main():
     for label, full, small, goal in flash:
         w(f"| {label} | {fmt(full)} B | {fmt(small)} B | {fmt(goal)} B: minimal "
           f"{verdict(small, goal)}, full {verdict(full, goal)} |\n")
+        if label.startswith("AMDF pitch"):
+            # the reduced core (steps 4 and 6 of the definition left out), apart
+            red = next((cells for l, cells in t if l.startswith("reduced core")), None)
+            if red is not None:
+                v = num(red[m0])
+                w(f"| &nbsp;&nbsp;reduced definition (no octave or below-range check) | - | "
+                  f"{fmt(v)} B | {fmt(goal)} B: {verdict(v, goal)}, estimates differ "
+                  "(docs/pitch.md) |\n")
     stack = [(f, num(find(t, f"`{f}`")[m4]))
              for f in ("ssda_match", "ssda_match_search", "ssda_pitch_push", "ssda_track")]
     w(f"\n| worst stack (M4F, -Os) | bytes | target |\n|---|---:|---|\n")

@@ -39,6 +39,7 @@ typedef struct {
     int synth, full_check, per_file, no_filter, parabolic;
     uint16_t lowpass;
     uint32_t synth_notes, synth_rate;
+    int no_octave, no_below_range; /* reduced definitions */
 } options_t;
 
 typedef double (*ref_fn)(const void *ctx, double t_s);
@@ -59,7 +60,9 @@ static ssda_pitch_config_t make_cfg(const options_t *o, uint32_t rate, uint8_t f
     c.voicing_q15 = (uint16_t)lrint(o->voicing * 32768.0);
     c.lowpass_hz = o->lowpass;
     c.flags = (uint8_t)(flags | (o->no_filter ? SSDA_PITCH_NO_FILTER : 0u) |
-                        (o->parabolic ? SSDA_PITCH_PARABOLIC : 0u));
+                        (o->parabolic ? SSDA_PITCH_PARABOLIC : 0u) |
+                        (o->no_octave ? SSDA_PITCH_NO_OCTAVE : 0u) |
+                        (o->no_below_range ? SSDA_PITCH_NO_BELOW_RANGE : 0u));
     return c;
 }
 
@@ -202,6 +205,8 @@ static void usage(void)
             "  --threshold T       dip threshold, 0..1 (0 = library default)\n"
             "  --lowpass HZ        input low-pass cutoff (0 = f0 max); --no-filter: none\n"
             "  --parabolic         parabolic instead of V-shaped sub-sample fit\n"
+            "  --no-octave         reduced definition: no octave check (SSDA_PITCH_NO_OCTAVE)\n"
+            "  --no-below-range    reduced definition: no below-range check\n"
             "  --voicing V         voicing threshold, 0..1 (0 = the dip threshold)\n"
             "  --no-full-check     skip the no-early-exit run that checks identical results\n"
             "  --per-file          also print a table row set per file\n"
@@ -249,6 +254,8 @@ static int parse_args(int argc, char **argv, options_t *o, char **files)
         else if (!strcmp(a, "--lowpass") && i + 1 < argc) o->lowpass = (uint16_t)atoi(argv[++i]);
         else if (!strcmp(a, "--no-filter")) o->no_filter = 1;
         else if (!strcmp(a, "--parabolic")) o->parabolic = 1;
+        else if (!strcmp(a, "--no-octave")) o->no_octave = 1;
+        else if (!strcmp(a, "--no-below-range")) o->no_below_range = 1;
         else if (a[0] == '-') { usage(); return -1; }
         else files[nfiles++] = argv[i];
     }
@@ -327,7 +334,7 @@ static int run_file(const options_t *o, char *arg, group_t *g, group_t *real_all
 
 int main(int argc, char **argv)
 {
-    options_t o = {5.8, 50, 1000, 0, 0, 0.0, 0.0, 1, 1, 0, 0, 0, 0, 40, 16000};
+    options_t o = {5.8, 50, 1000, 0, 0, 0.0, 0.0, 1, 1, 0, 0, 0, 0, 40, 16000, 0, 0};
     group_t synth_all, real_all;
     int i, nfiles, status = 0, r;
     char **files = calloc((size_t)argc, sizeof *files);
@@ -338,10 +345,11 @@ int main(int argc, char **argv)
         return 2;
     }
     printf("ssda pitch evaluation: f0 %u-%u Hz, hop %.1f ms, threshold %.2f, low-pass %s, "
-           "%s fit, kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
+           "%s fit%s%s, kernel set %s%s\n\n", o.f0_min, o.f0_max, o.hop_ms,
            o.threshold > 0 ? o.threshold : SSDA_PITCH_DEFAULT_THRESHOLD_Q15 / 32768.0,
            o.no_filter ? "off" : o.lowpass ? "as given" : "at f0 max",
-           o.parabolic ? "parabolic" : "V", ssda__kernel_name(),
+           o.parabolic ? "parabolic" : "V", o.no_octave ? ", no octave check" : "",
+           o.no_below_range ? ", no below-range check" : "", ssda__kernel_name(),
            have_aubio() ? "" : " (aubio not found: YIN rows missing)");
     print_header();
     if (o.synth && (r = run_synthetic(&o, &synth_all)) != 0) {

@@ -109,7 +109,7 @@ static void read_config(fuzz_in_t *in, ssda_pitch_config_t *cfg)
     cfg->silence_mad = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_u16(in) % 3000u);
     cfg->chunk = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 1, 800));
     cfg->lowpass_hz = (uint16_t)(fuzz_u8(in) & 1u ? 0u : fuzz_range(in, 1, 13000));
-    cfg->flags = (uint8_t)(fuzz_one_in(in, 32) ? fuzz_u8(in) : fuzz_u8(in) & 15u);
+    cfg->flags = (uint8_t)(fuzz_one_in(in, 32) ? fuzz_u8(in) : fuzz_u8(in) & 63u);
 }
 
 /* Init accepts exactly the configs the header allows. Returns 1 with p
@@ -126,7 +126,7 @@ static int check_init(const ssda_pitch_config_t *cfg, ssda_pitch_t *p, ssda_pitc
     /* validity by the header (ARG-class and SIZE-class rules) */
     arg_bad = rate < 8000u || rate > 48000u || f0min < 10u || f0max > rate / 4u ||
               f0min >= f0max || cfg->threshold_q15 > 32767u || cfg->voicing_q15 > 32767u ||
-              cfg->lowpass_hz > rate / 4u || (cfg->flags & ~15u) != 0u;
+              cfg->lowpass_hz > rate / 4u || (cfg->flags & ~63u) != 0u;
     K = cfg->frame_len ? cfg->frame_len : (lagmax > 16u ? lagmax : 16u);
     size_bad = (cfg->frame_len != 0u && (cfg->frame_len < 16u || cfg->frame_len > 8192u)) ||
                cfg->chunk > K;

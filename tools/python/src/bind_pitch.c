@@ -49,7 +49,8 @@ static int pitch_init(PyObject *self_o, PyObject *args, PyObject *kw)
         const char *name;
         uint8_t bit;
     } flags[] = {{"track", SSDA_PITCH_TRACK}, {"full", SSDA_PITCH_FULL},
-                 {"no_filter", SSDA_PITCH_NO_FILTER}, {"parabolic", SSDA_PITCH_PARABOLIC}};
+                 {"no_filter", SSDA_PITCH_NO_FILTER}, {"parabolic", SSDA_PITCH_PARABOLIC},
+                 {"no_octave", SSDA_PITCH_NO_OCTAVE}, {"no_below_range", SSDA_PITCH_NO_BELOW_RANGE}};
     PitchObject *self = (PitchObject *)self_o;
     ssda_pitch_config_t cfg;
     PyObject *a[1], *kwc, *v;
@@ -279,7 +280,7 @@ static PyType_Slot pitch_slots[] = {
     {Py_tp_doc,
      "Pitch(sample_rate_hz, /, *, f0_min_hz=0, f0_max_hz=0, frame_len=0, hop=0, "
      "threshold_q15=0, voicing_q15=0, silence_mad=0, chunk=0, lowpass_hz=0, track=False, "
-     "full=False, no_filter=False, parabolic=False)\n--\n\n"
+     "full=False, no_filter=False, parabolic=False, no_octave=False, no_below_range=False)\n--\n\n"
      "A streaming AMDF pitch state (ssda_pitch_init, ssda/pitch.h). Options are the\n"
      "fields of ssda_pitch_config_t (0 = the library's default) and its flags as\n"
      "booleans. Its memory (state and sample buffer) is owned by the object."},

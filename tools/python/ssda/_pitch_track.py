@@ -40,7 +40,7 @@ def pitch(samples, sample_rate_hz, **options):
     sample_rate_hz: 8000..48000 (resample first otherwise). options: those of
     ssda.Pitch (f0_min_hz, f0_max_hz, frame_len, hop, threshold_q15,
     voicing_q15, silence_mad, chunk, lowpass_hz, track, full, no_filter,
-    parabolic; 0 = the library's default). Returns a PitchTrack.
+    parabolic, no_octave, no_below_range; 0 = the library's default). Returns a PitchTrack.
     """
     p = Pitch(sample_rate_hz, **options)
     est = p.push(samples)

@@ -8,11 +8,13 @@ import pytest
 import ssda
 from conftest import tone, write_wav
 
-FLAGS = {"track": 1, "full": 2, "no_filter": 4, "parabolic": 8}
+FLAGS = {"track": 1, "full": 2, "no_filter": 4, "parabolic": 8, "no_octave": 16,
+         "no_below_range": 32}
 
 
 @pytest.mark.parametrize("opts", [
     {}, {"track": True, "parabolic": True}, {"full": True, "no_filter": True},
+    {"no_octave": True, "no_below_range": True},
     {"f0_min_hz": 80, "f0_max_hz": 400, "hop": 100, "frame_len": 300, "chunk": 7,
      "threshold_q15": 8000, "voicing_q15": 6000, "silence_mad": 40, "lowpass_hz": 700},
 ])
