@@ -12,9 +12,22 @@
 #include "match_quality.h"
 #include "match_pre.h"
 #include "kernel/kernels.h"
+#include "kernel/portable.h"
 #include "fixmath.h"
 #include "compiler.h"
 #include <string.h>
+
+/* 1 when the compiled kernel set's tracking loops (ssda__sad_rows_u16,
+   ssda__refine4, ssda__bounds4, kernels.h) are worth their call: the x86
+   set's SIMD. Elsewhere the engine runs the same loops inline (portable.h,
+   or its own row loop): on the Cortex-M4 a call per loop cost more than it
+   saved, and the paths around them cost every bounded search instructions
+   and stack (tools/budget.sh, issue 18 session 7). */
+#if defined(SSDA_KERNEL_sse2)
+#define KERNEL_LOOPS 1
+#else
+#define KERNEL_LOOPS 0
+#endif
 
 /* A candidate ordered by the tie rule: (sad, y, x) lexicographically, or
    (sad, distance to the prediction, y, x) with SSDA_MATCH_TIE_NEAREST. */
@@ -87,9 +100,11 @@ typedef struct {
                               is on, else NULL */
     uint32_t *wblk;        /* blocks: the window's block sums, level after level;
                               shared tables: the window's 4 x 4 sums */
-    const uint32_t *pre; /* shared tables, fast path, AUTO without the uniqueness
-                            list: every position's group bound, nx per row (in
-                            the per-window group table's place), else NULL */
+    const uint32_t *pre; /* fast path, AUTO, no uniqueness list: every position's
+                            group bound, nx per row, else NULL. Made by
+                            pre_bounds from tracking's shared tables (in the
+                            per-window group table's place) or by scan_pre's
+                            pre_pass (in the blocks' room) */
     uint32_t *low;       /* blocks, AUTO raster: each position's coarsest-level
                             bound, saturated to 32 bits (a lower bound still),
                             nx per row in the group tables' place; else NULL */
@@ -293,14 +308,16 @@ static uint64_t tab_refine(engine_t *e, uint32_t x, uint32_t y, uint64_t rest, u
     uint32_t k, i;
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t s = 0u; /* < 2^28 */
+        /* block sums < 2^20: signed differences, no compare and branch */
         if (nb == 4u) { /* 16 to 19 columns: no loop */
-            const uint32_t a0 = b[0], a1 = b[4], a2 = b[8], a3 = b[12];
-            s = (a0 > w[0] ? a0 - w[0] : w[0] - a0) + (a1 > w[1] ? a1 - w[1] : w[1] - a1) +
-                (a2 > w[2] ? a2 - w[2] : w[2] - a2) + (a3 > w[3] ? a3 - w[3] : w[3] - a3);
+            const int32_t d0 = (int32_t)b[0] - (int32_t)w[0], d1 = (int32_t)b[4] - (int32_t)w[1];
+            const int32_t d2 = (int32_t)b[8] - (int32_t)w[2], d3 = (int32_t)b[12] - (int32_t)w[3];
+            s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
         } else {
             for (i = 0u; i < nb; i++) {
-                const uint32_t a = b[(size_t)4u * i], c = w[i];
-                s += a > c ? a - c : c - a;
+                const int32_t d = (int32_t)b[(size_t)4u * i] - (int32_t)w[i];
+                s += (uint32_t)(d < 0 ? -d : d);
             }
         }
         rest = rest - e->term[k] + s; /* s >= term[k] */
@@ -474,10 +491,11 @@ static int seeded_rows(engine_t *e, uint32_t x, uint32_t y, uint64_t cut_at, uin
 #ifndef SSDA_CFG_NO_FAST_PATH
 #ifndef SSDA_CFG_NO_BOUNDS
 /* group_bound in 32 bits, for eval_fast: the bound <= the window's largest
-   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from the
-   table when pre_bounds made it. The terms are stored only when the
-   position passes (a second pass): most do not. */
-static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at)
+   SAD < 2^32 - 1 (triangle inequality), each term likewise; read from
+   e->pre when every bound is known (pre_bounds, pre_pass). The terms are
+   stored (a second pass) only when store is set and the position passes:
+   most do not, and tab_refine4 takes the terms itself. */
+static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at, bool store)
 {
     const uint32_t *g0 = e->gsum + (size_t)y * e->gpitch + x;
     const uint32_t *g = g0;
@@ -500,7 +518,7 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
             g += down;
         }
     }
-    if (rest < cut_at) {
+    if (store && rest < cut_at) {
         uint32_t *t = e->term;
         g = g0;
         if (n == 4u) {
@@ -521,6 +539,27 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     return rest;
 }
 #endif
+
+/* tab_refine for eval_fast with 4 groups of 4 blocks (16 x 16 windows:
+   shared tables hold blocks only for widths that are multiples of 4; 16..19
+   rows), in 32 bits (the bound <= the SAD < 2^32 - 1): the same terms,
+   order, exits and count, in the kernels' ssda__refine4 (SSE2 on x86). The
+   group terms are taken there, so group_bound32 need not store them. */
+static SSDA_NOINLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest,
+                                          uint32_t cut_at)
+{
+    const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
+    uint32_t groups;
+#if KERNEL_LOOPS
+    rest = ssda__refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp, e->wblk,
+                         rest, cut_at, e->term, &groups);
+#else
+    rest = ssda__portable_refine4(e->integ + at, e->gsum + at, (size_t)4u * e->gpitch, e->wgrp,
+                                  e->wblk, rest, cut_at, e->term, &groups);
+#endif
+    e->ops += (uint64_t)4u * groups;
+    return rest;
+}
 
 /* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
@@ -550,9 +589,111 @@ static SSDA_ALWAYS_INLINE uint32_t cut_level32(const engine_t *e, uint32_t x, ui
     return (uint32_t)ref->sad + (pos_before(e, x, y, ref->x, ref->y) ? 1u : 0u);
 }
 
+#if KERNEL_LOOPS
+/* Rows of a position added to *partial, stopping after the first row where
+   it reaches limit. Returns the rows added. 16-bit rows: the kernels' rows
+   loop (a 16-px row in straight-line SSE2); 8-bit rows: a row a call, as
+   their PSADBW rows cost less than the loop's call (ssda-peers-match,
+   synthetic 32x32 in 64x64: 6.1 -> 6.6 us a window through the kernel). */
+static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
+                                            const uint8_t *w, uint32_t n, uint32_t rows,
+                                            uint32_t limit, uint32_t *partial)
+{
+    const size_t as = e->area->stride, ws = e->win->stride;
+    uint32_t r = 0u;
+#ifndef SSDA_CFG_NO_U16
+    if (!e->u8) {
+        return ssda__sad_rows_u16((const uint16_t *)(const void *)a, as,
+                                  (const uint16_t *)(const void *)w, ws, n, rows, limit,
+                                  partial);
+    }
+#endif
+    do {
+        *partial += ssda__sad_row_u8(a + r * as, w + r * ws, n);
+        r++;
+    } while (r < rows && *partial < limit);
+    return r;
+}
+#endif
+
+#if KERNEL_LOOPS
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
-   eval_position. Returns 1 and sets *sad, or 0 when cut. */
+   eval_position. With the kernels' loops (x86) rest is constant between
+   the starts of two groups, so the rows from one start to the next go to
+   the kernel in one call. rest < cut_at on entry and partial + rest <= the
+   position's SAD < 2^32 - 1. Returns 1 and sets *sad, or 0 when cut. */
+static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
+                                   uint32_t rest, uint64_t *sad)
+{
+    const uint32_t L = e->L, M = e->M;
+    const uint32_t as = e->area->stride, ws = e->win->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * e->area->format;
+    const uint8_t *w = e->win->base;
+    uint32_t partial = 0u; /* < 2^32 - 1: e->fast */
+    uint32_t k = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+    uint32_t g = 0u, next_start = 0u; /* the next group and its first row */
+#endif
+    if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
+        /* the first row in chunks: most positions are cut there. Group 0
+           starts with it when rest != 0, as in eval_position */
+        const uint32_t fmt = e->area->format;
+        uint32_t done = 0u;
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u) {
+            rest -= e->term[0];
+            g = 1u;
+            next_start = e->group;
+        }
+#endif
+        while (done < L) {
+            const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
+            partial += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
+            done += n;
+            if (done < L && partial + rest >= cut_at) {
+                e->ops += done;
+                return 0;
+            }
+        }
+        if (partial + rest >= cut_at) {
+            e->ops += L;
+            return 0;
+        }
+        k = 1u;
+    }
+    while (k < M) { /* the rows from one group start to the next in one call */
+        uint32_t end = M, n;
+#ifndef SSDA_CFG_NO_BOUNDS
+        if (rest != 0u && k == next_start) { /* as in eval_position */
+            rest -= e->term[g];
+            g++;
+            next_start += e->group;
+        }
+        if (rest != 0u && next_start < M) {
+            end = next_start; /* > k: rest changes there */
+        }
+#endif
+        /* partial + rest < cut_at here, so the limit is above partial */
+        n = rows_sad(e, a + (size_t)k * as, w + (size_t)k * ws, L, end - k, cut_at - rest,
+                     &partial);
+        k += n;
+        if (partial + rest >= cut_at) {
+            const uint32_t summed = k * L; /* <= L * M < 2^32 */
+            e->ops += summed;
+            return 0;
+        }
+    }
+    {
+        const uint32_t summed = M * L; /* < 2^32 */
+        e->ops += summed;
+    }
+    *sad = partial;
+    return 1;
+}
+#else
+/* fast_rows without the kernels' loops: a row a call (tools/budget.sh: the
+   restructured loop above cost the M4 about 0.5 % more instructions). */
 static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_at,
                                    uint32_t rest, uint64_t *sad)
 {
@@ -616,6 +757,7 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
     *sad = partial;
     return 1;
 }
+#endif
 
 /*
  * eval_position for the common exact case (e->fast, set once per search):
@@ -638,7 +780,12 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
     }
 #ifndef SSDA_CFG_NO_BOUNDS
     if (e->bounds) {
-        rest = group_bound32(e, x, y, cut_at);
+        /* 4 groups of 4 blocks: tab_refine4 takes the group terms itself.
+           x86 only: on the M4 it made every bounded search's path heavier
+           (tools/budget.sh: +6 % instructions) for 0.2 % on tracking */
+        const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+                          e->ngroups == 4u;
+        rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
             return 0;
         }
@@ -649,7 +796,8 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
             }
         }
         if (e->integ != NULL) { /* the bound <= the SAD < 2^32 - 1 */
-            rest = (uint32_t)tab_refine(e, x, y, rest, cut_at);
+            rest = quad ? tab_refine4(e, x, y, rest, cut_at)
+                        : (uint32_t)tab_refine(e, x, y, rest, cut_at);
             if (rest >= cut_at) {
                 return 0;
             }
@@ -798,6 +946,8 @@ static void list_insert(engine_t *e, const cand_t *c)
 }
 #endif
 
+static void keep_completed(engine_t *e, uint32_t x, uint32_t y, cand_t *c);
+
 /* Evaluate (x, y) and keep it if it is among the best two. Returns 1 with
    *c filled when the position completed, 0 when cut, or a fetch error. */
 static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
@@ -810,6 +960,14 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     if (done <= 0) {
         return done;
     }
+    keep_completed(e, x, y, c);
+    return 1;
+}
+
+/* A completed position (c->sad set) at (x, y): counted, and kept if it is
+   among the best two (and in the uniqueness list). */
+static void keep_completed(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
+{
     e->completed++;
     c->x = x;
     c->y = y;
@@ -834,10 +992,10 @@ static int consider(engine_t *e, uint32_t x, uint32_t y, cand_t *c)
     } else {
         /* behind both kept positions */
     }
-    return 1;
 }
 
-/* Raster, seeded and predict scans: the reference is always the best so
+/* Raster, seeded and predict scans (and scan_predict_open outside
+   tracking's 4 x 4 case, open_quad): the reference is always the best so
    far. Inlined: its candidate on the scan's frame costs less stack than a
    frame of its own (issue 18). */
 static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
@@ -845,9 +1003,10 @@ static SSDA_ALWAYS_INLINE int consider_best(engine_t *e, uint32_t x, uint32_t y)
     cand_t c;
     int err;
 #ifndef SSDA_CFG_NO_BOUNDS
-    /* with every bound known (pre_bounds): a position whose bound exceeds
-       the best SAD is cut by eval_fast too (its cut level is at most that
-       SAD + 1), so it is counted and passed without the call */
+    /* with every bound known (e->pre; scan_pre calls consider itself): a
+       position whose bound exceeds the best SAD is cut by eval_fast too (its
+       cut level is at most that SAD + 1), so it is counted and passed
+       without the call */
     if (e->pre != NULL && e->ref != NULL && e->pre[(size_t)y * e->nx + x] > e->ref->sad) {
         e->positions++;
         return SSDA_OK;
@@ -1494,6 +1653,10 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
 {
     uint32_t *pre = (uint32_t *)e->plan->work;
     const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    /* every group sum (of area and window) below 2^31: 4 * L * 65535 < 2^31
+       for L <= 8191 (8-bit: always), so group sums fit int32_t and so do
+       their differences */
+    const bool small = e->u8 || e->L <= 8191u;
     uint32_t x, y, k;
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
@@ -1503,6 +1666,14 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
             const uint32_t *g3 = g2 + (size_t)4u * pitch;
             const uint32_t w0 = e->wgrp[0], w1 = e->wgrp[1], w2 = e->wgrp[2], w3 = e->wgrp[3];
             size_t i;
+            if (small) { /* signed differences: the kernels' row (AVX2 on x86) */
+#if KERNEL_LOOPS
+                ssda__bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
+#else
+                ssda__portable_bounds4(p, g0, (size_t)4u * pitch, e->wgrp, nx);
+#endif
+                continue;
+            }
             for (i = 0u; i < nx; i++) { /* the bound < 2^32 - 1 (group_bound32) */
                 p[i] = (g0[i] > w0 ? g0[i] - w0 : w0 - g0[i]) +
                        (g1[i] > w1 ? g1[i] - w1 : w1 - g1[i]) +
@@ -1565,83 +1736,132 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
-/* The open positions of row y, columns lo .. hi, ascending. */
-static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t y)
+/* consider_best for scan_predict_open with 4 groups of 4 blocks (the
+   seed's windows, tab_refine4): eval_fast's steps on what that case
+   knows already (a reference, the bound in the table, no list), the same
+   cut level, terms, rows and count. Rows in memory: no fetch error. */
+static SSDA_ALWAYS_INLINE void open_quad(engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+    const uint32_t bound = e->pre[(size_t)y * e->nx + x];
+    uint32_t cut, rest;
+    cand_t c;
+    if (bound > s) {
+        return;
+    }
+    /* cut_level32: s + 1 for a position before the best by the tie rule */
+    cut = s + (pos_before(e, x, y, e->best.x, e->best.y) ? 1u : 0u);
+    if (bound >= cut) { /* also cut == 0 */
+        return;
+    }
+    rest = tab_refine4(e, x, y, bound, cut);
+    if (rest < cut && fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+        keep_completed(e, x, y, &c);
+    }
+}
+
+/* The open positions of mask m, ascending: columns of row `fix` (row),
+   or rows of column `fix` (column). Each bit visited leaves *left. */
+static SSDA_ALWAYS_INLINE int open_run(engine_t *e, uint32_t m, uint32_t fix, bool row,
+                                       bool quad, uint32_t *left)
 {
     int err = SSDA_OK;
     while (m != 0u && err == SSDA_OK) {
-        err = consider_best(e, low_bit(m), y);
+        const uint32_t i = low_bit(m);
+        if (quad) {
+            open_quad(e, row ? i : fix, row ? fix : i);
+        } else {
+            err = row ? consider_best(e, i, fix) : consider_best(e, fix, i);
+        }
         m &= m - 1u;
+        (*left)--;
     }
     return err;
 }
 
-/* The open positions of column x, rows y0 .. y1, ascending. */
-static SSDA_ALWAYS_INLINE int open_column(engine_t *e, const uint32_t *open, uint32_t x,
-                                          int32_t y0, int32_t y1)
+/* The open positions in bit masks by row (open[y], bit x) and by column
+   (open[OPEN_MAX + x], bit y), built once: a ring's four sides are then
+   four masked runs, and the rings stop once no open position is left. */
+static SSDA_NOINLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
 {
-    int32_t i;
-    for (i = y0; i <= y1; i++) {
-        if (((open[i] >> x) & 1u) != 0u) {
-            int err = consider_best(e, x, (uint32_t)i);
-            if (err != SSDA_OK) {
-                return err;
-            }
-        }
+    /* bit x of a word, x < 32 */
+    static const uint32_t k_bit[OPEN_MAX] = {
+        0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
+        0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
+        0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
+        0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
+        0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
+        0x40000000u, 0x80000000u};
+    const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
+    const uint32_t nx = e->nx, ny = e->ny;
+    uint32_t *cols = open + OPEN_MAX;
+    const uint32_t *pre = e->pre;
+    uint32_t i, left = 0u;
+    for (i = 0u; i < nx; i++) {
+        cols[i] = 0u;
     }
-    return SSDA_OK;
+    for (i = 0u; i < ny; i++) {
+        uint32_t m = 0u;
+        size_t x;
+        for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
+            m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
+        }
+        if (i == e->ty) {
+            m &= ~k_bit[e->tx]; /* visited first */
+        }
+        open[i] = m;
+        while (m != 0u) { /* few: most bounds exceed s */
+            cols[low_bit(m)] |= k_bit[i];
+            m &= m - 1u;
+            left++;
+        }
+        pre += nx;
+    }
+    return left;
 }
 
 static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 {
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
     const int32_t px = (int32_t)e->tx, py = (int32_t)e->ty;
+    const uint32_t *cols = open + OPEN_MAX;
+    /* tab_refine4's case, as in eval_fast; on x86 only: on the Cortex-M4
+       open_quad saved instructions but cost 64 B of stack (tools/budget.sh) */
+    const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
+                      e->ngroups == 4u;
     int32_t d, dmax = px;
+    uint32_t left;
     int err = consider_best(e, (uint32_t)px, (uint32_t)py); /* no reference: completes */
     if (err != SSDA_OK) {
         return err;
     }
-    {
-        /* bit x of a word, x < 32 */
-        static const uint32_t k_bit[OPEN_MAX] = {
-            0x1u,        0x2u,        0x4u,        0x8u,       0x10u,      0x20u,
-            0x40u,       0x80u,       0x100u,      0x200u,     0x400u,     0x800u,
-            0x1000u,     0x2000u,     0x4000u,     0x8000u,    0x10000u,   0x20000u,
-            0x40000u,    0x80000u,    0x100000u,   0x200000u,  0x400000u,  0x800000u,
-            0x1000000u,  0x2000000u,  0x4000000u,  0x8000000u, 0x10000000u, 0x20000000u,
-            0x40000000u, 0x80000000u};
-        const uint32_t s = (uint32_t)e->best.sad; /* < 2^32 - 1: e->fast */
-        int32_t i;
-        const uint32_t *pre = e->pre;
-        for (i = 0; i < ny; i++) {
-            uint32_t m = 0u;
-            size_t x;
-            for (x = 0u; x < (size_t)nx; x++) { /* a table of bits: the loop vectorises */
-                m |= k_bit[x] & (0u - (pre[x] <= s ? 1u : 0u));
-            }
-            open[i] = m;
-            pre += nx;
-        }
-    }
+    left = open_masks(e, open);
     dmax = nx - 1 - px > dmax ? nx - 1 - px : dmax;
     dmax = py > dmax ? py : dmax;
     dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;
-    for (d = 1; d <= dmax && err == SSDA_OK; d++) {
+    for (d = 1; d <= dmax && left != 0u && err == SSDA_OK; d++) {
         const uint32_t lo = (uint32_t)(px - d < 0 ? 0 : px - d);
         const uint32_t hi = (uint32_t)(px + d >= nx ? nx - 1 : px + d);
-        const int32_t y0 = py - d + 1 < 0 ? 0 : py - d + 1;
-        const int32_t y1 = py + d - 1 >= ny ? ny - 1 : py + d - 1;
-        if (py - d >= 0) { /* top */
-            err = open_run(e, open[py - d] & bit_span(lo, hi), (uint32_t)py - (uint32_t)d);
-        }
-        if (py + d < ny && err == SSDA_OK) { /* bottom */
-            err = open_run(e, open[py + d] & bit_span(lo, hi), (uint32_t)py + (uint32_t)d);
-        }
-        if (px - d >= 0 && err == SSDA_OK) { /* left */
-            err = open_column(e, open, (uint32_t)px - (uint32_t)d, y0, y1);
-        }
-        if (px + d < nx && err == SSDA_OK) { /* right */
-            err = open_column(e, open, (uint32_t)px + (uint32_t)d, y0, y1);
+        const uint32_t y0 = (uint32_t)(py - d + 1 < 0 ? 0 : py - d + 1);
+        const uint32_t y1 = (uint32_t)(py + d - 1 >= ny ? ny - 1 : py + d - 1);
+        uint32_t side;
+        /* top, bottom: rows py -+ d, columns lo .. hi; left, right: columns
+           px -+ d, rows y0 .. y1 (none when y0 > y1: d = 1 on a range one
+           row high). One call site of open_run: one copy of the evaluation
+           (flash). */
+        for (side = 0u; side < 4u && err == SSDA_OK; side++) {
+            const int32_t fix = side < 2u ? (side == 0u ? py - d : py + d)
+                                          : (side == 2u ? px - d : px + d);
+            const bool row = side < 2u;
+            uint32_t m = 0u;
+            if (row && fix >= 0 && fix < ny) {
+                m = open[fix] & bit_span(lo, hi);
+            } else if (!row && fix >= 0 && fix < nx && y0 <= y1) {
+                m = cols[fix] & bit_span(y0, y1);
+            } else {
+                /* the side lies outside the range */
+            }
+            err = open_run(e, m, fix < 0 ? 0u : (uint32_t)fix, row, quad, &left);
         }
     }
     /* every position once, as scan_predict counts them */
@@ -2013,12 +2233,10 @@ static SSDA_NOINLINE int engine_setup(engine_t *e, int32_t predict_x, int32_t pr
         e->gsum != (const uint32_t *)plan->work && plan->scan != (uint8_t)SSDA_SCAN_COARSE) {
         pre_bounds(e); /* shared tables (tab_bounds): every bound at once */
     }
-    if (e->fast && e->bounds && e->list == NULL && (plan->flags & SSDA_MATCH_BLOCKS) != 0u &&
-        mode == (uint8_t)SSDA_THRESHOLD_AUTO && plan->scan == (uint8_t)SSDA_SCAN_RASTER &&
-        e->gsum == (const uint32_t *)plan->work) {
-        /* no level (e->low NULL): their room holds the bounds (scan_pre) */
-        e->pre_scan = true;
-    }
+    /* pre_first's case (BLOCKS implies BOUNDS, match.c; tracking refuses
+       BLOCKS, so no shared tables): with e->fast no level was built, and
+       their room holds the bounds (scan_pre) */
+    e->pre_scan = e->fast && pre_first(e);
 #endif
 #endif /* SSDA_CFG_NO_FAST_PATH */
     return SSDA_OK;

@@ -11,7 +11,9 @@
  * has it) as well as the run-time choice; the QEMU builds test the armv7em
  * set (mps2-an386, mps2-an500) and the portable set (mps2-an385).
  */
+#include <stdbool.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "unity.h"
 #include "kernel/kernels.h"
@@ -128,6 +130,10 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u8);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_row_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->absdiff_row_i16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u8);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -376,6 +382,198 @@ static void test_dot_worst_case(void)
                              ssda__dot_u16(g_big + 1, 0, g_big, 0, 65535, 1));
 }
 
+/* The rows loops (ssda__sad_rows_u8/u16) against the reference row by
+   row: rows of n pixels at byte strides through one buffer (rows overlap,
+   as the rows of an image's areas do), stopping after the first row whose
+   running sum reaches the limit; every variant. */
+#define ROWS_MAX 6u
+static uint8_t g_rows8[MAX_LEN * ROWS_MAX * 2u + 64u];
+static uint16_t g_rows16[MAX_LEN * ROWS_MAX * 2u + 64u];
+
+static void check_rows(bool u16, const void *a, size_t as, const void *b, size_t bs, uint32_t n,
+                       uint32_t rows, uint32_t limit, uint32_t start)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want = start, want_rows = 0u, got = start, got_rows, v;
+    do { /* the reference: rows one by one */
+        const uint8_t *pa = (const uint8_t *)a + want_rows * as;
+        const uint8_t *pb = (const uint8_t *)b + want_rows * bs;
+        want += (uint32_t)(u16 ? ref_u16((const uint16_t *)(const void *)pa,
+                                         (const uint16_t *)(const void *)pb, n)
+                               : ref_u8(pa, pb, n));
+        want_rows++;
+    } while (want_rows < rows && want < limit);
+    got_rows = u16 ? ssda__sad_rows_u16(a, as, b, bs, n, rows, limit, &got)
+                   : ssda__sad_rows_u8(a, as, b, bs, n, rows, limit, &got);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_rows, got_rows, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got = start;
+        got_rows = u16 ? k->sad_rows_u16(a, as, b, bs, n, rows, limit, &got)
+                       : k->sad_rows_u8(a, as, b, bs, n, rows, limit, &got);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_rows, got_rows, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+    }
+}
+
+static void test_sad_rows_random(void)
+{
+    test_rng_t r;
+    uint32_t i, n, rows, t;
+    test_rng_seed(&r, 0x5AD5u);
+    for (i = 0; i < sizeof g_rows8; i++) {
+        g_rows8[i] = (uint8_t)sample(&r, 255u);
+    }
+    for (i = 0; i < sizeof g_rows16 / sizeof g_rows16[0]; i++) {
+        g_rows16[i] = (uint16_t)sample(&r, 65535u);
+    }
+    for (n = 0u; n <= MAX_LEN; n += (n < 40u ? 1u : 13u)) {
+        for (rows = 1u; rows <= ROWS_MAX; rows++) {
+            for (t = 0u; t < 6u; t++) {
+                /* strides of n or more pixels, odd offsets: unaligned rows */
+                const uint32_t oa = test_rng_range(&r, 0u, 7u), ob = test_rng_range(&r, 0u, 7u);
+                const uint32_t sa = n + test_rng_range(&r, 0u, 5u);
+                const uint32_t sb = n + test_rng_range(&r, 0u, 5u);
+                const uint32_t start = t == 0u ? 0u : test_rng_range(&r, 0u, 100000u);
+                /* limits: reached at once, never, or somewhere in between */
+                const uint32_t limit = t == 1u ? 0u
+                                       : t == 2u ? UINT32_MAX
+                                                 : start + test_rng_range(&r, 0u, n * rows * 200u);
+                check_rows(false, g_rows8 + oa, sa, g_rows8 + MAX_LEN * ROWS_MAX + ob, sb, n,
+                           rows, limit, start);
+                check_rows(true, g_rows16 + oa, 2u * sa, g_rows16 + MAX_LEN * ROWS_MAX + ob,
+                           2u * sb, n, rows, limit > UINT32_MAX / 256u ? limit : limit * 200u,
+                           start);
+            }
+        }
+    }
+}
+
+/* The largest sums the callers allow: 65536 pixels of the largest
+   difference, 4096 rows of 16 (stride 0: one row read again). */
+static void test_sad_rows_worst_case(void)
+{
+    uint32_t i;
+    for (i = 0; i < 16u; i++) {
+        g_rows16[i] = 65535u;
+        g_rows16[16u + i] = 0u;
+        g_rows8[i] = 255u;
+        g_rows8[16u + i] = 0u;
+    }
+    check_rows(true, g_rows16, 0u, g_rows16 + 16, 0u, 16u, 4096u, UINT32_MAX, 0u);
+    check_rows(true, g_rows16 + 16, 0u, g_rows16, 0u, 16u, 4096u, 4294901760u, 0u);
+    check_rows(false, g_rows8, 0u, g_rows8 + 16, 0u, 16u, 65535u, UINT32_MAX, 0u);
+}
+
+/* ssda__refine4 against its reference on random sums in the stated ranges
+   (block sums < 2^20, group sums < 2^31), strides and cut levels that stop
+   it after each group; every variant. */
+static uint32_t g_tab_b[4u * 64u + 16u], g_tab_g[4u * 64u + 16u];
+
+static void check_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                          const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest, uint32_t cut)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want_t[4] = {0u, 0u, 0u, 0u}, got_t[4] = {0u, 0u, 0u, 0u};
+    uint32_t want_n = 0u, got_n = 0u, v, i;
+    const uint32_t want = ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, want_t, &want_n);
+    uint32_t got = ssda__refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, ssda__kernel_name());
+    TEST_ASSERT_TRUE(want_n >= 1u && want_n <= 4u);
+    for (i = 0u; i < want_n; i++) {
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_t[i], got_t[i], ssda__kernel_name());
+    }
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got_n = 0u;
+        got = k->refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, k->name);
+        for (i = 0u; i < want_n; i++) {
+            TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_t[i], got_t[i], k->name);
+        }
+    }
+}
+
+static void test_refine4_random(void)
+{
+    test_rng_t r;
+    uint32_t i, t, wgrp[4], wblk[16];
+    test_rng_seed(&r, 0x4EF14Eu);
+    for (t = 0u; t < 2000u; t++) {
+        const uint32_t bmax = t % 3u == 0u ? (1u << 20) - 1u : 4095u * 16u;
+        const uint32_t gmax = t % 3u == 0u ? 0x7FFFFFFFu : 4095u * 64u;
+        const size_t down = 16u + test_rng_range(&r, 0u, 48u); /* a row pitch */
+        const uint32_t at = test_rng_range(&r, 0u, 15u);
+        uint32_t rest, cut;
+        for (i = 0u; i < sizeof g_tab_b / sizeof g_tab_b[0]; i++) {
+            g_tab_b[i] = test_rng_range(&r, 0u, bmax);
+            g_tab_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            wgrp[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 16u; i++) {
+            wblk[i] = test_rng_range(&r, 0u, bmax);
+        }
+        /* rest: the sum of the group terms, as the engine passes it */
+        rest = 0u;
+        for (i = 0u; i < 4u; i++) {
+            const uint32_t a = g_tab_g[at + i * down];
+            rest += a > wgrp[i] ? a - wgrp[i] : wgrp[i] - a;
+        }
+        cut = t % 4u == 0u ? UINT32_MAX : rest + test_rng_range(&r, 0u, 4u * bmax);
+        check_refine4(g_tab_b + at, g_tab_g + at, down, wgrp, wblk, rest, cut);
+    }
+}
+
+/* ssda__bounds4 against its reference: random sums below 2^31 (bounds
+   below 2^32), every row length 0..70 and a few strides; every variant. */
+static uint32_t g_bnd_g[4u * 96u + 80u], g_bnd_want[80], g_bnd_got[80];
+
+static void test_bounds4_random(void)
+{
+    test_rng_t r;
+    uint32_t i, n, t, w[4];
+    const ssda__kernel_variant_t *k;
+    test_rng_seed(&r, 0xB0D4u);
+    for (t = 0u; t < 40u; t++) {
+        const uint32_t gmax = t % 2u == 0u ? 0x3FFFFFFFu : 4095u * 64u; /* 4 terms < 2^32 */
+        const size_t down = 80u + test_rng_range(&r, 0u, 16u);
+        for (i = 0u; i < sizeof g_bnd_g / sizeof g_bnd_g[0]; i++) {
+            g_bnd_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            w[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (n = 0u; n <= 70u; n++) {
+            const uint32_t at = test_rng_range(&r, 0u, 9u);
+            ssda__portable_bounds4(g_bnd_want, g_bnd_g + at, down, w, n);
+            for (i = 0u; i < n; i++) { /* the reference against the definition */
+                uint64_t want = 0u;
+                uint32_t q;
+                for (q = 0u; q < 4u; q++) {
+                    const uint32_t a = g_bnd_g[at + i + q * down];
+                    want += a > w[q] ? a - w[q] : w[q] - a;
+                }
+                TEST_ASSERT_EQUAL_UINT64(want, g_bnd_want[i]);
+            }
+            g_bnd_got[n] = 0xDEADu; /* nothing past n written */
+            ssda__bounds4(g_bnd_got, g_bnd_g + at, down, w, n);
+            TEST_ASSERT_EQUAL_UINT32(0xDEADu, g_bnd_got[n]);
+            if (n == 0u) {
+                continue; /* nothing written: checked above */
+            }
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bnd_want, g_bnd_got, n);
+            for (i = 0u; (k = ssda__kernel_variant(i)) != NULL; i++) {
+                (void)memset(g_bnd_got, 0, sizeof g_bnd_got);
+                k->bounds4(g_bnd_got, g_bnd_g + at, down, w, n);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_bnd_want, g_bnd_got, n, k->name);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -389,6 +587,10 @@ int main(void)
     RUN_TEST(test_sad_u16_worst_case);
     RUN_TEST(test_absdiff_i16_worst_case);
     RUN_TEST(test_long_random_rows);
+    RUN_TEST(test_sad_rows_random);
+    RUN_TEST(test_sad_rows_worst_case);
+    RUN_TEST(test_refine4_random);
+    RUN_TEST(test_bounds4_random);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

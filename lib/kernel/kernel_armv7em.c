@@ -74,7 +74,8 @@ static inline uint32_t lanes_sum(uint32_t d)
     return (d & 0xFFFFu) + (d >> 16);
 }
 
-uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+/* The row loops, shared by the public functions and the rows loops. */
+static SSDA_ALWAYS_INLINE uint32_t row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 255 * 65535 = 16 711 425 */
     const uint8_t *end16;
@@ -110,7 +111,7 @@ uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
     return sum;
 }
 
-uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+static SSDA_ALWAYS_INLINE uint32_t row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 = 4 294 836 225 < 2^32 */
     const uint16_t *end8 = a + (n & ~7u);
@@ -137,6 +138,16 @@ uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
         sum += ssda__portable_sad_row_u16(a, b, n & 1u);
     }
     return sum;
+}
+
+uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
+{
+    return row_u8(a, b, n);
+}
+
+uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n)
+{
+    return row_u16(a, b, n);
 }
 
 uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
@@ -166,6 +177,49 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
         sum += ssda__portable_absdiff_row_i16(a, b, n & 1u);
     }
     return sum;
+}
+
+/* The rows loops (kernels.h) over this set's row functions. */
+uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                           uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
+{
+    uint32_t s = *sum; /* < 2^32: the caller's condition */
+    uint32_t r = 0u;
+    do {
+        s += row_u8(a + r * astride, b + r * bstride, n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                            size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                            uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = *sum; /* < 2^32: the caller's condition */
+    uint32_t r = 0u;
+    do {
+        s += row_u16((const uint16_t *)(const void *)(pa + r * astride),
+                     (const uint16_t *)(const void *)(pb + r * bstride), n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                       const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                       uint32_t *groups)
+{
+    return ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    ssda__portable_bounds4(p, g, down, w, n);
 }
 
 /* Products of four byte pairs added to acc (see the file comment). */

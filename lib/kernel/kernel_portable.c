@@ -41,6 +41,49 @@ uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
     return sum;
 }
 
+/* The rows loops (kernels.h) over this set's row functions. */
+uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                           uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
+{
+    uint32_t s = *sum; /* < 2^32: the caller's condition */
+    uint32_t r = 0u;
+    do {
+        s += ssda__portable_sad_row_u8(a + r * astride, b + r * bstride, n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                            size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                            uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = *sum; /* < 2^32: the caller's condition */
+    uint32_t r = 0u;
+    do {
+        s += ssda__portable_sad_row_u16((const uint16_t *)(const void *)(pa + r * astride),
+                                        (const uint16_t *)(const void *)(pb + r * bstride), n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                       const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                       uint32_t *groups)
+{
+    return ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    ssda__portable_bounds4(p, g, down, w, n);
+}
+
 const char *ssda__kernel_name(void)
 {
     return "portable";

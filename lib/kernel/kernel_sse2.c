@@ -222,6 +222,179 @@ uint32_t avx2_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 }
 #endif
 
+/* The rows loops (kernels.h). A 16-pixel row (the seed's windows) is
+   straight-line code, its total from one horizontal sum; other widths go
+   through the variant's row function. Both variants share the 16-pixel
+   code: one 128-bit PSADBW (8-bit) or two 8-lane halves (16-bit) a row,
+   where 256-bit registers would cost their setup (see the public loops). */
+static SSDA_ALWAYS_INLINE uint32_t sad16_u8(const uint8_t *a, const uint8_t *b)
+{
+    const __m128i s = _mm_sad_epu8(load128(a), load128(b)); /* two 64-bit lanes */
+    return (uint32_t)_mm_cvtsi128_si32(_mm_add_epi64(s, _mm_unpackhi_epi64(s, s)));
+}
+
+static SSDA_ALWAYS_INLINE uint32_t sad16_u16(const uint16_t *a, const uint16_t *b)
+{
+    const __m128i a0 = load128(a), a1 = load128(a + 8), b0 = load128(b), b1 = load128(b + 8);
+    const __m128i d0 = _mm_or_si128(_mm_subs_epu16(a0, b0), _mm_subs_epu16(b0, a0));
+    const __m128i d1 = _mm_or_si128(_mm_subs_epu16(a1, b1), _mm_subs_epu16(b1, a1));
+    const __m128i lo = _mm_set1_epi32(0xFFFF);
+    /* each 32-bit lane: four |d| <= 65535, < 2^18 */
+    const __m128i v = _mm_add_epi32(_mm_add_epi32(_mm_and_si128(d0, lo), _mm_srli_epi32(d0, 16)),
+                                    _mm_add_epi32(_mm_and_si128(d1, lo), _mm_srli_epi32(d1, 16)));
+    return hsum_u32x4(v);
+}
+
+/* The rows loop over 8-bit rows, row the variant's row function (called
+   for widths other than 16: inlined where it is constant). */
+static SSDA_ALWAYS_INLINE uint32_t rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                           size_t bstride, uint32_t n, uint32_t rows,
+                                           uint32_t limit, uint32_t *sum,
+                                           uint32_t (*row)(const uint8_t *, const uint8_t *,
+                                                           uint32_t))
+{
+    uint32_t s = *sum, r = 0u;
+    size_t oa = 0u, ob = 0u;
+    do {
+        s += n == 16u ? sad16_u8(a + oa, b + ob) : row(a + oa, b + ob, n);
+        oa += astride;
+        ob += bstride;
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+static SSDA_ALWAYS_INLINE uint32_t rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                            size_t bstride, uint32_t n, uint32_t rows,
+                                            uint32_t limit, uint32_t *sum,
+                                            uint32_t (*row)(const uint16_t *, const uint16_t *,
+                                                            uint32_t))
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = *sum, r = 0u;
+    size_t oa = 0u, ob = 0u;
+    do {
+        const uint16_t *qa = (const uint16_t *)(const void *)(pa + oa);
+        const uint16_t *qb = (const uint16_t *)(const void *)(pb + ob);
+        s += n == 16u ? sad16_u16(qa, qb) : row(qa, qb, n);
+        oa += astride;
+        ob += bstride;
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+static uint32_t sse2_sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                 size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                 uint32_t *sum)
+{
+    return rows_u8(a, astride, b, bstride, n, rows, limit, sum, sse2_sad_row_u8);
+}
+
+static uint32_t sse2_sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                  size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                  uint32_t *sum)
+{
+    return rows_u16(a, astride, b, bstride, n, rows, limit, sum, sse2_sad_row_u16);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+static uint32_t avx2_sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                 size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                 uint32_t *sum)
+{
+    return rows_u8(a, astride, b, bstride, n, rows, limit, sum, avx2_sad_row_u8);
+}
+
+static uint32_t avx2_sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                  size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                                  uint32_t *sum)
+{
+    return rows_u16(a, astride, b, bstride, n, rows, limit, sum, avx2_sad_row_u16);
+}
+#endif
+
+/* ssda__refine4 (kernels.h): a group's four block sums (every fourth
+   entry: b0 b4 b1 b5 and b8 b12 b9 0, then their low halves) gathered into
+   one register by unpacks, their differences
+   with the window's (signed: < 2^20) made absolute as x ^ m - m with m
+   the sign mask, and summed across the lanes. */
+static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                             const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
+                             uint32_t cut, uint32_t *term_out, uint32_t *groups)
+{
+    uint32_t k;
+    size_t o = 0u; /* group k's row */
+    for (k = 0u; k < 4u; k++) {
+        /* no entry past b[12] is read: it may end the table's row */
+        const uint32_t *bk = &b[o];
+        const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)bk),
+                                             _mm_loadl_epi64((const __m128i *)(const void *)&bk[4]));
+        const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&bk[8]),
+                                             _mm_cvtsi32_si128((int)bk[12])); /* b8 b12 b9 0 */
+        const __m128i d = _mm_sub_epi32(_mm_unpacklo_epi64(x, y), load128(&wblk[(size_t)4u * k]));
+        const __m128i m = _mm_srai_epi32(d, 31);
+        const uint32_t s = hsum_u32x4(_mm_sub_epi32(_mm_xor_si128(d, m), m));
+        const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];
+        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
+        term_out[k] = s;
+        if (rest >= cut) {
+            *groups = k + 1u;
+            return rest;
+        }
+        o += down;
+    }
+    *groups = 4u;
+    return rest;
+}
+
+/* ssda__bounds4 (kernels.h): 4 (SSE2) or 8 (AVX2) positions a step, the
+   absolute values by the sign mask (SSE2) or VPABSD, the last 0..7 by
+   the reference. */
+static void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+                         uint32_t n)
+{
+    const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
+    const __m128i w2 = _mm_set1_epi32((int)w[2]), w3 = _mm_set1_epi32((int)w[3]);
+    uint32_t i = 0u;
+    for (; i + 4u <= n; i += 4u) {
+        const __m128i d0 = _mm_sub_epi32(load128(g + i), w0);
+        const __m128i d1 = _mm_sub_epi32(load128(g + down + i), w1);
+        const __m128i d2 = _mm_sub_epi32(load128(g + 2u * down + i), w2);
+        const __m128i d3 = _mm_sub_epi32(load128(g + 3u * down + i), w3);
+        const __m128i m0 = _mm_srai_epi32(d0, 31), m1 = _mm_srai_epi32(d1, 31);
+        const __m128i m2 = _mm_srai_epi32(d2, 31), m3 = _mm_srai_epi32(d3, 31);
+        const __m128i a = _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d0, m0), m0),
+                                        _mm_sub_epi32(_mm_xor_si128(d1, m1), m1));
+        const __m128i b = _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d2, m2), m2),
+                                        _mm_sub_epi32(_mm_xor_si128(d3, m3), m3));
+        _mm_storeu_si128((__m128i *)(void *)(p + i), _mm_add_epi32(a, b));
+    }
+    ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+static __attribute__((target("avx2")))
+void avx2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+    const __m256i w0 = _mm256_set1_epi32((int)w[0]), w1 = _mm256_set1_epi32((int)w[1]);
+    const __m256i w2 = _mm256_set1_epi32((int)w[2]), w3 = _mm256_set1_epi32((int)w[3]);
+    uint32_t i = 0u;
+    for (; i + 8u <= n; i += 8u) {
+        const __m256i a0 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + i), w0));
+        const __m256i a1 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + down + i), w1));
+        const __m256i a2 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 2u * down + i), w2));
+        const __m256i a3 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 3u * down + i), w3));
+        _mm256_storeu_si256((__m256i *)(void *)(p + i),
+                            _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3)));
+    }
+    ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -278,12 +451,57 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
     return sse2_absdiff_row_i16(a, b, n);
 }
 
+/* The rows loops: the variant of the public row loops (AVX2 only for the
+   long rows, as there). */
+uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                           uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 128u && x86_avx2() != 0u) {
+        return avx2_sad_rows_u8(a, astride, b, bstride, n, rows, limit, sum);
+    }
+#endif
+    return sse2_sad_rows_u8(a, astride, b, bstride, n, rows, limit, sum);
+}
+
+uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                            size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                            uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 32u && x86_avx2() != 0u) {
+        return avx2_sad_rows_u16(a, astride, b, bstride, n, rows, limit, sum);
+    }
+#endif
+    return sse2_sad_rows_u16(a, astride, b, bstride, n, rows, limit, sum);
+}
+
+uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                       const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                       uint32_t *groups)
+{
+    return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
+void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (n >= 8u && x86_avx2() != 0u) {
+        avx2_bounds4(p, g, down, w, n);
+        return;
+    }
+#endif
+    sse2_bounds4(p, g, down, w, n);
+}
+
 const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
-        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16 },
+        { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
+          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4 },
 #if defined(__GNUC__) || defined(__clang__)
-        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16 },
+        { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
+          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

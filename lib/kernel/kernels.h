@@ -21,6 +21,40 @@ SSDA_INTERNAL uint32_t ssda__sad_row_u8(const uint8_t *a, const uint8_t *b, uint
    Worst case 65535 * 65535 = 4 294 836 225 < 2^32 - 1. */
 SSDA_INTERNAL uint32_t ssda__sad_row_u16(const uint16_t *a, const uint16_t *b, uint32_t n);
 
+/* The SAD rows of a placement, cut as the engine cuts them: rows of n
+   pixels (row r of a at a + r * astride bytes, of b likewise) added one
+   after another to *sum, stopping after the first row at which *sum
+   reaches limit. Returns the rows added (1 .. rows, rows >= 1): rows when
+   the limit was never reached after a row before the last; the caller
+   compares *sum with limit. The caller guarantees that *sum stays below
+   2^32 (the engine's fast path: every SAD of the window < 2^32 - 1). The
+   same sums as ssda__sad_row_u8/u16 row by row; one call for several rows
+   (issue 18: a call per 16-pixel row cost more than the row). */
+SSDA_INTERNAL uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b,
+                                         size_t bstride, uint32_t n, uint32_t rows,
+                                         uint32_t limit, uint32_t *sum);
+SSDA_INTERNAL uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                          size_t bstride, uint32_t n, uint32_t rows,
+                                          uint32_t limit, uint32_t *sum);
+
+/* Tracking's 4 x 4 block terms for a 16-column window of 4 groups of 4
+   rows (the engine's tab_refine4): for group k = 0, 1, ... the sum s_k of
+   |b[k * down + 4 j] - wblk[4 k + j]|, j < 4 (block sums < 2^20), replaces
+   the group's term |g[k * down] - wgrp[k]| (group sums < 2^31) in rest:
+   rest = rest - term + s_k, term_out[k] = s_k, stopping after the first
+   group at which rest reaches cut. Returns rest (< 2^32: the caller's
+   bound, at most the SAD) and sets *groups to the groups done (1..4). */
+SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                                     const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
+                                     uint32_t cut, uint32_t *term_out, uint32_t *groups);
+
+/* One row of tracking's group bounds (the engine's pre_bounds, 4 groups):
+   p[i] = sum over k < 4 of |g[i + k * down] - w[k]|, i < n, with every g
+   and w below 2^31 (signed differences) and every p[i] below 2^32 (the
+   caller's: a bound <= a SAD). p must not overlap g. */
+SSDA_INTERNAL void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+                                 uint32_t n);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -46,6 +80,15 @@ typedef struct {
     uint32_t (*sad_row_u8)(const uint8_t *a, const uint8_t *b, uint32_t n);
     uint32_t (*sad_row_u16)(const uint16_t *a, const uint16_t *b, uint32_t n);
     uint32_t (*absdiff_row_i16)(const int16_t *a, const int16_t *b, uint32_t n);
+    uint32_t (*sad_rows_u8)(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
+                            uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum);
+    uint32_t (*sad_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
+                             size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
+                             uint32_t *sum);
+    uint32_t (*refine4)(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                        const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                        uint32_t *groups);
+    void (*bounds4)(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

@@ -62,4 +62,49 @@ static inline uint64_t ssda__portable_dot_row_u16(const uint16_t *a, const uint1
     return sum;
 }
 
+/* ssda__refine4 (kernels.h), the reference: signed differences (block
+   sums < 2^20, group sums < 2^31), no compare and branch. */
+static inline uint32_t ssda__portable_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+                                              const uint32_t *wgrp, const uint32_t *wblk,
+                                              uint32_t rest, uint32_t cut, uint32_t *term_out,
+                                              uint32_t *groups)
+{
+    uint32_t k;
+    size_t o = 0u; /* group k's row */
+    for (k = 0u; k < 4u; k++) {
+        const uint32_t *w = &wblk[(size_t)4u * k];
+        const int32_t dg = (int32_t)g[o] - (int32_t)wgrp[k];
+        const int32_t d0 = (int32_t)b[o] - (int32_t)w[0];
+        const int32_t d1 = (int32_t)b[o + 4u] - (int32_t)w[1];
+        const int32_t d2 = (int32_t)b[o + 8u] - (int32_t)w[2];
+        const int32_t d3 = (int32_t)b[o + 12u] - (int32_t)w[3];
+        const uint32_t s = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                           (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+        rest = rest - (uint32_t)(dg < 0 ? -dg : dg) + s; /* s >= the group's term */
+        term_out[k] = s;
+        if (rest >= cut) {
+            *groups = k + 1u;
+            return rest;
+        }
+        o += down;
+    }
+    *groups = 4u;
+    return rest;
+}
+
+/* ssda__bounds4 (kernels.h), the reference. */
+static inline void ssda__portable_bounds4(uint32_t *p, const uint32_t *g, size_t down,
+                                          const uint32_t *w, uint32_t n)
+{
+    const int32_t w0 = (int32_t)w[0], w1 = (int32_t)w[1], w2 = (int32_t)w[2], w3 = (int32_t)w[3];
+    const uint32_t *g1 = &g[down], *g2 = &g1[down], *g3 = &g2[down];
+    size_t i;
+    for (i = 0u; i < n; i++) {
+        const int32_t d0 = (int32_t)g[i] - w0, d1 = (int32_t)g1[i] - w1;
+        const int32_t d2 = (int32_t)g2[i] - w2, d3 = (int32_t)g3[i] - w3;
+        p[i] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+               (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
+    }
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
