@@ -1709,9 +1709,12 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
    completed are scan_predict's, with one compare a position to build the
    masks instead of the ring loop's test of each (GOES-16, 16 x 16 in
    32 x 32: 117 -> 78 million host instructions for the grid; issue 18).
-   open: 32 words in the uniqueness list's place, unused here. */
+   open: 2 * OPEN_MAX words (a row's mask per row, then a column's per
+   column) in the uniqueness list's place, unused here. */
 #ifndef SSDA_CFG_NO_PREDICT
 #define OPEN_MAX 32u
+/* the masks fit the list's room, which every shared-table buffer has */
+typedef char open_masks_fit[(2u * OPEN_MAX * sizeof(uint32_t) <= SSDA_MATCH_UNIQUE_WORK) ? 1 : -1];
 
 /* Byte offset of the uniqueness list in the work buffer (match.h's layout:
    after the bounds tables, rounded up to 8). */

@@ -465,10 +465,35 @@ static void test_sad_rows_worst_case(void)
     check_rows(false, g_rows8, 0u, g_rows8 + 16, 0u, 16u, 65535u, UINT32_MAX, 0u);
 }
 
-/* ssda__refine4 against its reference on random sums in the stated ranges
-   (block sums < 2^20, group sums < 2^31), strides and cut levels that stop
-   it after each group; every variant. */
+/* ssda__refine4 against kernels.h's definition summed in 64 bits, and
+   every variant against the reference, on random sums in the stated ranges
+   (block sums < 2^20, group sums < 2^31, rest and every step of it below
+   2^32), strides and cut levels that stop it after each group. */
 static uint32_t g_tab_b[4u * 64u + 16u], g_tab_g[4u * 64u + 16u];
+
+/* kernels.h's ssda__refine4, written from its comment: 64-bit sums. */
+static uint32_t refine4_definition(const uint32_t *b, const uint32_t *g, size_t down,
+                                   const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
+                                   uint32_t cut, uint32_t *term_out, uint32_t *groups)
+{
+    int64_t r = rest;
+    uint32_t k, j;
+    for (k = 0u; k < 4u; k++) {
+        int64_t s = 0, term = (int64_t)g[k * down] - (int64_t)wgrp[k];
+        for (j = 0u; j < 4u; j++) {
+            const int64_t d = (int64_t)b[k * down + 4u * j] - (int64_t)wblk[4u * k + j];
+            s += d < 0 ? -d : d;
+        }
+        r = r - (term < 0 ? -term : term) + s;
+        TEST_ASSERT_TRUE(r >= 0 && r <= (int64_t)UINT32_MAX); /* the contract's range */
+        term_out[k] = (uint32_t)s;
+        if (r >= (int64_t)cut) {
+            break;
+        }
+    }
+    *groups = k < 4u ? k + 1u : 4u;
+    return (uint32_t)r;
+}
 
 static void check_refine4(const uint32_t *b, const uint32_t *g, size_t down,
                           const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest, uint32_t cut)
@@ -476,8 +501,14 @@ static void check_refine4(const uint32_t *b, const uint32_t *g, size_t down,
     const ssda__kernel_variant_t *k;
     uint32_t want_t[4] = {0u, 0u, 0u, 0u}, got_t[4] = {0u, 0u, 0u, 0u};
     uint32_t want_n = 0u, got_n = 0u, v, i;
-    const uint32_t want = ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, want_t, &want_n);
-    uint32_t got = ssda__refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+    const uint32_t want = refine4_definition(b, g, down, wgrp, wblk, rest, cut, want_t, &want_n);
+    uint32_t got = ssda__portable_refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, "reference");
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, "reference");
+    for (i = 0u; i < want_n; i++) {
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_t[i], got_t[i], "reference");
+    }
+    got = ssda__refine4(b, g, down, wgrp, wblk, rest, cut, got_t, &got_n);
     TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
     TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_n, got_n, ssda__kernel_name());
     TEST_ASSERT_TRUE(want_n >= 1u && want_n <= 4u);
@@ -510,8 +541,11 @@ static void test_refine4_random(void)
             g_tab_b[i] = test_rng_range(&r, 0u, bmax);
             g_tab_g[i] = test_rng_range(&r, 0u, gmax);
         }
-        for (i = 0u; i < 4u; i++) {
-            wgrp[i] = test_rng_range(&r, 0u, gmax);
+        for (i = 0u; i < 4u; i++) { /* terms below 2^29: rest below 2^31 */
+            const uint32_t gi = g_tab_g[at + i * down];
+            const uint32_t d = test_rng_range(&r, 0u, gmax < (1u << 29) ? gmax : (1u << 29) - 1u);
+            wgrp[i] = test_rng_range(&r, 0u, 1u) != 0u ? (gi > d ? gi - d : 0u)
+                                                      : (gmax - gi > d ? gi + d : gmax);
         }
         for (i = 0u; i < 16u; i++) {
             wblk[i] = test_rng_range(&r, 0u, bmax);
