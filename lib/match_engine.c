@@ -1843,24 +1843,27 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     dmax = py > dmax ? py : dmax;
     dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;
     for (d = 1; d <= dmax && left != 0u && err == SSDA_OK; d++) {
-        const uint32_t lo = (uint32_t)(px - d < 0 ? 0 : px - d);
-        const uint32_t hi = (uint32_t)(px + d >= nx ? nx - 1 : px + d);
-        const uint32_t y0 = (uint32_t)(py - d + 1 < 0 ? 0 : py - d + 1);
-        const uint32_t y1 = (uint32_t)(py + d - 1 >= ny ? ny - 1 : py + d - 1);
+        /* top, bottom: rows py -+ d, columns lo .. hi (row_span); left,
+           right: columns px -+ d, rows y0 .. y1 (col_span; none when
+           y0 > y1: d = 1 on a range one row high). The spans made first:
+           fewer values live across the evaluations (the M4F's frame; issue
+           18's 320 B). One call site of open_run: one copy of the
+           evaluation (flash). */
+        const uint32_t row_span =
+            bit_span((uint32_t)(px - d < 0 ? 0 : px - d), (uint32_t)(px + d >= nx ? nx - 1 : px + d));
+        const int32_t y0 = py - d + 1 < 0 ? 0 : py - d + 1;
+        const int32_t y1 = py + d - 1 >= ny ? ny - 1 : py + d - 1;
+        const uint32_t col_span = y0 <= y1 ? bit_span((uint32_t)y0, (uint32_t)y1) : 0u;
         uint32_t side;
-        /* top, bottom: rows py -+ d, columns lo .. hi; left, right: columns
-           px -+ d, rows y0 .. y1 (none when y0 > y1: d = 1 on a range one
-           row high). One call site of open_run: one copy of the evaluation
-           (flash). */
         for (side = 0u; side < 4u && err == SSDA_OK; side++) {
             const int32_t fix = side < 2u ? (side == 0u ? py - d : py + d)
                                           : (side == 2u ? px - d : px + d);
             const bool row = side < 2u;
             uint32_t m = 0u;
             if (row && fix >= 0 && fix < ny) {
-                m = open[fix] & bit_span(lo, hi);
-            } else if (!row && fix >= 0 && fix < nx && y0 <= y1) {
-                m = cols[fix] & bit_span(y0, y1);
+                m = open[fix] & row_span;
+            } else if (!row && fix >= 0 && fix < nx) {
+                m = cols[fix] & col_span;
             } else {
                 /* the side lies outside the range */
             }
