@@ -1714,7 +1714,7 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
 #ifndef SSDA_CFG_NO_PREDICT
 #define OPEN_MAX 32u
 /* the masks fit the list's room, which every shared-table buffer has */
-typedef char open_masks_fit[(2u * OPEN_MAX * sizeof(uint32_t) <= SSDA_MATCH_UNIQUE_WORK) ? 1 : -1];
+typedef char open_masks_fit[(sizeof(uint32_t) * 2u * OPEN_MAX <= SSDA_MATCH_UNIQUE_WORK) ? 1 : -1];
 
 /* Byte offset of the uniqueness list in the work buffer (match.h's layout:
    after the bounds tables, rounded up to 8). */
