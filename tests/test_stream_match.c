@@ -268,7 +268,8 @@ static void test_sixteen_wide_windows_count_as_the_general_path(void)
                     snprintf(msg, sizeof msg,
                              "16 x %u, config %u: ops %llu completed %u vs ops %llu completed %u",
                              (unsigned)heights[hi], (unsigned)i, (unsigned long long)want.pixel_ops,
-                             want.completed, (unsigned long long)got.pixel_ops, got.completed);
+                             (unsigned)want.completed, (unsigned long long)got.pixel_ops,
+                             (unsigned)got.completed);
                     TEST_FAIL_MESSAGE(msg);
                 }
             }
