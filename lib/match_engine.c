@@ -538,7 +538,6 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
     }
     return rest;
 }
-#endif
 
 /* tab_refine for eval_fast with 4 groups of 4 blocks (16 x 16 windows:
    shared tables hold blocks only for widths that are multiples of 4; 16..19
@@ -560,6 +559,7 @@ static SSDA_NOINLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, u
     e->ops += (uint64_t)4u * groups;
     return rest;
 }
+#endif
 
 /* cut_level for eval_fast, in 32 bits: there fixed_cut is UINT64_MAX
    (FIXED is never fast) and a completed SAD < 2^32 - 1, so the level is
@@ -616,6 +616,32 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
 }
 #endif
 
+/* fast_rows' first row, in chunks of SSDA_FIRST_ROW_CHUNK pixels (most
+   positions are cut there): partial + rest against cut_at after each chunk.
+   Returns 1 when cut (its pixels counted in e->ops), else 0 with *partial
+   the row's SAD. */
+static SSDA_ALWAYS_INLINE int first_row_cut(engine_t *e, const uint8_t *a, const uint8_t *w,
+                                            uint32_t rest, uint32_t cut_at, uint32_t *partial)
+{
+    const uint32_t L = e->L, fmt = e->area->format;
+    uint32_t done = 0u, p = 0u;
+    while (done < L) {
+        const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
+        p += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
+        done += n;
+        if (done < L && p + rest >= cut_at) {
+            e->ops += done;
+            return 1;
+        }
+    }
+    *partial = p;
+    if (p + rest >= cut_at) {
+        e->ops += L;
+        return 1;
+    }
+    return 0;
+}
+
 #if KERNEL_LOOPS
 /* The rows of a position that passed eval_fast's checks: partial + rest
    against cut_at after each row (the first row in chunks), as in
@@ -638,8 +664,6 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
     if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
         /* the first row in chunks: most positions are cut there. Group 0
            starts with it when rest != 0, as in eval_position */
-        const uint32_t fmt = e->area->format;
-        uint32_t done = 0u;
 #ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u) {
             rest -= e->term[0];
@@ -647,17 +671,7 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             next_start = e->group;
         }
 #endif
-        while (done < L) {
-            const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
-            partial += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
-            done += n;
-            if (done < L && partial + rest >= cut_at) {
-                e->ops += done;
-                return 0;
-            }
-        }
-        if (partial + rest >= cut_at) {
-            e->ops += L;
+        if (first_row_cut(e, a, w, rest, cut_at, &partial)) {
             return 0;
         }
         k = 1u;
@@ -709,8 +723,6 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
     if (L >= 2u * SSDA_FIRST_ROW_CHUNK) {
         /* the first row in chunks: most positions are cut there. Group 0
            starts with it when rest != 0, as in eval_position */
-        const uint32_t fmt = e->area->format;
-        uint32_t done = 0u;
 #ifndef SSDA_CFG_NO_BOUNDS
         if (rest != 0u) {
             rest -= e->term[0];
@@ -718,17 +730,7 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
             next_start = e->group;
         }
 #endif
-        while (done < L) {
-            const uint32_t n = L - done < SSDA_FIRST_ROW_CHUNK ? L - done : SSDA_FIRST_ROW_CHUNK;
-            partial += row_sad(e, a + (size_t)done * fmt, w + (size_t)done * fmt, n);
-            done += n;
-            if (done < L && partial + rest >= cut_at) {
-                e->ops += done;
-                return 0;
-            }
-        }
-        if (partial + rest >= cut_at) {
-            e->ops += L;
+        if (first_row_cut(e, a, w, rest, cut_at, &partial)) {
             return 0;
         }
         k = 1u;

@@ -191,6 +191,20 @@ static void check_all_modes(ssda_pitch_config_t cfg, const int16_t *x, uint32_t 
     }
 }
 
+/* The octave case into g_sig[0 .. n): /i/ at 135 Hz with a little vibrato
+   and noise at 35 dB SNR, 16 kHz. */
+static void make_octave_case(uint32_t n)
+{
+    test_voice_t v;
+    test_rng_t r;
+    test_voice_vowel_i(&v, 135.0, 12000.0);
+    v.vibrato_hz = 5.0;
+    v.vibrato_depth = 0.01;
+    test_signal_voice(g_sig, n, 0u, 16000u, &v);
+    test_rng_seed(&r, 4u);
+    test_signal_add_noise(g_sig, n, 35.0, &r);
+}
+
 static void test_vowel_with_vibrato_and_noise_matches_reference(void)
 {
     ssda_pitch_config_t cfg = {0};
@@ -213,15 +227,8 @@ static void test_octave_check_matches_reference(void)
     /* /i/ at 135 Hz: F1 (270 Hz) on the second harmonic puts the first dip
        at T / 2; the octave check must move to T, in every mode */
     ssda_pitch_config_t cfg = {0};
-    test_voice_t v;
-    test_rng_t r;
     uint32_t n = 6000u;
-    test_voice_vowel_i(&v, 135.0, 12000.0);
-    v.vibrato_hz = 5.0;
-    v.vibrato_depth = 0.01;
-    test_signal_voice(g_sig, n, 0u, 16000u, &v);
-    test_rng_seed(&r, 4u);
-    test_signal_add_noise(g_sig, n, 35.0, &r);
+    make_octave_case(n);
     cfg.sample_rate_hz = 16000u;
     cfg.hop = 150u;
     g_octave_moves = 0u;
@@ -532,14 +539,8 @@ static void test_reduced_definitions_match_reference(void)
        and so must the library, in every mode; with step 4 the lag differs. */
     ssda_pitch_config_t cfg = {0};
     test_voice_t v;
-    test_rng_t r;
     uint32_t n = 6000u, count, nref, f, moved = 0u;
-    test_voice_vowel_i(&v, 135.0, 12000.0);
-    v.vibrato_hz = 5.0;
-    v.vibrato_depth = 0.01;
-    test_signal_voice(g_sig, n, 0u, 16000u, &v);
-    test_rng_seed(&r, 4u);
-    test_signal_add_noise(g_sig, n, 35.0, &r);
+    make_octave_case(n);
     cfg.sample_rate_hz = 16000u;
     cfg.hop = 150u;
     cfg.flags = SSDA_PITCH_NO_OCTAVE;

@@ -183,31 +183,14 @@ uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
                            uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
 {
-    uint32_t s = *sum; /* < 2^32: the caller's condition */
-    uint32_t r = 0u;
-    do {
-        s += row_u8(a + r * astride, b + r * bstride, n);
-        r++;
-    } while (r < rows && s < limit);
-    *sum = s;
-    return r;
+    return ssda__portable_rows_u8(row_u8, a, astride, b, bstride, n, rows, limit, sum);
 }
 
 uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                             size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
                             uint32_t *sum)
 {
-    const uint8_t *pa = (const uint8_t *)(const void *)a;
-    const uint8_t *pb = (const uint8_t *)(const void *)b;
-    uint32_t s = *sum; /* < 2^32: the caller's condition */
-    uint32_t r = 0u;
-    do {
-        s += row_u16((const uint16_t *)(const void *)(pa + r * astride),
-                     (const uint16_t *)(const void *)(pb + r * bstride), n);
-        r++;
-    } while (r < rows && s < limit);
-    *sum = s;
-    return r;
+    return ssda__portable_rows_u16(row_u16, a, astride, b, bstride, n, rows, limit, sum);
 }
 
 uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,

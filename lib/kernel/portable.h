@@ -6,6 +6,7 @@
 #ifndef SSDA_KERNEL_PORTABLE_H
 #define SSDA_KERNEL_PORTABLE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 static inline uint32_t ssda__portable_sad_row_u8(const uint8_t *a, const uint8_t *b, uint32_t n)
@@ -26,6 +27,45 @@ static inline uint32_t ssda__portable_sad_row_u16(const uint16_t *a, const uint1
         sum += (a[i] > b[i]) ? (uint32_t)a[i] - b[i] : (uint32_t)b[i] - a[i];
     }
     return sum;
+}
+
+/* The rows loops of kernels.h (ssda__sad_rows_u8/u16) over a set's row
+   function: rows summed into *sum (< 2^32: the caller's condition) until
+   `rows` are done or the sum reaches limit; returns the rows summed. */
+static inline uint32_t ssda__portable_rows_u8(uint32_t (*row)(const uint8_t *, const uint8_t *,
+                                                              uint32_t),
+                                              const uint8_t *a, size_t astride, const uint8_t *b,
+                                              size_t bstride, uint32_t n, uint32_t rows,
+                                              uint32_t limit, uint32_t *sum)
+{
+    uint32_t s = *sum;
+    uint32_t r = 0u;
+    do {
+        s += row(a + r * astride, b + r * bstride, n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
+}
+
+/* The same for 16-bit rows (strides in bytes). */
+static inline uint32_t ssda__portable_rows_u16(uint32_t (*row)(const uint16_t *, const uint16_t *,
+                                                               uint32_t),
+                                               const uint16_t *a, size_t astride, const uint16_t *b,
+                                               size_t bstride, uint32_t n, uint32_t rows,
+                                               uint32_t limit, uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = *sum;
+    uint32_t r = 0u;
+    do {
+        s += row((const uint16_t *)(const void *)(pa + r * astride),
+                 (const uint16_t *)(const void *)(pb + r * bstride), n);
+        r++;
+    } while (r < rows && s < limit);
+    *sum = s;
+    return r;
 }
 
 static inline uint32_t ssda__portable_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
