@@ -45,14 +45,14 @@ uint64_t ssda__dot_u16(const uint16_t *a, size_t astride, const uint16_t *b,
 uint32_t ssda__sad_rows_u8(const uint8_t *a, size_t astride, const uint8_t *b, size_t bstride,
                            uint32_t n, uint32_t rows, uint32_t limit, uint32_t *sum)
 {
-    return ssda__portable_rows_u8(ssda__portable_sad_row_u8, a, astride, b, bstride, n, rows, limit, sum);
+    return ssda__portable_rows_u8(ssda__sad_row_u8, a, astride, b, bstride, n, rows, limit, sum);
 }
 
 uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                             size_t bstride, uint32_t n, uint32_t rows, uint32_t limit,
                             uint32_t *sum)
 {
-    return ssda__portable_rows_u16(ssda__portable_sad_row_u16, a, astride, b, bstride, n, rows, limit, sum);
+    return ssda__portable_rows_u16(ssda__sad_row_u16, a, astride, b, bstride, n, rows, limit, sum);
 }
 
 uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
