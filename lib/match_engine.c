@@ -618,10 +618,10 @@ static SSDA_ALWAYS_INLINE uint32_t rows_sad(const engine_t *e, const uint8_t *a,
 
 /* fast_rows' first row, in chunks of SSDA_FIRST_ROW_CHUNK pixels (most
    positions are cut there): partial + rest against cut_at after each chunk.
-   Returns 1 when cut (its pixels counted in e->ops), else 0 with *partial
-   the row's SAD. */
-static SSDA_ALWAYS_INLINE int first_row_cut(engine_t *e, const uint8_t *a, const uint8_t *w,
-                                            uint32_t rest, uint32_t cut_at, uint32_t *partial)
+   Returns true when cut (its pixels counted in e->ops), else false with
+   *partial the row's SAD. */
+static SSDA_ALWAYS_INLINE bool first_row_cut(engine_t *e, const uint8_t *a, const uint8_t *w,
+                                             uint32_t rest, uint32_t cut_at, uint32_t *partial)
 {
     const uint32_t L = e->L, fmt = e->area->format;
     uint32_t done = 0u, p = 0u;
@@ -631,15 +631,15 @@ static SSDA_ALWAYS_INLINE int first_row_cut(engine_t *e, const uint8_t *a, const
         done += n;
         if (done < L && p + rest >= cut_at) {
             e->ops += done;
-            return 1;
+            return true;
         }
     }
     *partial = p;
     if (p + rest >= cut_at) {
         e->ops += L;
-        return 1;
+        return true;
     }
-    return 0;
+    return false;
 }
 
 #if KERNEL_LOOPS
