@@ -16,6 +16,7 @@
 
 #include "unity.h"
 #include "ssda/stream.h"
+#include "test_image.h"
 #include "test_rng.h"
 #include "test_source.h"
 #include "test_push.h"
@@ -51,32 +52,12 @@ static const geometry_t k_geoms[] = {
 };
 #define N_GEOMS (sizeof k_geoms / sizeof k_geoms[0])
 
-/* A textured 12-bit image (random values, each averaged with its right,
-   lower and lower-right neighbours) and its 8-bit copy (v >> 4). */
-static void fill_texture(uint16_t *p16, uint8_t *p8, uint32_t w, uint32_t h, test_rng_t *r)
-{
-    uint32_t x, y;
-    for (x = 0; x < w * h; x++) {
-        p16[x] = (uint16_t)test_rng_range(r, 0, 4095);
-    }
-    for (y = 0; y + 1u < h; y++) {
-        for (x = 0; x + 1u < w; x++) {
-            uint32_t s = (uint32_t)p16[y * w + x] + p16[y * w + x + 1u] + p16[(y + 1u) * w + x] +
-                         p16[(y + 1u) * w + x + 1u];
-            p16[y * w + x] = (uint16_t)(s / 4u);
-        }
-    }
-    for (x = 0; x < w * h; x++) {
-        p8[x] = (uint8_t)(p16[x] >> 4);
-    }
-}
-
 static void make_images(uint32_t seed)
 {
     test_rng_t r;
     uint32_t x, y;
     test_rng_seed(&r, seed);
-    fill_texture(&g_a16[0][0], &g_a8[0][0], IW, IH, &r);
+    test_fill_texture_12bit(&g_a16[0][0], &g_a8[0][0], IW, IH, &r);
     for (y = 0; y < IH; y++) { /* b: a moved by (-1, +2), wrapped */
         for (x = 0; x < IW; x++) {
             g_b16[y][x] = g_a16[(y + IH - 2u) % IH][(x + 1u) % IW];

@@ -14,6 +14,7 @@
 
 #include "unity.h"
 #include "ssda/stream.h"
+#include "test_image.h"
 #include "test_rng.h"
 #include "test_source.h"
 #include "test_push.h"
@@ -58,32 +59,12 @@ static int fail_code(uint64_t k)
 }
 
 /* SECOND is FIRST moved by (+2, -1) with a little noise (8-bit). */
-/* A textured 12-bit image (random values, each averaged with its right,
-   lower and lower-right neighbours) and its 8-bit copy (v >> 4). */
-static void fill_texture(uint16_t *p16, uint8_t *p8, uint32_t w, uint32_t h, test_rng_t *r)
-{
-    uint32_t x, y;
-    for (x = 0; x < w * h; x++) {
-        p16[x] = (uint16_t)test_rng_range(r, 0, 4095);
-    }
-    for (y = 0; y + 1u < h; y++) {
-        for (x = 0; x + 1u < w; x++) {
-            uint32_t s = (uint32_t)p16[y * w + x] + p16[y * w + x + 1u] + p16[(y + 1u) * w + x] +
-                         p16[(y + 1u) * w + x + 1u];
-            p16[y * w + x] = (uint16_t)(s / 4u);
-        }
-    }
-    for (x = 0; x < w * h; x++) {
-        p8[x] = (uint8_t)(p16[x] >> 4);
-    }
-}
-
 static void make_images(uint32_t seed)
 {
     test_rng_t r;
     uint32_t x, y;
     test_rng_seed(&r, seed);
-    fill_texture(&g_f16[0][0], &g_f8[0][0], IW, IH, &r);
+    test_fill_texture_12bit(&g_f16[0][0], &g_f8[0][0], IW, IH, &r);
     for (y = 0; y < IH; y++) {
         for (x = 0; x < IW; x++) {
             uint32_t sx = (x + IW - 2u) % IW, sy = (y + 1u) % IH;

@@ -96,6 +96,25 @@ void test_fill_texture_u16(uint16_t *p, uint32_t w, uint32_t h, uint32_t stride,
     smooth_fill(p, 2u, w, h, stride, maxval, r);
 }
 
+void test_fill_texture_12bit(uint16_t *p16, uint8_t *p8, uint32_t w, uint32_t h,
+                             test_rng_t *r)
+{
+    uint32_t x, y;
+    for (x = 0; x < w * h; x++) {
+        p16[x] = (uint16_t)test_rng_range(r, 0, 4095);
+    }
+    for (y = 0; y + 1u < h; y++) {
+        for (x = 0; x + 1u < w; x++) {
+            uint32_t s = (uint32_t)p16[y * w + x] + p16[y * w + x + 1u] + p16[(y + 1u) * w + x] +
+                         p16[(y + 1u) * w + x + 1u];
+            p16[y * w + x] = (uint16_t)(s / 4u);
+        }
+    }
+    for (x = 0; x < w * h; x++) {
+        p8[x] = (uint8_t)(p16[x] >> 4);
+    }
+}
+
 void test_view_pair(int wide, const void *a16, const void *b16, const void *a8, const void *b8,
                     uint16_t w, uint16_t h, ssda_view_t *a, ssda_view_t *b)
 {

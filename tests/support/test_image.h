@@ -25,6 +25,12 @@ void test_fill_texture_u8(uint8_t *p, uint32_t w, uint32_t h, uint32_t stride, t
 void test_fill_texture_u16(uint16_t *p, uint32_t w, uint32_t h, uint32_t stride,
                            uint32_t maxval, test_rng_t *r);
 
+/* A textured 12-bit w x h image (random values 0..4095, each averaged
+   with its right, lower and lower-right neighbours, in place in reading
+   order; contiguous rows) into p16, and its 8-bit copy (v >> 4) into p8. */
+void test_fill_texture_12bit(uint16_t *p16, uint8_t *p8, uint32_t w, uint32_t h,
+                             test_rng_t *r);
+
 /* Views a, b of a pair of w x h images (contiguous rows): the 16-bit pair
    a16, b16 when wide, else the 8-bit pair a8, b8. Asserts success. */
 void test_view_pair(int wide, const void *a16, const void *b16, const void *a8, const void *b8,
