@@ -55,6 +55,55 @@
 #define SSDA_PITCH_FILTERED(info) ((info)->lowpass_q15 != 0u)
 #endif
 
+#ifdef SSDA_CFG_PITCH_FIXED
+/* The fixed configuration resolved (pitch.h, "Fixed configuration"): the
+   same rules as ssda__pitch_resolve, as constant expressions (checked in
+   pitch_config.c). ..._CFG(x): the setting, SSDA_PITCH_FIXED_*: resolved. */
+#define SSDA__PF_CFG(x) ((uint32_t)(SSDA_CFG_PITCH_FIXED_##x))
+#define SSDA__PF_OR(x, dflt) (SSDA__PF_CFG(x) != 0u ? SSDA__PF_CFG(x) : (uint32_t)(dflt))
+#define SSDA_PITCH_FIXED_RATE SSDA__PF_CFG(RATE_HZ)
+#define SSDA_PITCH_FIXED_F0_MIN SSDA__PF_OR(F0_MIN_HZ, SSDA_PITCH_DEFAULT_F0_MIN)
+#define SSDA_PITCH_FIXED_F0_MAX SSDA__PF_OR(F0_MAX_HZ, SSDA_PITCH_DEFAULT_F0_MAX)
+#define SSDA_PITCH_FIXED_LAG_MIN (SSDA_PITCH_FIXED_RATE / SSDA_PITCH_FIXED_F0_MAX)
+#define SSDA_PITCH_FIXED_LAG_MAX \
+    ((SSDA_PITCH_FIXED_RATE + SSDA_PITCH_FIXED_F0_MIN - 1u) / SSDA_PITCH_FIXED_F0_MIN)
+#define SSDA_PITCH_FIXED_K_DEFAULT \
+    (SSDA_PITCH_FIXED_LAG_MAX > SSDA_PITCH_FRAME_MIN ? SSDA_PITCH_FIXED_LAG_MAX : SSDA_PITCH_FRAME_MIN)
+#define SSDA_PITCH_FIXED_K SSDA__PF_OR(FRAME_LEN, SSDA_PITCH_FIXED_K_DEFAULT)
+#define SSDA_PITCH_FIXED_CHUNK_DEFAULT \
+    (SSDA_PITCH_DEFAULT_CHUNK < SSDA_PITCH_FIXED_K ? SSDA_PITCH_DEFAULT_CHUNK : SSDA_PITCH_FIXED_K)
+#define SSDA_PITCH_FIXED_CHUNK SSDA__PF_OR(CHUNK, SSDA_PITCH_FIXED_CHUNK_DEFAULT)
+#define SSDA_PITCH_FIXED_HOP SSDA__PF_OR(HOP, SSDA_PITCH_FIXED_K / 4u)
+#define SSDA_PITCH_FIXED_SPAN (SSDA_PITCH_FIXED_K + SSDA_PITCH_FIXED_LAG_MAX + 1u)
+#define SSDA_PITCH_FIXED_THRESHOLD SSDA__PF_OR(THRESHOLD_Q15, SSDA_PITCH_DEFAULT_THRESHOLD_Q15)
+#define SSDA_PITCH_FIXED_VOICING SSDA__PF_OR(VOICING_Q15, SSDA_PITCH_FIXED_THRESHOLD)
+#define SSDA_PITCH_FIXED_SILENCE SSDA__PF_OR(SILENCE_MAD, SSDA_PITCH_DEFAULT_SILENCE_MAD)
+#define SSDA_PITCH_FIXED_FLAGS SSDA__PF_CFG(FLAGS)
+/* the config's lowpass_hz resolved, and the filter's corner (0: none) */
+#define SSDA_PITCH_FIXED_LOWPASS_CFG SSDA__PF_OR(LOWPASS_HZ, SSDA_PITCH_FIXED_F0_MAX)
+#define SSDA_PITCH_FIXED_LOWPASS \
+    ((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_FILTER) != 0u ? 0u : SSDA_PITCH_FIXED_LOWPASS_CFG)
+/* ssda__pitch_lowpass_coef_q15 of it: round(2^15 W / (R + W)), W = 411775
+   fc, R = rate << 16 (< 2^49, folded by the compiler; 0 when no filter) */
+#define SSDA__PF_W ((uint64_t)411775u * SSDA_PITCH_FIXED_LOWPASS)
+#define SSDA__PF_DEN (((uint64_t)SSDA_PITCH_FIXED_RATE << 16) + SSDA__PF_W)
+#define SSDA_PITCH_FIXED_LOWPASS_Q15 \
+    ((uint16_t)(((SSDA__PF_W << 15) + SSDA__PF_DEN / 2u) / SSDA__PF_DEN))
+
+/* The resolved parameters, read through SSDA_PITCH_INFO_OF(info) wherever
+   the analysis or the intake reads them: constants the compiler folds. */
+static const ssda_pitch_info_t ssda__pitch_fixed_info = {
+    SSDA_PITCH_FIXED_RATE, SSDA_PITCH_FIXED_LAG_MIN, SSDA_PITCH_FIXED_LAG_MAX,
+    SSDA_PITCH_FIXED_K, SSDA_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_SPAN, SSDA_PITCH_FIXED_CHUNK,
+    (SSDA_PITCH_FIXED_LAG_MAX - SSDA_PITCH_FIXED_LAG_MIN + 1u) * SSDA_PITCH_FIXED_K,
+    (uint16_t)SSDA_PITCH_FIXED_THRESHOLD, (uint16_t)SSDA_PITCH_FIXED_VOICING,
+    (uint16_t)SSDA_PITCH_FIXED_SILENCE, (uint16_t)SSDA_PITCH_FIXED_LOWPASS,
+    SSDA_PITCH_FIXED_LOWPASS_Q15, (uint8_t)SSDA_PITCH_FIXED_FLAGS};
+#define SSDA_PITCH_INFO_OF(info) ((void)(info), &ssda__pitch_fixed_info)
+#else
+#define SSDA_PITCH_INFO_OF(info) (info)
+#endif
+
 /* Check cfg and fill *info with every default resolved. Writes *info on
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
 SSDA_INTERNAL int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
