@@ -31,7 +31,7 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     if (err != SSDA_OK) {
         return err;
     }
-    *bytes = (size_t)info.span * sizeof(int16_t);
+    *bytes = (size_t)SSDA_PITCH_INFO_OF(&info)->span * sizeof(int16_t);
     return SSDA_OK;
 }
 #endif
@@ -43,7 +43,8 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
 #ifdef SSDA_CFG_NO_PITCH_PUSH
     /* no push intake: the buffer is not used (may be NULL), and nothing is
        checked after the config, which is resolved straight into p->info
-       (written on success only) */
+       (written on success only; not at all with a fixed configuration,
+       whose parameters are constants) */
     (void)buffer_size;
     if (p == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
@@ -61,11 +62,13 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     if (err != SSDA_OK) {
         return err;
     }
-    if (buffer_size / sizeof(int16_t) < info.span ||
+    if (buffer_size / sizeof(int16_t) < SSDA_PITCH_INFO_OF(&info)->span ||
         ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
         return SSDA_ERR_BUFFER;
     }
+#ifndef SSDA_CFG_PITCH_FIXED /* fixed: the parameters are constants, none kept */
     (void)memcpy(&p->info, &info, sizeof info);
+#endif
 #endif
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
@@ -104,8 +107,9 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     if (err != SSDA_OK) {
         return err;
     }
-    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash */
-    (void)memcpy(info, &p->info, sizeof *info);
+    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash
+       (from the constants with a fixed configuration) */
+    (void)memcpy(info, INFO(p), sizeof *info);
     return SSDA_OK;
 }
 

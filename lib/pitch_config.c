@@ -3,8 +3,6 @@
 #include "pitch_internal.h"
 #include "fixmath.h"
 
-#include <string.h>
-
 #define KNOWN_FLAGS                                                              \
     (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC | \
      SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)
@@ -40,7 +38,8 @@ static bool flags_built(uint32_t flags)
 #ifdef SSDA_CFG_PITCH_FIXED
 /* The fixed configuration (pitch.h), checked here as ssda__pitch_resolve
    checks a configuration at run time: a build whose setting it would
-   refuse does not compile (an array of negative size). */
+   refuse does not compile (an array of negative size). The check of a
+   configuration against it is inline, in pitch_internal.h. */
 #define FIXED_CHECK(name, cond) typedef char ssda__pitch_fixed_##name[(cond) ? 1 : -1]
 FIXED_CHECK(rate, SSDA_PITCH_FIXED_RATE >= SSDA_PITCH_RATE_MIN &&
                       SSDA_PITCH_FIXED_RATE <= SSDA_PITCH_RATE_MAX);
@@ -78,32 +77,6 @@ FIXED_CHECK(no_octave, (SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_OCTAVE) != 0u);
 FIXED_CHECK(no_below_range, (SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_BELOW_RANGE) != 0u);
 #endif
 
-/* A field v of cfg resolves to the fixed value: equal to it, or 0 where
-   the fixed value is the default (both constants: folded). */
-#define FIELD_IS(v, fixed, dflt) ((uint32_t)(v) == (fixed) || ((v) == 0u && (fixed) == (dflt)))
-
-int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
-{
-    if (cfg == NULL || info == NULL) {
-        return SSDA_ERR_NULL;
-    }
-    if (!(cfg->sample_rate_hz == SSDA_PITCH_FIXED_RATE &&
-          FIELD_IS(cfg->f0_min_hz, SSDA_PITCH_FIXED_F0_MIN, SSDA_PITCH_DEFAULT_F0_MIN) &&
-          FIELD_IS(cfg->f0_max_hz, SSDA_PITCH_FIXED_F0_MAX, SSDA_PITCH_DEFAULT_F0_MAX) &&
-          FIELD_IS(cfg->frame_len, SSDA_PITCH_FIXED_K, SSDA_PITCH_FIXED_K_DEFAULT) &&
-          FIELD_IS(cfg->hop, SSDA_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_K / 4u) &&
-          FIELD_IS(cfg->threshold_q15, SSDA_PITCH_FIXED_THRESHOLD,
-                   SSDA_PITCH_DEFAULT_THRESHOLD_Q15) &&
-          FIELD_IS(cfg->voicing_q15, SSDA_PITCH_FIXED_VOICING, SSDA_PITCH_FIXED_THRESHOLD) &&
-          FIELD_IS(cfg->silence_mad, SSDA_PITCH_FIXED_SILENCE, SSDA_PITCH_DEFAULT_SILENCE_MAD) &&
-          FIELD_IS(cfg->chunk, SSDA_PITCH_FIXED_CHUNK, SSDA_PITCH_FIXED_CHUNK_DEFAULT) &&
-          FIELD_IS(cfg->lowpass_hz, SSDA_PITCH_FIXED_LOWPASS_CFG, SSDA_PITCH_FIXED_F0_MAX) &&
-          cfg->flags == SSDA_PITCH_FIXED_FLAGS)) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-    (void)memcpy(info, &ssda__pitch_fixed_info, sizeof *info);
-    return SSDA_OK;
-}
 #else
 int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 {

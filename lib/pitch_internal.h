@@ -104,9 +104,45 @@ static const ssda_pitch_info_t ssda__pitch_fixed_info = {
 #define SSDA_PITCH_INFO_OF(info) (info)
 #endif
 
+#ifdef SSDA_CFG_PITCH_FIXED
+/* A field v of cfg that resolves to the fixed value: equal to it, or 0
+   where the fixed value is the default (both constants: folded). */
+#define SSDA__PF_FIELD_IS(v, fixed, dflt) \
+    ((uint32_t)(v) == (fixed) || ((v) == 0u && (fixed) == (dflt)))
+
+/* With a fixed configuration: SSDA_OK when cfg is it (every field resolves
+   to the fixed one), SSDA_ERR_UNSUPPORTED for any other, SSDA_ERR_NULL.
+   Nothing is written: the parameters are ssda__pitch_fixed_info, read
+   through SSDA_PITCH_INFO_OF. Inline: one caller (M0+ flash). */
+static inline int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
+{
+    (void)info;
+    if (cfg == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!(cfg->sample_rate_hz == SSDA_PITCH_FIXED_RATE &&
+          SSDA__PF_FIELD_IS(cfg->f0_min_hz, SSDA_PITCH_FIXED_F0_MIN, SSDA_PITCH_DEFAULT_F0_MIN) &&
+          SSDA__PF_FIELD_IS(cfg->f0_max_hz, SSDA_PITCH_FIXED_F0_MAX, SSDA_PITCH_DEFAULT_F0_MAX) &&
+          SSDA__PF_FIELD_IS(cfg->frame_len, SSDA_PITCH_FIXED_K, SSDA_PITCH_FIXED_K_DEFAULT) &&
+          SSDA__PF_FIELD_IS(cfg->hop, SSDA_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_K / 4u) &&
+          SSDA__PF_FIELD_IS(cfg->threshold_q15, SSDA_PITCH_FIXED_THRESHOLD,
+                            SSDA_PITCH_DEFAULT_THRESHOLD_Q15) &&
+          SSDA__PF_FIELD_IS(cfg->voicing_q15, SSDA_PITCH_FIXED_VOICING,
+                            SSDA_PITCH_FIXED_THRESHOLD) &&
+          SSDA__PF_FIELD_IS(cfg->silence_mad, SSDA_PITCH_FIXED_SILENCE,
+                            SSDA_PITCH_DEFAULT_SILENCE_MAD) &&
+          SSDA__PF_FIELD_IS(cfg->chunk, SSDA_PITCH_FIXED_CHUNK, SSDA_PITCH_FIXED_CHUNK_DEFAULT) &&
+          SSDA__PF_FIELD_IS(cfg->lowpass_hz, SSDA_PITCH_FIXED_LOWPASS_CFG, SSDA_PITCH_FIXED_F0_MAX) &&
+          cfg->flags == SSDA_PITCH_FIXED_FLAGS)) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+    return SSDA_OK;
+}
+#else
 /* Check cfg and fill *info with every default resolved. Writes *info on
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
 SSDA_INTERNAL int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
+#endif
 
 /* Re-arming level for a threshold (Q15): threshold * 3 / 2, at most 32767. */
 #define ssda__pitch_rearm_q15(thr) \
