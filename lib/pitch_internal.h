@@ -83,7 +83,9 @@
 #define SSDA_PITCH_FIXED_VOICING SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_VOICING_Q15, SSDA_PITCH_FIXED_THRESHOLD)
 #define SSDA_PITCH_FIXED_SILENCE \
     SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_SILENCE_MAD, SSDA_PITCH_DEFAULT_SILENCE_MAD)
-#define SSDA_PITCH_FIXED_FLAGS ((uint32_t)(SSDA_CFG_PITCH_FIXED_FLAGS))
+/* 0u | rather than a cast: a cast of the setting, often a composite
+   (A | B), to a wider type breaks MISRA 10.8 (tools/lint.sh) */
+#define SSDA_PITCH_FIXED_FLAGS (0u | (SSDA_CFG_PITCH_FIXED_FLAGS))
 /* the config's lowpass_hz resolved, and the filter's corner (0: none) */
 #define SSDA_PITCH_FIXED_LOWPASS_CFG \
     SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ, SSDA_PITCH_FIXED_F0_MAX)

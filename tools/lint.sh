@@ -3,10 +3,12 @@
 # compile flags (compile_commands.json of a lib-only CMake configure):
 #   cppcheck 2.10 + MISRA C 2012 addon, warning/style/performance/portability,
 #     on the portable kernel configuration at 64 and 32 bits, the minimal
-#     configuration (every SSDA_CFG_NO_* switch), and the SSE2 and ARMv7E-M
-#     kernels through their feature macros;
-#   clang-tidy 14 with the repository's .clang-tidy, on the portable and
-#     minimal configurations, the SSE2 kernel (x86-64) and the ARMv7E-M
+#     configuration (every SSDA_CFG_NO_* switch), the pitch with its
+#     configuration fixed at compile time (SSDA_CFG_PITCH_FIXED: all parts,
+#     and the reduced core), and the SSE2 and ARMv7E-M kernels through
+#     their feature macros;
+#   clang-tidy 14 with the repository's .clang-tidy, on the portable,
+#     minimal and fixed-pitch configurations, the SSE2 kernel (x86-64) and the ARMv7E-M
 #     kernel (thumbv7em, Cortex-M4, freestanding).
 # Installs cppcheck and clang-tidy from Debian if missing. Exits non-zero on
 # any finding that is not a documented deviation: the deviations are the
@@ -42,6 +44,25 @@ minimal=$(grep -o 'SSDA_CFG_NO_[A-Z0-9_]*' include/ssda/config.h | sort -u | pas
 cmake -S . -B "$out/minimal" -DSSDA_KERNEL=portable -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
       -DSSDA_BUILD_TESTS=OFF -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF \
       -DSSDA_INSTALL=OFF -DSSDA_CONFIG="$minimal" >/dev/null
+
+# The pitch with its configuration fixed at compile time (SSDA_CFG_PITCH_FIXED,
+# docs/pitch.md), twice: every part built in (tools/lint-pitch-fixed.h), and
+# the reduced core of docs/target.md (tests/config/pitch_fixed_settings.h,
+# whose PITCH_FIXED_SIDE sets the switches). Only the pitch's files: the
+# setting changes nothing else.
+fixed_pass() { # <name> <settings file> [SSDA_CONFIG]
+  cmake -S . -B "$out/$1" -DSSDA_KERNEL=portable -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+        -DSSDA_BUILD_TESTS=OFF -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF \
+        -DSSDA_INSTALL=OFF -DSSDA_CONFIG_FILE="$2" -DSSDA_CONFIG="${3:-}" >/dev/null
+  python3 - "$out/$1/compile_commands.json" <<'PY'
+import json, re, sys
+db = json.load(open(sys.argv[1]))
+json.dump([e for e in db if re.search(r"/lib/pitch[a-z_]*\.c$", e["file"])],
+          open(sys.argv[1], "w"), indent=1)
+PY
+}
+fixed_pass fixed "$root/tools/lint-pitch-fixed.h"
+fixed_pass fixed-reduced "$root/tests/config/pitch_fixed_settings.h" PITCH_FIXED_SIDE
 
 # The accelerated kernels: the portable command line of the kernel file, with
 # the other kernel's file and macro, and for ARM the target flags and the
@@ -87,6 +108,9 @@ if [ "$audit" != 1 ]; then
 fi
 cppcheck_pass minimal --platform=unix32 "${minimal_supp[@]}" \
               --project="$out/minimal/compile_commands.json"
+cppcheck_pass fixed --platform=unix32 --project="$out/fixed/compile_commands.json"
+cppcheck_pass fixed-reduced --platform=unix32 "${minimal_supp[@]}" \
+              --project="$out/fixed-reduced/compile_commands.json"
 cppcheck_pass sse2 --platform=unix64 "${kernel_inc[@]}" -DSSDA_KERNEL_sse2=1 -D__SSE2__=1 \
               lib/kernel/kernel_sse2.c
 cppcheck_pass armv7em --platform=unix32 "${kernel_inc[@]}" -DSSDA_KERNEL_armv7em=1 \
@@ -100,7 +124,7 @@ tidy_files() { # <compile db dir>
   grep -o '"file": "[^"]*"' "$1/compile_commands.json" | sed 's/^"file": "//; s/"$//'
 }
 : >"$out/clang-tidy.raw"
-for d in "$out/portable" "$out/minimal" "$out/kernels"; do
+for d in "$out/portable" "$out/minimal" "$out/fixed" "$out/fixed-reduced" "$out/kernels"; do
   tidy_files "$d" | xargs -P "$jobs" -n 1 "$tidy" -p "$d" --quiet --extra-arg=-Wcomma \
     >>"$out/clang-tidy.raw" 2>/dev/null || true
 done
