@@ -1741,6 +1741,40 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
+#if KERNEL_LOOPS
+/* fast_rows for open_quad's 16-bit windows 16 pixels wide (4 groups of 4
+   rows, 16..19 rows), in one kernel call (ssda__sad16_rows_u16): fast_rows
+   checks partial + rest against cut after the first 8 pixels and after
+   every row, rest falling by the group's term as each group starts
+   (rest - term[0] from row 0). So the limit of the rows of group k is cut
+   - (rest - term[0] - .. - term[k]) (> 0: that rest <= rest < cut), and of
+   the rows after the 4 groups cut - 0 (rest, from tab_refine4, is the sum
+   of the 4 terms; fast_rows stops subtracting once rest is 0, and a term
+   of 0 subtracts nothing). The same pixels counted, cuts and SAD. */
+static SSDA_NOINLINE int quad_rows_u16(engine_t *e, uint32_t x, uint32_t y, uint32_t cut,
+                                       uint32_t rest, uint64_t *sad)
+{
+    const size_t as = e->area->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * 2u;
+    const uint32_t M = e->M;
+    uint32_t limit[5], sum = 0u, k, pixels;
+    for (k = 0u; k < 4u; k++) {
+        rest -= rest != 0u ? e->term[k] : 0u;
+        limit[k] = cut - rest;
+    }
+    limit[4] = cut - rest; /* rest is 0 here */
+    pixels = ssda__sad16_rows_u16((const uint16_t *)(const void *)a, as,
+                                  (const uint16_t *)(const void *)e->win->base, e->win->stride,
+                                  M, limit, &sum);
+    e->ops += pixels; /* <= 16 * 19 */
+    if (pixels == 16u * M && sum < limit[M > 16u ? 4u : 3u]) {
+        *sad = sum;
+        return 1;
+    }
+    return 0;
+}
+#endif
+
 /* consider_best for scan_predict_open with 4 groups of 4 blocks (the
    seed's windows, tab_refine4): eval_fast's steps on what that case
    knows already (a reference, the bound in the table, no list), the same
@@ -1760,9 +1794,19 @@ static SSDA_ALWAYS_INLINE void open_quad(engine_t *e, uint32_t x, uint32_t y)
         return;
     }
     rest = tab_refine4(e, x, y, bound, cut);
-    if (rest < cut && fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+    if (rest >= cut) {
+        return;
+    }
+#if KERNEL_LOOPS
+    if (!e->u8 ? quad_rows_u16(e, x, y, cut, rest, &c.sad) != 0
+               : fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
         keep_completed(e, x, y, &c);
     }
+#else
+    if (fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+        keep_completed(e, x, y, &c);
+    }
+#endif
 }
 
 /* The open positions of mask m, ascending: columns of row `fix` (row),

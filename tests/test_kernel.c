@@ -134,6 +134,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad16_rows_u16);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -608,6 +609,115 @@ static void test_bounds4_random(void)
     }
 }
 
+/* ssda__sad16_rows_u16 against kernels.h's definition (64-bit sums, a row
+   at a time from ref_u16), the reference and every variant: rows 1 .. 24
+   (steps of 8 and their remainders, the groups of 4 and the rows after
+   16), unaligned rows at random strides, limits that stop it at the first
+   8 pixels, at each row, or never. */
+#define S16_ROWS 24u
+static uint16_t g_s16[S16_ROWS * 40u + 64u];
+
+static uint32_t sad16_rows_definition(const uint16_t *a, size_t as, const uint16_t *b,
+                                      size_t bs, uint32_t rows, const uint32_t *limit,
+                                      uint32_t *sum)
+{
+    uint64_t s = ref_u16(a, b, 8u);
+    uint32_t r;
+    if (s >= limit[0]) {
+        *sum = (uint32_t)s;
+        return 8u;
+    }
+    for (r = 0u; r < rows; r++) {
+        if (r > 0u) {
+            s += ref_u16(a + r * (as / 2u), b + r * (bs / 2u), 8u);
+        }
+        s += ref_u16(a + r * (as / 2u) + 8u, b + r * (bs / 2u) + 8u, 8u);
+        TEST_ASSERT_TRUE(s <= UINT32_MAX); /* the contract */
+        if (s >= limit[r < 16u ? r / 4u : 4u]) {
+            break;
+        }
+    }
+    *sum = (uint32_t)s;
+    return 16u * (r < rows ? r + 1u : rows);
+}
+
+static void check_sad16_rows(const uint16_t *a, size_t as, const uint16_t *b, size_t bs,
+                             uint32_t rows, const uint32_t *limit)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want_sum = 0u, got_sum = 0u, v;
+    const uint32_t want = sad16_rows_definition(a, as, b, bs, rows, limit, &want_sum);
+    uint32_t got = ssda__portable_sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, "reference");
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, "reference");
+    got_sum = 0u;
+    got = ssda__sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got_sum = 0u;
+        got = k->sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, k->name);
+    }
+}
+
+static void test_sad16_rows_random(void)
+{
+    test_rng_t r;
+    uint32_t i, rows, t;
+    test_rng_seed(&r, 0x5AD16u);
+    for (rows = 1u; rows <= S16_ROWS; rows++) {
+        for (t = 0u; t < 40u; t++) {
+            const uint32_t vmax = t % 2u == 0u ? 65535u : 300u;
+            const size_t as = 2u * (16u + test_rng_range(&r, 0u, 3u));
+            const size_t bs = 2u * (16u + test_rng_range(&r, 0u, 3u));
+            const uint16_t *a = g_s16 + test_rng_range(&r, 0u, 7u);
+            const uint16_t *b = a + test_rng_range(&r, 1u, 9u);
+            uint32_t limit[5], row_sum[S16_ROWS], run = 0u, stop;
+            for (i = 0u; i < sizeof g_s16 / sizeof g_s16[0]; i++) {
+                g_s16[i] = (uint16_t)test_rng_range(&r, 0u, vmax);
+            }
+            for (i = 0u; i < rows; i++) { /* the running sums after each row */
+                run += (uint32_t)ref_u16(a + i * (as / 2u), b + i * (bs / 2u), 16u);
+                row_sum[i] = run;
+            }
+            /* every limit above all sums, then one near a chosen row's sum:
+               at it, just below (stops there or before) or just above */
+            for (i = 0u; i < 5u; i++) {
+                limit[i] = t % 8u == 1u ? 0u : run + 1u + test_rng_range(&r, 0u, 5u);
+            }
+            stop = test_rng_range(&r, 0u, rows - 1u);
+            if (t % 8u > 1u) {
+                const uint32_t g = stop < 16u ? stop / 4u : 4u;
+                limit[g] = row_sum[stop] + test_rng_range(&r, 0u, 2u) - 1u;
+            }
+            if (t % 8u == 7u) { /* the first 8 pixels' own check */
+                limit[0] = (uint32_t)ref_u16(a, b, 8u) - (t % 16u == 7u ? 0u : 1u);
+            }
+            check_sad16_rows(a, as, b, bs, rows, limit);
+        }
+    }
+}
+
+/* The largest sum the contract allows: 4096 rows of 16 differences of
+   65535 (stride 0: one row read again), 4 294 901 760 (above 2^31: the
+   unsigned compares), with the last limit at it and just above. */
+static void test_sad16_rows_worst_case(void)
+{
+    uint32_t limit[5] = {UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
+    uint32_t i;
+    for (i = 0u; i < 16u; i++) {
+        g_s16[i] = 65535u;
+        g_s16[16u + i] = 0u;
+    }
+    check_sad16_rows(g_s16, 0u, g_s16 + 16, 0u, 4096u, limit);
+    limit[4] = 4294901760u;
+    check_sad16_rows(g_s16, 0u, g_s16 + 16, 0u, 4096u, limit);
+    limit[4] = 4294901760u - 16u * 65535u; /* the row before */
+    check_sad16_rows(g_s16 + 16, 0u, g_s16, 0u, 4096u, limit);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -625,6 +735,8 @@ int main(void)
     RUN_TEST(test_sad_rows_worst_case);
     RUN_TEST(test_refine4_random);
     RUN_TEST(test_bounds4_random);
+    RUN_TEST(test_sad16_rows_random);
+    RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

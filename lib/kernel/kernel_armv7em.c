@@ -205,6 +205,13 @@ void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *
     ssda__portable_bounds4(p, g, down, w, n);
 }
 
+uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                              size_t bstride, uint32_t rows, const uint32_t *limit,
+                              uint32_t *sum)
+{
+    return ssda__portable_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+}
+
 /* Products of four byte pairs added to acc (see the file comment). */
 static inline uint32_t dot_u8x4(uint32_t a, uint32_t b, uint32_t acc)
 {

@@ -67,6 +67,13 @@ void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *
     ssda__portable_bounds4(p, g, down, w, n);
 }
 
+uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                              size_t bstride, uint32_t rows, const uint32_t *limit,
+                              uint32_t *sum)
+{
+    return ssda__portable_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+}
+
 const char *ssda__kernel_name(void)
 {
     return "portable";

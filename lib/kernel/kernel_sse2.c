@@ -317,6 +317,123 @@ static uint32_t avx2_sad_rows_u16(const uint16_t *a, size_t astride, const uint1
 }
 #endif
 
+/* ssda__sad16_rows_u16 (kernels.h), SSE2: a row at a time, its halves
+   from the two 8-lane differences. */
+static uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                    size_t bstride, uint32_t rows, const uint32_t *limit,
+                                    uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    const __m128i zero = _mm_setzero_si128();
+    uint32_t s, r;
+    {
+        const __m128i a0 = load128(a), b0 = load128(b);
+        const __m128i d0 = _mm_or_si128(_mm_subs_epu16(a0, b0), _mm_subs_epu16(b0, a0));
+        s = hsum_u32x4(_mm_add_epi32(_mm_unpacklo_epi16(d0, zero), _mm_unpackhi_epi16(d0, zero)));
+    }
+    if (s >= limit[0]) {
+        *sum = s;
+        return 8u;
+    }
+    s += sse2_sad_row_u16(a + 8, b + 8, 8u);
+    for (r = 0u;; r++) {
+        if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
+            *sum = s;
+            return 16u * (r + 1u);
+        }
+        pa += astride;
+        pb += bstride;
+        s += sad16_u16((const uint16_t *)(const void *)pa, (const uint16_t *)(const void *)pb);
+    }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* A 16-pixel 16-bit row's |a - b| in eight 32-bit lanes (two |d| <= 65535
+   each: < 2^17), whose sum is the row's SAD. */
+static inline __attribute__((target("avx2")))
+__m256i row16_lanes(const uint8_t *a, const uint8_t *b)
+{
+    const __m256i x = load256(a), y = load256(b);
+    const __m256i d = _mm256_or_si256(_mm256_subs_epu16(x, y), _mm256_subs_epu16(y, x));
+    return _mm256_add_epi32(_mm256_and_si256(d, _mm256_set1_epi32(0xFFFF)),
+                            _mm256_srli_epi32(d, 16));
+}
+
+/* ssda__sad16_rows_u16 (kernels.h), AVX2: eight rows a step with one test.
+   The rows' SADs side by side (horizontal adds of their lanes), their
+   running sums (a prefix sum across the lanes, then the low half's total
+   into the high half), compared with the rows' limits (unsigned: max ==
+   the sum); the first row that reaches its limit from the mask. Rows past
+   that row in the step are read, never added: the reference's pixels and
+   sum, one data-dependent branch a step instead of one a row (issue 18:
+   the rows of a GOES-16 window are cut after about 8). */
+static __attribute__((target("avx2")))
+uint32_t avx2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                             size_t bstride, uint32_t rows, const uint32_t *limit, uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    const __m256i zero = _mm256_setzero_si256();
+    uint32_t s = 0u, r = 0u;
+    {
+        /* the first 8 pixels of row 0: the low half of its lanes */
+        const __m128i h = _mm256_castsi256_si128(row16_lanes(pa, pb));
+        const uint32_t s8 = hsum_u32x4(h);
+        if (s8 >= limit[0]) {
+            *sum = s8;
+            return 8u;
+        }
+    }
+    for (;;) {
+        const uint32_t nr = rows - r < 8u ? rows - r : 8u; /* 1 .. 8 */
+        const uint32_t g = r / 4u; /* r is a multiple of 8 */
+        const __m256i lim = _mm256_inserti128_si256(
+            _mm256_castsi128_si256(_mm_set1_epi32((int)limit[g < 4u ? g : 4u])),
+            _mm_set1_epi32((int)limit[g + 1u < 4u ? g + 1u : 4u]), 1);
+        uint32_t run[8], hit;
+        const __m256i v0 = row16_lanes(pa, pb);
+        const __m256i v1 = nr > 1u ? row16_lanes(pa + astride, pb + bstride) : zero;
+        const __m256i v2 = nr > 2u ? row16_lanes(pa + 2u * astride, pb + 2u * bstride) : zero;
+        const __m256i v3 = nr > 3u ? row16_lanes(pa + 3u * astride, pb + 3u * bstride) : zero;
+        const __m256i v4 = nr > 4u ? row16_lanes(pa + 4u * astride, pb + 4u * bstride) : zero;
+        const __m256i v5 = nr > 5u ? row16_lanes(pa + 5u * astride, pb + 5u * bstride) : zero;
+        const __m256i v6 = nr > 6u ? row16_lanes(pa + 6u * astride, pb + 6u * bstride) : zero;
+        const __m256i v7 = nr > 7u ? row16_lanes(pa + 7u * astride, pb + 7u * bstride) : zero;
+        /* q0: rows 0-3's sums over pixels 0-7 (low 128 bits) and 8-15
+           (high); q1 the same for rows 4-7 */
+        const __m256i q0 = _mm256_hadd_epi32(_mm256_hadd_epi32(v0, v1), _mm256_hadd_epi32(v2, v3));
+        const __m256i q1 = _mm256_hadd_epi32(_mm256_hadd_epi32(v4, v5), _mm256_hadd_epi32(v6, v7));
+        /* the rows' SADs (< 2^20 each), in order */
+        __m256i p = _mm256_add_epi32(_mm256_permute2x128_si256(q0, q1, 0x20),
+                                     _mm256_permute2x128_si256(q0, q1, 0x31));
+        p = _mm256_add_epi32(p, _mm256_slli_si256(p, 4));
+        p = _mm256_add_epi32(p, _mm256_slli_si256(p, 8));
+        /* the low half's total into the high half, then the sum so far */
+        p = _mm256_add_epi32(p, _mm256_permute2x128_si256(_mm256_shuffle_epi32(p, 0xFF),
+                                                          _mm256_shuffle_epi32(p, 0xFF), 0x08));
+        p = _mm256_add_epi32(p, _mm256_set1_epi32((int)s));
+        _mm256_storeu_si256((__m256i *)(void *)run, p);
+        hit = (uint32_t)_mm256_movemask_ps(_mm256_castsi256_ps(
+                  _mm256_cmpeq_epi32(_mm256_max_epu32(p, lim), p))) &
+              ((1u << nr) - 1u);
+        if (hit != 0u) {
+            const uint32_t j = (uint32_t)__builtin_ctz(hit);
+            *sum = run[j];
+            return 16u * (r + j + 1u);
+        }
+        s = run[nr - 1u];
+        r += nr;
+        if (r >= rows) {
+            *sum = s;
+            return 16u * rows;
+        }
+        pa += 8u * astride;
+        pb += 8u * bstride;
+    }
+}
+#endif
+
 /* ssda__refine4 (kernels.h): a group's four block sums (every fourth
    entry: b0 b4 b1 b5 and b8 b12 b9 0, then their low halves) gathered into
    one register by unpacks, their differences
@@ -483,6 +600,18 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
     return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
 }
 
+uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                              size_t bstride, uint32_t rows, const uint32_t *limit,
+                              uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+    }
+#endif
+    return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+}
+
 void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
 {
 #if defined(__GNUC__) || defined(__clang__)
@@ -498,10 +627,10 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
-          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4 },
+          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4 },
+          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4, avx2_sad16_rows_u16 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

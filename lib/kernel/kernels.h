@@ -55,6 +55,19 @@ SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_
 SSDA_INTERNAL void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
                                  uint32_t n);
 
+/* Tracking's rows of one 16-pixel-wide placement (the engine's 4 x 4 block
+   case, 16-bit samples): rows 0 .. rows-1 of 16 pixels (row r of a at
+   a + r * astride bytes, of b likewise) summed in order from 0, each row's
+   running sum checked against the limit of its group of 4 rows,
+   limit[r / 4] for r < 16 and limit[4] for r >= 16; the first 8 pixels of
+   row 0 are checked against limit[0] first. Returns the pixels summed up
+   to the first check that reaches its limit (8, or 16 (r + 1)), else
+   16 rows, and sets *sum to the running sum there. rows >= 1, and the
+   sum of all rows below 2^32 (16 rows * 65535 each: rows <= 4096). */
+SSDA_INTERNAL uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                            size_t bstride, uint32_t rows, const uint32_t *limit,
+                                            uint32_t *sum);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -89,6 +102,9 @@ typedef struct {
                         const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
                         uint32_t *groups);
     void (*bounds4)(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n);
+    uint32_t (*sad16_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
+                               size_t bstride, uint32_t rows, const uint32_t *limit,
+                               uint32_t *sum);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

@@ -68,6 +68,32 @@ static inline uint32_t ssda__portable_rows_u16(uint32_t (*row)(const uint16_t *,
     return r;
 }
 
+/* ssda__sad16_rows_u16 (kernels.h), the reference: a row at a time. */
+static inline uint32_t ssda__portable_sad16_rows_u16(const uint16_t *a, size_t astride,
+                                                     const uint16_t *b, size_t bstride,
+                                                     uint32_t rows, const uint32_t *limit,
+                                                     uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = ssda__portable_sad_row_u16(a, b, 8u); /* < 2^32: the caller's */
+    uint32_t r;
+    if (s >= limit[0]) {
+        *sum = s;
+        return 8u;
+    }
+    s += ssda__portable_sad_row_u16(a + 8, b + 8, 8u);
+    for (r = 0u;; r++) {
+        if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
+            *sum = s;
+            return 16u * (r + 1u); /* <= 16 * 4096 */
+        }
+        s += ssda__portable_sad_row_u16((const uint16_t *)(const void *)(pa + (r + 1u) * astride),
+                                        (const uint16_t *)(const void *)(pb + (r + 1u) * bstride),
+                                        16u);
+    }
+}
+
 static inline uint32_t ssda__portable_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
 {
     uint32_t sum = 0u; /* <= 65535 * 65535 < 2^32 */
