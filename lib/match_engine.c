@@ -761,6 +761,42 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
 }
 #endif
 
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+/* fast_rows after tab_refine4 (open_quad, eval_fast) for 16-bit windows
+   16 pixels wide (4 groups of 4 rows, 16..19 rows), in one kernel call
+   (ssda__sad16_rows_u16; the predicted position and the open ones of a
+   GOES-16 window: 134 -> 48 million instructions a grid): fast_rows
+   checks partial + rest against cut after the first 8 pixels and after
+   every row, rest falling by the group's term as each group starts
+   (rest - term[0] from row 0). So the limit of the rows of group k is cut
+   - (rest - term[0] - .. - term[k]) (> 0: that rest <= rest < cut), and of
+   the rows after the 4 groups cut - 0 (rest, from tab_refine4, is the sum
+   of the 4 terms; fast_rows stops subtracting once rest is 0, and a term
+   of 0 subtracts nothing). The same pixels counted, cuts and SAD. */
+static SSDA_NOINLINE int quad_rows_u16(engine_t *e, uint32_t x, uint32_t y, uint32_t cut,
+                                       uint32_t rest, uint64_t *sad)
+{
+    const size_t as = e->area->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * 2u;
+    const uint32_t M = e->M;
+    uint32_t limit[5], sum = 0u, k, pixels;
+    for (k = 0u; k < 4u; k++) {
+        rest -= rest != 0u ? e->term[k] : 0u;
+        limit[k] = cut - rest;
+    }
+    limit[4] = cut - rest; /* rest is 0 here */
+    pixels = ssda__sad16_rows_u16((const uint16_t *)(const void *)a, as,
+                                  (const uint16_t *)(const void *)e->win->base, e->win->stride,
+                                  M, limit, &sum);
+    e->ops += pixels; /* <= 16 * 19 */
+    if (pixels == 16u * M && sum < limit[M > 16u ? 4u : 3u]) {
+        *sad = sum;
+        return 1;
+    }
+    return 0;
+}
+#endif
+
 /*
  * eval_position for the common exact case (e->fast, set once per search):
  * rows in memory, row order, no ramp, no all-cut fallback, no block levels,
@@ -776,6 +812,9 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
     bool tie = false;
     uint32_t cut_at = cut_level32(e, x, y, &tie);
     uint32_t rest = 0u; /* the bound, < 2^32 - 1 */
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+    bool rows16 = false; /* quad_rows_u16's case (16-bit, tab_refine4's) */
+#endif
     e->positions++;
     if (cut_at == 0u) {
         return 0;
@@ -787,6 +826,9 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
            (tools/budget.sh: +6 % instructions) for 0.2 % on tracking */
         const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
                           e->ngroups == 4u;
+#if KERNEL_LOOPS
+        rows16 = quad && !e->u8;
+#endif
         rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
             return 0;
@@ -804,6 +846,11 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
                 return 0;
             }
         }
+    }
+#endif
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+    if (rows16) { /* tab_refine4 ran: its terms, and rest their sum */
+        return quad_rows_u16(e, x, y, cut_at, rest, sad);
     }
 #endif
     return fast_rows(e, x, y, cut_at, rest, sad);
@@ -1741,39 +1788,6 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
-#if KERNEL_LOOPS
-/* fast_rows for open_quad's 16-bit windows 16 pixels wide (4 groups of 4
-   rows, 16..19 rows), in one kernel call (ssda__sad16_rows_u16): fast_rows
-   checks partial + rest against cut after the first 8 pixels and after
-   every row, rest falling by the group's term as each group starts
-   (rest - term[0] from row 0). So the limit of the rows of group k is cut
-   - (rest - term[0] - .. - term[k]) (> 0: that rest <= rest < cut), and of
-   the rows after the 4 groups cut - 0 (rest, from tab_refine4, is the sum
-   of the 4 terms; fast_rows stops subtracting once rest is 0, and a term
-   of 0 subtracts nothing). The same pixels counted, cuts and SAD. */
-static SSDA_NOINLINE int quad_rows_u16(engine_t *e, uint32_t x, uint32_t y, uint32_t cut,
-                                       uint32_t rest, uint64_t *sad)
-{
-    const size_t as = e->area->stride;
-    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * 2u;
-    const uint32_t M = e->M;
-    uint32_t limit[5], sum = 0u, k, pixels;
-    for (k = 0u; k < 4u; k++) {
-        rest -= rest != 0u ? e->term[k] : 0u;
-        limit[k] = cut - rest;
-    }
-    limit[4] = cut - rest; /* rest is 0 here */
-    pixels = ssda__sad16_rows_u16((const uint16_t *)(const void *)a, as,
-                                  (const uint16_t *)(const void *)e->win->base, e->win->stride,
-                                  M, limit, &sum);
-    e->ops += pixels; /* <= 16 * 19 */
-    if (pixels == 16u * M && sum < limit[M > 16u ? 4u : 3u]) {
-        *sad = sum;
-        return 1;
-    }
-    return 0;
-}
-#endif
 
 /* consider_best for scan_predict_open with 4 groups of 4 blocks (the
    seed's windows, tab_refine4): eval_fast's steps on what that case

@@ -360,53 +360,57 @@ __m256i row16_lanes(const uint8_t *a, const uint8_t *b)
                             _mm256_srli_epi32(d, 16));
 }
 
+/* The SADs of 8 rows of 16 16-bit pixels, row j at p + j * astride (q
+   likewise), in lanes 0..7 (< 2^20 each): each row's lanes summed by
+   horizontal adds, pixels 0-7 and 8-15 apart, then the halves joined. */
+static inline __attribute__((target("avx2")))
+__m256i rows8_sads(const uint8_t *p, size_t astride, const uint8_t *q, size_t bstride)
+{
+    __m256i h[4], q0, q1;
+    uint32_t j;
+    for (j = 0u; j < 4u; j++) { /* two rows at a time: few registers live */
+        const __m256i v0 = row16_lanes(p, q);
+        const __m256i v1 = row16_lanes(p + astride, q + bstride);
+        h[j] = _mm256_hadd_epi32(v0, v1);
+        p += 2u * astride;
+        q += 2u * bstride;
+    }
+    /* q0: rows 0-3's sums over pixels 0-7 (low 128 bits) and 8-15 (high);
+       q1 the same for rows 4-7 */
+    q0 = _mm256_hadd_epi32(h[0], h[1]);
+    q1 = _mm256_hadd_epi32(h[2], h[3]);
+    return _mm256_add_epi32(_mm256_permute2x128_si256(q0, q1, 0x20),
+                            _mm256_permute2x128_si256(q0, q1, 0x31));
+}
+
 /* ssda__sad16_rows_u16 (kernels.h), AVX2: eight rows a step with one test.
-   The rows' SADs side by side (horizontal adds of their lanes), their
-   running sums (a prefix sum across the lanes, then the low half's total
-   into the high half), compared with the rows' limits (unsigned: max ==
-   the sum); the first row that reaches its limit from the mask. Rows past
-   that row in the step are read, never added: the reference's pixels and
-   sum, one data-dependent branch a step instead of one a row (issue 18:
-   the rows of a GOES-16 window are cut after about 8). */
+   The rows' SADs side by side (rows8_sads), their running sums (a prefix
+   sum across the lanes, then the low half's total into the high half),
+   compared with the rows' limits (unsigned: max == the sum); the first
+   row that reaches its limit from the mask. Rows past that row in the step
+   are read, never added: the reference's pixels and sum, one
+   data-dependent branch a step instead of one a row (issue 18: the rows of
+   a GOES-16 window are cut after about 8). The last rows % 8 a row at a
+   time. */
 static __attribute__((target("avx2")))
 uint32_t avx2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                              size_t bstride, uint32_t rows, const uint32_t *limit, uint32_t *sum)
 {
     const uint8_t *pa = (const uint8_t *)(const void *)a;
     const uint8_t *pb = (const uint8_t *)(const void *)b;
-    const __m256i zero = _mm256_setzero_si256();
-    uint32_t s = 0u, r = 0u;
-    {
-        /* the first 8 pixels of row 0: the low half of its lanes */
-        const __m128i h = _mm256_castsi256_si128(row16_lanes(pa, pb));
-        const uint32_t s8 = hsum_u32x4(h);
-        if (s8 >= limit[0]) {
-            *sum = s8;
-            return 8u;
-        }
+    uint32_t s = hsum_u32x4(_mm256_castsi256_si128(row16_lanes(pa, pb))), r = 0u;
+    if (s >= limit[0]) { /* the first 8 pixels of row 0: its low lanes */
+        *sum = s;
+        return 8u;
     }
-    for (;;) {
-        const uint32_t nr = rows - r < 8u ? rows - r : 8u; /* 1 .. 8 */
+    s = 0u;
+    for (; rows - r >= 8u; r += 8u) {
         const uint32_t g = r / 4u; /* r is a multiple of 8 */
         const __m256i lim = _mm256_inserti128_si256(
             _mm256_castsi128_si256(_mm_set1_epi32((int)limit[g < 4u ? g : 4u])),
             _mm_set1_epi32((int)limit[g + 1u < 4u ? g + 1u : 4u]), 1);
+        __m256i p = rows8_sads(pa, astride, pb, bstride);
         uint32_t run[8], hit;
-        const __m256i v0 = row16_lanes(pa, pb);
-        const __m256i v1 = nr > 1u ? row16_lanes(pa + astride, pb + bstride) : zero;
-        const __m256i v2 = nr > 2u ? row16_lanes(pa + 2u * astride, pb + 2u * bstride) : zero;
-        const __m256i v3 = nr > 3u ? row16_lanes(pa + 3u * astride, pb + 3u * bstride) : zero;
-        const __m256i v4 = nr > 4u ? row16_lanes(pa + 4u * astride, pb + 4u * bstride) : zero;
-        const __m256i v5 = nr > 5u ? row16_lanes(pa + 5u * astride, pb + 5u * bstride) : zero;
-        const __m256i v6 = nr > 6u ? row16_lanes(pa + 6u * astride, pb + 6u * bstride) : zero;
-        const __m256i v7 = nr > 7u ? row16_lanes(pa + 7u * astride, pb + 7u * bstride) : zero;
-        /* q0: rows 0-3's sums over pixels 0-7 (low 128 bits) and 8-15
-           (high); q1 the same for rows 4-7 */
-        const __m256i q0 = _mm256_hadd_epi32(_mm256_hadd_epi32(v0, v1), _mm256_hadd_epi32(v2, v3));
-        const __m256i q1 = _mm256_hadd_epi32(_mm256_hadd_epi32(v4, v5), _mm256_hadd_epi32(v6, v7));
-        /* the rows' SADs (< 2^20 each), in order */
-        __m256i p = _mm256_add_epi32(_mm256_permute2x128_si256(q0, q1, 0x20),
-                                     _mm256_permute2x128_si256(q0, q1, 0x31));
         p = _mm256_add_epi32(p, _mm256_slli_si256(p, 4));
         p = _mm256_add_epi32(p, _mm256_slli_si256(p, 8));
         /* the low half's total into the high half, then the sum so far */
@@ -414,23 +418,29 @@ uint32_t avx2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *
                                                           _mm256_shuffle_epi32(p, 0xFF), 0x08));
         p = _mm256_add_epi32(p, _mm256_set1_epi32((int)s));
         _mm256_storeu_si256((__m256i *)(void *)run, p);
-        hit = (uint32_t)_mm256_movemask_ps(_mm256_castsi256_ps(
-                  _mm256_cmpeq_epi32(_mm256_max_epu32(p, lim), p))) &
-              ((1u << nr) - 1u);
+        hit = (uint32_t)_mm256_movemask_ps(
+            _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_max_epu32(p, lim), p)));
         if (hit != 0u) {
             const uint32_t j = (uint32_t)__builtin_ctz(hit);
             *sum = run[j];
             return 16u * (r + j + 1u);
         }
-        s = run[nr - 1u];
-        r += nr;
-        if (r >= rows) {
-            *sum = s;
-            return 16u * rows;
-        }
+        s = run[7];
         pa += 8u * astride;
         pb += 8u * bstride;
     }
+    for (; r < rows; r++) { /* rows % 8 left */
+        s += hsum_u32x4(_mm_add_epi32(_mm256_castsi256_si128(row16_lanes(pa, pb)),
+                                      _mm256_extracti128_si256(row16_lanes(pa, pb), 1)));
+        if (s >= limit[r < 16u ? r / 4u : 4u]) {
+            *sum = s;
+            return 16u * (r + 1u);
+        }
+        pa += astride;
+        pb += bstride;
+    }
+    *sum = s;
+    return 16u * rows;
 }
 #endif
 
@@ -467,6 +477,62 @@ static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
     *groups = 4u;
     return rest;
 }
+
+#if defined(__GNUC__) || defined(__clang__)
+/* A group's four block sums b[0], b[4], b[8], b[12] in one register, by
+   unpacks (no entry past b[12] is read: it may end the table's row). */
+static inline __m128i blocks4(const uint32_t *b)
+{
+    const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)b),
+                                         _mm_loadl_epi64((const __m128i *)(const void *)&b[4]));
+    const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&b[8]),
+                                         _mm_cvtsi32_si128((int)b[12]));
+    return _mm_unpacklo_epi64(x, y);
+}
+
+/* ssda__refine4 (kernels.h), AVX2: the four groups at once, no branch on
+   the data. Two groups' block terms a register (VPABSD: block sums <
+   2^20), their sums s_k by horizontal adds, the group terms' differences
+   (group sums < 2^31: signed) likewise, then rest after each group as a
+   prefix sum across the lanes, compared unsigned with cut (max == the
+   value); the first group that reaches it from the mask. Every group's
+   entries are read (the engine's: the position's 4 groups lie in the
+   table) and every s_k is written: the reference's result, groups and
+   terms up to the stopping group, without its data-dependent exits
+   (issue 18: a GOES-16 window refines about 36 positions). */
+static __attribute__((target("avx2")))
+uint32_t avx2_refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                      const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                      uint32_t *groups)
+{
+    const __m256i x01 = _mm256_inserti128_si256(_mm256_castsi128_si256(blocks4(b)),
+                                                blocks4(&b[down]), 1);
+    const __m256i x23 = _mm256_inserti128_si256(_mm256_castsi128_si256(blocks4(&b[2u * down])),
+                                                blocks4(&b[3u * down]), 1);
+    const __m256i a01 = _mm256_abs_epi32(_mm256_sub_epi32(x01, load256(wblk)));
+    const __m256i a23 = _mm256_abs_epi32(_mm256_sub_epi32(x23, load256(&wblk[8])));
+    /* [s0 s2 s0 s2 | s1 s3 s1 s3], then s0 s1 s2 s3 */
+    const __m256i h = _mm256_hadd_epi32(_mm256_hadd_epi32(a01, a23), _mm256_setzero_si256());
+    const __m128i sk = _mm_unpacklo_epi32(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
+    const __m128i gk = _mm_unpacklo_epi64(
+        _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)g[0]), _mm_cvtsi32_si128((int)g[down])),
+        _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)g[2u * down]),
+                           _mm_cvtsi32_si128((int)g[3u * down])));
+    const __m128i tk = _mm_abs_epi32(_mm_sub_epi32(gk, load128(wgrp)));
+    __m128i r = _mm_sub_epi32(sk, tk); /* s_k - term_k, modulo 2^32 */
+    uint32_t run[4], hit, k;
+    r = _mm_add_epi32(r, _mm_slli_si128(r, 4));
+    r = _mm_add_epi32(r, _mm_slli_si128(r, 8));
+    r = _mm_add_epi32(r, _mm_set1_epi32((int)rest));
+    _mm_storeu_si128((__m128i *)(void *)term_out, sk);
+    _mm_storeu_si128((__m128i *)(void *)run, r);
+    hit = (uint32_t)_mm_movemask_ps(
+        _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_max_epu32(r, _mm_set1_epi32((int)cut)), r)));
+    k = hit != 0u ? (uint32_t)__builtin_ctz(hit) : 3u;
+    *groups = k + 1u;
+    return run[k];
+}
+#endif
 
 /* ssda__bounds4 (kernels.h): 4 (SSE2) or 8 (AVX2) positions a step, the
    absolute values by the sign mask (SSE2) or VPABSD, the last 0..7 by
@@ -597,6 +663,11 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
                        const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
                        uint32_t *groups)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+    }
+#endif
     return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
 }
 
@@ -630,7 +701,7 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
           sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4, avx2_sad16_rows_u16 },
+          avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

@@ -43,7 +43,10 @@ SSDA_INTERNAL uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, con
    the group's term |g[k * down] - wgrp[k]| (group sums < 2^31) in rest:
    rest = rest - term + s_k, term_out[k] = s_k, stopping after the first
    group at which rest reaches cut. Returns rest (< 2^32: the caller's
-   bound, at most the SAD) and sets *groups to the groups done (1..4). */
+   bound, at most the SAD) and sets *groups to the groups done (1..4).
+   The entries of all 4 groups must be readable (a variant may sum them
+   all and pick the stopping group after), and term_out[k] for k >= the
+   groups done may be written too. */
 SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down,
                                      const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
                                      uint32_t cut, uint32_t *term_out, uint32_t *groups);
