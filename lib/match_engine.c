@@ -544,8 +544,13 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
    rows), in 32 bits (the bound <= the SAD < 2^32 - 1): the same terms,
    order, exits and count, in the kernels' ssda__refine4 (SSE2 on x86). The
    group terms are taken there, so group_bound32 need not store them. */
-static SSDA_NOINLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest,
-                                          uint32_t cut_at)
+#if KERNEL_LOOPS
+#define TAB_REFINE4_INLINE SSDA_ALWAYS_INLINE /* x86: the kernel's call only */
+#else
+#define TAB_REFINE4_INLINE SSDA_NOINLINE
+#endif
+static TAB_REFINE4_INLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y,
+                                               uint32_t rest, uint32_t cut_at)
 {
     const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
     uint32_t groups;

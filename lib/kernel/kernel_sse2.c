@@ -319,7 +319,7 @@ static uint32_t avx2_sad_rows_u16(const uint16_t *a, size_t astride, const uint1
 
 /* ssda__sad16_rows_u16 (kernels.h), SSE2: a row at a time, its halves
    from the two 8-lane differences. */
-static uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+static SSDA_NOINLINE uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                                     size_t bstride, uint32_t rows, const uint32_t *limit,
                                     uint32_t *sum)
 {
@@ -449,7 +449,7 @@ uint32_t avx2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *
    one register by unpacks, their differences
    with the window's (signed: < 2^20) made absolute as x ^ m - m with m
    the sign mask, and summed across the lanes. */
-static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+static SSDA_NOINLINE uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
                              const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
                              uint32_t cut, uint32_t *term_out, uint32_t *groups)
 {
@@ -537,7 +537,7 @@ uint32_t avx2_refine4(const uint32_t *b, const uint32_t *g, size_t down, const u
 /* ssda__bounds4 (kernels.h): 4 (SSE2) or 8 (AVX2) positions a step, the
    absolute values by the sign mask (SSE2) or VPABSD, the last 0..7 by
    the reference. */
-static void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+static SSDA_NOINLINE void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
                          uint32_t n)
 {
     const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
