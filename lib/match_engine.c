@@ -1703,6 +1703,20 @@ static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool 
    (consider_best). Counts the nx * ny * ngroups terms here; eval_fast's
    bound calls for the other positions are not counted again (finish). */
 #ifndef SSDA_CFG_NO_FAST_PATH
+#define OPEN_MAX 32u /* scan_predict_open: positions a row and a column */
+
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_PREDICT)
+/* scan_predict_open's case with 4 groups of group sums below 2^31 (x86):
+   the bound pass is deferred until the predicted position is summed, and
+   made with the masks of the positions it leaves open (ssda__bounds4_open:
+   one pass, where open_masks read every bound again; issue 18). */
+static bool defer_open(const engine_t *e)
+{
+    return e->plan->scan == (uint8_t)SSDA_SCAN_PREDICT && e->nx <= OPEN_MAX &&
+           e->ny <= OPEN_MAX && e->ngroups == 4u && (e->u8 || e->L <= 8191u);
+}
+#endif
+
 static SSDA_NOINLINE void pre_bounds(engine_t *e)
 {
     uint32_t *pre = (uint32_t *)e->plan->work;
@@ -1712,6 +1726,15 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
        their differences */
     const bool small = e->u8 || e->L <= 8191u;
     uint32_t x, y, k;
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_PREDICT)
+    if (defer_open(e)) { /* the predicted position's bound only (counted later) */
+        const size_t at = (size_t)e->ty * pitch + e->tx;
+        ssda__portable_bounds4(pre + (size_t)e->ty * nx + e->tx, e->gsum + at,
+                               (size_t)4u * pitch, e->wgrp, 1u);
+        e->pre = pre;
+        return;
+    }
+#endif
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
         if (e->ngroups == 4u) { /* 16..19 rows, the seed's windows: one pass */
@@ -1766,7 +1789,6 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
    open: 2 * OPEN_MAX words (a row's mask per row, then a column's per
    column) in the uniqueness list's place, unused here. */
 #ifndef SSDA_CFG_NO_PREDICT
-#define OPEN_MAX 32u
 /* the masks fit the list's room, which every shared-table buffer has */
 typedef char open_masks_fit[(sizeof(uint32_t) * 2u * OPEN_MAX <= SSDA_MATCH_UNIQUE_WORK) ? 1 : -1];
 
@@ -1888,6 +1910,34 @@ static SSDA_NOINLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
     return left;
 }
 
+#if KERNEL_LOOPS
+/* open_masks for defer_open's case: the bound pass (pre_bounds' work and
+   count) and the row masks at once, then the column masks from them. */
+static SSDA_NOINLINE uint32_t open_masks_pass(engine_t *e, uint32_t *open)
+{
+    uint32_t *pre = (uint32_t *)e->plan->work;
+    const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    uint32_t *cols = open + OPEN_MAX;
+    uint32_t i, left = 0u;
+    ssda__bounds4_open(pre, e->gsum, pitch, (size_t)4u * pitch, e->wgrp, nx, ny,
+                       (uint32_t)e->best.sad /* < 2^32 - 1: e->fast */, open);
+    e->ops += (uint64_t)nx * ny * 4u; /* positions x groups, as pre_bounds */
+    open[e->ty] &= ~(1u << e->tx); /* visited first */
+    for (i = 0u; i < nx; i++) {
+        cols[i] = 0u;
+    }
+    for (i = 0u; i < ny; i++) {
+        uint32_t m = open[i];
+        while (m != 0u) { /* few: most bounds exceed s */
+            cols[low_bit(m)] |= 1u << i;
+            m &= m - 1u;
+            left++;
+        }
+    }
+    return left;
+}
+#endif
+
 static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 {
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
@@ -1903,7 +1953,11 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     if (err != SSDA_OK) {
         return err;
     }
+#if KERNEL_LOOPS
+    left = defer_open(e) ? open_masks_pass(e, open) : open_masks(e, open);
+#else
     left = open_masks(e, open);
+#endif
     dmax = nx - 1 - px > dmax ? nx - 1 - px : dmax;
     dmax = py > dmax ? py : dmax;
     dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;

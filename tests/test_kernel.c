@@ -135,6 +135,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad16_rows_u16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4_open);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -609,6 +610,80 @@ static void test_bounds4_random(void)
     }
 }
 
+/* ssda__bounds4_open against its definition (64-bit sums, the mask from
+   them), the reference and every variant: every row length 1..32 (the
+   vector steps, the overlapping last step, the scalar rows), 1..5 rows,
+   strides between rows and groups, thresholds at, above and below
+   bounds of the area; nothing past each row's nx entries written. */
+#define BO_ROWS 5u
+static uint32_t g_bo_g[BO_ROWS * 40u + 4u * 200u + 64u];
+static uint32_t g_bo_want[BO_ROWS * 33u], g_bo_got[BO_ROWS * 33u + 1u];
+
+static void test_bounds4_open_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t i, nx, rows, t, v;
+    uint32_t w[4], want_m[BO_ROWS], got_m[BO_ROWS];
+    test_rng_seed(&r, 0xB40u);
+    for (t = 0u; t < 3u; t++) {
+        const uint32_t gmax = t == 0u ? 0x3FFFFFFFu : 4095u * 64u; /* 4 terms < 2^32 */
+        for (i = 0u; i < sizeof g_bo_g / sizeof g_bo_g[0]; i++) {
+            g_bo_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            w[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (nx = 1u; nx <= 32u; nx++) {
+            for (rows = 1u; rows <= BO_ROWS; rows++) {
+                const size_t gstride = nx + test_rng_range(&r, 0u, 7u);
+                const size_t down = BO_ROWS * 40u + test_rng_range(&r, 0u, 9u);
+                const uint32_t *g = g_bo_g + test_rng_range(&r, 0u, 3u);
+                uint32_t s, x, y;
+                for (y = 0u; y < rows; y++) { /* the definition */
+                    for (x = 0u; x < nx; x++) {
+                        uint64_t b = 0u;
+                        uint32_t q;
+                        for (q = 0u; q < 4u; q++) {
+                            const uint32_t a = g[y * gstride + x + q * down];
+                            b += a > w[q] ? a - w[q] : w[q] - a;
+                        }
+                        TEST_ASSERT_TRUE(b <= UINT32_MAX);
+                        g_bo_want[y * nx + x] = (uint32_t)b;
+                    }
+                }
+                /* s: one of the bounds (equal ones set their bit), 0, or all */
+                s = t == 2u ? UINT32_MAX
+                            : g_bo_want[test_rng_range(&r, 0u, rows * nx - 1u)] -
+                                  test_rng_range(&r, 0u, 1u);
+                for (y = 0u; y < rows; y++) {
+                    want_m[y] = 0u;
+                    for (x = 0u; x < nx; x++) {
+                        want_m[y] |= (g_bo_want[y * nx + x] <= s ? 1u : 0u) << x;
+                    }
+                }
+                (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                ssda__portable_bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bo_want, g_bo_got, rows * nx);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(want_m, got_m, rows);
+                (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                ssda__bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bo_want, g_bo_got, rows * nx);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(want_m, got_m, rows);
+                TEST_ASSERT_EQUAL_UINT32(0xA5A5A5A5u, g_bo_got[rows * nx]);
+                for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                    (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                    k->bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_bo_want, g_bo_got, rows * nx,
+                                                           k->name);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(want_m, got_m, rows, k->name);
+                    TEST_ASSERT_EQUAL_UINT32_MESSAGE(0xA5A5A5A5u, g_bo_got[rows * nx], k->name);
+                }
+            }
+        }
+    }
+}
+
 /* ssda__sad16_rows_u16 against kernels.h's definition (64-bit sums, a row
    at a time from ref_u16), the reference and every variant: rows 1 .. 24
    (steps of 8 and their remainders, the groups of 4 and the rows after
@@ -735,6 +810,7 @@ int main(void)
     RUN_TEST(test_sad_rows_worst_case);
     RUN_TEST(test_refine4_random);
     RUN_TEST(test_bounds4_random);
+    RUN_TEST(test_bounds4_open_random);
     RUN_TEST(test_sad16_rows_random);
     RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);

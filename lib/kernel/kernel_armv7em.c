@@ -205,6 +205,13 @@ void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *
     ssda__portable_bounds4(p, g, down, w, n);
 }
 
+void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                        const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                        uint32_t *open)
+{
+    ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+}
+
 uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                               size_t bstride, uint32_t rows, const uint32_t *limit,
                               uint32_t *sum)

@@ -520,17 +520,18 @@ uint32_t avx2_refine4(const uint32_t *b, const uint32_t *g, size_t down, const u
                            _mm_cvtsi32_si128((int)g[3u * down])));
     const __m128i tk = _mm_abs_epi32(_mm_sub_epi32(gk, load128(wgrp)));
     __m128i r = _mm_sub_epi32(sk, tk); /* s_k - term_k, modulo 2^32 */
-    uint32_t run[4], hit, k;
+    uint32_t hit, k;
     r = _mm_add_epi32(r, _mm_slli_si128(r, 4));
     r = _mm_add_epi32(r, _mm_slli_si128(r, 8));
     r = _mm_add_epi32(r, _mm_set1_epi32((int)rest));
     _mm_storeu_si128((__m128i *)(void *)term_out, sk);
-    _mm_storeu_si128((__m128i *)(void *)run, r);
     hit = (uint32_t)_mm_movemask_ps(
         _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_max_epu32(r, _mm_set1_epi32((int)cut)), r)));
-    k = hit != 0u ? (uint32_t)__builtin_ctz(hit) : 3u;
+    k = (uint32_t)__builtin_ctz(hit | 8u); /* the first group at cut, else the last */
     *groups = k + 1u;
-    return run[k];
+    /* lane k, by a variable permute (no store and reload) */
+    return (uint32_t)_mm_cvtsi128_si32(_mm_castps_si128(
+        _mm_permutevar_ps(_mm_castsi128_ps(r), _mm_cvtsi32_si128((int)k))));
 }
 #endif
 
@@ -575,6 +576,94 @@ void avx2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w
                             _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3)));
     }
     ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+#endif
+
+/* ssda__bounds4_open (kernels.h), SSE2: 4 positions a step, p <= s as
+   s >= p by the signed compare of both with the sign bit flipped; the
+   last nx % 4 by an overlapping step (the same values written again), or
+   the reference for rows under 4 positions. */
+static SSDA_NOINLINE void sse2_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride,
+                                            size_t down, const uint32_t *w, uint32_t nx,
+                                            uint32_t rows, uint32_t s, uint32_t *open)
+{
+    const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
+    const __m128i w2 = _mm_set1_epi32((int)w[2]), w3 = _mm_set1_epi32((int)w[3]);
+    const __m128i flip = _mm_set1_epi32((int)0x80000000u);
+    const __m128i sf = _mm_xor_si128(_mm_set1_epi32((int)s), flip);
+    uint32_t y;
+    if (nx < 4u) {
+        ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+    for (y = 0u; y < rows; y++) {
+        uint32_t m = 0u, i = 0u;
+        for (;;) {
+            const __m128i d0 = _mm_sub_epi32(load128(g + i), w0);
+            const __m128i d1 = _mm_sub_epi32(load128(g + down + i), w1);
+            const __m128i d2 = _mm_sub_epi32(load128(g + 2u * down + i), w2);
+            const __m128i d3 = _mm_sub_epi32(load128(g + 3u * down + i), w3);
+            const __m128i m0 = _mm_srai_epi32(d0, 31), m1 = _mm_srai_epi32(d1, 31);
+            const __m128i m2 = _mm_srai_epi32(d2, 31), m3 = _mm_srai_epi32(d3, 31);
+            const __m128i v = _mm_add_epi32(
+                _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d0, m0), m0),
+                              _mm_sub_epi32(_mm_xor_si128(d1, m1), m1)),
+                _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d2, m2), m2),
+                              _mm_sub_epi32(_mm_xor_si128(d3, m3), m3)));
+            /* lanes with p > s, inverted */
+            const uint32_t over = (uint32_t)_mm_movemask_ps(
+                _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_xor_si128(v, flip), sf)));
+            _mm_storeu_si128((__m128i *)(void *)(p + i), v);
+            m |= (~over & 15u) << i;
+            if (i + 4u == nx) {
+                break;
+            }
+            i = i + 8u <= nx ? i + 4u : nx - 4u; /* the last step overlaps */
+        }
+        open[y] = m;
+        p += nx;
+        g += gstride;
+    }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__bounds4_open (kernels.h), AVX2: 8 positions a step (VPABSD, p <= s
+   as min(p, s) == p), the last nx % 8 by an overlapping step; rows under 8
+   positions by the SSE2 variant. */
+static __attribute__((target("avx2")))
+void avx2_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                       const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                       uint32_t *open)
+{
+    const __m256i w0 = _mm256_set1_epi32((int)w[0]), w1 = _mm256_set1_epi32((int)w[1]);
+    const __m256i w2 = _mm256_set1_epi32((int)w[2]), w3 = _mm256_set1_epi32((int)w[3]);
+    const __m256i sv = _mm256_set1_epi32((int)s);
+    uint32_t y;
+    if (nx < 8u) {
+        sse2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+    for (y = 0u; y < rows; y++) {
+        uint32_t m = 0u, i = 0u;
+        for (;;) {
+            const __m256i a0 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + i), w0));
+            const __m256i a1 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + down + i), w1));
+            const __m256i a2 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 2u * down + i), w2));
+            const __m256i a3 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 3u * down + i), w3));
+            const __m256i v = _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3));
+            _mm256_storeu_si256((__m256i *)(void *)(p + i), v);
+            m |= (uint32_t)_mm256_movemask_ps(_mm256_castsi256_ps(
+                     _mm256_cmpeq_epi32(_mm256_min_epu32(v, sv), v)))
+                 << i;
+            if (i + 8u == nx) {
+                break;
+            }
+            i = i + 16u <= nx ? i + 8u : nx - 8u; /* the last step overlaps */
+        }
+        open[y] = m;
+        p += nx;
+        g += gstride;
+    }
 }
 #endif
 
@@ -683,6 +772,19 @@ uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t 
     return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
 }
 
+void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                        const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                        uint32_t *open)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+#endif
+    sse2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+}
+
 void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
 {
 #if defined(__GNUC__) || defined(__clang__)
@@ -698,10 +800,12 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
-          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16 },
+          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16,
+          sse2_bounds4_open },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16 },
+          avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16,
+          avx2_bounds4_open },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

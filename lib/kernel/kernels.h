@@ -71,6 +71,15 @@ SSDA_INTERNAL uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, c
                                             size_t bstride, uint32_t rows, const uint32_t *limit,
                                             uint32_t *sum);
 
+/* Tracking's group bounds of a whole area for its predict scan (the
+   engine's scan_predict_open, 4 groups): for y < rows, row y of p (nx
+   entries at p + y * nx) is ssda__bounds4 of g + y * gstride (groups
+   `down` entries apart), and bit x of open[y] is set when p[y * nx + x]
+   <= s. nx <= 32; the ranges of ssda__bounds4. */
+SSDA_INTERNAL void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride,
+                                      size_t down, const uint32_t *w, uint32_t nx,
+                                      uint32_t rows, uint32_t s, uint32_t *open);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -108,6 +117,9 @@ typedef struct {
     uint32_t (*sad16_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
                                size_t bstride, uint32_t rows, const uint32_t *limit,
                                uint32_t *sum);
+    void (*bounds4_open)(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                         const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                         uint32_t *open);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

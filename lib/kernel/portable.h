@@ -173,4 +173,22 @@ static inline void ssda__portable_bounds4(uint32_t *p, const uint32_t *g, size_t
     }
 }
 
+/* ssda__bounds4_open (kernels.h), the reference. */
+static inline void ssda__portable_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride,
+                                               size_t down, const uint32_t *w, uint32_t nx,
+                                               uint32_t rows, uint32_t s, uint32_t *open)
+{
+    uint32_t y, x;
+    for (y = 0u; y < rows; y++) {
+        uint32_t m = 0u;
+        ssda__portable_bounds4(p, g, down, w, nx);
+        for (x = 0u; x < nx; x++) {
+            m |= (p[x] <= s ? 1u : 0u) << x;
+        }
+        open[y] = m;
+        p += nx;
+        g += gstride;
+    }
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
