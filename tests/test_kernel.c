@@ -136,6 +136,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad16_rows_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4_open);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->tab_row);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -610,6 +611,75 @@ static void test_bounds4_random(void)
     }
 }
 
+/* ssda__tab_row against its definition (window sums of v in 64 bits,
+   modulo 2^32) and the reference, and every variant against the
+   reference entry for entry (the prefix sums it leaves past the L x 4
+   sums included): row lengths 1..80 (vector steps and tails), every L up
+   to 20 and the whole row, with and without b, b apart or overlaying
+   p[vlen] (the tables' one-slot layout), small sums and sums that wrap. */
+#define TR_MAX 80u
+static uint32_t g_tr_v[TR_MAX], g_tr_want[3u * TR_MAX + 8u], g_tr_got[3u * TR_MAX + 8u];
+
+static void run_tab_row(void (*f)(uint32_t *, uint32_t *, const uint32_t *, uint32_t, uint32_t),
+                        uint32_t *buf, uint32_t vlen, uint32_t L, uint32_t layout)
+{
+    /* layout 0: no b; 1: b after a gap; 2: b at p + vlen */
+    uint32_t *b = layout == 0u ? NULL : buf + vlen + (layout == 1u ? 3u : 0u);
+    (void)memset(buf, 0x5C, (3u * TR_MAX + 8u) * sizeof(uint32_t));
+    f(buf, b, g_tr_v, vlen, L);
+}
+
+static void portable_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen,
+                             uint32_t L)
+{
+    ssda__portable_tab_row(p, b, v, vlen, L);
+}
+
+static void test_tab_row_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t vlen, L, layout, t, i, v;
+    test_rng_seed(&r, 0x7AB5u);
+    for (t = 0u; t < 2u; t++) {
+        for (i = 0u; i < TR_MAX; i++) { /* vertical sums (< 2^18), or any word */
+            g_tr_v[i] = t == 0u ? test_rng_range(&r, 0u, 4u * 65535u) : test_rng_next(&r);
+        }
+        for (vlen = 1u; vlen <= TR_MAX; vlen++) {
+            for (L = 1u; L <= vlen; L = L < 20u ? L + 1u : (L < vlen ? vlen : L + 1u)) {
+                for (layout = 0u; layout < 3u; layout++) {
+                    uint32_t *b;
+                    if (layout != 0u && vlen < 4u) {
+                        continue;
+                    }
+                    run_tab_row(portable_tab_row, g_tr_want, vlen, L, layout);
+                    b = layout == 0u ? NULL : g_tr_want + vlen + (layout == 1u ? 3u : 0u);
+                    for (i = 0u; i + L <= vlen; i++) { /* the definition */
+                        uint64_t w = 0u;
+                        uint32_t j;
+                        for (j = 0u; j < L; j++) {
+                            w += g_tr_v[i + j];
+                        }
+                        TEST_ASSERT_EQUAL_UINT32((uint32_t)w, g_tr_want[i]);
+                    }
+                    for (i = 0u; b != NULL && i + 4u <= vlen; i++) {
+                        const uint64_t w = (uint64_t)g_tr_v[i] + g_tr_v[i + 1u] +
+                                           g_tr_v[i + 2u] + g_tr_v[i + 3u];
+                        TEST_ASSERT_EQUAL_UINT32((uint32_t)w, b[i]);
+                    }
+                    run_tab_row(ssda__tab_row, g_tr_got, vlen, L, layout);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY(g_tr_want, g_tr_got, 3u * TR_MAX + 8u);
+                    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                        run_tab_row(k->tab_row, g_tr_got, vlen, L, layout);
+                        TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_tr_want, g_tr_got,
+                                                               3u * TR_MAX + 8u, k->name);
+                    }
+                }
+            }
+        }
+    }
+}
+
 /* ssda__bounds4_open against its definition (64-bit sums, the mask from
    them), the reference and every variant: every row length 1..32 (the
    vector steps, the overlapping last step, the scalar rows), 1..5 rows,
@@ -811,6 +881,7 @@ int main(void)
     RUN_TEST(test_refine4_random);
     RUN_TEST(test_bounds4_random);
     RUN_TEST(test_bounds4_open_random);
+    RUN_TEST(test_tab_row_random);
     RUN_TEST(test_sad16_rows_random);
     RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);

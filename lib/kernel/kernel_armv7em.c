@@ -212,6 +212,11 @@ void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t d
     ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
 }
 
+void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
+{
+    ssda__portable_tab_row(p, b, v, vlen, L);
+}
+
 uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
                               size_t bstride, uint32_t rows, const uint32_t *limit,
                               uint32_t *sum)

@@ -667,6 +667,65 @@ void avx2_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t do
 }
 #endif
 
+/* ssda__tab_row (kernels.h), SSE2: the reference (its difference loops
+   vectorise at the build's SSE2). */
+static SSDA_NOINLINE void sse2_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v,
+                                       uint32_t vlen, uint32_t L)
+{
+    ssda__portable_tab_row(p, b, v, vlen, L);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__tab_row (kernels.h), AVX2: the prefix sums 8 at a time (a prefix
+   sum across the lanes, the low half's total into the high half, then the
+   running total broadcast from the last lane), the differences 8 at a
+   time, the last ones as the reference. Reads p[0 .. vlen - 1] only after
+   the prefix pass (p[vlen] from the running total): b may overlay it. */
+static __attribute__((target("avx2")))
+void avx2_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
+{
+    const uint32_t npos = vlen - L + 1u; /* >= 1 */
+    __m256i run = _mm256_setzero_si256(); /* the sum so far, in every lane */
+    uint32_t sum;
+    size_t i;
+    p[0] = 0u;
+    for (i = 0u; i + 8u <= vlen; i += 8u) {
+        __m256i x = load256(v + i);
+        x = _mm256_add_epi32(x, _mm256_slli_si256(x, 4));
+        x = _mm256_add_epi32(x, _mm256_slli_si256(x, 8));
+        x = _mm256_add_epi32(x, _mm256_permute2x128_si256(_mm256_shuffle_epi32(x, 0xFF),
+                                                          _mm256_shuffle_epi32(x, 0xFF), 0x08));
+        x = _mm256_add_epi32(x, run);
+        _mm256_storeu_si256((__m256i *)(void *)(p + i + 1u), x);
+        run = _mm256_permutevar8x32_epi32(x, _mm256_set1_epi32(7));
+    }
+    sum = (uint32_t)_mm_cvtsi128_si32(_mm256_castsi256_si128(run));
+    for (; i < vlen; i++) {
+        sum += v[i]; /* modulo 2^32 */
+        p[i + 1u] = sum;
+    }
+    if (b != NULL) {
+        const size_t last = (size_t)vlen - 4u; /* b's last entry: pitch - 1 */
+        for (i = 0u; i + 8u <= last; i += 8u) {
+            _mm256_storeu_si256((__m256i *)(void *)(b + i),
+                                _mm256_sub_epi32(load256(p + 4 + i), load256(p + i)));
+        }
+        for (; i < last; i++) {
+            b[i] = p[i + 4u] - p[i];
+        }
+        b[last] = sum - p[last]; /* p[last + 4] = p[vlen] */
+    }
+    for (i = 0u; i + 8u <= (size_t)npos - 1u; i += 8u) { /* in place: p[i + L..] not yet replaced */
+        _mm256_storeu_si256((__m256i *)(void *)(p + i),
+                            _mm256_sub_epi32(load256(p + L + i), load256(p + i)));
+    }
+    for (; i + 1u < npos; i++) {
+        p[i] = p[i + L] - p[i];
+    }
+    p[npos - 1u] = sum - p[npos - 1u]; /* p[npos - 1 + L] = p[vlen] */
+}
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -772,6 +831,17 @@ uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t 
     return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
 }
 
+void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_tab_row(p, b, v, vlen, L);
+        return;
+    }
+#endif
+    sse2_tab_row(p, b, v, vlen, L);
+}
+
 void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
                         const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
                         uint32_t *open)
@@ -801,11 +871,11 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
           sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16,
-          sse2_bounds4_open },
+          sse2_bounds4_open, sse2_tab_row },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
           avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16,
-          avx2_bounds4_open },
+          avx2_bounds4_open, avx2_tab_row },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

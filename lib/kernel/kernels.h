@@ -80,6 +80,17 @@ SSDA_INTERNAL void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gst
                                       size_t down, const uint32_t *w, uint32_t nx,
                                       uint32_t rows, uint32_t s, uint32_t *open);
 
+/* One row of tracking's shared tables (track_tab.c) from its vertical
+   sums v[0 .. vlen-1]: first the prefix sums p[k] = v[0] + .. + v[k-1]
+   modulo 2^32 into p[0 .. vlen] (vlen + 1 entries), then, when b is not
+   NULL, b[i] = p[i + 4] - p[i] for i < vlen - 3 (the 4 x 4 sums), then in
+   place p[i] = p[i + L] - p[i] for i <= vlen - L (the L x 4 sums),
+   ascending, all modulo 2^32. p[vlen] is read once, before b is written:
+   b may begin at p + vlen (the tables' one-slot layout). 1 <= L <= vlen,
+   and vlen >= 4 with b. */
+SSDA_INTERNAL void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen,
+                                 uint32_t L);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -120,6 +131,7 @@ typedef struct {
     void (*bounds4_open)(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
                          const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
                          uint32_t *open);
+    void (*tab_row)(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

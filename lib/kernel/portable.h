@@ -191,4 +191,33 @@ static inline void ssda__portable_bounds4_open(uint32_t *p, const uint32_t *g, s
     }
 }
 
+/* ssda__tab_row (kernels.h), the reference: size_t indices, loops that
+   vectorise. */
+static inline void ssda__portable_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v,
+                                          uint32_t vlen, uint32_t L)
+{
+    const uint32_t npos = vlen - L + 1u; /* >= 1 */
+    const uint32_t *ahead = p + L;
+    uint32_t sum = 0u;
+    size_t i;
+    p[0] = 0u;
+    for (i = 0u; i < vlen; i++) {
+        sum += v[i]; /* modulo 2^32 */
+        p[i + 1u] = sum;
+    }
+    /* sum = p[vlen], which b[0] may overwrite */
+    if (b != NULL) {
+        const uint32_t pitch = vlen - 3u; /* >= 1 */
+        const uint32_t *p4 = p + 4;
+        for (i = 0u; i + 1u < pitch; i++) {
+            b[i] = p4[i] - p[i];
+        }
+        b[pitch - 1u] = sum - p[pitch - 1u]; /* p4[pitch - 1] = p[vlen] */
+    }
+    for (i = 0u; i + 1u < npos; i++) {
+        p[i] = ahead[i] - p[i];
+    }
+    p[npos - 1u] = sum - p[npos - 1u]; /* ahead[npos - 1] = p[vlen] */
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
