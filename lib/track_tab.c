@@ -93,6 +93,17 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
 {
     int err;
     if (t->v_row != UINT32_MAX && t->v_row + 1u == y) {
+#if defined(SSDA_KERNEL_sse2)
+        if (first->base != NULL) { /* rows in memory: both rows in one pass */
+            const size_t at = (size_t)t->x_lo * first->format;
+            ssda__vslide(t->v, first->base + (size_t)(y + 3u) * first->stride + at,
+                         first->base + (size_t)(y - 1u) * first->stride + at, t->vlen,
+                         first->format == (uint8_t)SSDA_PIX_U8);
+            *ops += 2u * (uint64_t)t->vlen;
+            t->v_row = y;
+            return SSDA_OK;
+        }
+#endif
         err = v_add(t, first, y + 3u, true);
         if (err == SSDA_OK) {
             err = v_add(t, first, y - 1u, false);

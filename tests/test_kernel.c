@@ -137,6 +137,7 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad16_rows_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4_open);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->tab_row);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->vslide);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -680,6 +681,58 @@ static void test_tab_row_random(void)
     }
 }
 
+/* ssda__vslide against its definition (v + add - sub in 64 bits, modulo
+   2^32) and the reference, every variant against the reference: 8 and
+   16-bit rows of every length 0..40 at odd offsets, vertical sums that
+   stay in range and ones that wrap; nothing past n written. */
+static uint32_t g_vs_v[48], g_vs_want[48], g_vs_got[48];
+static uint16_t g_vs_16[2u * 48u + 8u];
+
+static void test_vslide_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t n, t, i, v, u8;
+    test_rng_seed(&r, 0x5713u);
+    for (t = 0u; t < 8u; t++) {
+        for (i = 0u; i < sizeof g_vs_16 / sizeof g_vs_16[0]; i++) {
+            g_vs_16[i] = (uint16_t)test_rng_range(&r, 0u, 65535u);
+        }
+        for (i = 0u; i < 48u; i++) {
+            g_vs_v[i] = t % 2u == 0u ? test_rng_range(&r, 0u, 4u * 65535u) : test_rng_next(&r);
+        }
+        for (u8 = 0u; u8 < 2u; u8++) {
+            for (n = 0u; n <= 40u; n++) {
+                const uint32_t oa = test_rng_range(&r, 0u, 3u), ob = test_rng_range(&r, 0u, 3u);
+                /* rows of n samples: 16-bit at 2-byte offsets, 8-bit at odd ones */
+                const uint8_t *add = u8 != 0u ? (const uint8_t *)g_vs_16 + 1u + oa
+                                              : (const uint8_t *)(g_vs_16 + oa);
+                const uint8_t *sub = u8 != 0u ? (const uint8_t *)(g_vs_16 + 48u) + 1u + ob
+                                              : (const uint8_t *)(g_vs_16 + 48u + ob);
+                for (i = 0u; i < 48u; i++) {
+                    uint64_t a = 0u, b = 0u;
+                    if (i < n) {
+                        a = u8 != 0u ? add[i] : ((const uint16_t *)(const void *)add)[i];
+                        b = u8 != 0u ? sub[i] : ((const uint16_t *)(const void *)sub)[i];
+                    }
+                    g_vs_want[i] = (uint32_t)((uint64_t)g_vs_v[i] + a + (1ull << 32) - b);
+                }
+                (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                ssda__portable_vslide(g_vs_got, add, sub, n, u8 != 0u);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_vs_want, g_vs_got, 48u);
+                (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                ssda__vslide(g_vs_got, add, sub, n, u8 != 0u);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_vs_want, g_vs_got, 48u);
+                for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                    (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                    k->vslide(g_vs_got, add, sub, n, u8 != 0u);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_vs_want, g_vs_got, 48u, k->name);
+                }
+            }
+        }
+    }
+}
+
 /* ssda__bounds4_open against its definition (64-bit sums, the mask from
    them), the reference and every variant: every row length 1..32 (the
    vector steps, the overlapping last step, the scalar rows), 1..5 rows,
@@ -882,6 +935,7 @@ int main(void)
     RUN_TEST(test_bounds4_random);
     RUN_TEST(test_bounds4_open_random);
     RUN_TEST(test_tab_row_random);
+    RUN_TEST(test_vslide_random);
     RUN_TEST(test_sad16_rows_random);
     RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);

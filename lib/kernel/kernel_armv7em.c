@@ -212,6 +212,11 @@ void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t d
     ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
 }
 
+void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
+{
+    ssda__portable_vslide(v, add, sub, n, u8);
+}
+
 void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
 {
     ssda__portable_tab_row(p, b, v, vlen, L);

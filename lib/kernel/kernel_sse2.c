@@ -726,6 +726,40 @@ void avx2_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, ui
 }
 #endif
 
+/* ssda__vslide (kernels.h), SSE2: the reference (it vectorises). */
+static SSDA_NOINLINE void sse2_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub,
+                                      uint32_t n, bool u8)
+{
+    ssda__portable_vslide(v, add, sub, n, u8);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__vslide (kernels.h), AVX2: 8 samples widened to 32-bit lanes a
+   step, the last n % 8 as the reference. */
+static __attribute__((target("avx2")))
+void avx2_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
+{
+    size_t i = 0u;
+    if (u8) {
+        for (; i + 8u <= n; i += 8u) {
+            const __m256i a = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(add + i)));
+            const __m256i b = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(sub + i)));
+            _mm256_storeu_si256((__m256i *)(void *)(v + i),
+                                _mm256_add_epi32(load256(v + i), _mm256_sub_epi32(a, b)));
+        }
+        ssda__portable_vslide(v + i, add + i, sub + i, n - (uint32_t)i, true);
+    } else {
+        for (; i + 8u <= n; i += 8u) {
+            const __m256i a = _mm256_cvtepu16_epi32(load128(add + 2u * i));
+            const __m256i b = _mm256_cvtepu16_epi32(load128(sub + 2u * i));
+            _mm256_storeu_si256((__m256i *)(void *)(v + i),
+                                _mm256_add_epi32(load256(v + i), _mm256_sub_epi32(a, b)));
+        }
+        ssda__portable_vslide(v + i, add + 2u * i, sub + 2u * i, n - (uint32_t)i, false);
+    }
+}
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -831,6 +865,17 @@ uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t 
     return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
 }
 
+void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_vslide(v, add, sub, n, u8);
+        return;
+    }
+#endif
+    sse2_vslide(v, add, sub, n, u8);
+}
+
 void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
 {
 #if defined(__GNUC__) || defined(__clang__)
@@ -871,11 +916,11 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
           sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16,
-          sse2_bounds4_open, sse2_tab_row },
+          sse2_bounds4_open, sse2_tab_row, sse2_vslide },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
           avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16,
-          avx2_bounds4_open, avx2_tab_row },
+          avx2_bounds4_open, avx2_tab_row, avx2_vslide },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

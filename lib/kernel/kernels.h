@@ -8,6 +8,7 @@
 #ifndef SSDA_KERNEL_KERNELS_H
 #define SSDA_KERNEL_KERNELS_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -91,6 +92,12 @@ SSDA_INTERNAL void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gst
 SSDA_INTERNAL void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen,
                                  uint32_t L);
 
+/* Tracking's vertical sums slid down a row (track_tab.c): v[i] = v[i] +
+   add[i] - sub[i] modulo 2^32 for i < n, samples of 8 bits (u8) or 16
+   bits (add and sub then 2-byte aligned). */
+SSDA_INTERNAL void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n,
+                                bool u8);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -132,6 +139,7 @@ typedef struct {
                          const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
                          uint32_t *open);
     void (*tab_row)(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L);
+    void (*vslide)(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

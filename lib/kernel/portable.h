@@ -6,6 +6,7 @@
 #ifndef SSDA_KERNEL_PORTABLE_H
 #define SSDA_KERNEL_PORTABLE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -218,6 +219,24 @@ static inline void ssda__portable_tab_row(uint32_t *p, uint32_t *b, const uint32
         p[i] = ahead[i] - p[i];
     }
     p[npos - 1u] = sum - p[npos - 1u]; /* ahead[npos - 1] = p[vlen] */
+}
+
+/* ssda__vslide (kernels.h), the reference. */
+static inline void ssda__portable_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub,
+                                         uint32_t n, bool u8)
+{
+    size_t i;
+    if (u8) {
+        for (i = 0u; i < n; i++) {
+            v[i] += (uint32_t)add[i] - sub[i]; /* modulo 2^32 */
+        }
+    } else {
+        const uint16_t *a = (const uint16_t *)(const void *)add;
+        const uint16_t *b = (const uint16_t *)(const void *)sub;
+        for (i = 0u; i < n; i++) {
+            v[i] += (uint32_t)a[i] - b[i];
+        }
+    }
 }
 
 #endif /* SSDA_KERNEL_PORTABLE_H */
