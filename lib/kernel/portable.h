@@ -69,6 +69,22 @@ static inline uint32_t ssda__portable_rows_u16(uint32_t (*row)(const uint16_t *,
     return r;
 }
 
+/* Sum of |a[i] - b[i]| over pixels lo .. hi - 1 of a 16-bit row, for
+   ssda__portable_sad16_rows_u16: its own loop, so that the sets' row
+   functions keep their inlined ssda__portable_sad_row_u16 (a third caller
+   made GCC call it out of line on the Cortex-M4: +16 B of stack). */
+static inline uint32_t ssda__portable_sad16_part(const uint8_t *a, const uint8_t *b,
+                                                 uint32_t lo, uint32_t hi)
+{
+    const uint16_t *p = (const uint16_t *)(const void *)a;
+    const uint16_t *q = (const uint16_t *)(const void *)b;
+    uint32_t s = 0u, i; /* <= 16 * 65535 */
+    for (i = lo; i < hi; i++) {
+        s += p[i] > q[i] ? (uint32_t)p[i] - q[i] : (uint32_t)q[i] - p[i];
+    }
+    return s;
+}
+
 /* ssda__sad16_rows_u16 (kernels.h), the reference: a row at a time. */
 static inline uint32_t ssda__portable_sad16_rows_u16(const uint16_t *a, size_t astride,
                                                      const uint16_t *b, size_t bstride,
@@ -77,21 +93,19 @@ static inline uint32_t ssda__portable_sad16_rows_u16(const uint16_t *a, size_t a
 {
     const uint8_t *pa = (const uint8_t *)(const void *)a;
     const uint8_t *pb = (const uint8_t *)(const void *)b;
-    uint32_t s = ssda__portable_sad_row_u16(a, b, 8u); /* < 2^32: the caller's */
+    uint32_t s = ssda__portable_sad16_part(pa, pb, 0u, 8u); /* < 2^32: the caller's */
     uint32_t r;
     if (s >= limit[0]) {
         *sum = s;
         return 8u;
     }
-    s += ssda__portable_sad_row_u16(a + 8, b + 8, 8u);
+    s += ssda__portable_sad16_part(pa, pb, 8u, 16u);
     for (r = 0u;; r++) {
         if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
             *sum = s;
             return 16u * (r + 1u); /* <= 16 * 4096 */
         }
-        s += ssda__portable_sad_row_u16((const uint16_t *)(const void *)(pa + (r + 1u) * astride),
-                                        (const uint16_t *)(const void *)(pb + (r + 1u) * bstride),
-                                        16u);
+        s += ssda__portable_sad16_part(pa + (r + 1u) * astride, pb + (r + 1u) * bstride, 0u, 16u);
     }
 }
 
@@ -179,11 +193,17 @@ static inline void ssda__portable_bounds4_open(uint32_t *p, const uint32_t *g, s
                                                size_t down, const uint32_t *w, uint32_t nx,
                                                uint32_t rows, uint32_t s, uint32_t *open)
 {
+    const int32_t w0 = (int32_t)w[0], w1 = (int32_t)w[1], w2 = (int32_t)w[2], w3 = (int32_t)w[3];
     uint32_t y, x;
-    for (y = 0u; y < rows; y++) {
+    for (y = 0u; y < rows; y++) { /* ssda__portable_bounds4 in its own loop (a second caller
+                                     made GCC call it out of line on the Cortex-M4) */
+        const uint32_t *g1 = &g[down], *g2 = &g1[down], *g3 = &g2[down];
         uint32_t m = 0u;
-        ssda__portable_bounds4(p, g, down, w, nx);
         for (x = 0u; x < nx; x++) {
+            const int32_t d0 = (int32_t)g[x] - w0, d1 = (int32_t)g1[x] - w1;
+            const int32_t d2 = (int32_t)g2[x] - w2, d3 = (int32_t)g3[x] - w3;
+            p[x] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
+                   (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
             m |= (p[x] <= s ? 1u : 0u) << x;
         }
         open[y] = m;
