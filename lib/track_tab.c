@@ -8,7 +8,6 @@
 #include "track_tab.h"
 #include "match_pre.h"
 #include "kernel/kernels.h"
-#include "kernel/portable.h"
 
 #ifndef SSDA_CFG_NO_BOUNDS
 
@@ -136,9 +135,10 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
    modulo 2^32, exact since the true sums are below 2^32; one op an entry.
    Five ops a pixel with v's two, where sliding sums for g and b took six
    (issue 18). pitch, npos >= 1: an area is searched (vlen >= search_w >=
-   win_w), and blocks need win_w >= 4. On x86 the kernels' row (AVX2 where
-   the processor has it: the prefix sums in vectors), elsewhere the same
-   loops inline (kernel/portable.h). */
+   win_w), and blocks need win_w >= 4. On x86 the kernels' row
+   (ssda__tab_row, the same loops; AVX2 where the processor has it),
+   elsewhere the loops here. */
+#if defined(SSDA_KERNEL_sse2)
 static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L, uint32_t y,
                      uint32_t s, uint64_t *ops)
 {
@@ -149,14 +149,52 @@ static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L
     if (err != SSDA_OK) {
         return err;
     }
-#if defined(SSDA_KERNEL_sse2)
+    /* x86: the kernels' row (AVX2 where the processor has it: the prefix
+       sums in vectors; issue 18) */
     ssda__tab_row(p, b, t->v, vlen, L);
-#else
-    ssda__portable_tab_row(p, b, t->v, vlen, L);
-#endif
     *ops += (uint64_t)vlen + (b != NULL ? pitch : 0u) + t->npos;
     return SSDA_OK;
 }
+#else
+static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L, uint32_t y,
+                     uint32_t s, uint64_t *ops)
+{
+    /* the fields in locals: the stores below could alias them */
+    const uint32_t *v = t->v;
+    const uint32_t npos = t->npos, pitch = t->pitch, vlen = t->vlen;
+    uint32_t *p = t->g + (size_t)s * pitch;
+    const uint32_t *ahead = p + L; /* size_t indices below: loops that vectorise */
+    uint32_t sum = 0u;
+    size_t i;
+    int err = v_row(t, first, y, ops);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    p[0] = 0u;
+    for (i = 0u; i < vlen; i++) {
+        sum += v[i]; /* modulo 2^32 */
+        p[i + 1u] = sum;
+    }
+    *ops += vlen;
+    /* sum = p[vlen]; pitch, npos >= 1 (an area is searched: vlen >= search_w
+       >= win_w, and blocks need win_w >= 4) */
+    if (t->blocks) {
+        uint32_t *b = t->b + (size_t)s * pitch;
+        const uint32_t *p4 = p + 4;
+        for (i = 0u; i + 1u < pitch; i++) {
+            b[i] = p4[i] - p[i];
+        }
+        b[pitch - 1u] = sum - p[pitch - 1u]; /* p4[pitch - 1] = p[vlen] */
+        *ops += pitch;
+    }
+    for (i = 0u; i + 1u < npos; i++) {
+        p[i] = ahead[i] - p[i];
+    }
+    p[npos - 1u] = sum - p[npos - 1u]; /* ahead[npos - 1] = p[vlen] */
+    *ops += npos;
+    return SSDA_OK;
+}
+#endif
 
 /* Rows y .. y + need - 1 present: those held kept (moved to the front when
    the tables are full), the others built. */
