@@ -4,6 +4,7 @@
 #include "ssda/composite.h"
 #include "ncc_internal.h"
 #include "fixmath.h"
+#include "view_pair.h"
 
 /* The resolved job. */
 typedef struct {
@@ -48,21 +49,10 @@ static int resolve(job_t *j, const ssda_view_t *ref, const ssda_view_t *next,
                    const ssda_composite_config_t *cfg, size_t out_count)
 {
     uint64_t s;
-    int err = ssda_view_check(ref);
-    if (err == SSDA_OK) {
-        err = ssda_view_check(next);
-    }
+    int err = ssda__view_check_pair(ref, next);
     if (err != SSDA_OK) {
         return err;
     }
-    if (ref->format != next->format) {
-        return SSDA_ERR_FORMAT;
-    }
-#ifdef SSDA_CFG_NO_U16
-    if (ref->format != (uint8_t)SSDA_PIX_U8) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
     if (cfg->tp > 256u || cfg->metric > (uint8_t)SSDA_NCC_ABS ||
         (cfg->flags & (uint8_t)~SSDA_COMPOSITE_SUBPIXEL) != 0u) {
         return SSDA_ERR_ARG;

@@ -3,6 +3,7 @@
 #include "match_rows.h"
 #include "kernel/kernels.h"
 #include "fixmath.h"
+#include "view_pair.h"
 
 void ssda__rows_mem(ssda__rows_t *rows, const void *base, uint32_t stride, uint32_t w,
                     uint32_t h, uint8_t format)
@@ -276,21 +277,10 @@ int ssda__match_plan(const ssda_match_config_t *cfg, uint32_t area_w, uint32_t a
 /* Validate the pair of views: each valid, same format, window fits. */
 static int check_pair(const ssda_view_t *area, const ssda_view_t *window)
 {
-    int err = ssda_view_check(area);
-    if (err == SSDA_OK) {
-        err = ssda_view_check(window);
-    }
+    int err = ssda__view_check_pair(area, window);
     if (err != SSDA_OK) {
         return err;
     }
-    if (area->format != window->format) {
-        return SSDA_ERR_FORMAT;
-    }
-#ifdef SSDA_CFG_NO_U16
-    if (area->format != (uint8_t)SSDA_PIX_U8) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
     if (window->width > area->width || window->height > area->height) {
         return SSDA_ERR_SIZE;
     }

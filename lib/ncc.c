@@ -3,24 +3,14 @@
 #include "kernel/kernels.h"
 #include "wide.h"
 #include "fixmath.h"
+#include "view_pair.h"
 
 int ssda__ncc_check_pair(const ssda_view_t *area, const ssda_view_t *window)
 {
-    int err = ssda_view_check(area);
-    if (err == SSDA_OK) {
-        err = ssda_view_check(window);
-    }
+    int err = ssda__view_check_pair(area, window);
     if (err != SSDA_OK) {
         return err;
     }
-    if (area->format != window->format) {
-        return SSDA_ERR_FORMAT;
-    }
-#ifdef SSDA_CFG_NO_U16
-    if (area->format != (uint8_t)SSDA_PIX_U8) {
-        return SSDA_ERR_UNSUPPORTED;
-    }
-#endif
     if (window->width > area->width || window->height > area->height ||
         (uint32_t)window->width * window->height > SSDA_NCC_MAX_PIXELS) {
         return SSDA_ERR_SIZE;

@@ -3,7 +3,8 @@
 # On a fresh machine it installs what is missing, then builds and runs every
 # test: host build with -Werror (with the Python binding and its pytest
 # suite), a host build with ASan + UBSan, the Unity suite on the library
-# built without its fast path (SSDA_CFG_NO_FAST_PATH), a 32-bit (-m32) host build with
+# built without its fast path (SSDA_CFG_NO_FAST_PATH), the library compiled
+# with each feature switch of config.h alone and all together, a 32-bit (-m32) host build with
 # ASan + UBSan running the Unity suite, the line and
 # branch coverage of lib/ (gcov/lcov, >= 95 % of branches), static analysis
 # of lib/ (cppcheck + MISRA C 2012, clang-tidy), a 5-second run of every fuzz
@@ -53,6 +54,18 @@ UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 ASAN_OPTIONS=detect_leaks=1 \
 # only). The library and its tests alone, about half a minute.
 configure_build_test build/nofast -DSSDA_CONFIG=SSDA_CFG_NO_FAST_PATH \
   -DSSDA_BUILD_TOOLS=OFF -DSSDA_BUILD_BENCH=OFF -DSSDA_INSTALL=OFF
+
+# Every feature switch of config.h alone and all together, compiled with
+# -Werror for each kernel set (host SSE2 and portable; with the cross
+# builds also the Cortex-M4F DSP and Cortex-M0+ ones): the test builds use
+# the full library, so a switch alone could stop compiling unseen
+# (tools/check-config.sh; about a minute).
+echo "==> build/config (feature switches)" >&2
+if [ "$skip_cross" = 1 ]; then
+  bash tools/check-config.sh build/config
+else
+  bash tools/check-config.sh --cross build/config
+fi
 
 # Coverage of lib/ from the Unity tests (gcov + lcov; docs/coverage.md):
 # line and branch figures per file, portable and SSE2 kernels merged; fails
