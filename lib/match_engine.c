@@ -1610,6 +1610,13 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
 {
     const uint32_t nb = (uint32_t)e->L >> 2;
     uint32_t k, yy, c;
+#if KERNEL_LOOPS
+    if (nb == 4u && e->ngroups == 4u && e->win->base != NULL) { /* 16 x 16..19 in memory */
+        ssda__blocks16(e->win->base, e->win->stride, u8, wblk, wgrp);
+        *ops += (uint64_t)4u * (4u * e->L + 3u); /* as the loop below counts */
+        return SSDA_OK;
+    }
+#endif
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t *w = wblk + (size_t)k * nb;
         uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */

@@ -138,6 +138,8 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4_open);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->tab_row);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->vslide);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->blocks16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->any_u16);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
@@ -733,6 +735,104 @@ static void test_vslide_random(void)
     }
 }
 
+/* ssda__blocks16 against block sums from the definition (each pixel added
+   to its block, 64 bits) and the reference, every variant: 8 and 16-bit
+   windows at odd offsets and strides, random and all-maximum pixels (the
+   largest sums: 16 * 65535 a block). */
+static uint16_t g_bl16[16u * 24u + 8u];
+
+static void test_blocks16_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t t, i, v, u8;
+    test_rng_seed(&r, 0xB16u);
+    for (t = 0u; t < 40u; t++) {
+        for (i = 0u; i < sizeof g_bl16 / sizeof g_bl16[0]; i++) {
+            g_bl16[i] = t == 0u ? 65535u : (uint16_t)test_rng_range(&r, 0u, 65535u);
+        }
+        for (u8 = 0u; u8 < 2u; u8++) {
+            /* 16 rows of 16 samples, strides of 16 to 23 samples (bytes when u8) */
+            const size_t stride = (16u + test_rng_range(&r, 0u, 7u)) * (u8 != 0u ? 1u : 2u);
+            const uint8_t *w = u8 != 0u ? (const uint8_t *)g_bl16 + test_rng_range(&r, 0u, 7u)
+                                        : (const uint8_t *)(g_bl16 + test_rng_range(&r, 0u, 7u));
+            uint64_t want_b[16] = {0u}, want_g[4] = {0u};
+            uint32_t wb[16], wg[4], gb[16], gg[4], row, col;
+            for (row = 0u; row < 16u; row++) {
+                for (col = 0u; col < 16u; col++) {
+                    const uint8_t *p = w + row * stride;
+                    const uint64_t px = u8 != 0u ? p[col] : ((const uint16_t *)(const void *)p)[col];
+                    want_b[4u * (row / 4u) + col / 4u] += px;
+                    want_g[row / 4u] += px;
+                }
+            }
+            ssda__portable_blocks16(w, stride, u8 != 0u, wb, wg);
+            for (i = 0u; i < 16u; i++) {
+                TEST_ASSERT_EQUAL_UINT64(want_b[i], wb[i]);
+            }
+            for (i = 0u; i < 4u; i++) {
+                TEST_ASSERT_EQUAL_UINT64(want_g[i], wg[i]);
+            }
+            ssda__blocks16(w, stride, u8 != 0u, gb, gg);
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(wb, gb, 16u);
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(wg, gg, 4u);
+            for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                (void)memset(gb, 0, sizeof gb);
+                (void)memset(gg, 0, sizeof gg);
+                k->blocks16(w, stride, u8 != 0u, gb, gg);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(wb, gb, 16u, k->name);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(wg, gg, 4u, k->name);
+            }
+        }
+    }
+}
+
+/* ssda__any_u16 against a search sample by sample: every width 0..40 and
+   1..5 rows at odd strides, the value absent, or planted once at every
+   position in turn (each lane of a vector step and of the tail). */
+static uint16_t g_any[5u * 48u + 8u];
+
+static void check_any(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want = 0u, r, i, v;
+    for (r = 0u; r < rows; r++) {
+        for (i = 0u; i < n; i++) {
+            want |= ((const uint16_t *)(const void *)(p + r * stride))[i] == t ? 1u : 0u;
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_any_u16(p, stride, n, rows, t));
+    TEST_ASSERT_EQUAL_UINT32(want, ssda__any_u16(p, stride, n, rows, t));
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, k->any_u16(p, stride, n, rows, t), k->name);
+    }
+}
+
+static void test_any_u16_every_position(void)
+{
+    test_rng_t r;
+    uint32_t n, rows, i, pos;
+    test_rng_seed(&r, 0xA11u);
+    for (n = 0u; n <= 40u; n++) {
+        for (rows = 1u; rows <= 5u; rows++) {
+            const size_t stride = 2u * (n + test_rng_range(&r, 0u, 7u));
+            const uint8_t *p = (const uint8_t *)(g_any + test_rng_range(&r, 0u, 7u));
+            for (i = 0u; i < sizeof g_any / sizeof g_any[0]; i++) {
+                g_any[i] = (uint16_t)test_rng_range(&r, 1u, 65535u); /* never 0 */
+            }
+            check_any(p, stride, n, rows, 0u);
+            for (pos = 0u; pos < n * rows; pos++) { /* 0 planted at each sample */
+                uint16_t *q = (uint16_t *)(void *)(g_any + ((size_t)(p - (const uint8_t *)g_any) +
+                                                            (pos / n) * stride) / 2u) + pos % n;
+                const uint16_t keep = *q;
+                *q = 0u;
+                check_any(p, stride, n, rows, 0u);
+                *q = keep;
+            }
+        }
+    }
+}
+
 /* ssda__bounds4_open against its definition (64-bit sums, the mask from
    them), the reference and every variant: every row length 1..32 (the
    vector steps, the overlapping last step, the scalar rows), 1..5 rows,
@@ -936,6 +1036,8 @@ int main(void)
     RUN_TEST(test_bounds4_open_random);
     RUN_TEST(test_tab_row_random);
     RUN_TEST(test_vslide_random);
+    RUN_TEST(test_blocks16_random);
+    RUN_TEST(test_any_u16_every_position);
     RUN_TEST(test_sad16_rows_random);
     RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);

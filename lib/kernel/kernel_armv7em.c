@@ -212,6 +212,16 @@ void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t d
     ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
 }
 
+uint32_t ssda__any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+    return ssda__portable_any_u16(p, stride, n, rows, t);
+}
+
+void ssda__blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp)
+{
+    ssda__portable_blocks16(w, stride, u8, wblk, wgrp);
+}
+
 void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
 {
     ssda__portable_vslide(v, add, sub, n, u8);

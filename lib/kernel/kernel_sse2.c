@@ -760,6 +760,89 @@ void avx2_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n
 }
 #endif
 
+/* ssda__any_u16 (kernels.h), SSE2: the reference. */
+static SSDA_NOINLINE uint32_t sse2_any_u16(const uint8_t *p, size_t stride, uint32_t n,
+                                           uint32_t rows, uint16_t t)
+{
+    return ssda__portable_any_u16(p, stride, n, rows, t);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__any_u16 (kernels.h), AVX2: 16 samples a compare, the masks OR-ed
+   over the rows and tested once; the last n % 16 of each row as the
+   reference. */
+static __attribute__((target("avx2")))
+uint32_t avx2_any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+    const __m256i tv = _mm256_set1_epi16((short)t);
+    const uint32_t n16 = n & ~15u;
+    __m256i acc = _mm256_setzero_si256();
+    uint32_t tail = 0u, r, i;
+    if (n == 16u || n == 32u) { /* the seed's windows and areas: no loop in a row */
+        for (r = 0u; r < rows; r++) {
+            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(p), tv));
+            if (n == 32u) {
+                acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(p + 32), tv));
+            }
+            p += stride;
+        }
+        return (uint32_t)(_mm256_testz_si256(acc, acc) == 0);
+    }
+    for (r = 0u; r < rows; r++) {
+        const uint8_t *q = p + (size_t)r * stride;
+        for (i = 0u; i < n16; i += 16u) {
+            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(q + 2u * i), tv));
+        }
+        tail |= ssda__portable_any_u16(q + 2u * n16, 0u, n - n16, 1u, t);
+    }
+    return (uint32_t)(_mm256_testz_si256(acc, acc) == 0) | tail;
+}
+#endif
+
+/* ssda__blocks16 (kernels.h), SSE2: the reference. */
+static SSDA_NOINLINE void sse2_blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk,
+                                        uint32_t *wgrp)
+{
+    ssda__portable_blocks16(w, stride, u8, wblk, wgrp);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__blocks16 (kernels.h), AVX2: a row as 16 16-bit lanes (8-bit rows
+   widened), its pixel pairs summed into 8 32-bit lanes, 4 rows added (a
+   group: lanes < 8 * 65535), then the pairs of each block and the blocks
+   of each group by horizontal adds. */
+static inline __attribute__((target("avx2")))
+__m256i group16_pairs(const uint8_t *w, size_t stride, bool u8)
+{
+    const __m256i lo = _mm256_set1_epi32(0xFFFF);
+    __m256i acc = _mm256_setzero_si256();
+    uint32_t r;
+    for (r = 0u; r < 4u; r++) {
+        const __m256i x = u8 ? _mm256_cvtepu8_epi16(load128(w)) : load256(w);
+        acc = _mm256_add_epi32(acc, _mm256_add_epi32(_mm256_and_si256(x, lo),
+                                                     _mm256_srli_epi32(x, 16)));
+        w += stride;
+    }
+    return acc;
+}
+
+static __attribute__((target("avx2")))
+void avx2_blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp)
+{
+    const __m256i g0 = group16_pairs(w, stride, u8);
+    const __m256i g1 = group16_pairs(w + 4u * stride, stride, u8);
+    const __m256i g2 = group16_pairs(w + 8u * stride, stride, u8);
+    const __m256i g3 = group16_pairs(w + 12u * stride, stride, u8);
+    /* [b0 b1 of g0, b0 b1 of g1 | b2 b3 of g0, b2 b3 of g1], g2 g3 alike */
+    const __m256i h01 = _mm256_hadd_epi32(g0, g1), h23 = _mm256_hadd_epi32(g2, g3);
+    const __m256i s = _mm256_hadd_epi32(h01, h23); /* halves of the groups' sums */
+    _mm256_storeu_si256((__m256i *)(void *)wblk, _mm256_permute4x64_epi64(h01, 0xD8));
+    _mm256_storeu_si256((__m256i *)(void *)(wblk + 8), _mm256_permute4x64_epi64(h23, 0xD8));
+    _mm_storeu_si128((__m128i *)(void *)wgrp,
+                     _mm_add_epi32(_mm256_castsi256_si128(s), _mm256_extracti128_si256(s, 1)));
+}
+#endif
+
 /* 1 where the processor (and the operating system) runs AVX2, else 0. */
 static inline uint32_t x86_avx2(void)
 {
@@ -865,6 +948,27 @@ uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t 
     return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
 }
 
+uint32_t ssda__any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_any_u16(p, stride, n, rows, t);
+    }
+#endif
+    return sse2_any_u16(p, stride, n, rows, t);
+}
+
+void ssda__blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_blocks16(w, stride, u8, wblk, wgrp);
+        return;
+    }
+#endif
+    sse2_blocks16(w, stride, u8, wblk, wgrp);
+}
+
 void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
 {
 #if defined(__GNUC__) || defined(__clang__)
@@ -916,11 +1020,13 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
           sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16,
-          sse2_bounds4_open, sse2_tab_row, sse2_vslide },
+          sse2_bounds4_open, sse2_tab_row, sse2_vslide, sse2_blocks16,
+          sse2_any_u16 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
           avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16,
-          avx2_bounds4_open, avx2_tab_row, avx2_vslide },
+          avx2_bounds4_open, avx2_tab_row, avx2_vslide, avx2_blocks16,
+          avx2_any_u16 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

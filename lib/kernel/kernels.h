@@ -98,6 +98,21 @@ SSDA_INTERNAL void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, ui
 SSDA_INTERNAL void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n,
                                 bool u8);
 
+/* Tracking's window sums for its 4 x 4 block terms (the engine's
+   window_blocks4, 16 x 16..19 windows): over rows 0..15 of 16 pixels (row
+   r at w + r * stride bytes; 8-bit samples when u8, else 16-bit),
+   wblk[4 k + c] = the sum of the 4 x 4 block of rows 4k..4k+3 and columns
+   4c..4c+3 (< 16 * 65535 < 2^20), and wgrp[k] = wblk[4k] + .. +
+   wblk[4k + 3] (< 2^22), k, c < 4. */
+SSDA_INTERNAL void ssda__blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk,
+                                  uint32_t *wgrp);
+
+/* Tracking's mask test (track_rows.c): 1 when some sample of rows 0 ..
+   rows-1 of n 16-bit samples (row r at p + r * stride bytes) equals t,
+   else 0. */
+SSDA_INTERNAL uint32_t ssda__any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows,
+                                     uint16_t t);
+
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
 SSDA_INTERNAL uint32_t ssda__absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n);
@@ -140,6 +155,8 @@ typedef struct {
                          uint32_t *open);
     void (*tab_row)(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L);
     void (*vslide)(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8);
+    void (*blocks16)(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp);
+    uint32_t (*any_u16)(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in

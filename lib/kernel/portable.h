@@ -259,4 +259,41 @@ static inline void ssda__portable_vslide(uint32_t *v, const uint8_t *add, const 
     }
 }
 
+/* ssda__blocks16 (kernels.h), the reference. */
+static inline void ssda__portable_blocks16(const uint8_t *w, size_t stride, bool u8,
+                                           uint32_t *wblk, uint32_t *wgrp)
+{
+    uint32_t k, r, c, i;
+    for (k = 0u; k < 4u; k++) {
+        uint32_t g = 0u;
+        for (c = 0u; c < 4u; c++) {
+            uint32_t b = 0u;
+            for (r = 4u * k; r < 4u * k + 4u; r++) {
+                const uint8_t *p = w + (size_t)r * stride;
+                for (i = 4u * c; i < 4u * c + 4u; i++) {
+                    b += u8 ? p[i] : ((const uint16_t *)(const void *)p)[i];
+                }
+            }
+            wblk[4u * k + c] = b;
+            g += b;
+        }
+        wgrp[k] = g;
+    }
+}
+
+/* ssda__any_u16 (kernels.h), the reference: the comparisons OR-ed, one
+   test at the end. */
+static inline uint32_t ssda__portable_any_u16(const uint8_t *p, size_t stride, uint32_t n,
+                                              uint32_t rows, uint16_t t)
+{
+    uint32_t hit = 0u, r, i;
+    for (r = 0u; r < rows; r++) {
+        const uint16_t *q = (const uint16_t *)(const void *)(p + (size_t)r * stride);
+        for (i = 0u; i < n; i++) {
+            hit |= q[i] == t ? 1u : 0u;
+        }
+    }
+    return hit;
+}
+
 #endif /* SSDA_KERNEL_PORTABLE_H */
