@@ -544,8 +544,13 @@ static uint32_t group_bound32(engine_t *e, uint32_t x, uint32_t y, uint32_t cut_
    rows), in 32 bits (the bound <= the SAD < 2^32 - 1): the same terms,
    order, exits and count, in the kernels' ssda__refine4 (SSE2 on x86). The
    group terms are taken there, so group_bound32 need not store them. */
-static SSDA_NOINLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y, uint32_t rest,
-                                          uint32_t cut_at)
+#if KERNEL_LOOPS
+#define TAB_REFINE4_INLINE SSDA_ALWAYS_INLINE /* x86: the kernel's call only */
+#else
+#define TAB_REFINE4_INLINE SSDA_NOINLINE
+#endif
+static TAB_REFINE4_INLINE uint32_t tab_refine4(engine_t *e, uint32_t x, uint32_t y,
+                                               uint32_t rest, uint32_t cut_at)
 {
     const size_t at = (size_t)y * e->gpitch + x; /* b and g: one pitch */
     uint32_t groups;
@@ -761,6 +766,42 @@ static SSDA_NOINLINE int fast_rows(engine_t *e, uint32_t x, uint32_t y, uint32_t
 }
 #endif
 
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+/* fast_rows after tab_refine4 (open_quad, eval_fast) for 16-bit windows
+   16 pixels wide (4 groups of 4 rows, 16..19 rows), in one kernel call
+   (ssda__sad16_rows_u16; the predicted position and the open ones of a
+   GOES-16 window: 134 -> 48 million instructions a grid): fast_rows
+   checks partial + rest against cut after the first 8 pixels and after
+   every row, rest falling by the group's term as each group starts
+   (rest - term[0] from row 0). So the limit of the rows of group k is cut
+   - (rest - term[0] - .. - term[k]) (> 0: that rest <= rest < cut), and of
+   the rows after the 4 groups cut - 0 (rest, from tab_refine4, is the sum
+   of the 4 terms; fast_rows stops subtracting once rest is 0, and a term
+   of 0 subtracts nothing). The same pixels counted, cuts and SAD. */
+static SSDA_NOINLINE int quad_rows_u16(engine_t *e, uint32_t x, uint32_t y, uint32_t cut,
+                                       uint32_t rest, uint64_t *sad)
+{
+    const size_t as = e->area->stride;
+    const uint8_t *a = e->area->base + (size_t)y * as + (size_t)x * 2u;
+    const uint32_t M = e->M;
+    uint32_t limit[5], sum = 0u, k, pixels;
+    for (k = 0u; k < 4u; k++) {
+        rest -= rest != 0u ? e->term[k] : 0u;
+        limit[k] = cut - rest;
+    }
+    limit[4] = cut - rest; /* rest is 0 here */
+    pixels = ssda__sad16_rows_u16((const uint16_t *)(const void *)a, as,
+                                  (const uint16_t *)(const void *)e->win->base, e->win->stride,
+                                  M, limit, &sum);
+    e->ops += pixels; /* <= 16 * 19 */
+    if (pixels == 16u * M && sum < limit[M > 16u ? 4u : 3u]) {
+        *sad = sum;
+        return 1;
+    }
+    return 0;
+}
+#endif
+
 /*
  * eval_position for the common exact case (e->fast, set once per search):
  * rows in memory, row order, no ramp, no all-cut fallback, no block levels,
@@ -776,6 +817,9 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
     bool tie = false;
     uint32_t cut_at = cut_level32(e, x, y, &tie);
     uint32_t rest = 0u; /* the bound, < 2^32 - 1 */
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+    bool rows16 = false; /* quad_rows_u16's case (16-bit, tab_refine4's) */
+#endif
     e->positions++;
     if (cut_at == 0u) {
         return 0;
@@ -787,6 +831,9 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
            (tools/budget.sh: +6 % instructions) for 0.2 % on tracking */
         const bool quad = KERNEL_LOOPS != 0 && e->integ != NULL && e->L >> 2 == 4u &&
                           e->ngroups == 4u;
+#if KERNEL_LOOPS
+        rows16 = quad && !e->u8;
+#endif
         rest = group_bound32(e, x, y, cut_at, !quad);
         if (rest >= cut_at) {
             return 0;
@@ -804,6 +851,11 @@ static SSDA_ALWAYS_INLINE int eval_fast(engine_t *e, uint32_t x, uint32_t y, uin
                 return 0;
             }
         }
+    }
+#endif
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_BOUNDS)
+    if (rows16) { /* tab_refine4 ran: its terms, and rest their sum */
+        return quad_rows_u16(e, x, y, cut_at, rest, sad);
     }
 #endif
     return fast_rows(e, x, y, cut_at, rest, sad);
@@ -1558,6 +1610,13 @@ static SSDA_NOINLINE int window_blocks4(const engine_t *e, uint32_t *wblk, uint3
 {
     const uint32_t nb = (uint32_t)e->L >> 2;
     uint32_t k, yy, c;
+#if KERNEL_LOOPS
+    if (nb == 4u && e->ngroups == 4u && e->win->base != NULL) { /* 16 x 16..19 in memory */
+        ssda__blocks16(e->win->base, e->win->stride, u8, wblk, wgrp);
+        *ops += (uint64_t)4u * (4u * e->L + 3u); /* as the loop below counts */
+        return SSDA_OK;
+    }
+#endif
     for (k = 0u; k < e->ngroups; k++) {
         uint32_t *w = wblk + (size_t)k * nb;
         uint32_t g = 0u; /* the group's sum: <= 4 * L * 65535 < 2^32 (L <= 1024) */
@@ -1651,6 +1710,20 @@ static int tab_bounds(engine_t *e, ssda__match_tab_t *tab, uint32_t *wgrp, bool 
    (consider_best). Counts the nx * ny * ngroups terms here; eval_fast's
    bound calls for the other positions are not counted again (finish). */
 #ifndef SSDA_CFG_NO_FAST_PATH
+#define OPEN_MAX 32u /* scan_predict_open: positions a row and a column */
+
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_PREDICT)
+/* scan_predict_open's case with 4 groups of group sums below 2^31 (x86):
+   the bound pass is deferred until the predicted position is summed, and
+   made with the masks of the positions it leaves open (ssda__bounds4_open:
+   one pass, where open_masks read every bound again; issue 18). */
+static bool defer_open(const engine_t *e)
+{
+    return e->plan->scan == (uint8_t)SSDA_SCAN_PREDICT && e->nx <= OPEN_MAX &&
+           e->ny <= OPEN_MAX && e->ngroups == 4u && (e->u8 || e->L <= 8191u);
+}
+#endif
+
 static SSDA_NOINLINE void pre_bounds(engine_t *e)
 {
     uint32_t *pre = (uint32_t *)e->plan->work;
@@ -1660,6 +1733,15 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
        their differences */
     const bool small = e->u8 || e->L <= 8191u;
     uint32_t x, y, k;
+#if KERNEL_LOOPS && !defined(SSDA_CFG_NO_PREDICT)
+    if (defer_open(e)) { /* the predicted position's bound only (counted later) */
+        const size_t at = (size_t)e->ty * pitch + e->tx;
+        ssda__portable_bounds4(pre + (size_t)e->ty * nx + e->tx, e->gsum + at,
+                               (size_t)4u * pitch, e->wgrp, 1u);
+        e->pre = pre;
+        return;
+    }
+#endif
     for (y = 0u; y < ny; y++) {
         uint32_t *p = pre + (size_t)y * nx;
         if (e->ngroups == 4u) { /* 16..19 rows, the seed's windows: one pass */
@@ -1714,7 +1796,6 @@ static SSDA_NOINLINE void pre_bounds(engine_t *e)
    open: 2 * OPEN_MAX words (a row's mask per row, then a column's per
    column) in the uniqueness list's place, unused here. */
 #ifndef SSDA_CFG_NO_PREDICT
-#define OPEN_MAX 32u
 /* the masks fit the list's room, which every shared-table buffer has */
 typedef char open_masks_fit[(sizeof(uint32_t) * 2u * OPEN_MAX <= SSDA_MATCH_UNIQUE_WORK) ? 1 : -1];
 
@@ -1741,6 +1822,21 @@ static SSDA_ALWAYS_INLINE uint32_t bit_span(uint32_t lo, uint32_t hi)
     return ((2u << hi) - 1u) & ~((1u << lo) - 1u); /* 2 << 31 wraps to 0: all bits */
 }
 
+
+/* pos_before(e, x, y, best.x, best.y) for open_quad, whose positions lie
+   in a range of at most OPEN_MAX a side: squared distances < 2 * 32^2 in
+   32 bits, and the rule's terms combined without branches (the tie rule
+   was a tenth of the predict scan's instructions on GOES-16). */
+static SSDA_ALWAYS_INLINE bool open_before(const engine_t *e, uint32_t x, uint32_t y)
+{
+    const uint32_t bx = e->best.x, by = e->best.y;
+    const int32_t ax = (int32_t)x - (int32_t)e->tx, ay = (int32_t)y - (int32_t)e->ty;
+    const int32_t cx = (int32_t)bx - (int32_t)e->tx, cy = (int32_t)by - (int32_t)e->ty;
+    const uint32_t da = (uint32_t)(ax * ax + ay * ay), db = (uint32_t)(cx * cx + cy * cy);
+    const bool raster = y < by || (y == by && x < bx);
+    return e->tie_near ? (da < db) | ((da == db) & raster) : raster;
+}
+
 /* consider_best for scan_predict_open with 4 groups of 4 blocks (the
    seed's windows, tab_refine4): eval_fast's steps on what that case
    knows already (a reference, the bound in the table, no list), the same
@@ -1755,14 +1851,24 @@ static SSDA_ALWAYS_INLINE void open_quad(engine_t *e, uint32_t x, uint32_t y)
         return;
     }
     /* cut_level32: s + 1 for a position before the best by the tie rule */
-    cut = s + (pos_before(e, x, y, e->best.x, e->best.y) ? 1u : 0u);
+    cut = s + (open_before(e, x, y) ? 1u : 0u);
     if (bound >= cut) { /* also cut == 0 */
         return;
     }
     rest = tab_refine4(e, x, y, bound, cut);
-    if (rest < cut && fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+    if (rest >= cut) {
+        return;
+    }
+#if KERNEL_LOOPS
+    if (!e->u8 ? quad_rows_u16(e, x, y, cut, rest, &c.sad) != 0
+               : fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
         keep_completed(e, x, y, &c);
     }
+#else
+    if (fast_rows(e, x, y, cut, rest, &c.sad) != 0) {
+        keep_completed(e, x, y, &c);
+    }
+#endif
 }
 
 /* The open positions of mask m, ascending: columns of row `fix` (row),
@@ -1825,6 +1931,34 @@ static SSDA_NOINLINE uint32_t open_masks(const engine_t *e, uint32_t *open)
     return left;
 }
 
+#if KERNEL_LOOPS
+/* open_masks for defer_open's case: the bound pass (pre_bounds' work and
+   count) and the row masks at once, then the column masks from them. */
+static SSDA_NOINLINE uint32_t open_masks_pass(engine_t *e, uint32_t *open)
+{
+    uint32_t *pre = (uint32_t *)e->plan->work;
+    const uint32_t nx = e->nx, ny = e->ny, pitch = e->gpitch;
+    uint32_t *cols = open + OPEN_MAX;
+    uint32_t i, left = 0u;
+    ssda__bounds4_open(pre, e->gsum, pitch, (size_t)4u * pitch, e->wgrp, nx, ny,
+                       (uint32_t)e->best.sad /* < 2^32 - 1: e->fast */, open);
+    e->ops += (uint64_t)nx * ny * 4u; /* positions x groups, as pre_bounds */
+    open[e->ty] &= ~(1u << e->tx); /* visited first */
+    for (i = 0u; i < nx; i++) {
+        cols[i] = 0u;
+    }
+    for (i = 0u; i < ny; i++) {
+        uint32_t m = open[i];
+        while (m != 0u) { /* few: most bounds exceed s */
+            cols[low_bit(m)] |= 1u << i;
+            m &= m - 1u;
+            left++;
+        }
+    }
+    return left;
+}
+#endif
+
 static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
 {
     const int32_t nx = (int32_t)e->nx, ny = (int32_t)e->ny;
@@ -1840,7 +1974,11 @@ static SSDA_NOINLINE int scan_predict_open(engine_t *e, uint32_t *open)
     if (err != SSDA_OK) {
         return err;
     }
+#if KERNEL_LOOPS
+    left = defer_open(e) ? open_masks_pass(e, open) : open_masks(e, open);
+#else
     left = open_masks(e, open);
+#endif
     dmax = nx - 1 - px > dmax ? nx - 1 - px : dmax;
     dmax = py > dmax ? py : dmax;
     dmax = ny - 1 - py > dmax ? ny - 1 - py : dmax;

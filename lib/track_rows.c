@@ -6,6 +6,7 @@
 #include "track_rows.h"
 #include "track_tab.h"
 #include "fixmath.h"
+#include "kernel/kernels.h"
 
 const ssda__track_origin_t ssda__track_origin_whole = {0u, 0u, 0u, 0u};
 
@@ -136,6 +137,7 @@ static uint32_t absdev_u16(const uint16_t *p, uint32_t n, uint32_t m)
     return c;
 }
 
+#if !defined(SSDA_KERNEL_sse2)
 /* The mask test alone over rows in memory of 16 or 32 16-bit samples (the
    seed's windows and areas): the comparisons of every row OR-ed into 16
    lanes, reduced once at the end, where the row loop reduced and tested
@@ -164,6 +166,18 @@ static bool mask_free_u16(const ssda__rows_t *src, uint32_t n, uint16_t t)
     }
     return any == 0u;
 }
+#endif
+
+/* mask_free_u16, on x86 the kernels' (ssda__any_u16: AVX2 where the
+   processor has it; issue 18). */
+static inline bool mask_free(const ssda__rows_t *src, uint32_t n, uint16_t t)
+{
+#if defined(SSDA_KERNEL_sse2)
+    return ssda__any_u16(src->base, src->stride, n, src->height, t) == 0u;
+#else
+    return mask_free_u16(src, n, t);
+#endif
+}
 
 /* Over all rows of src, one span per row: look for the mask value (if
    mask), count pixels above the texture threshold (if texture), sum the
@@ -179,7 +193,7 @@ static int scan_pixels(const ssda__rows_t *src, const ssda_track_plan_t *p, bool
     s->sum = 0u;
     s->masked = false;
     if (mask && !texture && !sum && !u8 && src->base != NULL && (n == 16u || n == 32u) &&
-        mask_free_u16(src, n, p->mask_value)) {
+        mask_free(src, n, p->mask_value)) {
         /* the loop below would read every row and find nothing; with a hit
            it finds the row, and counts the rows up to it */
         *pixels_read += (uint64_t)n * src->height;

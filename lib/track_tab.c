@@ -7,6 +7,7 @@
 
 #include "track_tab.h"
 #include "match_pre.h"
+#include "kernel/kernels.h"
 
 #ifndef SSDA_CFG_NO_BOUNDS
 
@@ -91,6 +92,17 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
 {
     int err;
     if (t->v_row != UINT32_MAX && t->v_row + 1u == y) {
+#if defined(SSDA_KERNEL_sse2)
+        if (first->base != NULL) { /* rows in memory: both rows in one pass */
+            const size_t at = (size_t)t->x_lo * first->format;
+            ssda__vslide(t->v, first->base + (size_t)(y + 3u) * first->stride + at,
+                         first->base + (size_t)(y - 1u) * first->stride + at, t->vlen,
+                         first->format == (uint8_t)SSDA_PIX_U8);
+            *ops += 2u * (uint64_t)t->vlen;
+            t->v_row = y;
+            return SSDA_OK;
+        }
+#endif
         err = v_add(t, first, y + 3u, true);
         if (err == SSDA_OK) {
             err = v_add(t, first, y - 1u, false);
@@ -115,13 +127,35 @@ static int v_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t y, ui
    not built yet (rows are built in ascending slots), or for the last slot
    the tables' slack. With one slot (search_h = 4) and areas over FIRST's
    whole width there is none: p[vlen] is b's first entry, which the b loop
-   writes first, so p[vlen] is read from a local (test_track_shared's
-   one-row, whole-width case). Then b[i] = p[i + 4] - p[i] (4 vertical
-   sums, < 2^20) and g[i] = p[i + L] - p[i] in place, ascending (it reads
-   only entries not yet replaced; L of them, <= 4 * L * 65535 < 2^32 with
-   L <= 16384 for 16-bit samples): differences of sums modulo 2^32, exact
-   since the true sums are below 2^32; one op an entry. Five ops a pixel
-   with v's two, where sliding sums for g and b took six (issue 18). */
+   writes first, so p[vlen] is read before it (ssda__tab_row's contract;
+   test_track_shared's one-row, whole-width case). Then b[i] = p[i + 4] -
+   p[i] (4 vertical sums, < 2^20) and g[i] = p[i + L] - p[i] in place,
+   ascending (it reads only entries not yet replaced; L of them, <= 4 * L
+   * 65535 < 2^32 with L <= 16384 for 16-bit samples): differences of sums
+   modulo 2^32, exact since the true sums are below 2^32; one op an entry.
+   Five ops a pixel with v's two, where sliding sums for g and b took six
+   (issue 18). pitch, npos >= 1: an area is searched (vlen >= search_w >=
+   win_w), and blocks need win_w >= 4. On x86 the kernels' row
+   (ssda__tab_row, the same loops; AVX2 where the processor has it),
+   elsewhere the loops here. */
+#if defined(SSDA_KERNEL_sse2)
+static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L, uint32_t y,
+                     uint32_t s, uint64_t *ops)
+{
+    const uint32_t pitch = t->pitch, vlen = t->vlen;
+    uint32_t *p = t->g + (size_t)s * pitch;
+    uint32_t *b = t->blocks ? t->b + (size_t)s * pitch : NULL;
+    int err = v_row(t, first, y, ops);
+    if (err != SSDA_OK) {
+        return err;
+    }
+    /* x86: the kernels' row (AVX2 where the processor has it: the prefix
+       sums in vectors; issue 18) */
+    ssda__tab_row(p, b, t->v, vlen, L);
+    *ops += (uint64_t)vlen + (b != NULL ? pitch : 0u) + t->npos;
+    return SSDA_OK;
+}
+#else
 static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L, uint32_t y,
                      uint32_t s, uint64_t *ops)
 {
@@ -160,6 +194,7 @@ static int build_row(ssda__track_tab_t *t, const ssda__rows_t *first, uint32_t L
     *ops += npos;
     return SSDA_OK;
 }
+#endif
 
 /* Rows y .. y + need - 1 present: those held kept (moved to the front when
    the tables are full), the others built. */

@@ -13,6 +13,7 @@
  */
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "unity.h"
@@ -134,12 +135,24 @@ static void test_kernel_variants_listed(void)
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad_rows_u16);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->refine4);
         TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->sad16_rows_u16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->bounds4_open);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->tab_row);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->vslide);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->blocks16);
+        TEST_ASSERT_NOT_NULL(ssda__kernel_variant(v)->any_u16);
         v++;
     }
     TEST_ASSERT_NULL(ssda__kernel_variant(v + 1u));
 #if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(SSDA_TEST_SMALL)
     if (ssda__kernel_name()[0] == 's') {
+        /* the count a run expects (tests/CMakeLists.txt: test_kernel_no_avx2
+           under an emulated processor without AVX2), when it sets one */
+        const char *want = getenv("SSDA_TEST_VARIANTS");
         TEST_ASSERT_EQUAL_UINT32(__builtin_cpu_supports("avx2") ? 2u : 1u, v);
+        if (want != NULL) {
+            TEST_ASSERT_EQUAL_UINT32((uint32_t)strtoul(want, NULL, 10), v);
+        }
         if (v == 2u) {
             TEST_ASSERT_EQUAL_STRING("avx2", ssda__kernel_variant(1u)->name);
         }
@@ -608,6 +621,408 @@ static void test_bounds4_random(void)
     }
 }
 
+/* ssda__tab_row against its definition (window sums of v in 64 bits,
+   modulo 2^32) and the reference, and every variant against the
+   reference entry for entry (the prefix sums it leaves past the L x 4
+   sums included): row lengths 1..80 (vector steps and tails), every L up
+   to 20 and the whole row, with and without b, b apart or overlaying
+   p[vlen] (the tables' one-slot layout), small sums and sums that wrap. */
+#define TR_MAX 80u
+static uint32_t g_tr_v[TR_MAX], g_tr_want[3u * TR_MAX + 8u], g_tr_got[3u * TR_MAX + 8u];
+
+static void run_tab_row(void (*f)(uint32_t *, uint32_t *, const uint32_t *, uint32_t, uint32_t),
+                        uint32_t *buf, uint32_t vlen, uint32_t L, uint32_t layout)
+{
+    /* layout 0: no b; 1: b after a gap; 2: b at p + vlen */
+    uint32_t *b = layout == 0u ? NULL : buf + vlen + (layout == 1u ? 3u : 0u);
+    (void)memset(buf, 0x5C, (3u * TR_MAX + 8u) * sizeof(uint32_t));
+    f(buf, b, g_tr_v, vlen, L);
+}
+
+static void portable_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen,
+                             uint32_t L)
+{
+    ssda__portable_tab_row(p, b, v, vlen, L);
+}
+
+static void test_tab_row_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t vlen, L, layout, t, i, v;
+    test_rng_seed(&r, 0x7AB5u);
+    for (t = 0u; t < 2u; t++) {
+        for (i = 0u; i < TR_MAX; i++) { /* vertical sums (< 2^18), or any word */
+            g_tr_v[i] = t == 0u ? test_rng_range(&r, 0u, 4u * 65535u) : test_rng_next(&r);
+        }
+        for (vlen = 1u; vlen <= TR_MAX; vlen++) {
+            for (L = 1u; L <= vlen; L = L < 20u ? L + 1u : (L < vlen ? vlen : L + 1u)) {
+                for (layout = 0u; layout < 3u; layout++) {
+                    uint32_t *b;
+                    if (layout != 0u && vlen < 4u) {
+                        continue;
+                    }
+                    run_tab_row(portable_tab_row, g_tr_want, vlen, L, layout);
+                    b = layout == 0u ? NULL : g_tr_want + vlen + (layout == 1u ? 3u : 0u);
+                    for (i = 0u; i + L <= vlen; i++) { /* the definition */
+                        uint64_t w = 0u;
+                        uint32_t j;
+                        for (j = 0u; j < L; j++) {
+                            w += g_tr_v[i + j];
+                        }
+                        TEST_ASSERT_EQUAL_UINT32((uint32_t)w, g_tr_want[i]);
+                    }
+                    for (i = 0u; b != NULL && i + 4u <= vlen; i++) {
+                        const uint64_t w = (uint64_t)g_tr_v[i] + g_tr_v[i + 1u] +
+                                           g_tr_v[i + 2u] + g_tr_v[i + 3u];
+                        TEST_ASSERT_EQUAL_UINT32((uint32_t)w, b[i]);
+                    }
+                    run_tab_row(ssda__tab_row, g_tr_got, vlen, L, layout);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY(g_tr_want, g_tr_got, 3u * TR_MAX + 8u);
+                    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                        run_tab_row(k->tab_row, g_tr_got, vlen, L, layout);
+                        TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_tr_want, g_tr_got,
+                                                               3u * TR_MAX + 8u, k->name);
+                    }
+                }
+            }
+        }
+    }
+}
+
+/* ssda__vslide against its definition (v + add - sub in 64 bits, modulo
+   2^32) and the reference, every variant against the reference: 8 and
+   16-bit rows of every length 0..40 at odd offsets, vertical sums that
+   stay in range and ones that wrap; nothing past n written. */
+static uint32_t g_vs_v[48], g_vs_want[48], g_vs_got[48];
+static uint16_t g_vs_16[2u * 48u + 8u];
+
+static void test_vslide_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t n, t, i, v, u8;
+    test_rng_seed(&r, 0x5713u);
+    for (t = 0u; t < 8u; t++) {
+        for (i = 0u; i < sizeof g_vs_16 / sizeof g_vs_16[0]; i++) {
+            g_vs_16[i] = (uint16_t)test_rng_range(&r, 0u, 65535u);
+        }
+        for (i = 0u; i < 48u; i++) {
+            g_vs_v[i] = t % 2u == 0u ? test_rng_range(&r, 0u, 4u * 65535u) : test_rng_next(&r);
+        }
+        for (u8 = 0u; u8 < 2u; u8++) {
+            for (n = 0u; n <= 40u; n++) {
+                const uint32_t oa = test_rng_range(&r, 0u, 3u), ob = test_rng_range(&r, 0u, 3u);
+                /* rows of n samples: 16-bit at 2-byte offsets, 8-bit at odd ones */
+                const uint8_t *add = u8 != 0u ? (const uint8_t *)g_vs_16 + 1u + oa
+                                              : (const uint8_t *)(g_vs_16 + oa);
+                const uint8_t *sub = u8 != 0u ? (const uint8_t *)(g_vs_16 + 48u) + 1u + ob
+                                              : (const uint8_t *)(g_vs_16 + 48u + ob);
+                for (i = 0u; i < 48u; i++) {
+                    uint64_t a = 0u, b = 0u;
+                    if (i < n) {
+                        a = u8 != 0u ? add[i] : ((const uint16_t *)(const void *)add)[i];
+                        b = u8 != 0u ? sub[i] : ((const uint16_t *)(const void *)sub)[i];
+                    }
+                    g_vs_want[i] = (uint32_t)((uint64_t)g_vs_v[i] + a + (1ull << 32) - b);
+                }
+                (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                ssda__portable_vslide(g_vs_got, add, sub, n, u8 != 0u);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_vs_want, g_vs_got, 48u);
+                (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                ssda__vslide(g_vs_got, add, sub, n, u8 != 0u);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_vs_want, g_vs_got, 48u);
+                for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                    (void)memcpy(g_vs_got, g_vs_v, sizeof g_vs_got);
+                    k->vslide(g_vs_got, add, sub, n, u8 != 0u);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_vs_want, g_vs_got, 48u, k->name);
+                }
+            }
+        }
+    }
+}
+
+/* ssda__blocks16 against block sums from the definition (each pixel added
+   to its block, 64 bits) and the reference, every variant: 8 and 16-bit
+   windows at odd offsets and strides, random and all-maximum pixels (the
+   largest sums: 16 * 65535 a block). */
+static uint16_t g_bl16[16u * 24u + 8u];
+
+static void test_blocks16_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t t, i, v, u8;
+    test_rng_seed(&r, 0xB16u);
+    for (t = 0u; t < 40u; t++) {
+        for (i = 0u; i < sizeof g_bl16 / sizeof g_bl16[0]; i++) {
+            g_bl16[i] = t == 0u ? 65535u : (uint16_t)test_rng_range(&r, 0u, 65535u);
+        }
+        for (u8 = 0u; u8 < 2u; u8++) {
+            /* 16 rows of 16 samples, strides of 16 to 23 samples (bytes when u8) */
+            const size_t stride = (16u + test_rng_range(&r, 0u, 7u)) * (u8 != 0u ? 1u : 2u);
+            const uint8_t *w = u8 != 0u ? (const uint8_t *)g_bl16 + test_rng_range(&r, 0u, 7u)
+                                        : (const uint8_t *)(g_bl16 + test_rng_range(&r, 0u, 7u));
+            uint64_t want_b[16] = {0u}, want_g[4] = {0u};
+            uint32_t wb[16], wg[4], gb[16], gg[4], row, col;
+            for (row = 0u; row < 16u; row++) {
+                for (col = 0u; col < 16u; col++) {
+                    const uint8_t *p = w + row * stride;
+                    const uint64_t px = u8 != 0u ? p[col] : ((const uint16_t *)(const void *)p)[col];
+                    want_b[4u * (row / 4u) + col / 4u] += px;
+                    want_g[row / 4u] += px;
+                }
+            }
+            ssda__portable_blocks16(w, stride, u8 != 0u, wb, wg);
+            for (i = 0u; i < 16u; i++) {
+                TEST_ASSERT_EQUAL_UINT64(want_b[i], wb[i]);
+            }
+            for (i = 0u; i < 4u; i++) {
+                TEST_ASSERT_EQUAL_UINT64(want_g[i], wg[i]);
+            }
+            ssda__blocks16(w, stride, u8 != 0u, gb, gg);
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(wb, gb, 16u);
+            TEST_ASSERT_EQUAL_UINT32_ARRAY(wg, gg, 4u);
+            for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                (void)memset(gb, 0, sizeof gb);
+                (void)memset(gg, 0, sizeof gg);
+                k->blocks16(w, stride, u8 != 0u, gb, gg);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(wb, gb, 16u, k->name);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(wg, gg, 4u, k->name);
+            }
+        }
+    }
+}
+
+/* ssda__any_u16 against a search sample by sample: every width 0..40 and
+   1..5 rows at odd strides, the value absent, or planted once at every
+   position in turn (each lane of a vector step and of the tail). */
+static uint16_t g_any[5u * 48u + 8u];
+
+static void check_any(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want = 0u, r, i, v;
+    for (r = 0u; r < rows; r++) {
+        for (i = 0u; i < n; i++) {
+            want |= ((const uint16_t *)(const void *)(p + r * stride))[i] == t ? 1u : 0u;
+        }
+    }
+    TEST_ASSERT_EQUAL_UINT32(want, ssda__portable_any_u16(p, stride, n, rows, t));
+    TEST_ASSERT_EQUAL_UINT32(want, ssda__any_u16(p, stride, n, rows, t));
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, k->any_u16(p, stride, n, rows, t), k->name);
+    }
+}
+
+static void test_any_u16_every_position(void)
+{
+    test_rng_t r;
+    uint32_t n, rows, i, pos;
+    test_rng_seed(&r, 0xA11u);
+    for (n = 0u; n <= 40u; n++) {
+        for (rows = 1u; rows <= 5u; rows++) {
+            const size_t stride = 2u * (n + test_rng_range(&r, 0u, 7u));
+            const uint8_t *p = (const uint8_t *)(g_any + test_rng_range(&r, 0u, 7u));
+            for (i = 0u; i < sizeof g_any / sizeof g_any[0]; i++) {
+                g_any[i] = (uint16_t)test_rng_range(&r, 1u, 65535u); /* never 0 */
+            }
+            check_any(p, stride, n, rows, 0u);
+            for (pos = 0u; pos < n * rows; pos++) { /* 0 planted at each sample */
+                uint16_t *q = (uint16_t *)(void *)(g_any + ((size_t)(p - (const uint8_t *)g_any) +
+                                                            (pos / n) * stride) / 2u) + pos % n;
+                const uint16_t keep = *q;
+                *q = 0u;
+                check_any(p, stride, n, rows, 0u);
+                *q = keep;
+            }
+        }
+    }
+}
+
+/* ssda__bounds4_open against its definition (64-bit sums, the mask from
+   them), the reference and every variant: every row length 1..32 (the
+   vector steps, the overlapping last step, the scalar rows), 1..5 rows,
+   strides between rows and groups, thresholds at, above and below
+   bounds of the area; nothing past each row's nx entries written. */
+#define BO_ROWS 5u
+static uint32_t g_bo_g[BO_ROWS * 40u + 4u * 200u + 64u];
+static uint32_t g_bo_want[BO_ROWS * 33u], g_bo_got[BO_ROWS * 33u + 1u];
+
+static void test_bounds4_open_random(void)
+{
+    const ssda__kernel_variant_t *k;
+    test_rng_t r;
+    uint32_t i, nx, rows, t, v;
+    uint32_t w[4], want_m[BO_ROWS], got_m[BO_ROWS];
+    test_rng_seed(&r, 0xB40u);
+    for (t = 0u; t < 3u; t++) {
+        const uint32_t gmax = t == 0u ? 0x3FFFFFFFu : 4095u * 64u; /* 4 terms < 2^32 */
+        for (i = 0u; i < sizeof g_bo_g / sizeof g_bo_g[0]; i++) {
+            g_bo_g[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (i = 0u; i < 4u; i++) {
+            w[i] = test_rng_range(&r, 0u, gmax);
+        }
+        for (nx = 1u; nx <= 32u; nx++) {
+            for (rows = 1u; rows <= BO_ROWS; rows++) {
+                const size_t gstride = nx + test_rng_range(&r, 0u, 7u);
+                const size_t down = BO_ROWS * 40u + test_rng_range(&r, 0u, 9u);
+                const uint32_t *g = g_bo_g + test_rng_range(&r, 0u, 3u);
+                uint32_t s, x, y;
+                for (y = 0u; y < rows; y++) { /* the definition */
+                    for (x = 0u; x < nx; x++) {
+                        uint64_t b = 0u;
+                        uint32_t q;
+                        for (q = 0u; q < 4u; q++) {
+                            const uint32_t a = g[y * gstride + x + q * down];
+                            b += a > w[q] ? a - w[q] : w[q] - a;
+                        }
+                        TEST_ASSERT_TRUE(b <= UINT32_MAX);
+                        g_bo_want[y * nx + x] = (uint32_t)b;
+                    }
+                }
+                /* s: one of the bounds (equal ones set their bit), 0, or all */
+                s = t == 2u ? UINT32_MAX
+                            : g_bo_want[test_rng_range(&r, 0u, rows * nx - 1u)] -
+                                  test_rng_range(&r, 0u, 1u);
+                for (y = 0u; y < rows; y++) {
+                    want_m[y] = 0u;
+                    for (x = 0u; x < nx; x++) {
+                        want_m[y] |= (g_bo_want[y * nx + x] <= s ? 1u : 0u) << x;
+                    }
+                }
+                (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                ssda__portable_bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bo_want, g_bo_got, rows * nx);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(want_m, got_m, rows);
+                (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                ssda__bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(g_bo_want, g_bo_got, rows * nx);
+                TEST_ASSERT_EQUAL_UINT32_ARRAY(want_m, got_m, rows);
+                TEST_ASSERT_EQUAL_UINT32(0xA5A5A5A5u, g_bo_got[rows * nx]);
+                for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+                    (void)memset(g_bo_got, 0xA5, sizeof g_bo_got);
+                    k->bounds4_open(g_bo_got, g, gstride, down, w, nx, rows, s, got_m);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(g_bo_want, g_bo_got, rows * nx,
+                                                           k->name);
+                    TEST_ASSERT_EQUAL_UINT32_ARRAY_MESSAGE(want_m, got_m, rows, k->name);
+                    TEST_ASSERT_EQUAL_UINT32_MESSAGE(0xA5A5A5A5u, g_bo_got[rows * nx], k->name);
+                }
+            }
+        }
+    }
+}
+
+/* ssda__sad16_rows_u16 against kernels.h's definition (64-bit sums, a row
+   at a time from ref_u16), the reference and every variant: rows 1 .. 24
+   (steps of 8 and their remainders, the groups of 4 and the rows after
+   16), unaligned rows at random strides, limits that stop it at the first
+   8 pixels, at each row, or never. */
+#define S16_ROWS 24u
+static uint16_t g_s16[S16_ROWS * 40u + 64u];
+
+static uint32_t sad16_rows_definition(const uint16_t *a, size_t as, const uint16_t *b,
+                                      size_t bs, uint32_t rows, const uint32_t *limit,
+                                      uint32_t *sum)
+{
+    uint64_t s = ref_u16(a, b, 8u);
+    uint32_t r;
+    if (s >= limit[0]) {
+        *sum = (uint32_t)s;
+        return 8u;
+    }
+    for (r = 0u; r < rows; r++) {
+        if (r > 0u) {
+            s += ref_u16(a + r * (as / 2u), b + r * (bs / 2u), 8u);
+        }
+        s += ref_u16(a + r * (as / 2u) + 8u, b + r * (bs / 2u) + 8u, 8u);
+        TEST_ASSERT_TRUE(s <= UINT32_MAX); /* the contract */
+        if (s >= limit[r < 16u ? r / 4u : 4u]) {
+            break;
+        }
+    }
+    *sum = (uint32_t)s;
+    return 16u * (r < rows ? r + 1u : rows);
+}
+
+static void check_sad16_rows(const uint16_t *a, size_t as, const uint16_t *b, size_t bs,
+                             uint32_t rows, const uint32_t *limit)
+{
+    const ssda__kernel_variant_t *k;
+    uint32_t want_sum = 0u, got_sum = 0u, v;
+    const uint32_t want = sad16_rows_definition(a, as, b, bs, rows, limit, &want_sum);
+    uint32_t got = ssda__portable_sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, "reference");
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, "reference");
+    got_sum = 0u;
+    got = ssda__sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, ssda__kernel_name());
+    TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, ssda__kernel_name());
+    for (v = 0u; (k = ssda__kernel_variant(v)) != NULL; v++) {
+        got_sum = 0u;
+        got = k->sad16_rows_u16(a, as, b, bs, rows, limit, &got_sum);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want, got, k->name);
+        TEST_ASSERT_EQUAL_UINT32_MESSAGE(want_sum, got_sum, k->name);
+    }
+}
+
+static void test_sad16_rows_random(void)
+{
+    test_rng_t r;
+    uint32_t i, rows, t;
+    test_rng_seed(&r, 0x5AD16u);
+    for (rows = 1u; rows <= S16_ROWS; rows++) {
+        for (t = 0u; t < 40u; t++) {
+            const uint32_t vmax = t % 2u == 0u ? 65535u : 300u;
+            const size_t as = 2u * (16u + test_rng_range(&r, 0u, 3u));
+            const size_t bs = 2u * (16u + test_rng_range(&r, 0u, 3u));
+            const uint16_t *a = g_s16 + test_rng_range(&r, 0u, 7u);
+            const uint16_t *b = a + test_rng_range(&r, 1u, 9u);
+            uint32_t limit[5], row_sum[S16_ROWS], run = 0u, stop;
+            for (i = 0u; i < sizeof g_s16 / sizeof g_s16[0]; i++) {
+                g_s16[i] = (uint16_t)test_rng_range(&r, 0u, vmax);
+            }
+            for (i = 0u; i < rows; i++) { /* the running sums after each row */
+                run += (uint32_t)ref_u16(a + i * (as / 2u), b + i * (bs / 2u), 16u);
+                row_sum[i] = run;
+            }
+            /* every limit above all sums, then one near a chosen row's sum:
+               at it, just below (stops there or before) or just above */
+            for (i = 0u; i < 5u; i++) {
+                limit[i] = t % 8u == 1u ? 0u : run + 1u + test_rng_range(&r, 0u, 5u);
+            }
+            stop = test_rng_range(&r, 0u, rows - 1u);
+            if (t % 8u > 1u) {
+                const uint32_t g = stop < 16u ? stop / 4u : 4u;
+                limit[g] = row_sum[stop] + test_rng_range(&r, 0u, 2u) - 1u;
+            }
+            if (t % 8u == 7u) { /* the first 8 pixels' own check */
+                limit[0] = (uint32_t)ref_u16(a, b, 8u) - (t % 16u == 7u ? 0u : 1u);
+            }
+            check_sad16_rows(a, as, b, bs, rows, limit);
+        }
+    }
+}
+
+/* The largest sum the contract allows: 4096 rows of 16 differences of
+   65535 (stride 0: one row read again), 4 294 901 760 (above 2^31: the
+   unsigned compares), with the last limit at it and just above. */
+static void test_sad16_rows_worst_case(void)
+{
+    uint32_t limit[5] = {UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX, UINT32_MAX};
+    uint32_t i;
+    for (i = 0u; i < 16u; i++) {
+        g_s16[i] = 65535u;
+        g_s16[16u + i] = 0u;
+    }
+    check_sad16_rows(g_s16, 0u, g_s16 + 16, 0u, 4096u, limit);
+    limit[4] = 4294901760u;
+    check_sad16_rows(g_s16, 0u, g_s16 + 16, 0u, 4096u, limit);
+    limit[4] = 4294901760u - 16u * 65535u; /* the row before */
+    check_sad16_rows(g_s16 + 16, 0u, g_s16, 0u, 4096u, limit);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -625,6 +1040,13 @@ int main(void)
     RUN_TEST(test_sad_rows_worst_case);
     RUN_TEST(test_refine4_random);
     RUN_TEST(test_bounds4_random);
+    RUN_TEST(test_bounds4_open_random);
+    RUN_TEST(test_tab_row_random);
+    RUN_TEST(test_vslide_random);
+    RUN_TEST(test_blocks16_random);
+    RUN_TEST(test_any_u16_every_position);
+    RUN_TEST(test_sad16_rows_random);
+    RUN_TEST(test_sad16_rows_worst_case);
     RUN_TEST(test_dot_random_every_length_alignment_and_rows);
     RUN_TEST(test_dot_worst_case);
     return UNITY_END();

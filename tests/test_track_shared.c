@@ -422,6 +422,56 @@ static void test_accumulator_limits(void)
 }
 #endif
 
+/* 16-bit images whose values all fit 8 bits track as their 8-bit copies:
+   every vector field, statuses, and pixel_ops, positions and completed
+   counts equal. With shared tables and 16-px windows the two formats take
+   separate row paths on x86 (16-bit rows: one kernel call a position,
+   their cut levels per group of rows); values 0..3 make partial sums meet
+   the cut levels exactly, where a level off by one shows in the counts.
+   Windows 16 x 16 to 16 x 19 (the rows after the 4 groups). */
+static void test_u16_counts_equal_u8(void)
+{
+    static const geom_t k_quad[] = {
+        {16, 16, 32, 32, 8, 8}, {16, 16, 32, 32, 16, 16}, {16, 19, 30, 33, 9, 10},
+        {16, 17, 28, 27, 11, 7}};
+    uint32_t gi, kind, x, pred;
+    for (kind = 0; kind < 2u; kind++) {
+        test_rng_t r;
+        test_rng_seed(&r, 4242u + kind);
+        make_images(300u + kind, 0u);
+        for (x = 0; x < IW * IH; x++) { /* kind 0: 0..3 noise; 1: texture 0..255 */
+            const uint32_t a = kind == 0u ? test_rng_range(&r, 0, 3) : g_a8[x];
+            const uint32_t b = kind == 0u ? test_rng_range(&r, 0, 3) : g_b8[x];
+            g_a16[x] = (uint16_t)a;
+            g_b16[x] = (uint16_t)b;
+            g_a8[x] = (uint8_t)a;
+            g_b8[x] = (uint8_t)b;
+        }
+        for (gi = 0; gi < sizeof k_quad / sizeof k_quad[0]; gi++) {
+            for (pred = 0; pred < 2u; pred++) {
+                ssda_view_t a8, b8, a16, b16;
+                ssda_track_config_t c;
+                ssda_track_stats_t s8, s16;
+                ssda_track_grid_t grid;
+                views(false, &a8, &b8);
+                views(true, &a16, &b16);
+                config(&k_quad[gi], &c);
+                c.predict = pred != 0u ? SSDA_TRACK_PREDICT_MEDIAN : SSDA_TRACK_PREDICT_LEFT;
+                c.match.work_size = shared_size(&k_quad[gi]);
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track_grid(&c, IW, IH, &grid));
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a8, &b8, &c, g_want, MAX_WIN, &s8));
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_track(&a16, &b16, &c, g_got, MAX_WIN, &s16));
+                same_vectors(g_want, g_got, grid.count, "16-bit");
+                TEST_ASSERT_TRUE(s8.ok > 10u);
+                TEST_ASSERT_EQUAL_UINT64(s8.pixel_ops, s16.pixel_ops);
+                TEST_ASSERT_EQUAL_UINT64(s8.positions, s16.positions);
+                TEST_ASSERT_EQUAL_UINT64(s8.completed, s16.completed);
+                check_brute(&a16, &b16, &grid, g_got);
+            }
+        }
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -430,6 +480,7 @@ int main(void)
     RUN_TEST(test_shared_costs_less);
     RUN_TEST(test_buffer_sizes);
     RUN_TEST(test_track_row_shared);
+    RUN_TEST(test_u16_counts_equal_u8);
 #ifndef SSDA_TEST_SMALL
     RUN_TEST(test_accumulator_limits);
 #endif

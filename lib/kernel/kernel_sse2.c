@@ -317,12 +317,139 @@ static uint32_t avx2_sad_rows_u16(const uint16_t *a, size_t astride, const uint1
 }
 #endif
 
+/* ssda__sad16_rows_u16 (kernels.h), SSE2: a row at a time, its halves
+   from the two 8-lane differences. */
+static SSDA_NOINLINE uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                    size_t bstride, uint32_t rows, const uint32_t *limit,
+                                    uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    const __m128i zero = _mm_setzero_si128();
+    uint32_t s, r;
+    {
+        const __m128i a0 = load128(a), b0 = load128(b);
+        const __m128i d0 = _mm_or_si128(_mm_subs_epu16(a0, b0), _mm_subs_epu16(b0, a0));
+        s = hsum_u32x4(_mm_add_epi32(_mm_unpacklo_epi16(d0, zero), _mm_unpackhi_epi16(d0, zero)));
+    }
+    if (s >= limit[0]) {
+        *sum = s;
+        return 8u;
+    }
+    s += sse2_sad_row_u16(a + 8, b + 8, 8u);
+    for (r = 0u;; r++) {
+        if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
+            *sum = s;
+            return 16u * (r + 1u);
+        }
+        pa += astride;
+        pb += bstride;
+        s += sad16_u16((const uint16_t *)(const void *)pa, (const uint16_t *)(const void *)pb);
+    }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* A 16-pixel 16-bit row's |a - b| in eight 32-bit lanes (two |d| <= 65535
+   each: < 2^17), whose sum is the row's SAD. */
+static inline __attribute__((target("avx2")))
+__m256i row16_lanes(const uint8_t *a, const uint8_t *b)
+{
+    const __m256i x = load256(a), y = load256(b);
+    const __m256i d = _mm256_or_si256(_mm256_subs_epu16(x, y), _mm256_subs_epu16(y, x));
+    return _mm256_add_epi32(_mm256_and_si256(d, _mm256_set1_epi32(0xFFFF)),
+                            _mm256_srli_epi32(d, 16));
+}
+
+/* The SADs of 8 rows of 16 16-bit pixels, row j at p + j * astride (q
+   likewise), in lanes 0..7 (< 2^20 each): each row's lanes summed by
+   horizontal adds, pixels 0-7 and 8-15 apart, then the halves joined. */
+static inline __attribute__((target("avx2")))
+__m256i rows8_sads(const uint8_t *p, size_t astride, const uint8_t *q, size_t bstride)
+{
+    __m256i h[4], q0, q1;
+    uint32_t j;
+    for (j = 0u; j < 4u; j++) { /* two rows at a time: few registers live */
+        const __m256i v0 = row16_lanes(p, q);
+        const __m256i v1 = row16_lanes(p + astride, q + bstride);
+        h[j] = _mm256_hadd_epi32(v0, v1);
+        p += 2u * astride;
+        q += 2u * bstride;
+    }
+    /* q0: rows 0-3's sums over pixels 0-7 (low 128 bits) and 8-15 (high);
+       q1 the same for rows 4-7 */
+    q0 = _mm256_hadd_epi32(h[0], h[1]);
+    q1 = _mm256_hadd_epi32(h[2], h[3]);
+    return _mm256_add_epi32(_mm256_permute2x128_si256(q0, q1, 0x20),
+                            _mm256_permute2x128_si256(q0, q1, 0x31));
+}
+
+/* ssda__sad16_rows_u16 (kernels.h), AVX2: eight rows a step with one test.
+   The rows' SADs side by side (rows8_sads), their running sums (a prefix
+   sum across the lanes, then the low half's total into the high half),
+   compared with the rows' limits (unsigned: max == the sum); the first
+   row that reaches its limit from the mask. Rows past that row in the step
+   are read, never added: the reference's pixels and sum, one
+   data-dependent branch a step instead of one a row (issue 18: the rows of
+   a GOES-16 window are cut after about 8). The last rows % 8 a row at a
+   time. */
+static __attribute__((target("avx2")))
+uint32_t avx2_sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                             size_t bstride, uint32_t rows, const uint32_t *limit, uint32_t *sum)
+{
+    const uint8_t *pa = (const uint8_t *)(const void *)a;
+    const uint8_t *pb = (const uint8_t *)(const void *)b;
+    uint32_t s = hsum_u32x4(_mm256_castsi256_si128(row16_lanes(pa, pb))), r = 0u;
+    if (s >= limit[0]) { /* the first 8 pixels of row 0: its low lanes */
+        *sum = s;
+        return 8u;
+    }
+    s = 0u;
+    for (; rows - r >= 8u; r += 8u) {
+        const uint32_t g = r / 4u; /* r is a multiple of 8 */
+        const __m256i lim = _mm256_inserti128_si256(
+            _mm256_castsi128_si256(_mm_set1_epi32((int)limit[g < 4u ? g : 4u])),
+            _mm_set1_epi32((int)limit[g + 1u < 4u ? g + 1u : 4u]), 1);
+        __m256i p = rows8_sads(pa, astride, pb, bstride);
+        uint32_t run[8], hit;
+        p = _mm256_add_epi32(p, _mm256_slli_si256(p, 4));
+        p = _mm256_add_epi32(p, _mm256_slli_si256(p, 8));
+        /* the low half's total into the high half, then the sum so far */
+        p = _mm256_add_epi32(p, _mm256_permute2x128_si256(_mm256_shuffle_epi32(p, 0xFF),
+                                                          _mm256_shuffle_epi32(p, 0xFF), 0x08));
+        p = _mm256_add_epi32(p, _mm256_set1_epi32((int)s));
+        _mm256_storeu_si256((__m256i *)(void *)run, p);
+        hit = (uint32_t)_mm256_movemask_ps(
+            _mm256_castsi256_ps(_mm256_cmpeq_epi32(_mm256_max_epu32(p, lim), p)));
+        if (hit != 0u) {
+            const uint32_t j = (uint32_t)__builtin_ctz(hit);
+            *sum = run[j];
+            return 16u * (r + j + 1u);
+        }
+        s = run[7];
+        pa += 8u * astride;
+        pb += 8u * bstride;
+    }
+    for (; r < rows; r++) { /* rows % 8 left */
+        s += hsum_u32x4(_mm_add_epi32(_mm256_castsi256_si128(row16_lanes(pa, pb)),
+                                      _mm256_extracti128_si256(row16_lanes(pa, pb), 1)));
+        if (s >= limit[r < 16u ? r / 4u : 4u]) {
+            *sum = s;
+            return 16u * (r + 1u);
+        }
+        pa += astride;
+        pb += bstride;
+    }
+    *sum = s;
+    return 16u * rows;
+}
+#endif
+
 /* ssda__refine4 (kernels.h): a group's four block sums (every fourth
    entry: b0 b4 b1 b5 and b8 b12 b9 0, then their low halves) gathered into
    one register by unpacks, their differences
    with the window's (signed: < 2^20) made absolute as x ^ m - m with m
    the sign mask, and summed across the lanes. */
-static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
+static SSDA_NOINLINE uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
                              const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
                              uint32_t cut, uint32_t *term_out, uint32_t *groups)
 {
@@ -351,10 +478,67 @@ static uint32_t sse2_refine4(const uint32_t *b, const uint32_t *g, size_t down,
     return rest;
 }
 
+#if defined(__GNUC__) || defined(__clang__)
+/* A group's four block sums b[0], b[4], b[8], b[12] in one register, by
+   unpacks (no entry past b[12] is read: it may end the table's row). */
+static inline __m128i blocks4(const uint32_t *b)
+{
+    const __m128i x = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)b),
+                                         _mm_loadl_epi64((const __m128i *)(const void *)&b[4]));
+    const __m128i y = _mm_unpacklo_epi32(_mm_loadl_epi64((const __m128i *)(const void *)&b[8]),
+                                         _mm_cvtsi32_si128((int)b[12]));
+    return _mm_unpacklo_epi64(x, y);
+}
+
+/* ssda__refine4 (kernels.h), AVX2: the four groups at once, no branch on
+   the data. Two groups' block terms a register (VPABSD: block sums <
+   2^20), their sums s_k by horizontal adds, the group terms' differences
+   (group sums < 2^31: signed) likewise, then rest after each group as a
+   prefix sum across the lanes, compared unsigned with cut (max == the
+   value); the first group that reaches it from the mask. Every group's
+   entries are read (the engine's: the position's 4 groups lie in the
+   table) and every s_k is written: the reference's result, groups and
+   terms up to the stopping group, without its data-dependent exits
+   (issue 18: a GOES-16 window refines about 36 positions). */
+static __attribute__((target("avx2")))
+uint32_t avx2_refine4(const uint32_t *b, const uint32_t *g, size_t down, const uint32_t *wgrp,
+                      const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
+                      uint32_t *groups)
+{
+    const __m256i x01 = _mm256_inserti128_si256(_mm256_castsi128_si256(blocks4(b)),
+                                                blocks4(&b[down]), 1);
+    const __m256i x23 = _mm256_inserti128_si256(_mm256_castsi128_si256(blocks4(&b[2u * down])),
+                                                blocks4(&b[3u * down]), 1);
+    const __m256i a01 = _mm256_abs_epi32(_mm256_sub_epi32(x01, load256(wblk)));
+    const __m256i a23 = _mm256_abs_epi32(_mm256_sub_epi32(x23, load256(&wblk[8])));
+    /* [s0 s2 s0 s2 | s1 s3 s1 s3], then s0 s1 s2 s3 */
+    const __m256i h = _mm256_hadd_epi32(_mm256_hadd_epi32(a01, a23), _mm256_setzero_si256());
+    const __m128i sk = _mm_unpacklo_epi32(_mm256_castsi256_si128(h), _mm256_extracti128_si256(h, 1));
+    const __m128i gk = _mm_unpacklo_epi64(
+        _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)g[0]), _mm_cvtsi32_si128((int)g[down])),
+        _mm_unpacklo_epi32(_mm_cvtsi32_si128((int)g[2u * down]),
+                           _mm_cvtsi32_si128((int)g[3u * down])));
+    const __m128i tk = _mm_abs_epi32(_mm_sub_epi32(gk, load128(wgrp)));
+    __m128i r = _mm_sub_epi32(sk, tk); /* s_k - term_k, modulo 2^32 */
+    uint32_t hit, k;
+    r = _mm_add_epi32(r, _mm_slli_si128(r, 4));
+    r = _mm_add_epi32(r, _mm_slli_si128(r, 8));
+    r = _mm_add_epi32(r, _mm_set1_epi32((int)rest));
+    _mm_storeu_si128((__m128i *)(void *)term_out, sk);
+    hit = (uint32_t)_mm_movemask_ps(
+        _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_max_epu32(r, _mm_set1_epi32((int)cut)), r)));
+    k = (uint32_t)__builtin_ctz(hit | 8u); /* the first group at cut, else the last */
+    *groups = k + 1u;
+    /* lane k, by a variable permute (no store and reload) */
+    return (uint32_t)_mm_cvtsi128_si32(_mm_castps_si128(
+        _mm_permutevar_ps(_mm_castsi128_ps(r), _mm_cvtsi32_si128((int)k))));
+}
+#endif
+
 /* ssda__bounds4 (kernels.h): 4 (SSE2) or 8 (AVX2) positions a step, the
    absolute values by the sign mask (SSE2) or VPABSD, the last 0..7 by
    the reference. */
-static void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
+static SSDA_NOINLINE void sse2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
                          uint32_t n)
 {
     const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
@@ -392,6 +576,270 @@ void avx2_bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w
                             _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3)));
     }
     ssda__portable_bounds4(p + i, g + i, down, w, n - i);
+}
+#endif
+
+/* ssda__bounds4_open (kernels.h), SSE2: 4 positions a step, p <= s as
+   s >= p by the signed compare of both with the sign bit flipped; the
+   last nx % 4 by an overlapping step (the same values written again), or
+   the reference for rows under 4 positions. */
+static SSDA_NOINLINE void sse2_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride,
+                                            size_t down, const uint32_t *w, uint32_t nx,
+                                            uint32_t rows, uint32_t s, uint32_t *open)
+{
+    const __m128i w0 = _mm_set1_epi32((int)w[0]), w1 = _mm_set1_epi32((int)w[1]);
+    const __m128i w2 = _mm_set1_epi32((int)w[2]), w3 = _mm_set1_epi32((int)w[3]);
+    const __m128i flip = _mm_set1_epi32((int)0x80000000u);
+    const __m128i sf = _mm_xor_si128(_mm_set1_epi32((int)s), flip);
+    uint32_t y;
+    if (nx < 4u) {
+        ssda__portable_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+    for (y = 0u; y < rows; y++) {
+        uint32_t m = 0u, i = 0u;
+        for (;;) {
+            const __m128i d0 = _mm_sub_epi32(load128(g + i), w0);
+            const __m128i d1 = _mm_sub_epi32(load128(g + down + i), w1);
+            const __m128i d2 = _mm_sub_epi32(load128(g + 2u * down + i), w2);
+            const __m128i d3 = _mm_sub_epi32(load128(g + 3u * down + i), w3);
+            const __m128i m0 = _mm_srai_epi32(d0, 31), m1 = _mm_srai_epi32(d1, 31);
+            const __m128i m2 = _mm_srai_epi32(d2, 31), m3 = _mm_srai_epi32(d3, 31);
+            const __m128i v = _mm_add_epi32(
+                _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d0, m0), m0),
+                              _mm_sub_epi32(_mm_xor_si128(d1, m1), m1)),
+                _mm_add_epi32(_mm_sub_epi32(_mm_xor_si128(d2, m2), m2),
+                              _mm_sub_epi32(_mm_xor_si128(d3, m3), m3)));
+            /* lanes with p > s, inverted */
+            const uint32_t over = (uint32_t)_mm_movemask_ps(
+                _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_xor_si128(v, flip), sf)));
+            _mm_storeu_si128((__m128i *)(void *)(p + i), v);
+            m |= (~over & 15u) << i;
+            if (i + 4u == nx) {
+                break;
+            }
+            i = i + 8u <= nx ? i + 4u : nx - 4u; /* the last step overlaps */
+        }
+        open[y] = m;
+        p += nx;
+        g += gstride;
+    }
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__bounds4_open (kernels.h), AVX2: 8 positions a step (VPABSD, p <= s
+   as min(p, s) == p), the last nx % 8 by an overlapping step; rows under 8
+   positions by the SSE2 variant. */
+static __attribute__((target("avx2")))
+void avx2_bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                       const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                       uint32_t *open)
+{
+    const __m256i w0 = _mm256_set1_epi32((int)w[0]), w1 = _mm256_set1_epi32((int)w[1]);
+    const __m256i w2 = _mm256_set1_epi32((int)w[2]), w3 = _mm256_set1_epi32((int)w[3]);
+    const __m256i sv = _mm256_set1_epi32((int)s);
+    uint32_t y;
+    if (nx < 8u) {
+        sse2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+    for (y = 0u; y < rows; y++) {
+        uint32_t m = 0u, i = 0u;
+        for (;;) {
+            const __m256i a0 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + i), w0));
+            const __m256i a1 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + down + i), w1));
+            const __m256i a2 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 2u * down + i), w2));
+            const __m256i a3 = _mm256_abs_epi32(_mm256_sub_epi32(load256(g + 3u * down + i), w3));
+            const __m256i v = _mm256_add_epi32(_mm256_add_epi32(a0, a1), _mm256_add_epi32(a2, a3));
+            _mm256_storeu_si256((__m256i *)(void *)(p + i), v);
+            m |= (uint32_t)_mm256_movemask_ps(_mm256_castsi256_ps(
+                     _mm256_cmpeq_epi32(_mm256_min_epu32(v, sv), v)))
+                 << i;
+            if (i + 8u == nx) {
+                break;
+            }
+            i = i + 16u <= nx ? i + 8u : nx - 8u; /* the last step overlaps */
+        }
+        open[y] = m;
+        p += nx;
+        g += gstride;
+    }
+}
+#endif
+
+/* ssda__tab_row (kernels.h), SSE2: the reference (its difference loops
+   vectorise at the build's SSE2). */
+static SSDA_NOINLINE void sse2_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v,
+                                       uint32_t vlen, uint32_t L)
+{
+    ssda__portable_tab_row(p, b, v, vlen, L);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__tab_row (kernels.h), AVX2: the prefix sums 8 at a time (a prefix
+   sum across the lanes, the low half's total into the high half, then the
+   running total broadcast from the last lane), the differences 8 at a
+   time, the last ones as the reference. Reads p[0 .. vlen - 1] only after
+   the prefix pass (p[vlen] from the running total): b may overlay it. */
+static __attribute__((target("avx2")))
+void avx2_tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
+{
+    const uint32_t npos = vlen - L + 1u; /* >= 1 */
+    __m256i run = _mm256_setzero_si256(); /* the sum so far, in every lane */
+    uint32_t sum;
+    size_t i;
+    p[0] = 0u;
+    for (i = 0u; i + 8u <= vlen; i += 8u) {
+        __m256i x = load256(v + i);
+        x = _mm256_add_epi32(x, _mm256_slli_si256(x, 4));
+        x = _mm256_add_epi32(x, _mm256_slli_si256(x, 8));
+        x = _mm256_add_epi32(x, _mm256_permute2x128_si256(_mm256_shuffle_epi32(x, 0xFF),
+                                                          _mm256_shuffle_epi32(x, 0xFF), 0x08));
+        x = _mm256_add_epi32(x, run);
+        _mm256_storeu_si256((__m256i *)(void *)(p + i + 1u), x);
+        run = _mm256_permutevar8x32_epi32(x, _mm256_set1_epi32(7));
+    }
+    sum = (uint32_t)_mm_cvtsi128_si32(_mm256_castsi256_si128(run));
+    for (; i < vlen; i++) {
+        sum += v[i]; /* modulo 2^32 */
+        p[i + 1u] = sum;
+    }
+    if (b != NULL) {
+        const size_t last = (size_t)vlen - 4u; /* b's last entry: pitch - 1 */
+        for (i = 0u; i + 8u <= last; i += 8u) {
+            _mm256_storeu_si256((__m256i *)(void *)(b + i),
+                                _mm256_sub_epi32(load256(p + 4 + i), load256(p + i)));
+        }
+        for (; i < last; i++) {
+            b[i] = p[i + 4u] - p[i];
+        }
+        b[last] = sum - p[last]; /* p[last + 4] = p[vlen] */
+    }
+    for (i = 0u; i + 8u <= (size_t)npos - 1u; i += 8u) { /* in place: p[i + L..] not yet replaced */
+        _mm256_storeu_si256((__m256i *)(void *)(p + i),
+                            _mm256_sub_epi32(load256(p + L + i), load256(p + i)));
+    }
+    for (; i + 1u < npos; i++) {
+        p[i] = p[i + L] - p[i];
+    }
+    p[npos - 1u] = sum - p[npos - 1u]; /* p[npos - 1 + L] = p[vlen] */
+}
+#endif
+
+/* ssda__vslide (kernels.h), SSE2: the reference (it vectorises). */
+static SSDA_NOINLINE void sse2_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub,
+                                      uint32_t n, bool u8)
+{
+    ssda__portable_vslide(v, add, sub, n, u8);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__vslide (kernels.h), AVX2: 8 samples widened to 32-bit lanes a
+   step, the last n % 8 as the reference. */
+static __attribute__((target("avx2")))
+void avx2_vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
+{
+    size_t i = 0u;
+    if (u8) {
+        for (; i + 8u <= n; i += 8u) {
+            const __m256i a = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(add + i)));
+            const __m256i b = _mm256_cvtepu8_epi32(_mm_loadl_epi64((const __m128i *)(const void *)(sub + i)));
+            _mm256_storeu_si256((__m256i *)(void *)(v + i),
+                                _mm256_add_epi32(load256(v + i), _mm256_sub_epi32(a, b)));
+        }
+        ssda__portable_vslide(v + i, add + i, sub + i, n - (uint32_t)i, true);
+    } else {
+        for (; i + 8u <= n; i += 8u) {
+            const __m256i a = _mm256_cvtepu16_epi32(load128(add + 2u * i));
+            const __m256i b = _mm256_cvtepu16_epi32(load128(sub + 2u * i));
+            _mm256_storeu_si256((__m256i *)(void *)(v + i),
+                                _mm256_add_epi32(load256(v + i), _mm256_sub_epi32(a, b)));
+        }
+        ssda__portable_vslide(v + i, add + 2u * i, sub + 2u * i, n - (uint32_t)i, false);
+    }
+}
+#endif
+
+/* ssda__any_u16 (kernels.h), SSE2: the reference. */
+static SSDA_NOINLINE uint32_t sse2_any_u16(const uint8_t *p, size_t stride, uint32_t n,
+                                           uint32_t rows, uint16_t t)
+{
+    return ssda__portable_any_u16(p, stride, n, rows, t);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__any_u16 (kernels.h), AVX2: 16 samples a compare, the masks OR-ed
+   over the rows and tested once; the last n % 16 of each row as the
+   reference. */
+static __attribute__((target("avx2")))
+uint32_t avx2_any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+    const __m256i tv = _mm256_set1_epi16((short)t);
+    const uint32_t n16 = n & ~15u;
+    __m256i acc = _mm256_setzero_si256();
+    uint32_t tail = 0u, r, i;
+    if (n == 16u || n == 32u) { /* the seed's windows and areas: no loop in a row */
+        for (r = 0u; r < rows; r++) {
+            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(p), tv));
+            if (n == 32u) {
+                acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(p + 32), tv));
+            }
+            p += stride;
+        }
+        return (uint32_t)(_mm256_testz_si256(acc, acc) == 0);
+    }
+    for (r = 0u; r < rows; r++) {
+        const uint8_t *q = p + (size_t)r * stride;
+        for (i = 0u; i < n16; i += 16u) {
+            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(q + 2u * i), tv));
+        }
+        tail |= ssda__portable_any_u16(q + 2u * n16, 0u, n - n16, 1u, t);
+    }
+    return (uint32_t)(_mm256_testz_si256(acc, acc) == 0) | tail;
+}
+#endif
+
+/* ssda__blocks16 (kernels.h), SSE2: the reference. */
+static SSDA_NOINLINE void sse2_blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk,
+                                        uint32_t *wgrp)
+{
+    ssda__portable_blocks16(w, stride, u8, wblk, wgrp);
+}
+
+#if defined(__GNUC__) || defined(__clang__)
+/* ssda__blocks16 (kernels.h), AVX2: a row as 16 16-bit lanes (8-bit rows
+   widened), its pixel pairs summed into 8 32-bit lanes, 4 rows added (a
+   group: lanes < 8 * 65535), then the pairs of each block and the blocks
+   of each group by horizontal adds. */
+static inline __attribute__((target("avx2")))
+__m256i group16_pairs(const uint8_t *w, size_t stride, bool u8)
+{
+    const __m256i lo = _mm256_set1_epi32(0xFFFF);
+    __m256i acc = _mm256_setzero_si256();
+    uint32_t r;
+    for (r = 0u; r < 4u; r++) {
+        const __m256i x = u8 ? _mm256_cvtepu8_epi16(load128(w)) : load256(w);
+        acc = _mm256_add_epi32(acc, _mm256_add_epi32(_mm256_and_si256(x, lo),
+                                                     _mm256_srli_epi32(x, 16)));
+        w += stride;
+    }
+    return acc;
+}
+
+static __attribute__((target("avx2")))
+void avx2_blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp)
+{
+    const __m256i g0 = group16_pairs(w, stride, u8);
+    const __m256i g1 = group16_pairs(w + 4u * stride, stride, u8);
+    const __m256i g2 = group16_pairs(w + 8u * stride, stride, u8);
+    const __m256i g3 = group16_pairs(w + 12u * stride, stride, u8);
+    /* [b0 b1 of g0, b0 b1 of g1 | b2 b3 of g0, b2 b3 of g1], g2 g3 alike */
+    const __m256i h01 = _mm256_hadd_epi32(g0, g1), h23 = _mm256_hadd_epi32(g2, g3);
+    const __m256i s = _mm256_hadd_epi32(h01, h23); /* halves of the groups' sums */
+    _mm256_storeu_si256((__m256i *)(void *)wblk, _mm256_permute4x64_epi64(h01, 0xD8));
+    _mm256_storeu_si256((__m256i *)(void *)(wblk + 8), _mm256_permute4x64_epi64(h23, 0xD8));
+    _mm_storeu_si128((__m128i *)(void *)wgrp,
+                     _mm_add_epi32(_mm256_castsi256_si128(s), _mm256_extracti128_si256(s, 1)));
 }
 #endif
 
@@ -480,7 +928,80 @@ uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down, const 
                        const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
                        uint32_t *groups)
 {
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+    }
+#endif
     return sse2_refine4(b, g, down, wgrp, wblk, rest, cut, term_out, groups);
+}
+
+uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                              size_t bstride, uint32_t rows, const uint32_t *limit,
+                              uint32_t *sum)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+    }
+#endif
+    return sse2_sad16_rows_u16(a, astride, b, bstride, rows, limit, sum);
+}
+
+uint32_t ssda__any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        return avx2_any_u16(p, stride, n, rows, t);
+    }
+#endif
+    return sse2_any_u16(p, stride, n, rows, t);
+}
+
+void ssda__blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_blocks16(w, stride, u8, wblk, wgrp);
+        return;
+    }
+#endif
+    sse2_blocks16(w, stride, u8, wblk, wgrp);
+}
+
+void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_vslide(v, add, sub, n, u8);
+        return;
+    }
+#endif
+    sse2_vslide(v, add, sub, n, u8);
+}
+
+void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_tab_row(p, b, v, vlen, L);
+        return;
+    }
+#endif
+    sse2_tab_row(p, b, v, vlen, L);
+}
+
+void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                        const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                        uint32_t *open)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    if (x86_avx2() != 0u) {
+        avx2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
+        return;
+    }
+#endif
+    sse2_bounds4_open(p, g, gstride, down, w, nx, rows, s, open);
 }
 
 void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n)
@@ -498,10 +1019,14 @@ const ssda__kernel_variant_t *ssda__kernel_variant(uint32_t i)
 {
     static const ssda__kernel_variant_t x86_variants[] = {
         { "sse2", sse2_sad_row_u8, sse2_sad_row_u16, sse2_absdiff_row_i16, sse2_sad_rows_u8,
-          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4 },
+          sse2_sad_rows_u16, sse2_refine4, sse2_bounds4, sse2_sad16_rows_u16,
+          sse2_bounds4_open, sse2_tab_row, sse2_vslide, sse2_blocks16,
+          sse2_any_u16 },
 #if defined(__GNUC__) || defined(__clang__)
         { "avx2", avx2_sad_row_u8, avx2_sad_row_u16, avx2_absdiff_row_i16, avx2_sad_rows_u8,
-          avx2_sad_rows_u16, sse2_refine4, avx2_bounds4 },
+          avx2_sad_rows_u16, avx2_refine4, avx2_bounds4, avx2_sad16_rows_u16,
+          avx2_bounds4_open, avx2_tab_row, avx2_vslide, avx2_blocks16,
+          avx2_any_u16 },
 #endif
     };
     return (i < 1u + x86_avx2()) ? &x86_variants[i] : NULL;

@@ -8,6 +8,7 @@
 #ifndef SSDA_KERNEL_KERNELS_H
 #define SSDA_KERNEL_KERNELS_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -43,7 +44,10 @@ SSDA_INTERNAL uint32_t ssda__sad_rows_u16(const uint16_t *a, size_t astride, con
    the group's term |g[k * down] - wgrp[k]| (group sums < 2^31) in rest:
    rest = rest - term + s_k, term_out[k] = s_k, stopping after the first
    group at which rest reaches cut. Returns rest (< 2^32: the caller's
-   bound, at most the SAD) and sets *groups to the groups done (1..4). */
+   bound, at most the SAD) and sets *groups to the groups done (1..4).
+   The entries of all 4 groups must be readable (a variant may sum them
+   all and pick the stopping group after), and term_out[k] for k >= the
+   groups done may be written too. */
 SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_t down,
                                      const uint32_t *wgrp, const uint32_t *wblk, uint32_t rest,
                                      uint32_t cut, uint32_t *term_out, uint32_t *groups);
@@ -54,6 +58,60 @@ SSDA_INTERNAL uint32_t ssda__refine4(const uint32_t *b, const uint32_t *g, size_
    caller's: a bound <= a SAD). p must not overlap g. */
 SSDA_INTERNAL void ssda__bounds4(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w,
                                  uint32_t n);
+
+/* Tracking's rows of one 16-pixel-wide placement (the engine's 4 x 4 block
+   case, 16-bit samples): rows 0 .. rows-1 of 16 pixels (row r of a at
+   a + r * astride bytes, of b likewise) summed in order from 0, each row's
+   running sum checked against the limit of its group of 4 rows,
+   limit[r / 4] for r < 16 and limit[4] for r >= 16; the first 8 pixels of
+   row 0 are checked against limit[0] first. Returns the pixels summed up
+   to the first check that reaches its limit (8, or 16 (r + 1)), else
+   16 rows, and sets *sum to the running sum there. rows >= 1, and the
+   sum of all rows below 2^32 (16 rows * 65535 each: rows <= 4096). */
+SSDA_INTERNAL uint32_t ssda__sad16_rows_u16(const uint16_t *a, size_t astride, const uint16_t *b,
+                                            size_t bstride, uint32_t rows, const uint32_t *limit,
+                                            uint32_t *sum);
+
+/* Tracking's group bounds of a whole area for its predict scan (the
+   engine's scan_predict_open, 4 groups): for y < rows, row y of p (nx
+   entries at p + y * nx) is ssda__bounds4 of g + y * gstride (groups
+   `down` entries apart), and bit x of open[y] is set when p[y * nx + x]
+   <= s. nx <= 32; the ranges of ssda__bounds4. */
+SSDA_INTERNAL void ssda__bounds4_open(uint32_t *p, const uint32_t *g, size_t gstride,
+                                      size_t down, const uint32_t *w, uint32_t nx,
+                                      uint32_t rows, uint32_t s, uint32_t *open);
+
+/* One row of tracking's shared tables (track_tab.c) from its vertical
+   sums v[0 .. vlen-1]: first the prefix sums p[k] = v[0] + .. + v[k-1]
+   modulo 2^32 into p[0 .. vlen] (vlen + 1 entries), then, when b is not
+   NULL, b[i] = p[i + 4] - p[i] for i < vlen - 3 (the 4 x 4 sums), then in
+   place p[i] = p[i + L] - p[i] for i <= vlen - L (the L x 4 sums),
+   ascending, all modulo 2^32. p[vlen] is read once, before b is written:
+   b may begin at p + vlen (the tables' one-slot layout). 1 <= L <= vlen,
+   and vlen >= 4 with b. */
+SSDA_INTERNAL void ssda__tab_row(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen,
+                                 uint32_t L);
+
+/* Tracking's vertical sums slid down a row (track_tab.c): v[i] = v[i] +
+   add[i] - sub[i] modulo 2^32 for i < n, samples of 8 bits (u8) or 16
+   bits (add and sub then 2-byte aligned). */
+SSDA_INTERNAL void ssda__vslide(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n,
+                                bool u8);
+
+/* Tracking's window sums for its 4 x 4 block terms (the engine's
+   window_blocks4, 16 x 16..19 windows): over rows 0..15 of 16 pixels (row
+   r at w + r * stride bytes; 8-bit samples when u8, else 16-bit),
+   wblk[4 k + c] = the sum of the 4 x 4 block of rows 4k..4k+3 and columns
+   4c..4c+3 (< 16 * 65535 < 2^20), and wgrp[k] = wblk[4k] + .. +
+   wblk[4k + 3] (< 2^22), k, c < 4. */
+SSDA_INTERNAL void ssda__blocks16(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk,
+                                  uint32_t *wgrp);
+
+/* Tracking's mask test (track_rows.c): 1 when some sample of rows 0 ..
+   rows-1 of n 16-bit samples (row r at p + r * stride bytes) equals t,
+   else 0. */
+SSDA_INTERNAL uint32_t ssda__any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows,
+                                     uint16_t t);
 
 /* AMDF term: sum of |a[i] - b[i]| for int16 samples, i < n, n <= 65535.
    Each |difference| <= 65535, so the worst case is 65535 * 65535 < 2^32. */
@@ -89,6 +147,16 @@ typedef struct {
                         const uint32_t *wblk, uint32_t rest, uint32_t cut, uint32_t *term_out,
                         uint32_t *groups);
     void (*bounds4)(uint32_t *p, const uint32_t *g, size_t down, const uint32_t *w, uint32_t n);
+    uint32_t (*sad16_rows_u16)(const uint16_t *a, size_t astride, const uint16_t *b,
+                               size_t bstride, uint32_t rows, const uint32_t *limit,
+                               uint32_t *sum);
+    void (*bounds4_open)(uint32_t *p, const uint32_t *g, size_t gstride, size_t down,
+                         const uint32_t *w, uint32_t nx, uint32_t rows, uint32_t s,
+                         uint32_t *open);
+    void (*tab_row)(uint32_t *p, uint32_t *b, const uint32_t *v, uint32_t vlen, uint32_t L);
+    void (*vslide)(uint32_t *v, const uint8_t *add, const uint8_t *sub, uint32_t n, bool u8);
+    void (*blocks16)(const uint8_t *w, size_t stride, bool u8, uint32_t *wblk, uint32_t *wgrp);
+    uint32_t (*any_u16)(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows, uint16_t t);
 } ssda__kernel_variant_t;
 
 /* Variant i (0 .. count-1) of the variants this processor can run, in
