@@ -1,9 +1,12 @@
 # compare_runs.cmake - run two programs, each writing its results to a file
 # given as its only argument, and fail unless both succeed with identical
-# files (test pitch_fixed_*: a fixed-configuration build against the full
-# library). Usage: cmake -DA=prog -DB=prog -DOUT=prefix -P compare_runs.cmake
+# files (tests pitch_fixed_*: a fixed-configuration build against the full
+# library; track_kernels_equal: tracking with this build's kernel set against
+# the portable one). Usage: cmake -DA=prog -DB=prog -DOUT=prefix
+# [-DEMU=emulator] -P compare_runs.cmake (EMU: the cross build's emulator,
+# e.g. qemu-i386 for the 32-bit host build)
 foreach(_side A B)
-  execute_process(COMMAND ${${_side}} ${OUT}.${_side}.txt RESULT_VARIABLE _rc)
+  execute_process(COMMAND ${EMU} ${${_side}} ${OUT}.${_side}.txt RESULT_VARIABLE _rc)
   if(NOT _rc EQUAL 0)
     message(FATAL_ERROR "${${_side}} failed (${_rc})")
   endif()

@@ -216,10 +216,15 @@ static int run(uint32_t kind, uint32_t gi, uint32_t wide, uint32_t mode, uint32_
     return err != SSDA_OK ? 1 : 0;
 }
 
-int main(void)
+/* argv[1]: the file for the results (tests/config/compare_runs.cmake) */
+int main(int argc, char **argv)
 {
     uint32_t kind, gi, wide, mode, shared, n = 0u;
     int bad = 0;
+    if (argc != 2 || freopen(argv[1], "w", stdout) == NULL) {
+        fprintf(stderr, "usage: track_kernels RESULTS_FILE\n");
+        return 2;
+    }
     for (kind = 0; kind < 4u; kind++) {
         make_images(900u + kind, kind);
         for (gi = 0; gi < NGEOMS; gi++) {
