@@ -7,6 +7,10 @@
 #include "slide.h"
 #include "state.h"
 
+/* The resolved parameters: constants with a fixed configuration
+   (pitch_internal.h), folded by the compiler. */
+#define INFO(p) SSDA_PITCH_INFO_OF(&(p)->info)
+
 #ifdef SSDA_CFG_NO_PITCH_PUSH
 /* No push intake, so no buffer (include/ssda/config.h). */
 int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes) /* NOLINT(readability-non-const-parameter) */
@@ -27,7 +31,7 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes)
     if (err != SSDA_OK) {
         return err;
     }
-    *bytes = (size_t)info.span * sizeof(int16_t);
+    *bytes = (size_t)SSDA_PITCH_INFO_OF(&info)->span * sizeof(int16_t);
     return SSDA_OK;
 }
 #endif
@@ -39,7 +43,8 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
 #ifdef SSDA_CFG_NO_PITCH_PUSH
     /* no push intake: the buffer is not used (may be NULL), and nothing is
        checked after the config, which is resolved straight into p->info
-       (written on success only) */
+       (written on success only; not at all with a fixed configuration,
+       whose parameters are constants) */
     (void)buffer_size;
     if (p == NULL || cfg == NULL) {
         return SSDA_ERR_NULL;
@@ -57,11 +62,13 @@ int ssda_pitch_init(ssda_pitch_t *p, const ssda_pitch_config_t *cfg,
     if (err != SSDA_OK) {
         return err;
     }
-    if (buffer_size / sizeof(int16_t) < info.span ||
+    if (buffer_size / sizeof(int16_t) < SSDA_PITCH_INFO_OF(&info)->span ||
         ((uintptr_t)buffer % sizeof(int16_t)) != 0u) {
         return SSDA_ERR_BUFFER;
     }
+#ifndef SSDA_CFG_PITCH_FIXED /* fixed: the parameters are constants, none kept */
     (void)memcpy(&p->info, &info, sizeof info);
+#endif
 #endif
     p->buf = (int16_t *)buffer;
     p->magic = SSDA__MAGIC_PITCH;
@@ -100,8 +107,9 @@ int ssda_pitch_get_info(const ssda_pitch_t *p, ssda_pitch_info_t *info)
     if (err != SSDA_OK) {
         return err;
     }
-    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash */
-    (void)memcpy(info, &p->info, sizeof *info);
+    /* memcpy, linked anyway, not an inline copy of 44 bytes: M0+ flash
+       (from the constants with a fixed configuration) */
+    (void)memcpy(info, INFO(p), sizeof *info);
     return SSDA_OK;
 }
 
@@ -114,8 +122,8 @@ static SSDA_ALWAYS_INLINE void analyze_frame(ssda_pitch_t *p, const int16_t *x,
     ssda__pitch_analyze_in(&p->work, &p->info, x, p->predict_lag, est);
     est->frame = p->frame;
     /* wraps modulo 2^32 by design (unsigned) */
-    est->center = p->frame * p->info.hop +
-                  (est->silent ? p->info.span / 2u : (p->info.frame_len + est->lag) / 2u);
+    est->center = p->frame * INFO(p)->hop +
+                  (est->silent ? INFO(p)->span / 2u : (INFO(p)->frame_len + est->lag) / 2u);
     p->frame++;
     p->predict_lag = est->voiced ? est->lag : 0u;
 }
@@ -128,7 +136,7 @@ int ssda_pitch_frame(ssda_pitch_t *p, const int16_t *x, ssda_pitch_estimate_t *e
     if (!ssda__valid(p->magic, SSDA__MAGIC_PITCH)) {
         return SSDA_ERR_STATE;
     }
-    if (SSDA_PITCH_FILTERED(&p->info)) {
+    if (SSDA_PITCH_FILTERED(INFO(p))) {
         return SSDA_ERR_ARG; /* the low-pass runs over the stream, not per frame */
     }
     analyze_frame(p, x, est);
@@ -160,7 +168,7 @@ static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, siz
         p->lp_primed = true;
     }
     for (i = 0u; i < n; i++) {
-        int16_t y = ssda__pitch_lowpass(&p->lp1_q15, &p->lp2_q15, p->info.lowpass_q15, in[i]);
+        int16_t y = ssda__pitch_lowpass(&p->lp1_q15, &p->lp2_q15, INFO(p)->lowpass_q15, in[i]);
         if (out != NULL) {
             out[i] = y;
         }
@@ -173,7 +181,7 @@ static void filter_samples(ssda_pitch_t *p, const int16_t *in, int16_t *out, siz
 int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
                     size_t *consumed, ssda_pitch_estimate_t *est)
 {
-    const uint32_t span = p != NULL ? p->info.span : 0u;
+    const uint32_t span = p != NULL ? INFO(p)->span : 0u;
     size_t used = 0u;
 
     if (p == NULL || consumed == NULL || est == NULL || (samples == NULL && count > 0u)) {
@@ -188,7 +196,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             /* hop > span: samples between two frames are not analysed, but
                still pass through the filter so its state stays continuous */
             take = count - used < p->skip ? count - used : p->skip;
-            if (SSDA_PITCH_FILTERED(&p->info)) {
+            if (SSDA_PITCH_FILTERED(INFO(p))) {
                 filter_samples(p, samples + used, NULL, take);
             }
             p->skip -= (uint32_t)take;
@@ -196,7 +204,7 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
             continue;
         }
         take = count - used < span - p->fill ? count - used : span - p->fill;
-        if (SSDA_PITCH_FILTERED(&p->info)) {
+        if (SSDA_PITCH_FILTERED(INFO(p))) {
             filter_samples(p, samples + used, p->buf + p->fill, take);
         } else {
             (void)memcpy(p->buf + p->fill, samples + used, take * sizeof(int16_t));
@@ -205,14 +213,14 @@ int ssda_pitch_push(ssda_pitch_t *p, const int16_t *samples, size_t count,
         used += take;
         if (p->fill == span) {
             analyze_frame(p, p->buf, est);
-            if (p->info.hop < span) {
+            if (INFO(p)->hop < span) {
                 /* the kept samples slide down by hop */
-                p->fill = span - p->info.hop;
-                ssda__slide(p->buf, (size_t)p->info.hop * sizeof(int16_t),
+                p->fill = span - INFO(p)->hop;
+                ssda__slide(p->buf, (size_t)INFO(p)->hop * sizeof(int16_t),
                             (size_t)span * sizeof(int16_t));
             } else {
                 p->fill = 0u;
-                p->skip = p->info.hop - span;
+                p->skip = INFO(p)->hop - span;
             }
             *consumed = used;
             return 1;

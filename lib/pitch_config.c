@@ -7,6 +7,7 @@
     (SSDA_PITCH_TRACK | SSDA_PITCH_FULL | SSDA_PITCH_NO_FILTER | SSDA_PITCH_PARABOLIC | \
      SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)
 
+#ifndef SSDA_CFG_PITCH_FIXED
 /* Whether every flag asks for a feature this build has (include/ssda/config.h). */
 static bool flags_built(uint32_t flags)
 {
@@ -32,7 +33,59 @@ static bool flags_built(uint32_t flags)
     (void)flags;
     return ok;
 }
+#endif
 
+#ifdef SSDA_CFG_PITCH_FIXED
+/* The fixed configuration (pitch.h), checked here as ssda__pitch_resolve
+   checks a configuration at run time: a build whose setting it would
+   refuse does not compile (an array of negative size). The check of a
+   configuration against it is inline, in pitch_internal.h. */
+#define FIXED_OK(cond) ((cond) ? 1 : -1)
+typedef char ssda__pitch_fixed_rate[FIXED_OK(SSDA_PITCH_FIXED_RATE >= SSDA_PITCH_RATE_MIN &&
+                                             SSDA_PITCH_FIXED_RATE <= SSDA_PITCH_RATE_MAX)];
+typedef char ssda__pitch_fixed_f0_range[FIXED_OK(
+    SSDA_PITCH_FIXED_F0_MIN >= SSDA_PITCH_F0_LOWEST &&
+    SSDA_PITCH_FIXED_F0_MAX <= SSDA_PITCH_FIXED_RATE / 4u &&
+    SSDA_PITCH_FIXED_F0_MIN < SSDA_PITCH_FIXED_F0_MAX)];
+typedef char ssda__pitch_fixed_thresholds[FIXED_OK(SSDA_PITCH_FIXED_THRESHOLD <= 32767u &&
+                                                   SSDA_PITCH_FIXED_VOICING <= 32767u)];
+typedef char ssda__pitch_fixed_lowpass[FIXED_OK(
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ) <= SSDA_PITCH_FIXED_RATE / 4u)];
+typedef char ssda__pitch_fixed_flags_known[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & ~KNOWN_FLAGS) == 0u)];
+typedef char ssda__pitch_fixed_frame_len[FIXED_OK(SSDA_PITCH_FIXED_K >= SSDA_PITCH_FRAME_MIN &&
+                                                  SSDA_PITCH_FIXED_K <= SSDA_PITCH_FRAME_MAX)];
+typedef char ssda__pitch_fixed_chunk[FIXED_OK(
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_CHUNK) <= SSDA_PITCH_FIXED_K)];
+/* each setting fits its field of ssda_pitch_config_t */
+typedef char ssda__pitch_fixed_fields[FIXED_OK(
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_F0_MIN_HZ) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_F0_MAX_HZ) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_FRAME_LEN) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_HOP) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_SILENCE_MAD) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_CHUNK) <= 65535u &&
+    (uint32_t)(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ) <= 65535u)];
+/* the flags ask for features this build has (flags_built, at compile time) */
+#ifdef SSDA_CFG_NO_PITCH_FILTER
+typedef char ssda__pitch_fixed_no_filter[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_FILTER) != 0u)];
+#endif
+#ifdef SSDA_CFG_NO_PITCH_TRACK
+typedef char ssda__pitch_fixed_no_track[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_TRACK) == 0u)];
+#endif
+#ifdef SSDA_CFG_NO_PITCH_FULL
+typedef char ssda__pitch_fixed_no_full[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_FULL) == 0u)];
+#endif
+#ifdef SSDA_CFG_NO_PITCH_PARABOLIC
+typedef char ssda__pitch_fixed_no_parabolic[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_PARABOLIC) == 0u)];
+#endif
+#ifdef SSDA_CFG_NO_PITCH_OCTAVE
+typedef char ssda__pitch_fixed_no_octave[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_OCTAVE) != 0u)];
+#endif
+#ifdef SSDA_CFG_NO_PITCH_BELOW_RANGE
+typedef char ssda__pitch_fixed_no_below_range[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_BELOW_RANGE) != 0u)];
+#endif
+
+#else
 int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
 {
     ssda_pitch_info_t r;
@@ -96,3 +149,4 @@ int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
     *info = r;
     return SSDA_OK;
 }
+#endif /* SSDA_CFG_PITCH_FIXED */

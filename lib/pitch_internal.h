@@ -55,9 +55,100 @@
 #define SSDA_PITCH_FILTERED(info) ((info)->lowpass_q15 != 0u)
 #endif
 
+#ifdef SSDA_CFG_PITCH_FIXED
+/* The fixed configuration resolved (pitch.h, "Fixed configuration"): the
+   same rules as ssda__pitch_resolve, as constant expressions (checked in
+   pitch_config.c). SSDA_PITCH_FIXED_*: the settings resolved. */
+#define SSDA__PF_OR(v, dflt) ((uint32_t)(v) != 0u ? (uint32_t)(v) : (uint32_t)(dflt))
+#define SSDA_PITCH_FIXED_RATE ((uint32_t)(SSDA_CFG_PITCH_FIXED_RATE_HZ))
+#define SSDA_PITCH_FIXED_F0_MIN \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_F0_MIN_HZ, SSDA_PITCH_DEFAULT_F0_MIN)
+#define SSDA_PITCH_FIXED_F0_MAX \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_F0_MAX_HZ, SSDA_PITCH_DEFAULT_F0_MAX)
+#define SSDA_PITCH_FIXED_LAG_MIN (SSDA_PITCH_FIXED_RATE / SSDA_PITCH_FIXED_F0_MAX)
+#define SSDA_PITCH_FIXED_LAG_MAX \
+    ((SSDA_PITCH_FIXED_RATE + SSDA_PITCH_FIXED_F0_MIN - 1u) / SSDA_PITCH_FIXED_F0_MIN)
+#define SSDA_PITCH_FIXED_K_DEFAULT \
+    (SSDA_PITCH_FIXED_LAG_MAX > SSDA_PITCH_FRAME_MIN ? SSDA_PITCH_FIXED_LAG_MAX : SSDA_PITCH_FRAME_MIN)
+#define SSDA_PITCH_FIXED_K \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_FRAME_LEN, SSDA_PITCH_FIXED_K_DEFAULT)
+#define SSDA_PITCH_FIXED_CHUNK_DEFAULT \
+    (SSDA_PITCH_DEFAULT_CHUNK < SSDA_PITCH_FIXED_K ? SSDA_PITCH_DEFAULT_CHUNK : SSDA_PITCH_FIXED_K)
+#define SSDA_PITCH_FIXED_CHUNK \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_CHUNK, SSDA_PITCH_FIXED_CHUNK_DEFAULT)
+#define SSDA_PITCH_FIXED_HOP SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_K / 4u)
+#define SSDA_PITCH_FIXED_SPAN (SSDA_PITCH_FIXED_K + SSDA_PITCH_FIXED_LAG_MAX + 1u)
+#define SSDA_PITCH_FIXED_THRESHOLD \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_THRESHOLD_Q15, SSDA_PITCH_DEFAULT_THRESHOLD_Q15)
+#define SSDA_PITCH_FIXED_VOICING SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_VOICING_Q15, SSDA_PITCH_FIXED_THRESHOLD)
+#define SSDA_PITCH_FIXED_SILENCE \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_SILENCE_MAD, SSDA_PITCH_DEFAULT_SILENCE_MAD)
+#define SSDA_PITCH_FIXED_FLAGS ((uint32_t)(SSDA_CFG_PITCH_FIXED_FLAGS))
+/* the config's lowpass_hz resolved, and the filter's corner (0: none) */
+#define SSDA_PITCH_FIXED_LOWPASS_CFG \
+    SSDA__PF_OR(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ, SSDA_PITCH_FIXED_F0_MAX)
+#define SSDA_PITCH_FIXED_LOWPASS \
+    ((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_FILTER) != 0u ? 0u : SSDA_PITCH_FIXED_LOWPASS_CFG)
+/* ssda__pitch_lowpass_coef_q15 of it: round(2^15 W / (R + W)), W = 411775
+   fc, R = rate << 16 (< 2^49, folded by the compiler; 0 when no filter) */
+#define SSDA__PF_W ((uint64_t)411775u * SSDA_PITCH_FIXED_LOWPASS)
+#define SSDA__PF_DEN (((uint64_t)SSDA_PITCH_FIXED_RATE << 16) + SSDA__PF_W)
+#define SSDA_PITCH_FIXED_LOWPASS_Q15 \
+    ((uint16_t)(((SSDA__PF_W << 15) + SSDA__PF_DEN / 2u) / SSDA__PF_DEN))
+
+/* The resolved parameters, read through SSDA_PITCH_INFO_OF(info) wherever
+   the analysis or the intake reads them: constants the compiler folds. */
+static const ssda_pitch_info_t ssda__pitch_fixed_info = {
+    SSDA_PITCH_FIXED_RATE, SSDA_PITCH_FIXED_LAG_MIN, SSDA_PITCH_FIXED_LAG_MAX,
+    SSDA_PITCH_FIXED_K, SSDA_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_SPAN, SSDA_PITCH_FIXED_CHUNK,
+    (SSDA_PITCH_FIXED_LAG_MAX - SSDA_PITCH_FIXED_LAG_MIN + 1u) * SSDA_PITCH_FIXED_K,
+    (uint16_t)SSDA_PITCH_FIXED_THRESHOLD, (uint16_t)SSDA_PITCH_FIXED_VOICING,
+    (uint16_t)SSDA_PITCH_FIXED_SILENCE, (uint16_t)SSDA_PITCH_FIXED_LOWPASS,
+    SSDA_PITCH_FIXED_LOWPASS_Q15, (uint8_t)SSDA_PITCH_FIXED_FLAGS};
+#define SSDA_PITCH_INFO_OF(info) ((void)(info), &ssda__pitch_fixed_info)
+#else
+#define SSDA_PITCH_INFO_OF(info) (info)
+#endif
+
+#ifdef SSDA_CFG_PITCH_FIXED
+/* A field v of cfg that resolves to the fixed value: equal to it, or 0
+   where the fixed value is the default (both constants: folded). */
+#define SSDA__PF_FIELD_IS(v, fixed, dflt) \
+    ((uint32_t)(v) == (fixed) || ((v) == 0u && (fixed) == (dflt)))
+
+/* With a fixed configuration: SSDA_OK when cfg is it (every field resolves
+   to the fixed one), SSDA_ERR_UNSUPPORTED for any other, SSDA_ERR_NULL.
+   Nothing is written: the parameters are ssda__pitch_fixed_info, read
+   through SSDA_PITCH_INFO_OF. Inline: one caller (M0+ flash). */
+static inline int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info)
+{
+    (void)info;
+    if (cfg == NULL) {
+        return SSDA_ERR_NULL;
+    }
+    if (!(cfg->sample_rate_hz == SSDA_PITCH_FIXED_RATE &&
+          SSDA__PF_FIELD_IS(cfg->f0_min_hz, SSDA_PITCH_FIXED_F0_MIN, SSDA_PITCH_DEFAULT_F0_MIN) &&
+          SSDA__PF_FIELD_IS(cfg->f0_max_hz, SSDA_PITCH_FIXED_F0_MAX, SSDA_PITCH_DEFAULT_F0_MAX) &&
+          SSDA__PF_FIELD_IS(cfg->frame_len, SSDA_PITCH_FIXED_K, SSDA_PITCH_FIXED_K_DEFAULT) &&
+          SSDA__PF_FIELD_IS(cfg->hop, SSDA_PITCH_FIXED_HOP, SSDA_PITCH_FIXED_K / 4u) &&
+          SSDA__PF_FIELD_IS(cfg->threshold_q15, SSDA_PITCH_FIXED_THRESHOLD,
+                            SSDA_PITCH_DEFAULT_THRESHOLD_Q15) &&
+          SSDA__PF_FIELD_IS(cfg->voicing_q15, SSDA_PITCH_FIXED_VOICING,
+                            SSDA_PITCH_FIXED_THRESHOLD) &&
+          SSDA__PF_FIELD_IS(cfg->silence_mad, SSDA_PITCH_FIXED_SILENCE,
+                            SSDA_PITCH_DEFAULT_SILENCE_MAD) &&
+          SSDA__PF_FIELD_IS(cfg->chunk, SSDA_PITCH_FIXED_CHUNK, SSDA_PITCH_FIXED_CHUNK_DEFAULT) &&
+          SSDA__PF_FIELD_IS(cfg->lowpass_hz, SSDA_PITCH_FIXED_LOWPASS_CFG, SSDA_PITCH_FIXED_F0_MAX) &&
+          cfg->flags == SSDA_PITCH_FIXED_FLAGS)) {
+        return SSDA_ERR_UNSUPPORTED;
+    }
+    return SSDA_OK;
+}
+#else
 /* Check cfg and fill *info with every default resolved. Writes *info on
    success only; errors as ssda_pitch_init (never SSDA_ERR_BUFFER). */
 SSDA_INTERNAL int ssda__pitch_resolve(const ssda_pitch_config_t *cfg, ssda_pitch_info_t *info);
+#endif
 
 /* Re-arming level for a threshold (Q15): threshold * 3 / 2, at most 32767. */
 #define ssda__pitch_rearm_q15(thr) \

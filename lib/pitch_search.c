@@ -12,6 +12,10 @@
 
 #define NO_BOUND UINT32_MAX /* larger than any sum (K * 65535 < 2^29) */
 
+/* The resolved parameters of the analysis: constants in a build with a
+   fixed configuration (pitch_internal.h), so the compiler folds them. */
+#define INFO(w) SSDA_PITCH_INFO_OF((w)->info)
+
 /* One lag's value in 8 bytes (pitch.h): bits 0..30 of d hold d (< 2^30),
    exact when bit 31 (LAG_EXACT) is set, else a lower bound of d that is
    above the bound the lag was cut at. s = A + B(lag) > 0. */
@@ -95,7 +99,7 @@ static void evaluate(frame_t *f, uint32_t lag, uint32_t s, uint32_t bound, lag_v
         v->d = lower; /* not exact */
         return;
     }
-    v->d = ssda__pitch_amdf_lag(f->x, f->info->frame_len, lag, f->info->chunk, bound,
+    v->d = ssda__pitch_amdf_lag(f->x, INFO(f)->frame_len, lag, INFO(f)->chunk, bound,
                                &complete, &f->diffs);
     if (complete) {
         v->d |= LAG_EXACT;
@@ -113,7 +117,7 @@ static uint32_t abs_dev(int16_t x, int32_t mean)
    evaluate(): no frame between theirs and evaluate's, for the stack). */
 static uint32_t scale_at(const frame_t *f, uint32_t lag)
 {
-    return f->level + ssda__pitch_level(f->x + lag, f->info->frame_len, f->mean);
+    return f->level + ssda__pitch_level(f->x + lag, INFO(f)->frame_len, f->mean);
 }
 
 /* nq = floor(2^20 d / s) of t's value v[i] (Q20), i = 0, 1, 2 for lag - 1,
@@ -127,7 +131,7 @@ static SSDA_SIZE_NOINLINE uint32_t nq_of(const dip_t *t, uint32_t i)
 static SSDA_NOINLINE uint32_t period_q16_of(const frame_t *f, const dip_t *t)
 {
     int32_t delta = ssda__pitch_interp_q16(nq_of(t, 0u), nq_of(t, 1u), nq_of(t, 2u),
-                                          SSDA_PITCH_HAS_PARABOLIC(f->info->flags));
+                                          SSDA_PITCH_HAS_PARABOLIC(INFO(f)->flags));
     /* lag <= 4800: 65536 * lag + delta < 2^29 */
     return (uint32_t)((int32_t)(t->lag << 16) + delta);
 }
@@ -141,7 +145,7 @@ static SSDA_NOINLINE uint32_t dip_floor_q20(const frame_t *f, const dip_t *t)
     const uint32_t a = nq_of(t, 0u), b = nq_of(t, 1u), c = nq_of(t, 2u);
     const uint32_t diff = a > c ? a - c : c - a; /* <= 2^20 */
     uint32_t drop;
-    if (SSDA_PITCH_HAS_PARABOLIC(f->info->flags)) {
+    if (SSDA_PITCH_HAS_PARABOLIC(INFO(f)->flags)) {
         /* |8 (a - 2b + c)| <= 2^24; (a - c)^2 <= 2^40; a saturated
            quotient (> b) gives 0 as the exact one would */
         int32_t den = 8 * ((int32_t)a - 2 * (int32_t)b + (int32_t)c);
@@ -173,8 +177,8 @@ static uint32_t margin_q20_of(const ssda_pitch_info_t *info)
  */
 static SSDA_NOINLINE uint32_t octave_up(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
 {
-    const uint32_t margin_q20 = margin_q20_of(f->info);
-    const bool full = SSDA_PITCH_HAS_FULL(f->info->flags);
+    const uint32_t margin_q20 = margin_q20_of(INFO(f));
+    const bool full = SSDA_PITCH_HAS_FULL(INFO(f)->flags);
     uint32_t k, limit;
     if (floor_q20 <= margin_q20) {
         return 0u; /* nothing can be deeper by the margin */
@@ -189,10 +193,10 @@ static SSDA_NOINLINE uint32_t octave_up(frame_t *f, uint32_t period_q16, uint32_
            scan's values are unused by now (kept off the stack) */
         lag_value_t *found_v = &f->at[0];
         lag_value_t *v = &f->at[1];
-        if (c - 1u > f->info->lag_max) {
+        if (c - 1u > INFO(f)->lag_max) {
             return 0u;
         }
-        for (lag = c - 1u; lag <= c + 1u && lag <= f->info->lag_max; lag++) {
+        for (lag = c - 1u; lag <= c + 1u && lag <= INFO(f)->lag_max; lag++) {
             uint32_t s = scale_at(f, lag);
             /* largest d with floor(2^20 d / s) < limit; limit * s < 2^50 */
             uint32_t bound = (uint32_t)((SSDA_MUL64(limit, s) - 1u) >> 20);
@@ -222,7 +226,7 @@ static SSDA_NOINLINE uint32_t octave_up(frame_t *f, uint32_t period_q16, uint32_
  */
 static SSDA_NOINLINE bool below_range(frame_t *f, uint32_t period_q16, uint32_t floor_q20)
 {
-    const ssda_pitch_info_t *info = f->info;
+    const ssda_pitch_info_t *info = INFO(f);
     const uint32_t limit = floor_q20 + margin_q20_of(info) / 2u; /* < 2^21 */
     dip_t *u = &f->best;
     uint32_t k = 2u;
@@ -272,7 +276,7 @@ static void silent_estimate(ssda_pitch_estimate_t *est)
  */
 static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_estimate_t *est)
 {
-    const ssda_pitch_info_t *info = w->info;
+    const ssda_pitch_info_t *info = INFO(w);
     /* the chosen lag: the first dip (a copy when the scan went on: full
        search), else the global minimum */
     dip_t *const t = !found ? &w->best : (SSDA_PITCH_HAS_FULL(info->flags) ? &w->t : &w->run);
@@ -326,7 +330,7 @@ static SSDA_NOINLINE void refine(ssda_pitch_work_t *w, bool found, ssda_pitch_es
 static SSDA_ALWAYS_INLINE uint32_t scan_start(ssda_pitch_work_t *w, uint32_t predict_lag,
                                               uint32_t rearm, uint32_t *b_sum, bool *armed)
 {
-    const ssda_pitch_info_t *info = w->info;
+    const ssda_pitch_info_t *info = INFO(w);
     const bool full = SSDA_PITCH_HAS_FULL(info->flags);
     const uint32_t thr = info->threshold_q15;
     uint32_t pred = 0u, s;
@@ -364,7 +368,7 @@ static SSDA_ALWAYS_INLINE uint32_t lag_bound(const ssda_pitch_work_t *w, uint32_
                                              uint32_t s, bool candidate, bool armed,
                                              uint32_t rearm)
 {
-    uint32_t bound = threshold_bound(armed || !candidate ? w->info->threshold_q15 : rearm, s);
+    uint32_t bound = threshold_bound(armed || !candidate ? INFO(w)->threshold_q15 : rearm, s);
     if (candidate) {
         uint32_t bb;
         if (w->best.lag == 0u) {
@@ -404,9 +408,9 @@ static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_a
     /* the outer neighbour of a minimum at an end of the range (lag_min <
        lag_max always), else the minimum itself (never below itself) */
     uint32_t side = 1u;
-    if (r->lag == w->info->lag_max) {
+    if (r->lag == INFO(w)->lag_max) {
         side = 2u;
-    } else if (r->lag == w->info->lag_min) {
+    } else if (r->lag == INFO(w)->lag_min) {
         side = 0u;
     } else {
         /* inside the range: no side to test */
@@ -426,7 +430,7 @@ static SSDA_ALWAYS_INLINE bool run_is_dip(const ssda_pitch_work_t *w, bool run_a
  */
 static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 {
-    const ssda_pitch_info_t *info = w->info;
+    const ssda_pitch_info_t *info = INFO(w);
     const int16_t *x = w->x;
     const uint32_t k = info->frame_len;
     const uint32_t lag_max = info->lag_max;
@@ -499,7 +503,7 @@ static SSDA_NOINLINE bool scan_lags(ssda_pitch_work_t *w, uint32_t predict_lag)
 void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
                            const int16_t *x, uint32_t predict_lag, ssda_pitch_estimate_t *est)
 {
-    const uint32_t k = info->frame_len;
+    const uint32_t k = SSDA_PITCH_INFO_OF(info)->frame_len;
     int32_t mean;
 
     w->info = info;
@@ -509,7 +513,7 @@ void ssda__pitch_analyze_in(ssda_pitch_work_t *w, const ssda_pitch_info_t *info,
     w->mean = mean;
     w->level = ssda__pitch_level(x, k, mean);
     /* silence_mad * K <= 65535 * 8192 < 2^30 */
-    if (w->level < (uint32_t)info->silence_mad * k) {
+    if (w->level < (uint32_t)INFO(w)->silence_mad * k) {
         silent_estimate(est);
         return;
     }

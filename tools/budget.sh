@@ -52,8 +52,9 @@ cycles=()
 for k in armv7em portable; do
   echo "budget.sh: cortex-m4f cycles, $k kernels (-O2)" >&2
   build "$out/cycles-m4f-$k" cortex-m4f RelWithDebInfo -DSSDA_KERNEL="$k"
-  [ -f "$out/cycles-m4f-$k/budget_cycles.elf" ] && [ -f "$out/cycles-m4f-$k/min_check.elf" ] \
-    || { cat "$out/cycles-m4f-$k.build.log" >&2; exit 1; }
+  for elf in budget_cycles min_check min_check_fixed min_check_reduced_fixed; do
+    [ -f "$out/cycles-m4f-$k/$elf.elf" ] || { cat "$out/cycles-m4f-$k.build.log" >&2; exit 1; }
+  done
   if ! qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
        -semihosting-config enable=on,target=native -icount shift=0 \
        -kernel "$out/cycles-m4f-$k/budget_cycles.elf" >"$out/cycles-m4f-$k.txt"; then
@@ -61,13 +62,18 @@ for k in armv7em portable; do
   fi
   cycles+=(--cycles "M4F=$out/cycles-m4f-$k.txt")
   # The minimal cores at work (tools/budget/min_check.c, library built with
-  # every SSDA_CFG_NO_* switch): must pass before their sizes are reported.
-  if ! qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
-       -semihosting-config enable=on,target=native -icount shift=0 \
-       -kernel "$out/cycles-m4f-$k/min_check.elf" >"$out/min-check-$k.txt"; then
-    cat "$out/min-check-$k.txt" >&2; echo "budget.sh: minimal-core check failed ($k)" >&2; exit 1
-  fi
-  cycles+=(--min-check "$out/min-check-$k.txt")
+  # every SSDA_CFG_NO_* switch; min_check_*fixed: the pitch cores whose
+  # configuration is fixed at compile time): must pass before their sizes
+  # are reported.
+  for mc in min_check min_check_fixed min_check_reduced_fixed; do
+    txt="$out/${mc//_/-}-$k.txt"
+    if ! qemu-system-arm -M mps2-an386 -nographic -monitor none -serial none \
+         -semihosting-config enable=on,target=native -icount shift=0 \
+         -kernel "$out/cycles-m4f-$k/$mc.elf" >"$txt"; then
+      cat "$txt" >&2; echo "budget.sh: minimal-core check $mc failed ($k)" >&2; exit 1
+    fi
+    cycles+=(--min-check "$txt")
+  done
 done
 
 gcc_v=$(arm-none-eabi-gcc -dumpversion)

@@ -29,7 +29,9 @@
  *           whole frames with early exit, voicing, the dip-run choice with
  *           its octave and below-range checks, V-shaped interpolation); and
  *           apart, the reduced core: every SSDA_CFG_NO_PITCH_* (the checks
- *           left out, configurations must ask for the reduced definition)
+ *           left out, configurations must ask for the reduced definition);
+ *           and both again with SSDA_CFG_PITCH_FIXED (below) at 16 kHz with
+ *           the defaults
  *   stream: SSDA_CFG_NO_TILED, SSDA_CFG_NO_READ_SIZE and SSDA_CFG_NO_U16
  *           (raster 8-bit sources read at byte granularity, the plate cache,
  *           the streamed search)
@@ -118,6 +120,28 @@
    with it is refused by ssda_pitch_frame, so set SSDA_CFG_NO_PITCH_FILTER
    too. */
 /* #define SSDA_CFG_NO_PITCH_PUSH */
+
+/* One configuration, fixed when the library compiles (a tuner, a voice
+   firmware: the way of CMSIS-DSP's constant instances). Its fields are
+   SSDA_CFG_PITCH_FIXED_<FIELD>, one per field of ssda_pitch_config_t:
+   RATE_HZ (required), F0_MIN_HZ, F0_MAX_HZ, FRAME_LEN, HOP, THRESHOLD_Q15,
+   VOICING_Q15, SILENCE_MAD, CHUNK, LOWPASS_HZ, FLAGS (unset or 0: the
+   default, as in the struct). The resolved parameters (lags, K, span, ...)
+   are then constants, checked when the library compiles (a configuration
+   the full build refuses does not compile), and the code that resolves a
+   configuration at run time is left out. ssda_pitch_init and
+   ssda_pitch_buffer_size accept that configuration only (a default given
+   as 0 or as its value) and return SSDA_ERR_UNSUPPORTED for any other;
+   what they accept gives the full build's estimates, bit for bit. Code for
+   what its flags do not use is left out as by the switches above (which
+   may be set too). pitch.h: SSDA_PITCH_CONFIG_FIXED initialises a
+   configuration to it, SSDA_PITCH_BUFFER_SIZE_FIXED is its buffer size.
+   Example (the reduced core of tools/budget.sh, 16 kHz, whole frames):
+     #define SSDA_CFG_PITCH_FIXED
+     #define SSDA_CFG_PITCH_FIXED_RATE_HZ 16000
+     #define SSDA_CFG_PITCH_FIXED_FLAGS (SSDA_PITCH_NO_FILTER | SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE)
+     #define SSDA_CFG_NO_PITCH_PUSH */
+/* #define SSDA_CFG_PITCH_FIXED */
 
 /* ---- streaming (stream.h) ---- */
 

@@ -192,6 +192,67 @@ extern "C" {
     ((size_t)SSDA_PITCH_SPAN(rate_hz, f0_min_hz, frame_len) * sizeof(int16_t))
 
 /*
+ * Fixed configuration (include/ssda/config.h: SSDA_CFG_PITCH_FIXED, for a
+ * firmware with one configuration, a tuner say). The build is given one
+ * configuration, SSDA_CFG_PITCH_FIXED_<FIELD> per field of
+ * ssda_pitch_config_t (RATE_HZ required; an unset field is 0, its
+ * default); its resolved parameters are constants checked when the
+ * library compiles (an invalid one does not compile), and ssda_pitch_init
+ * and ssda_pitch_buffer_size accept that configuration only: every field
+ * equal to the fixed one, a zero standing for its default and the default
+ * for a zero. Anything else returns SSDA_ERR_UNSUPPORTED (also a
+ * configuration the full build refuses with SSDA_ERR_ARG or
+ * SSDA_ERR_SIZE). What it accepts gives the full build's estimates, bit
+ * for bit. SSDA_PITCH_CONFIG_FIXED initialises an ssda_pitch_config_t to
+ * it, SSDA_PITCH_BUFFER_SIZE_FIXED is its buffer size.
+ */
+#ifdef SSDA_CFG_PITCH_FIXED
+#ifndef SSDA_CFG_PITCH_FIXED_RATE_HZ
+#error "SSDA_CFG_PITCH_FIXED needs SSDA_CFG_PITCH_FIXED_RATE_HZ (include/ssda/config.h)"
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_F0_MIN_HZ
+#define SSDA_CFG_PITCH_FIXED_F0_MIN_HZ 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_F0_MAX_HZ
+#define SSDA_CFG_PITCH_FIXED_F0_MAX_HZ 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_FRAME_LEN
+#define SSDA_CFG_PITCH_FIXED_FRAME_LEN 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_HOP
+#define SSDA_CFG_PITCH_FIXED_HOP 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_THRESHOLD_Q15
+#define SSDA_CFG_PITCH_FIXED_THRESHOLD_Q15 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_VOICING_Q15
+#define SSDA_CFG_PITCH_FIXED_VOICING_Q15 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_SILENCE_MAD
+#define SSDA_CFG_PITCH_FIXED_SILENCE_MAD 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_CHUNK
+#define SSDA_CFG_PITCH_FIXED_CHUNK 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_LOWPASS_HZ
+#define SSDA_CFG_PITCH_FIXED_LOWPASS_HZ 0u
+#endif
+#ifndef SSDA_CFG_PITCH_FIXED_FLAGS
+#define SSDA_CFG_PITCH_FIXED_FLAGS 0u
+#endif
+#define SSDA_PITCH_CONFIG_FIXED                                                  \
+    {(uint32_t)(SSDA_CFG_PITCH_FIXED_RATE_HZ), (uint16_t)(SSDA_CFG_PITCH_FIXED_F0_MIN_HZ), \
+     (uint16_t)(SSDA_CFG_PITCH_FIXED_F0_MAX_HZ), (uint16_t)(SSDA_CFG_PITCH_FIXED_FRAME_LEN), \
+     (uint16_t)(SSDA_CFG_PITCH_FIXED_HOP), (uint16_t)(SSDA_CFG_PITCH_FIXED_THRESHOLD_Q15), \
+     (uint16_t)(SSDA_CFG_PITCH_FIXED_VOICING_Q15), (uint16_t)(SSDA_CFG_PITCH_FIXED_SILENCE_MAD), \
+     (uint16_t)(SSDA_CFG_PITCH_FIXED_CHUNK), (uint16_t)(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ), \
+     (uint8_t)(SSDA_CFG_PITCH_FIXED_FLAGS)}
+#define SSDA_PITCH_BUFFER_SIZE_FIXED                                             \
+    SSDA_PITCH_BUFFER_SIZE(SSDA_CFG_PITCH_FIXED_RATE_HZ, SSDA_CFG_PITCH_FIXED_F0_MIN_HZ, \
+                           SSDA_CFG_PITCH_FIXED_FRAME_LEN)
+#endif
+
+/*
  * Configuration. A zero field means its default; sample_rate_hz is required.
  */
 typedef struct {

@@ -16,14 +16,20 @@
  *   - a raster 8-bit source read through a callback gives the streamed
  *     search the same answer as the in-RAM search, and the tiled layout,
  *     granular reads and 16-bit sources are refused.
+ * Built with MIN_CHECK_PITCH_ONLY against the pitch cores whose
+ * configuration is fixed at compile time (SSDA_CFG_PITCH_FIXED: 16 kHz,
+ * defaults, tools/budget/CMakeLists.txt), only the pitch checks run, and
+ * another configuration (8 kHz) is refused too.
  * Prints "MINCHECK <checks> <failures>" and exits 1 on any failure.
  */
 #include <stdio.h>
 #include <string.h>
 
-#include "ssda/match.h"
 #include "ssda/pitch.h"
+#ifndef MIN_CHECK_PITCH_ONLY
+#include "ssda/match.h"
 #include "ssda/stream.h"
+#endif
 #include "jobs.h"
 #include "test_signal.h"
 
@@ -41,6 +47,7 @@ static void check(int ok, const char *what)
     }
 }
 
+#ifndef MIN_CHECK_PITCH_ONLY
 static uint8_t g_area[AREA * AREA];
 static uint8_t g_win[WIN * WIN];
 
@@ -118,6 +125,8 @@ static void check_search(void)
           "search: 16-bit views are refused");
 }
 
+#endif
+
 static int16_t g_sig[4000];
 
 static void check_pitch(void)
@@ -140,7 +149,15 @@ static void check_pitch(void)
         check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_ERR_UNSUPPORTED,
               "pitch: a left-out option (the low-pass by default) is refused");
     }
+#ifdef SSDA_CFG_PITCH_FIXED
+    cfg.flags = (uint8_t)(SSDA_CFG_PITCH_FIXED_FLAGS);
+    cfg.sample_rate_hz = 8000u;
+    check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_ERR_UNSUPPORTED,
+          "pitch: another configuration than the fixed one is refused");
+    cfg.sample_rate_hz = 16000u;
+#else
     cfg.flags = SSDA_PITCH_NO_FILTER;
+#endif
     check(ssda_pitch_init(&p, &cfg, NULL, 0u) == SSDA_OK &&
               ssda_pitch_get_info(&p, &info) == SSDA_OK,
           "pitch: the core initialises, without a buffer");
@@ -164,6 +181,7 @@ static void check_pitch(void)
     check(frames > 10u && right == frames, "pitch: 200 Hz vowel, every frame voiced at lag 80");
 }
 
+#ifndef MIN_CHECK_PITCH_ONLY
 /* A device in RAM for the source's read callback. */
 static int read_mem(void *ctx, uint32_t offset, void *buffer, uint32_t size)
 {
@@ -211,11 +229,17 @@ static void check_stream(void)
           "stream: streamed search = in-RAM search");
 }
 
+#endif
+
 int main(void)
 {
+#ifndef MIN_CHECK_PITCH_ONLY
     check_search();
+#endif
     check_pitch();
+#ifndef MIN_CHECK_PITCH_ONLY
     check_stream();
+#endif
     printf("MINCHECK %u %u\n", g_checks, g_failed);
     return g_failed != 0u;
 }

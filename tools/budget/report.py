@@ -277,6 +277,11 @@ def fmt(v):
     return f"{v:,}".replace(",", " ")
 
 
+def core_key(feat):
+    """The row a minimal core stands beside: min-pitch-reduced-fixed -> pitch."""
+    return re.sub("(-reduced)?(-fixed)?$", "", feat[4:])
+
+
 def per(instr, units, digits=2):
     return f"{instr / units:.{digits}f}" if units else "-"
 
@@ -297,8 +302,12 @@ def main():
         # Minimal cores (fw_min-<row>.elf: the library with the switches of
         # min_config.txt), keyed "min-<row>".
         mins = {"min-" + k: v for k, v in read_features(targets[0][1], "min").items()}
-        min_config, min_reduced_config = "", []
+        min_config, min_reduced_config, min_fixed_config = "", [], []
         if mins:
+            fixed_cfg = os.path.join(targets[0][1], "min_fixed_config.txt")
+            if os.path.exists(fixed_cfg):
+                with open(fixed_cfg) as f:
+                    min_fixed_config = f.read().split()
             with open(os.path.join(targets[0][1], "min_config.txt")) as f:
                 min_config = f.read().split()
             red = os.path.join(targets[0][1], "min_reduced_config.txt")
@@ -338,7 +347,12 @@ def main():
               "checks, steps 4 and 6 of the definition in `pitch.h`: a build that "
               "accepts only configurations asking for the reduced definition, "
               "`SSDA_PITCH_NO_OCTAVE | SSDA_PITCH_NO_BELOW_RANGE`, whose "
-              "estimates differ; docs/pitch.md); the streaming layer keeps raster 8-bit "
+              "estimates differ; docs/pitch.md; its two *fixed configuration* rows are "
+              "these cores built for one configuration, `SSDA_CFG_PITCH_FIXED` in "
+              "`pitch.h`: 16 kHz, every other setting its default, the flags "
+              "`SSDA_PITCH_NO_FILTER` and, reduced, the two of the reduced definition; "
+              "their parameters are constants and `ssda_pitch_init` accepts that "
+              "configuration only); the streaming layer keeps raster 8-bit "
               "sources read at byte granularity and the plate cache. A feature "
               "left out returns `SSDA_ERR_UNSUPPORTED`.")
             checks = []
@@ -352,7 +366,8 @@ def main():
                             checks.append(int(p[1]))
             if checks:
                 w(f" The minimal library also runs on the emulated Cortex-M4 "
-                  f"(`tools/budget/min_check.c`, {len(checks)} run(s) of {checks[0]} checks, all "
+                  f"(`tools/budget/min_check.c`, {len(checks)} runs of {sum(checks)} checks "
+                  "in all, the pitch's fixed-configuration cores among them, all "
                   "passed): its search returns the brute-force minimum, its pitch the period "
                   "of a 200 Hz vowel from whole frames, its streamed search the in-RAM answer, and every option "
                   "left out is refused with the result untouched.")
@@ -367,8 +382,9 @@ def main():
             rows.append(feat)
             if "min-" + feat in mins:
                 rows.append("min-" + feat)
-            if "min-" + feat + "-reduced" in mins:
-                rows.append("min-" + feat + "-reduced")
+            for suffix in ("-reduced", "-fixed", "-reduced-fixed"):
+                if "min-" + feat + suffix in mins:
+                    rows.append("min-" + feat + suffix)
             for p in sorted(p for p in parts if p.startswith(feat + "-")):
                 rows.append(p)
                 rows += sorted(m for m in mins if m == "min-" + p or m.startswith("min-" + p + "+"))
@@ -380,19 +396,29 @@ def main():
                     continue
                 fl, ram = sizes[(name, feat)]
                 cells.append(fmt(fl) + ("" if ram == 0 else f" (+{ram} RAM)"))
-            reduced = feat in mins and feat.endswith("-reduced")
-            goal = M0_FLASH_TARGETS.get(feat[4:-len("-reduced")] if reduced else
-                                        feat[4:].split("+")[0] if feat in mins and "+" not in feat
+            # the pitch's variants: -reduced (steps 4 and 6 left out), -fixed
+            # (one configuration, fixed at compile time), both
+            fixed = feat in mins and feat.endswith("-fixed")
+            reduced = feat in mins and re.sub("-fixed$", "", feat).endswith("-reduced")
+            goal = M0_FLASH_TARGETS.get(core_key(feat) if feat in mins and "+" not in feat
                                         else feat)
             m0 = next((sizes[(n, feat)][0] for n, _ in targets
                        if "m0" in n.lower() and sizes[(n, feat)] is not None), None)
             verdict = ""
             if goal and m0 is not None:
                 verdict = f"<= {fmt(goal)}: " + ("met" if m0 <= goal else f"**over by {fmt(m0 - goal)}**")
-                if reduced:  # never a verdict that hides the reduced definition
-                    verdict += " (reduced definition)"
+                # never a verdict that hides the reduced definition or the
+                # single configuration
+                verdict += {(True, False): " (reduced definition)",
+                            (False, True): " (one configuration)",
+                            (True, True): " (reduced definition, one configuration)"}.get(
+                                (reduced, fixed), "")
             if feat == "all":
                 label = "everything"
+            elif fixed:
+                label = ("&nbsp;&nbsp;&nbsp;&nbsp;" + ("reduced" if reduced else "minimal") +
+                         " core, its configuration fixed at compile time (`" +
+                         "`, `".join(min_fixed_config) + "`)")
             elif reduced:
                 label = ("&nbsp;&nbsp;reduced core (no octave or below-range check: `" +
                          "`, `".join(min_reduced_config) + "`)")
@@ -414,7 +440,9 @@ def main():
         nm = cache_value(build0, "CMAKE_OBJDUMP")[: -len("objdump")] + "nm"
         lib_syms = set()
         for lib in (os.path.join(build0, "ssda", "lib", "libssda.a"), os.path.join(build0, "libssda_min.a"),
-                    os.path.join(build0, "libssda_min_reduced.a")):
+                    os.path.join(build0, "libssda_min_reduced.a"),
+                    os.path.join(build0, "libssda_min_pitch_fixed.a"),
+                    os.path.join(build0, "libssda_min_pitch_reduced_fixed.a")):
             if os.path.exists(lib):
                 lib_syms |= set(subprocess.run([nm, "--defined-only", lib],
                                                capture_output=True, text=True).stdout.split())
@@ -422,7 +450,7 @@ def main():
                                        capture_output=True, text=True).stdout.split())
         for feat in [f for f in rows if f in M0_FLASH_TARGETS or
                      (f in mins and "+" not in f and
-                      re.sub("-reduced$", "", f[4:]) in M0_FLASH_TARGETS)]:
+                      core_key(f) in M0_FLASH_TARGETS)]:
             elf = os.path.join(build0, f"fw_{feat}.elf")
             if not os.path.exists(elf):
                 continue
@@ -436,12 +464,14 @@ def main():
                 # GCC's clones (f.constprop.0, f.isra.0, f.part.0) are the library's too
                 parts.append((int(p[1], 16), p[3], p[3] in lib_syms or p[3].split(".")[0] in lib_syms))
             lib = sum(n for n, _, own in parts if own)
-            key = re.sub("-reduced$", "", feat[4:]) if feat in mins else feat
+            key = core_key(feat) if feat in mins else feat
             title = FEATURE_NAMES.get(key) or ("`ssda_" + key.split("-", 1)[-1] + "*` (" +
                                                {"match-match": "search core",
                                                 "stream-source": "streaming layer"}.get(key, key) + ")")
             if feat in mins:
-                title += ", reduced core" if feat.endswith("-reduced") else ", minimal core"
+                title += (", reduced core" if re.sub("-fixed$", "", feat).endswith("-reduced")
+                          else ", minimal core")
+                title += ", fixed configuration" if feat.endswith("-fixed") else ""
             w(f"\n<details><summary>{name0}, {title}: "
               f"{fmt(lib)} B library, {fmt(sum(n for n, _, own in parts) - lib)} B runtime "
               "(libgcc, C library)</summary>\n\n")

@@ -76,6 +76,17 @@ def main():
                 w(f"| &nbsp;&nbsp;reduced definition (no octave or below-range check) | - | "
                   f"{fmt(v)} B | {fmt(goal)} B: {verdict(v, goal)}, estimates differ "
                   "(docs/pitch.md) |\n")
+            # both cores built for one configuration (SSDA_CFG_PITCH_FIXED)
+            for core, label, note in (
+                    ("minimal", "one configuration, fixed at compile time", ""),
+                    ("reduced", "reduced definition, one configuration fixed at compile time",
+                     ", estimates differ")):
+                fix = next((cells for l, cells in t
+                            if l.startswith(core + " core, its configuration fixed")), None)
+                if fix is not None:
+                    v = num(fix[m0])
+                    w(f"| &nbsp;&nbsp;{label} (`SSDA_CFG_PITCH_FIXED`) | - | {fmt(v)} B | "
+                      f"{fmt(goal)} B: {verdict(v, goal)}{note} |\n")
     stack = [(f, num(find(t, f"`{f}`")[m4]))
              for f in ("ssda_match", "ssda_match_search", "ssda_pitch_push", "ssda_track")]
     w(f"\n| worst stack (M4F, -Os) | bytes | target |\n|---|---:|---|\n")
