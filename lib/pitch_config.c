@@ -56,15 +56,21 @@ typedef char ssda__pitch_fixed_frame_len[FIXED_OK(SSDA_PITCH_FIXED_K >= SSDA_PIT
                                                   SSDA_PITCH_FIXED_K <= SSDA_PITCH_FRAME_MAX)];
 typedef char ssda__pitch_fixed_chunk[FIXED_OK(
     (uint32_t)(SSDA_CFG_PITCH_FIXED_CHUNK) <= SSDA_PITCH_FIXED_K)];
-/* each setting fits its field of ssda_pitch_config_t */
+/* each setting fits its field of ssda_pitch_config_t, as written: the
+   checks above see it cut to 32 bits, so a wider value (negative, or
+   beyond 2^32) is refused here, before a cut could make it valid */
 typedef char ssda__pitch_fixed_fields[FIXED_OK(
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_F0_MIN_HZ) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_F0_MAX_HZ) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_FRAME_LEN) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_HOP) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_SILENCE_MAD) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_CHUNK) <= 65535u &&
-    (uint32_t)(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ) <= 65535u)];
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_RATE_HZ) == SSDA_PITCH_FIXED_RATE &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_F0_MIN_HZ) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_F0_MAX_HZ) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_FRAME_LEN) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_HOP) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_THRESHOLD_Q15) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_VOICING_Q15) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_SILENCE_MAD) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_CHUNK) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_LOWPASS_HZ) <= 65535u &&
+    (uint64_t)(SSDA_CFG_PITCH_FIXED_FLAGS) <= 255u)];
 /* the flags ask for features this build has (flags_built, at compile time) */
 #ifdef SSDA_CFG_NO_PITCH_FILTER
 typedef char ssda__pitch_fixed_no_filter[FIXED_OK((SSDA_PITCH_FIXED_FLAGS & SSDA_PITCH_NO_FILTER) != 0u)];

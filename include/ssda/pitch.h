@@ -401,7 +401,10 @@ int ssda_pitch_buffer_size(const ssda_pitch_config_t *cfg, size_t *bytes);
  *                    _PARABOLIC), or omits one the build requires
  *                    (SSDA_CFG_NO_PITCH_FILTER: SSDA_PITCH_NO_FILTER;
  *                    SSDA_CFG_NO_PITCH_OCTAVE: SSDA_PITCH_NO_OCTAVE;
- *                    SSDA_CFG_NO_PITCH_BELOW_RANGE: SSDA_PITCH_NO_BELOW_RANGE)
+ *                    SSDA_CFG_NO_PITCH_BELOW_RANGE: SSDA_PITCH_NO_BELOW_RANGE);
+ *                    built with SSDA_CFG_PITCH_FIXED, any configuration
+ *                    but the fixed one ("Fixed configuration" above), in
+ *                    place of SSDA_ERR_ARG and SSDA_ERR_SIZE too
  * Built with SSDA_CFG_NO_PITCH_PUSH, buffer and buffer_size are not used
  * (buffer may be NULL; ssda_pitch_frame takes the frames).
  */

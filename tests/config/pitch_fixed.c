@@ -17,7 +17,12 @@
  *   - the configurations it accepts: the fixed one, SSDA_PITCH_CONFIG_FIXED,
  *     with each default written as 0 or as its value; and those it refuses:
  *     any field changed gives SSDA_ERR_UNSUPPORTED with the state and the
- *     size untouched.
+ *     size untouched, also a 0 in a field whose fixed value is not what 0
+ *     stands for;
+ *   - the buffer checked as in the full build (SSDA_ERR_BUFFER, SSDA_ERR_NULL),
+ *     and ssda_pitch_frame refusing a stream with the low-pass, from a
+ *     zeroed state (the state's own copy of the parameters is never read:
+ *     the main run also starts from a poisoned state).
  * Exit 0 on success.
  */
 #include <stdio.h>
@@ -64,7 +69,11 @@
 #error "the fixed side is built with SSDA_CFG_PITCH_FIXED, the full side without"
 #endif
 
+#ifdef PITCH_FIXED_SIGNALS
+#define SIGNALS PITCH_FIXED_SIGNALS
+#else
 #define SIGNALS 48u
+#endif
 #define SIG_MAX 12000u
 
 static int16_t g_sig[SIG_MAX];
@@ -256,6 +265,82 @@ static int refuses(const ssda_pitch_config_t *c)
     return ok && bytes == 4321u;
 }
 
+/* A 0 stands for the field's default, which pitch.h defines from the
+   other fields: where the fixed value is not that default, the 0 is
+   another configuration, refused. */
+static void check_zeros(const ssda_pitch_info_t *info)
+{
+    const ssda_pitch_config_t fixed = SSDA_PITCH_CONFIG_FIXED;
+    const uint32_t rate = fixed.sample_rate_hz;
+    const uint32_t f0_min = fixed.f0_min_hz != 0u ? fixed.f0_min_hz : SSDA_PITCH_DEFAULT_F0_MIN;
+    const uint32_t f0_max = fixed.f0_max_hz != 0u ? fixed.f0_max_hz : SSDA_PITCH_DEFAULT_F0_MAX;
+    const uint32_t k = SSDA_PITCH_FRAME_LEN(rate, fixed.f0_min_hz, fixed.frame_len);
+    const uint32_t thr = fixed.threshold_q15 != 0u ? fixed.threshold_q15
+                                                   : SSDA_PITCH_DEFAULT_THRESHOLD_Q15;
+    uint32_t i;
+    for (i = 0u; i < 9u; i++) {
+        ssda_pitch_config_t c = fixed;
+        int other;
+        switch (i) {
+        case 0u: other = f0_min != SSDA_PITCH_DEFAULT_F0_MIN; c.f0_min_hz = 0u; break;
+        case 1u: other = f0_max != SSDA_PITCH_DEFAULT_F0_MAX; c.f0_max_hz = 0u; break;
+        case 2u: other = k != SSDA_PITCH_FRAME_LEN(rate, fixed.f0_min_hz, 0u); c.frame_len = 0u; break;
+        case 3u: other = info->hop != k / 4u; c.hop = 0u; break;
+        case 4u: other = thr != SSDA_PITCH_DEFAULT_THRESHOLD_Q15; c.threshold_q15 = 0u; break;
+        case 5u: other = info->voicing_q15 != thr; c.voicing_q15 = 0u; break;
+        case 6u: other = info->silence_mad != SSDA_PITCH_DEFAULT_SILENCE_MAD; c.silence_mad = 0u; break;
+        case 7u: other = info->chunk != (k < 32u ? k : 32u); c.chunk = 0u; break;
+        default:
+            other = fixed.lowpass_hz != 0u && fixed.lowpass_hz != f0_max;
+            c.lowpass_hz = 0u;
+            break;
+        }
+        if (other) {
+            check(refuses(&c), "a 0 where the fixed value is not its default is refused");
+        }
+    }
+}
+
+/* ssda_pitch_init's other checks, as in the full build: the buffer (with
+   the push intake), NULL, and ssda_pitch_frame on a stream with the
+   low-pass, from a zeroed state. */
+static void check_buffer(const ssda_pitch_info_t *info)
+{
+    const ssda_pitch_config_t fixed = SSDA_PITCH_CONFIG_FIXED;
+    ssda_pitch_t p, poison;
+    ssda_pitch_estimate_t e, e0;
+    memset(&poison, 0x5A, sizeof poison);
+#ifndef SSDA_CFG_NO_PITCH_PUSH
+    p = poison;
+    check(ssda_pitch_init(&p, &fixed, g_buf, SSDA_PITCH_BUFFER_SIZE_FIXED - 1u) ==
+                  SSDA_ERR_BUFFER && memcmp(&p, &poison, sizeof p) == 0,
+          "a buffer one byte short is SSDA_ERR_BUFFER, the state untouched");
+    check(ssda_pitch_init(&p, &fixed, (uint8_t *)g_buf + 1, SSDA_PITCH_BUFFER_SIZE_FIXED) ==
+                  SSDA_ERR_BUFFER && memcmp(&p, &poison, sizeof p) == 0,
+          "a misaligned buffer is SSDA_ERR_BUFFER, the state untouched");
+    check(ssda_pitch_init(&p, &fixed, NULL, SSDA_PITCH_BUFFER_SIZE_FIXED) == SSDA_ERR_NULL &&
+              memcmp(&p, &poison, sizeof p) == 0,
+          "no buffer is SSDA_ERR_NULL");
+    check(ssda_pitch_init(&p, &fixed, g_buf, SSDA_PITCH_BUFFER_SIZE_FIXED) == SSDA_OK,
+          "a buffer of SSDA_PITCH_BUFFER_SIZE_FIXED bytes is enough");
+#else
+    p = poison;
+    check(ssda_pitch_init(&p, &fixed, NULL, 0u) == SSDA_OK, "no buffer without the push intake");
+#endif
+    memset(&p, 0, sizeof p);
+    memset(g_sig, 0, sizeof g_sig);
+    memset(&e, 0x5A, sizeof e);
+    e0 = e;
+    check(ssda_pitch_init(&p, &fixed, g_buf, sizeof g_buf) == SSDA_OK, "init from a zeroed state");
+    if (info->lowpass_q15 != 0u) {
+        check(ssda_pitch_frame(&p, g_sig, &e) == SSDA_ERR_ARG && memcmp(&e, &e0, sizeof e) == 0,
+              "ssda_pitch_frame refuses a stream with the low-pass");
+    } else {
+        check(ssda_pitch_frame(&p, g_sig, &e) == SSDA_OK && e.silent && e.frame == 0u,
+              "ssda_pitch_frame takes a stream without the low-pass");
+    }
+}
+
 /* The configurations accepted and refused. */
 static void check_acceptance(const ssda_pitch_info_t *info)
 {
@@ -329,6 +414,8 @@ static void check_acceptance(const ssda_pitch_info_t *info)
     c = fixed;
     c.flags = 0xFFu; /* unknown flags: SSDA_ERR_ARG in the full build */
     check(refuses(&c), "unknown flags are refused");
+    check_zeros(info);
+    check_buffer(info);
     c = fixed;
     memset(&zeroed, 0, sizeof zeroed);
     check(ssda_pitch_init(&zeroed, NULL, g_buf, sizeof g_buf) == SSDA_ERR_NULL &&
@@ -349,6 +436,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: pitch_fixed OUTPUT\n");
         return 2;
     }
+    memset(&p, 0x5A, sizeof p); /* nothing of it read before init writes it */
     if (ssda_pitch_init(&p, &cfg, g_buf, sizeof g_buf) != SSDA_OK ||
         ssda_pitch_get_info(&p, &info) != SSDA_OK) {
         fprintf(stderr, "FAILED: the settings are refused\n");

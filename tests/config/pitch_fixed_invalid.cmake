@@ -20,7 +20,28 @@ set(_cases
   "frame above 8192|frame_len|RATE_HZ=16000,FRAME_LEN=8193"
   "chunk above the frame|chunk|RATE_HZ=16000,FRAME_LEN=100,CHUNK=101"
   "hop wider than its field|fields|RATE_HZ=16000,HOP=65536"
-  "low-pass in a build without it|no_filter|RATE_HZ=16000,FLAGS=0,+SSDA_CFG_NO_PITCH_FILTER")
+  "f0_min wider than its field|fields|RATE_HZ=16000,F0_MIN_HZ=65536"
+  "f0_max wider than its field|fields|RATE_HZ=16000,F0_MAX_HZ=65536"
+  "frame wider than its field|fields|RATE_HZ=16000,FRAME_LEN=65536"
+  "silence wider than its field|fields|RATE_HZ=16000,SILENCE_MAD=65536"
+  "silence negative|fields|RATE_HZ=16000,SILENCE_MAD=-1"
+  "chunk wider than its field|fields|RATE_HZ=16000,CHUNK=65536"
+  "low-pass wider than its field|fields|RATE_HZ=16000,LOWPASS_HZ=65536"
+  "threshold negative|thresholds|RATE_HZ=16000,THRESHOLD_Q15=-1"
+  "rate wider than 32 bits|fields|RATE_HZ=4294983296"
+  "threshold wider than 32 bits|fields|RATE_HZ=16000,THRESHOLD_Q15=4294967396"
+  "voicing wider than 32 bits|fields|RATE_HZ=16000,VOICING_Q15=4294967396"
+  "silence wider than 32 bits|fields|RATE_HZ=16000,SILENCE_MAD=4294967312"
+  "flags wider than 32 bits|fields|RATE_HZ=16000,FLAGS=4294967296"
+  "chunk above the default frame|chunk|RATE_HZ=16000,CHUNK=321"
+  "low-pass in a build without it|no_filter|RATE_HZ=16000,FLAGS=0,+SSDA_CFG_NO_PITCH_FILTER"
+  "tracking in a build without it|no_track|RATE_HZ=16000,FLAGS=0x01,+SSDA_CFG_NO_PITCH_TRACK"
+  "full search in a build without it|no_full|RATE_HZ=16000,FLAGS=0x02,+SSDA_CFG_NO_PITCH_FULL"
+  "parabola in a build without it|no_parabolic|RATE_HZ=16000,FLAGS=0x08,+SSDA_CFG_NO_PITCH_PARABOLIC"
+  "octave check in a build without it|no_octave|RATE_HZ=16000,FLAGS=0,+SSDA_CFG_NO_PITCH_OCTAVE"
+  "below-range check in a build without it|no_below_range|RATE_HZ=16000,FLAGS=0,+SSDA_CFG_NO_PITCH_BELOW_RANGE"
+  "every switch with the flags it needs|ok|RATE_HZ=16000,FLAGS=0x34,+SSDA_CFG_NO_PITCH_FILTER,+SSDA_CFG_NO_PITCH_TRACK,+SSDA_CFG_NO_PITCH_FULL,+SSDA_CFG_NO_PITCH_PARABOLIC,+SSDA_CFG_NO_PITCH_OCTAVE,+SSDA_CFG_NO_PITCH_BELOW_RANGE,+SSDA_CFG_NO_PITCH_PUSH"
+  "every field at its largest|ok|RATE_HZ=48000,F0_MIN_HZ=10,F0_MAX_HZ=12000,FRAME_LEN=8192,HOP=65535,THRESHOLD_Q15=32767,VOICING_Q15=32767,SILENCE_MAD=65535,CHUNK=8192,LOWPASS_HZ=12000,FLAGS=0x3F")
 set(_failed 0)
 foreach(_case IN LISTS _cases)
   string(REPLACE "|" ";" _parts "${_case}")
