@@ -1832,7 +1832,8 @@ static SSDA_ALWAYS_INLINE bool open_before(const engine_t *e, uint32_t x, uint32
     const uint32_t bx = e->best.x, by = e->best.y;
     const int32_t ax = (int32_t)x - (int32_t)e->tx, ay = (int32_t)y - (int32_t)e->ty;
     const int32_t cx = (int32_t)bx - (int32_t)e->tx, cy = (int32_t)by - (int32_t)e->ty;
-    const uint32_t da = (uint32_t)(ax * ax + ay * ay), db = (uint32_t)(cx * cx + cy * cy);
+    const int32_t sa = ax * ax + ay * ay, sb = cx * cx + cy * cy; /* < 2 * 32^2 */
+    const uint32_t da = (uint32_t)sa, db = (uint32_t)sb;
     const bool raster = y < by || (y == by && x < bx);
     return e->tie_near ? (da < db) | ((da == db) & raster) : raster;
 }

@@ -326,6 +326,7 @@ static SSDA_NOINLINE uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astr
     const uint8_t *pa = (const uint8_t *)(const void *)a;
     const uint8_t *pb = (const uint8_t *)(const void *)b;
     const __m128i zero = _mm_setzero_si128();
+    size_t oa = 0u, ob = 0u;
     uint32_t s, r;
     {
         const __m128i a0 = load128(a), b0 = load128(b);
@@ -337,15 +338,16 @@ static SSDA_NOINLINE uint32_t sse2_sad16_rows_u16(const uint16_t *a, size_t astr
         return 8u;
     }
     s += sse2_sad_row_u16(a + 8, b + 8, 8u);
-    for (r = 0u;; r++) {
-        if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
-            *sum = s;
-            return 16u * (r + 1u);
-        }
-        pa += astride;
-        pb += bstride;
-        s += sad16_u16((const uint16_t *)(const void *)pa, (const uint16_t *)(const void *)pb);
+    r = 0u;
+    while (s < limit[r < 16u ? r / 4u : 4u] && r + 1u < rows) {
+        oa += astride;
+        ob += bstride;
+        s += sad16_u16((const uint16_t *)(const void *)(pa + oa),
+                       (const uint16_t *)(const void *)(pb + ob));
+        r++;
     }
+    *sum = s;
+    return 16u * (r + 1u);
 }
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -597,12 +599,13 @@ static SSDA_NOINLINE void sse2_bounds4_open(uint32_t *p, const uint32_t *g, size
         return;
     }
     for (y = 0u; y < rows; y++) {
+        const uint32_t *gy = g + (size_t)y * gstride;
         uint32_t m = 0u, i = 0u;
         for (;;) {
-            const __m128i d0 = _mm_sub_epi32(load128(g + i), w0);
-            const __m128i d1 = _mm_sub_epi32(load128(g + down + i), w1);
-            const __m128i d2 = _mm_sub_epi32(load128(g + 2u * down + i), w2);
-            const __m128i d3 = _mm_sub_epi32(load128(g + 3u * down + i), w3);
+            const __m128i d0 = _mm_sub_epi32(load128(gy + i), w0);
+            const __m128i d1 = _mm_sub_epi32(load128(gy + down + i), w1);
+            const __m128i d2 = _mm_sub_epi32(load128(gy + 2u * down + i), w2);
+            const __m128i d3 = _mm_sub_epi32(load128(gy + 3u * down + i), w3);
             const __m128i m0 = _mm_srai_epi32(d0, 31), m1 = _mm_srai_epi32(d1, 31);
             const __m128i m2 = _mm_srai_epi32(d2, 31), m3 = _mm_srai_epi32(d3, 31);
             const __m128i v = _mm_add_epi32(
@@ -622,7 +625,6 @@ static SSDA_NOINLINE void sse2_bounds4_open(uint32_t *p, const uint32_t *g, size
         }
         open[y] = m;
         p += nx;
-        g += gstride;
     }
 }
 
@@ -791,9 +793,9 @@ uint32_t avx2_any_u16(const uint8_t *p, size_t stride, uint32_t n, uint32_t rows
     for (r = 0u; r < rows; r++) {
         const uint8_t *q = p + (size_t)r * stride;
         for (i = 0u; i < n16; i += 16u) {
-            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(q + 2u * i), tv));
+            acc = _mm256_or_si256(acc, _mm256_cmpeq_epi16(load256(q + (size_t)i * 2u), tv));
         }
-        tail |= ssda__portable_any_u16(q + 2u * n16, 0u, n - n16, 1u, t);
+        tail |= ssda__portable_any_u16(q + (size_t)n16 * 2u, 0u, n - n16, 1u, t);
     }
     return (uint32_t)(_mm256_testz_si256(acc, acc) == 0) | tail;
 }

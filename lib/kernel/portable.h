@@ -94,19 +94,22 @@ static inline uint32_t ssda__portable_sad16_rows_u16(const uint16_t *a, size_t a
     const uint8_t *pa = (const uint8_t *)(const void *)a;
     const uint8_t *pb = (const uint8_t *)(const void *)b;
     uint32_t s = ssda__portable_sad16_part(pa, pb, 0u, 8u); /* < 2^32: the caller's */
+    size_t oa = 0u, ob = 0u;
     uint32_t r;
     if (s >= limit[0]) {
         *sum = s;
         return 8u;
     }
     s += ssda__portable_sad16_part(pa, pb, 8u, 16u);
-    for (r = 0u;; r++) {
-        if (s >= limit[r < 16u ? r / 4u : 4u] || r + 1u == rows) {
-            *sum = s;
-            return 16u * (r + 1u); /* <= 16 * 4096 */
-        }
-        s += ssda__portable_sad16_part(pa + (r + 1u) * astride, pb + (r + 1u) * bstride, 0u, 16u);
+    r = 0u;
+    while (s < limit[r < 16u ? r / 4u : 4u] && r + 1u < rows) {
+        oa += astride;
+        ob += bstride;
+        s += ssda__portable_sad16_part(pa + oa, pb + ob, 0u, 16u);
+        r++;
     }
+    *sum = s;
+    return 16u * (r + 1u); /* <= 16 * 4096 */
 }
 
 static inline uint32_t ssda__portable_absdiff_row_i16(const int16_t *a, const int16_t *b, uint32_t n)
@@ -197,10 +200,11 @@ static inline void ssda__portable_bounds4_open(uint32_t *p, const uint32_t *g, s
     uint32_t y, x;
     for (y = 0u; y < rows; y++) { /* ssda__portable_bounds4 in its own loop (a second caller
                                      made GCC call it out of line on the Cortex-M4) */
-        const uint32_t *g1 = &g[down], *g2 = &g1[down], *g3 = &g2[down];
+        const uint32_t *g0 = g + (size_t)y * gstride;
+        const uint32_t *g1 = &g0[down], *g2 = &g1[down], *g3 = &g2[down];
         uint32_t m = 0u;
         for (x = 0u; x < nx; x++) {
-            const int32_t d0 = (int32_t)g[x] - w0, d1 = (int32_t)g1[x] - w1;
+            const int32_t d0 = (int32_t)g0[x] - w0, d1 = (int32_t)g1[x] - w1;
             const int32_t d2 = (int32_t)g2[x] - w2, d3 = (int32_t)g3[x] - w3;
             p[x] = (uint32_t)(d0 < 0 ? -d0 : d0) + (uint32_t)(d1 < 0 ? -d1 : d1) +
                    (uint32_t)(d2 < 0 ? -d2 : d2) + (uint32_t)(d3 < 0 ? -d3 : d3);
@@ -208,7 +212,6 @@ static inline void ssda__portable_bounds4_open(uint32_t *p, const uint32_t *g, s
         }
         open[y] = m;
         p += nx;
-        g += gstride;
     }
 }
 
