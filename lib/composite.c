@@ -5,6 +5,7 @@
 #include "ncc_internal.h"
 #include "fixmath.h"
 #include "view_pair.h"
+#include "track_rows.h"
 
 /* The resolved job. */
 typedef struct {
@@ -16,6 +17,7 @@ typedef struct {
     uint32_t radius_q8, min_radius;
     uint32_t nx, ny;  /* positions of a template in NEXT */
     uint64_t min_var; /* templates with var below this are FLAT (>= 1) */
+    bool mask;        /* SSDA_COMPOSITE_MASK */
 } job_t;
 
 /* Defaults and the region; SSDA_ERR_SIZE when it holds no template. */
@@ -54,9 +56,12 @@ static int resolve(job_t *j, const ssda_view_t *ref, const ssda_view_t *next,
         return err;
     }
     if (cfg->tp > 256u || cfg->metric > (uint8_t)SSDA_NCC_ABS ||
-        (cfg->flags & (uint8_t)~SSDA_COMPOSITE_SUBPIXEL) != 0u) {
+        (cfg->flags & (uint8_t)~(SSDA_COMPOSITE_SUBPIXEL | SSDA_COMPOSITE_MASK)) != 0u ||
+        ((cfg->flags & SSDA_COMPOSITE_MASK) != 0u && ref->format == (uint8_t)SSDA_PIX_U8 &&
+         cfg->mask_value > 255u)) {
         return SSDA_ERR_ARG;
     }
+    j->mask = (cfg->flags & SSDA_COMPOSITE_MASK) != 0u;
     j->ref = ref;
     j->next = next;
     j->cfg = cfg;
@@ -111,8 +116,9 @@ static int32_t parabola_q8(int32_t rm, int32_t r0, int32_t rp, bool neg)
 
 /* Search template t (view tv) in NEXT: the whole of it for the origin
    (radius < 0), else the disk around (px, py) of that radius; place gets
-   the integer top-left found in NEXT. */
-static void search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py,
+   the integer top-left found in NEXT. With the mask, a disk whose area
+   holds the mask value is not searched: false (t untouched). */
+static bool search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py,
                    int64_t radius, ssda_composite_tp_t *t, uint64_t *ops, int64_t *place)
 {
     ssda_ncc_config_t c;
@@ -141,6 +147,9 @@ static void search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py
         c.radius = (uint16_t)(r > 65535 ? 65535 : r);
         c.predict_x = (int32_t)(px - x0);
         c.predict_y = (int32_t)(py - y0);
+        if (j->mask && ssda__view_holds(&area, j->cfg->mask_value)) {
+            return false;
+        }
     }
     ssda__ncc_search(&area, tv, &c, &res);
     *ops += res.pixel_ops;
@@ -155,14 +164,29 @@ static void search(const job_t *j, const ssda_view_t *tv, int64_t px, int64_t py
         t->dy += parabola_q8(res.around_q30[1], res.around_q30[4], res.around_q30[7],
                              res.rho_q30 < 0);
     }
+    return true;
 }
 
-/* Pass 1: every template's place, variance and status; the origin (the
-   largest variance, ties to the smallest k), or UINT32_MAX if none. */
-static uint32_t measure(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops)
+/* The origin: the OK template of largest variance (ties to the smallest
+   k), or UINT32_MAX if none. */
+static uint32_t pick_origin(const job_t *j, const ssda_composite_tp_t *out)
 {
     uint32_t k, origin = UINT32_MAX;
     uint64_t best = 0u;
+    for (k = 0u; k < j->cols * j->rows; k++) {
+        if (out[k].status == (uint8_t)SSDA_COMPOSITE_OK && out[k].var > best) {
+            best = out[k].var;
+            origin = k;
+        }
+    }
+    return origin;
+}
+
+/* Pass 1: every template's place, variance and status (MASKED before FLAT,
+   as in the grid tracking). */
+static void measure(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops)
+{
+    uint32_t k;
     for (k = 0u; k < j->cols * j->rows; k++) {
         ssda_composite_tp_t *t = &out[k];
         ssda__ncc_win_t w;
@@ -175,12 +199,37 @@ static uint32_t measure(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops)
         t->y = (uint16_t)y;
         t->var = w.var_w;
         t->status = (uint8_t)(w.var_w >= j->min_var ? SSDA_COMPOSITE_OK : SSDA_COMPOSITE_FLAT);
-        if (t->status == (uint8_t)SSDA_COMPOSITE_OK && w.var_w > best) {
-            best = w.var_w;
-            origin = k;
+        if (j->mask && ssda__view_holds(&tv, j->cfg->mask_value)) {
+            t->status = (uint8_t)SSDA_COMPOSITE_MASKED;
         }
     }
-    return origin;
+}
+
+/* The origin's search over the whole of NEXT (p0: its place there). With
+   the mask, an origin whose match holds the mask value is MASKED and the
+   next in rank is tried. The origin's index, or UINT32_MAX if none is left. */
+static uint32_t search_origin(const job_t *j, ssda_composite_tp_t *out, uint64_t *ops,
+                              int64_t *p0)
+{
+    uint32_t k;
+    for (k = pick_origin(j, out); k != UINT32_MAX; k = pick_origin(j, out)) {
+        ssda_composite_tp_t *o = &out[k];
+        ssda_view_t tv, at;
+        uint32_t x, y;
+        template_view(j, k, &tv, &x, &y);
+        (void)search(j, &tv, 0, 0, -1, o, ops, p0);
+        (void)ssda_view_roi(&at, j->next, (uint16_t)p0[0], (uint16_t)p0[1], (uint16_t)j->tp,
+                            (uint16_t)j->tp);
+        if (!j->mask || !ssda__view_holds(&at, j->cfg->mask_value)) {
+            o->origin = 1u;
+            return k;
+        }
+        o->status = (uint8_t)SSDA_COMPOSITE_MASKED;
+        o->dx = 0;
+        o->dy = 0;
+        o->rho_q30 = 0;
+    }
+    return UINT32_MAX;
 }
 
 /* ceil(radius_q8 |v| / 256), at least min_radius: |v| rounded up first. */
@@ -204,6 +253,7 @@ int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
 {
     job_t j;
     ssda_composite_result_t res;
+    int64_t p0[2] = {0, 0};
     int err;
     if (ref == NULL || next == NULL || cfg == NULL || out == NULL || result == NULL ||
         cfg->work == NULL) {
@@ -217,16 +267,14 @@ int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
     res.cols = (uint16_t)j.cols;
     res.rows = (uint16_t)j.rows;
     res.count = j.cols * j.rows;
-    res.origin = measure(&j, out, &res.pixel_ops);
+    measure(&j, out, &res.pixel_ops);
+    res.origin = search_origin(&j, out, &res.pixel_ops, p0);
     if (res.origin != UINT32_MAX) {
         ssda_composite_tp_t *o = &out[res.origin];
-        int64_t p0[2], place[2], sum = 0; /* sum of rho: |.| < 2^30 * 2^32 */
+        int64_t place[2], sum = 0; /* sum of rho: |.| < 2^30 * 2^32 */
         uint32_t k;
         ssda_view_t tv;
         uint32_t x, y;
-        template_view(&j, res.origin, &tv, &x, &y);
-        o->origin = 1u;
-        search(&j, &tv, 0, 0, -1, o, &res.pixel_ops, p0);
         for (k = 0u; k < res.count; k++) {
             ssda_composite_tp_t *t = &out[k];
             int64_t vx, vy, px, py;
@@ -242,7 +290,9 @@ int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
                 continue;
             }
             template_view(&j, k, &tv, &x, &y);
-            search(&j, &tv, px, py, disk_radius(&j, vx, vy), t, &res.pixel_ops, place);
+            if (!search(&j, &tv, px, py, disk_radius(&j, vx, vy), t, &res.pixel_ops, place)) {
+                t->status = (uint8_t)SSDA_COMPOSITE_MASKED;
+            }
         }
         for (k = 0u; k < res.count; k++) {
             if (out[k].status == (uint8_t)SSDA_COMPOSITE_OK) {

@@ -80,6 +80,23 @@ static bool has_value_u16(const uint16_t *p, uint32_t n, uint32_t v)
     return hits_u16(p, n, t) != 0u;
 }
 
+/* Whether a view in RAM holds the value v anywhere: the mask test above,
+   row by row (ssda_composite's SSDA_COMPOSITE_MASK uses it, so that the
+   composite matching and the grid tracking mask by the same test). */
+bool ssda__view_holds(const ssda_view_t *view, uint32_t v)
+{
+    const uint8_t *row = (const uint8_t *)view->data;
+    uint32_t y;
+    for (y = 0u; y < view->height; y++, row += view->stride) {
+        if (view->format == (uint8_t)SSDA_PIX_U8 ? has_value_u8(row, view->width, v)
+                                                 : has_value_u16((const uint16_t *)(const void *)row,
+                                                                 view->width, v)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 /* Pixels > thr in a span: <= n <= 65535. */
 static uint32_t count_above_u8(const uint8_t *p, uint32_t n, uint32_t thr)
 {

@@ -26,6 +26,10 @@ static inline bool ssda__track_out_fits(uint32_t count, size_t out_count)
     return out_count >= count;
 }
 
+/* Whether the view (valid, in RAM) holds the value v: the grid tracking's
+   mask test, shared with ssda_composite_match's mask. */
+SSDA_INTERNAL bool ssda__view_holds(const ssda_view_t *view, uint32_t v);
+
 /* The zero-filled options (the seed's grid, AUTO): what a NULL
    configuration means, one copy for the whole library. */
 SSDA_INTERNAL extern const ssda_track_config_t ssda__track_defaults;

@@ -236,6 +236,67 @@ static void test_flat_and_edge_templates(void)
     check_against_reference(&cfg);
 }
 
+/* SSDA_COMPOSITE_MASK: fill (250) in the left 20 columns of both images.
+   Templates over it are MASKED, the others keep the true motion; without
+   the mask some template over the fill's edge is matched. An origin whose
+   match holds fill is MASKED and the next in rank takes its place. */
+static void test_mask_fill(void)
+{
+    ssda_composite_config_t cfg = config(0, 0, W, H);
+    ssda_view_t ref, next;
+    ssda_composite_result_t res;
+    uint32_t x, y, k, edge_ok = 0, k0;
+    make_pair(5u, 3, -2, 3, -2, W);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            if (x < 20u) {
+                g_ref[y][x] = 250u;
+                g_next[y][x] = 250u;
+            } else if (g_ref[y][x] == 250u) {
+                g_ref[y][x] = 249u;
+            }
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&ref, g_ref, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&next, g_next, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+    for (k = 0; k < res.count; k++) {
+        edge_ok += g_tp[k].x < 20u && g_tp[k].status == SSDA_COMPOSITE_OK;
+    }
+    TEST_ASSERT_TRUE(edge_ok > 0u); /* the defect the mask removes */
+    cfg.flags = SSDA_COMPOSITE_MASK;
+    cfg.mask_value = 250u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+    TEST_ASSERT_TRUE(res.origin < res.count && g_tp[res.origin].x >= 20u);
+    TEST_ASSERT_TRUE(res.ok > 20u);
+    for (k = 0; k < res.count; k++) {
+        if (g_tp[k].x < 20u) {
+            TEST_ASSERT_EQUAL_UINT8(SSDA_COMPOSITE_MASKED, g_tp[k].status);
+        }
+        if (g_tp[k].status == SSDA_COMPOSITE_OK) {
+            TEST_ASSERT_EQUAL_INT32(3 * 256, g_tp[k].dx);
+            TEST_ASSERT_EQUAL_INT32(-2 * 256, g_tp[k].dy);
+        } else {
+            TEST_ASSERT_EQUAL_INT32(0, g_tp[k].dx);
+            TEST_ASSERT_EQUAL_INT32(0, g_tp[k].rho_q30);
+        }
+    }
+    /* one fill pixel in the origin's match: it still matches there (rho
+       near 1), so it is MASKED and the next in rank is the origin */
+    k0 = res.origin;
+    g_next[g_tp[k0].y - 2u + 5u][g_tp[k0].x + 3u + 5u] = 250u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+    TEST_ASSERT_EQUAL_UINT8(SSDA_COMPOSITE_MASKED, g_tp[k0].status);
+    TEST_ASSERT_EQUAL_UINT8(0, g_tp[k0].origin);
+    TEST_ASSERT_TRUE(res.origin != k0 && res.origin < res.count);
+    TEST_ASSERT_EQUAL_UINT8(SSDA_COMPOSITE_OK, g_tp[res.origin].status);
+    TEST_ASSERT_EQUAL_UINT8(1, g_tp[res.origin].origin);
+    TEST_ASSERT_TRUE(g_tp[res.origin].var <= g_tp[k0].var);
+    /* a mask value beyond 8-bit samples */
+    cfg.mask_value = 256u;
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+}
+
 /* Sub-pixel: a shift of (2.5, -1.25) px by linear interpolation. */
 static void test_subpixel_vectors(void)
 {
@@ -338,7 +399,7 @@ static void test_errors_leave_outputs_untouched(void)
     cfg.metric = 2;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
     cfg.metric = 0;
-    cfg.flags = 2;
+    cfg.flags = 4; /* 1 and 2 are SUBPIXEL and MASK */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
     cfg.flags = 0;
     cfg.roi_x = W;
@@ -386,6 +447,7 @@ int main(void)
     RUN_TEST(test_uniform_motion_with_gain_and_offset);
     RUN_TEST(test_sheared_field_and_radius_rule);
     RUN_TEST(test_flat_and_edge_templates);
+    RUN_TEST(test_mask_fill);
     RUN_TEST(test_subpixel_vectors);
     RUN_TEST(test_templates_feed_relaxation);
     RUN_TEST(test_errors_leave_outputs_untouched);

@@ -27,6 +27,23 @@
  * NEXT is clipped to it; a template with no position left is
  * SSDA_COMPOSITE_EDGE.
  *
+ * MASK (flag SSDA_COMPOSITE_MASK; the grid tracking's SSDA_TRACK_MASK, see
+ * ssda/track.h, by the same test): pixels equal to mask_value are fill (no
+ * data: GOES-16's 4095), and nothing that reads one is trusted, because a
+ * fill pixel could attract or repel the match:
+ *   - a template holding mask_value is SSDA_COMPOSITE_MASKED (not matched,
+ *     never the origin; tested before the flat test, as in the tracking);
+ *   - a template other than the origin whose search area (the part of NEXT
+ *     its search reads: the circle's bounding box plus the template) holds
+ *     mask_value is SSDA_COMPOSITE_MASKED (tested after EDGE), as a track
+ *     window whose search area holds it;
+ *   - the origin's area is the whole of NEXT, which that rule would mask
+ *     whenever NEXT holds any fill: instead the origin is searched over the
+ *     whole of NEXT, and if the T x T placement it matched holds mask_value
+ *     it is SSDA_COMPOSITE_MASKED and the next template in rank (largest
+ *     variance left) becomes the origin, searched likewise (each try costs
+ *     one whole-NEXT search). No origin left: every entry FLAT or MASKED.
+ *
  * SET SCORE: the mean rho of the templates matched (the seed's "total
  * evaluation value of the TP group").
  *
@@ -57,11 +74,14 @@ extern "C" {
 typedef enum {
     SSDA_COMPOSITE_OK = 0,   /* matched: dx, dy, rho valid */
     SSDA_COMPOSITE_FLAT = 1, /* standard deviation below min_std: not matched */
-    SSDA_COMPOSITE_EDGE = 2  /* its search circle holds no position of NEXT */
+    SSDA_COMPOSITE_EDGE = 2, /* its search circle holds no position of NEXT */
+    SSDA_COMPOSITE_MASKED = 3 /* SSDA_COMPOSITE_MASK: it, its search area or (the
+                                 origin) its match holds mask_value */
 } ssda_composite_status_t;
 
 /* Flags. */
 #define SSDA_COMPOSITE_SUBPIXEL 0x01u /* parabolic sub-pixel vectors */
+#define SSDA_COMPOSITE_MASK 0x02u     /* mask_value is fill (MASK, above) */
 
 typedef struct {
     uint16_t tp;           /* template side T, px (0 = 20), <= 256 */
@@ -73,7 +93,9 @@ typedef struct {
     uint16_t min_std_q8;   /* templates with a smaller standard deviation, Q8.8
                               sample units, are FLAT (0: only truly flat ones) */
     uint8_t metric;        /* SSDA_NCC_RHO or SSDA_NCC_ABS */
-    uint8_t flags;         /* SSDA_COMPOSITE_SUBPIXEL or 0 */
+    uint8_t flags;         /* SSDA_COMPOSITE_SUBPIXEL | SSDA_COMPOSITE_MASK, or 0 */
+    uint16_t mask_value;   /* SSDA_COMPOSITE_MASK: the fill value, <= the
+                              format's maximum (GOES-16: 4095) */
     void *work;            /* caller buffer, 8-byte aligned, */
     size_t work_size;      /*   >= SSDA_COMPOSITE_WORK_SIZE(next_w, tp) bytes */
 } ssda_composite_config_t;
@@ -121,9 +143,12 @@ typedef struct {
  *                    is smaller than a template
  *   SSDA_ERR_FORMAT  ref and next formats differ
  *   SSDA_ERR_ARG     tp > 256, step 0 after defaults (never), unknown metric
- *                    or flags
+ *                    or flags; SSDA_COMPOSITE_MASK with a mask_value above
+ *                    the format's maximum (255 for SSDA_PIX_U8)
  *   SSDA_ERR_BUFFER  out_count below the grid; work too small or misaligned
- * If no template has texture, every entry is FLAT and result->ok = 0.
+ * If no template has texture (or, with the mask, none is left unmasked),
+ * every entry is FLAT or MASKED, result->origin is UINT32_MAX and
+ * result->ok = 0.
  */
 int ssda_composite_match(const ssda_view_t *ref, const ssda_view_t *next,
                          const ssda_composite_config_t *cfg, ssda_composite_tp_t *out,

@@ -32,6 +32,10 @@ static const char help[] =
     "  --min-radius R     smallest circle radius, px (default 3)\n"
     "  --min-std V        skip templates whose standard deviation is below V (sample\n"
     "                     units; default: only flat ones)\n"
+    "  --mask-value V     V is fill (no data; GOES-16: 4095): templates holding it, or\n"
+    "                     whose search area in NEXT holds it, are 'masked' (not matched);\n"
+    "                     an origin whose match holds it is masked and the next in rank\n"
+    "                     becomes the origin; the overlay's contrast leaves V out\n"
     "  --metric M         ncc (default: the largest rho) or absncc (the largest |rho|:\n"
     "                     inverted contrast matches too)\n"
     "  --subpixel         parabolic sub-pixel vectors\n"
@@ -39,7 +43,8 @@ static const char help[] =
     "                     seed's section 4; 0 = no cleaning, the default)\n"
     "  --relax-keep       with --relax: keep vectors whose most likely class is their own\n"
     "  --relax-median     clean by the normalised median test (Westerweel & Scarano) instead\n"
-    "  --json FILE        every template as JSON (\"-\" = stdout): x, y, status, dx, dy,\n"
+    "  --json FILE        every template as JSON (\"-\" = stdout): x, y, status (ok, flat,\n"
+    "                     edge, masked), dx, dy,\n"
     "                     rho, std; with cleaning also relax_dx, relax_dy, changed\n"
     "  --overlay FILE.png REF with the vectors: yellow as matched, pink those the\n"
     "                     cleaning changed, cyan as cleaned\n"
@@ -117,6 +122,12 @@ static int take_option(cli_args_t *a, void *opts)
             a->bad = cli_usage_error(a->cmd, "bad --metric '%s' (ncc, absncc)", v);
         }
         o->cfg.metric = (uint8_t)(v != NULL && strcmp(v, "absncc") == 0 ? SSDA_NCC_ABS : SSDA_NCC_RHO);
+    } else if (cli_opt(a, "--mask-value", &v)) {
+        if (v != NULL && cli_parse_u32(v, 0, 65535, &u) != 0) {
+            a->bad = cli_usage_error(a->cmd, "bad --mask-value '%s' (0..65535)", v);
+        }
+        o->cfg.flags |= SSDA_COMPOSITE_MASK;
+        o->cfg.mask_value = (uint16_t)u;
     } else if (cli_flag(a, "--subpixel")) {
         o->cfg.flags |= SSDA_COMPOSITE_SUBPIXEL;
     } else if (cli_opt(a, "--relax", &v)) {
@@ -200,6 +211,11 @@ static int run(const flow_opts_t *o, flow_run_t *r)
     if (cli_load_png_pair("flow", o->ref_path, o->next_path, &r->ref, &r->next) != 0) {
         return CLI_INPUT;
     }
+    if ((cfg.flags & SSDA_COMPOSITE_MASK) != 0u && cfg.mask_value > gray_image_max(&r->ref)) {
+        /* as ssda track says it */
+        return cli_usage_error("flow", "--mask-value %u is beyond these %u-bit images",
+                               cfg.mask_value, gray_image_max(&r->ref) == 255 ? 8 : 16);
+    }
     if (gray_image_view(&r->ref, &rv) != SSDA_OK || gray_image_view(&r->next, &nv) != SSDA_OK ||
         r->next.width < tp) {
         return cli_input_error("flow", "NEXT (%u px wide) is narrower than a template", r->next.width);
@@ -274,7 +290,10 @@ static int clean(const flow_opts_t *o, flow_run_t *r)
 
 static const char *status_name(uint8_t s)
 {
-    return s == SSDA_COMPOSITE_OK ? "ok" : s == SSDA_COMPOSITE_FLAT ? "flat" : "edge";
+    return s == SSDA_COMPOSITE_OK       ? "ok"
+           : s == SSDA_COMPOSITE_FLAT   ? "flat"
+           : s == SSDA_COMPOSITE_MASKED ? "masked"
+                                        : "edge";
 }
 
 /* Template k of the "templates" array (made while printing). */
@@ -307,6 +326,15 @@ static cJSON *template_item(void *ctx, size_t k)
     return item;
 }
 
+static uint32_t count_masked(const flow_run_t *r)
+{
+    uint32_t k, n = 0;
+    for (k = 0; k < r->res.count; k++) {
+        n += r->tp[k].status == SSDA_COMPOSITE_MASKED;
+    }
+    return n;
+}
+
 static cJSON *json_doc(const flow_opts_t *o, const flow_run_t *r)
 {
     cJSON *doc = json_out_object(), *reg;
@@ -328,6 +356,11 @@ static cJSON *json_doc(const flow_opts_t *o, const flow_run_t *r)
         cJSON_AddNumberToObject(reg, "w", c->roi_w != 0u ? c->roi_w : r->ref.width - c->roi_x);
         cJSON_AddNumberToObject(reg, "h", c->roi_h != 0u ? c->roi_h : r->ref.height - c->roi_y);
     }
+    if ((c->flags & SSDA_COMPOSITE_MASK) != 0u) {
+        cJSON_AddNumberToObject(doc, "mask_value", c->mask_value);
+    } else {
+        cJSON_AddNullToObject(doc, "mask_value");
+    }
     cJSON_AddStringToObject(doc, "metric", c->metric == SSDA_NCC_ABS ? "absncc" : "ncc");
     json_out_add_fixed(doc, "radius", (c->radius_q8 != 0u ? c->radius_q8 : 64u) / 256.0, 4);
     cJSON_AddNumberToObject(doc, "min_radius", c->min_radius != 0u ? c->min_radius : 3u);
@@ -335,6 +368,7 @@ static cJSON *json_doc(const flow_opts_t *o, const flow_run_t *r)
     cJSON_AddNumberToObject(doc, "rows", r->res.rows);
     cJSON_AddNumberToObject(doc, "count", r->res.count);
     cJSON_AddNumberToObject(doc, "ok", r->res.ok);
+    cJSON_AddNumberToObject(doc, "masked", count_masked(r));
     if (r->res.origin != UINT32_MAX) {
         cJSON_AddNumberToObject(doc, "origin", r->res.origin);
     } else {
@@ -370,8 +404,10 @@ static int write_overlay(FILE *fp, const flow_opts_t *o, const flow_run_t *r)
         v[k].y = t->y + r->side / 2.0;
         v[k].dx = t->dx / 256.0;
         v[k].dy = t->dy / 256.0;
-        v[k].status = t->status == SSDA_COMPOSITE_OK ? DRAW_OK
-                      : t->status == SSDA_COMPOSITE_FLAT ? DRAW_FLAT : DRAW_EDGE;
+        v[k].status = t->status == SSDA_COMPOSITE_OK       ? DRAW_OK
+                      : t->status == SSDA_COMPOSITE_FLAT   ? DRAW_FLAT
+                      : t->status == SSDA_COMPOSITE_MASKED ? DRAW_MASKED
+                                                           : DRAW_EDGE;
         if (r->clean != NULL && (r->clean[k].flags & SSDA_RELAX_VALID) != 0u) {
             v[k].has_truth = 1;
             v[k].tdx = r->clean[k].dx_q8 / 256.0;
@@ -391,6 +427,8 @@ static int write_overlay(FILE *fp, const flow_opts_t *o, const flow_run_t *r)
     d.title = title;
     d.subtitle = sub;
     d.grid_step = o->cfg.step != 0u ? o->cfg.step : SSDA_COMPOSITE_DEFAULT_STEP;
+    d.have_mask = (o->cfg.flags & SSDA_COMPOSITE_MASK) != 0u; /* contrast without fill */
+    d.mask_value = o->cfg.mask_value;
     d.truth_label = o->median ? "after the median test" : "after relaxation";
     rc = draw_vectors_to(fp, o->overlay_path, &r->ref, v, r->res.count, &d, NULL, err, sizeof err);
     free(v);
@@ -403,12 +441,17 @@ static void summary(const flow_opts_t *o, const flow_run_t *r)
     printf("templates: %u of %u x %u px every %u px (%u x %u), %u matched\n", r->res.count,
            r->side, r->side, o->cfg.step != 0u ? o->cfg.step : SSDA_COMPOSITE_DEFAULT_STEP,
            r->res.cols, r->res.rows, r->res.ok);
+    if ((o->cfg.flags & SSDA_COMPOSITE_MASK) != 0u) {
+        printf("masked:    %u templates (value %u in the template, its search area or the "
+               "origin's match)\n", count_masked(r), o->cfg.mask_value);
+    }
     if (t != NULL) {
         printf("origin:    template %u at (%u, %u), moved (%.2f, %.2f) px, rho %.4f\n",
                r->res.origin, t->x, t->y, t->dx / 256.0, t->dy / 256.0,
                t->rho_q30 / 1073741824.0);
     } else {
-        printf("origin:    none (every template is flat)\n");
+        printf("origin:    none (every template is flat%s)\n",
+               (o->cfg.flags & SSDA_COMPOSITE_MASK) != 0u ? " or masked" : "");
     }
     printf("set score: mean rho %.4f; %llu pixel ops, %.3f s\n", r->res.mean_rho_q30 / 1073741824.0,
            (unsigned long long)r->res.pixel_ops, r->secs);

@@ -79,6 +79,32 @@ flow)
   run 2 flow r.png nb.png --metric sad && stderr_has "bad --metric 'sad'"
   run 2 flow r.png nb.png --relax-keep && stderr_has "--relax-keep needs --relax N"
   run 2 flow r.png nb.png --relax 5 --relax-median && stderr_has "not both"
+  # --mask-value (as track's): GOES-style 12-bit counts, 4095 = fill in the
+  # left 41 columns of both images (space does not move). Without the mask
+  # the fill's edge is the strongest texture: it becomes the origin, is
+  # matched where it stands, and its neighbours take its wrong vector.
+  "$gen" texture ca.png --size 160x120 --seed 6 --kind gray16 --max 2000
+  "$gen" texture cb.png --size 160x120 --seed 6 --kind gray16 --max 2000 --shift 2,-3
+  "$gen" texture ga.png --size 160x120 --seed 6 --kind gray16 --max 2000 --fill 4095,0,0,40,119
+  "$gen" texture gb.png --size 160x120 --seed 6 --kind gray16 --max 2000 --fill 4095,0,0,40,119 --shift 2,-3
+  run 0 flow ca.png cb.png --json c.json -q && "$flowtool" check c.json 2 -3 1.0 || fail "clean pair"
+  run 0 flow ga.png gb.png --json g.json --overlay g.png -q
+  "$flowtool" flow-mask g.json c.json 0 0 40 119 200 >/dev/null 2>&1 &&
+    fail "without --mask-value the fill was not matched: the test below proves nothing"
+  # with it: every template over the fill is 'masked', the other vectors are
+  # those of the pair without fill, the origin is a real one
+  run 0 flow ga.png gb.png --mask-value 4095 --json m.json --overlay m.png &&
+    "$flowtool" flow-mask m.json c.json 0 0 40 119 200 || fail "--mask-value 4095"
+  grep -q '"mask_value":4095' m.json && grep -q '"masked":[1-9]' m.json &&
+    grep -q '"mask_value":null' c.json || fail "JSON mask fields: $(head -c 400 m.json)"
+  grep -q "^masked: " out.txt || fail "summary lacks the masked count: $(cat out.txt)"
+  # the overlay's contrast leaves the fill out: brighter texture than with
+  # the fill in the stretch (4095 against textures of at most 2000)
+  lo=$("$flowtool" median g.png) && hi=$("$flowtool" median m.png) && [ "$hi" -ge $((lo + 15)) ] ||
+    fail "overlay contrast with the fill: median $lo, without it $hi"
+  run 2 flow ga.png gb.png --mask-value x && stderr_has "bad --mask-value 'x'"
+  run 2 flow r.png nb.png --mask-value 4095 && stderr_has "beyond these 8-bit images"
+  run 0 flow --help && grep -q -- "--mask-value V" out.txt || fail "help: --mask-value"
   run 0 flow --help && grep -q "composite template" out.txt || fail "help"
   # the overlay's colours as draw.c draws them (red is track's at_limit)
   grep -q "yellow as matched, pink those the" out.txt || fail "help: overlay colours"

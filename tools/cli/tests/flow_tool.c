@@ -200,6 +200,111 @@ static int check(int argc, char **argv)
     return 0;
 }
 
+/* median IN: the median luma (8-bit) of a PNG, printed. */
+static int median(int argc, char **argv)
+{
+    gray_image_t img;
+    char err[256];
+    size_t hist[256] = {0}, acc = 0, total;
+    uint32_t x, y, v;
+    if (argc != 1 || png_read_gray(argv[0], PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "flow_tool median: %s\n", argc == 1 ? err : "usage");
+        return 2;
+    }
+    for (y = 0; y < img.height; y++) {
+        for (x = 0; x < img.width; x++) {
+            hist[gray_image_get(&img, x, y)]++;
+        }
+    }
+    total = (size_t)img.width * img.height;
+    for (v = 0; v < 255u && (acc += hist[v]) < total / 2u; v++) {
+    }
+    printf("%u\n", v);
+    gray_image_free(&img);
+    return 0;
+}
+
+/* flow-mask MASKED.json CLEAN.json X0 Y0 X1 Y1 MINOK: MASKED.json is a flow
+   run with --mask-value on a pair whose rectangle X0..X1, Y0..Y1 (inclusive)
+   is fill in both images, CLEAN.json the run on the same pair without the
+   fill. Every template overlapping the fill must be "masked", every "ok"
+   one must be ok in CLEAN.json with the same vector, and at least MINOK
+   must be ok. 1 (and why) otherwise. */
+static int flow_mask(int argc, char **argv)
+{
+    json_error_t je;
+    json_t *m, *c, *ml, *cl;
+    long fx0, fy0, fx1, fy1, tp, minok, ok = 0, bad = 0, overlap = 0;
+    size_t i, n;
+    if (argc != 7) {
+        fprintf(stderr, "flow_tool flow-mask: usage\n");
+        return 2;
+    }
+    m = json_load_file(argv[0], 0, &je);
+    c = json_load_file(argv[1], 0, &je);
+    if (m == NULL || c == NULL) {
+        fprintf(stderr, "flow_tool flow-mask: unreadable JSON\n");
+        return 1;
+    }
+    fx0 = atol(argv[2]);
+    fy0 = atol(argv[3]);
+    fx1 = atol(argv[4]);
+    fy1 = atol(argv[5]);
+    minok = atol(argv[6]);
+    tp = (long)json_integer_value(json_object_get(m, "tp"));
+    ml = json_object_get(m, "templates");
+    cl = json_object_get(c, "templates");
+    n = json_array_size(ml);
+    if (n == 0 || n != json_array_size(cl)) {
+        fprintf(stderr, "flow_tool flow-mask: %zu and %zu templates\n", n, json_array_size(cl));
+        return 1;
+    }
+    for (i = 0; i < n; i++) {
+        json_t *t = json_array_get(ml, i), *u = json_array_get(cl, i);
+        const char *st = json_string_value(json_object_get(t, "status"));
+        const char *su = json_string_value(json_object_get(u, "status"));
+        long x = (long)json_integer_value(json_object_get(t, "x"));
+        long y = (long)json_integer_value(json_object_get(t, "y"));
+        int in_fill = x <= fx1 && x + tp - 1 >= fx0 && y <= fy1 && y + tp - 1 >= fy0;
+        overlap += in_fill;
+        if (st == NULL || su == NULL) {
+            bad++;
+            continue;
+        }
+        if (in_fill && strcmp(st, "masked") != 0) {
+            fprintf(stderr, "flow_tool flow-mask: template at (%ld, %ld) holds fill but is %s "
+                    "(dx %g, dy %g, rho %g)\n", x, y, st,
+                    json_real_value(json_object_get(t, "dx")),
+                    json_real_value(json_object_get(t, "dy")),
+                    json_real_value(json_object_get(t, "rho")));
+            bad++;
+        }
+        if (strcmp(st, "ok") != 0) {
+            continue;
+        }
+        ok++;
+        if (strcmp(su, "ok") != 0 ||
+            json_real_value(json_object_get(t, "dx")) != json_real_value(json_object_get(u, "dx")) ||
+            json_real_value(json_object_get(t, "dy")) != json_real_value(json_object_get(u, "dy"))) {
+            fprintf(stderr, "flow_tool flow-mask: template at (%ld, %ld): (%g, %g), without "
+                    "the fill %s (%g, %g)\n", x, y, json_real_value(json_object_get(t, "dx")),
+                    json_real_value(json_object_get(t, "dy")), su,
+                    json_real_value(json_object_get(u, "dx")),
+                    json_real_value(json_object_get(u, "dy")));
+            bad++;
+        }
+    }
+    printf("%ld ok, %ld overlapping the fill, %ld wrong\n", ok, overlap, bad);
+    if (ok < minok || overlap == 0) {
+        fprintf(stderr, "flow_tool flow-mask: %ld ok (want %ld), %ld overlapping the fill\n",
+                ok, minok, overlap);
+        bad++;
+    }
+    json_decref(m);
+    json_decref(c);
+    return bad != 0;
+}
+
 typedef struct {
     gray_image_t f, s;
     long ww, wh, sw, sh;
@@ -471,6 +576,12 @@ int main(int argc, char **argv)
     if (argc >= 2 && !strcmp(argv[1], "halfshift")) {
         return halfshift(argc - 2, argv + 2);
     }
+    if (argc >= 2 && !strcmp(argv[1], "median")) {
+        return median(argc - 2, argv + 2);
+    }
+    if (argc >= 2 && !strcmp(argv[1], "flow-mask")) {
+        return flow_mask(argc - 2, argv + 2);
+    }
     if (argc >= 2 && !strcmp(argv[1], "check")) {
         return check(argc - 2, argv + 2);
     }
@@ -483,6 +594,7 @@ int main(int argc, char **argv)
     fprintf(stderr, "usage: flow_tool gain IN OUT G O | crop IN OUT X Y W H | "
                     "halfshift IN A B D ROW | check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
                     "track-check FILE DX DY MINFRAC | shrink IN OUT N | "
-                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]] | track-status FILE\n");
+                    "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]] | track-status FILE | "
+                    "flow-mask MASKED CLEAN X0 Y0 X1 Y1 MINOK | median IN\n");
     return 2;
 }
