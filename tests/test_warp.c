@@ -461,6 +461,38 @@ static void test_errors(void)
     map.order = 5;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
     map.order = 1;
+    /* a map whose centre or scale no longer covers its grid (poly.h: the
+       grid lies within |X - cx| <= 2^kx): refused. Accepted before, its
+       cubic terms wrapped the 128-bit form and the tile bounds overflowed
+       int64 (UBSan: signed overflow in warp.c). */
+    {
+        ssda_poly_t bad = map;
+        ssda_source_config_t geo;
+        memset(&geo, 0, sizeof geo);
+        geo.width = SW;
+        geo.height = SH;
+        geo.format = SSDA_PIX_U16;
+        c.map = &bad;
+        bad.cx = 0; /* OW - 1 = 179 > 2^kx = 128 */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad = map;
+        bad.kx = 6; /* 2^6 < 90 */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        bad = map;
+        bad.cy = OH + 200;
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        bad = map;
+        bad.ref_h = (uint16_t)(2u * OH + 1u); /* rows beyond cy + 2^ky */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad = map;
+        bad.cx -= 30; /* moved, but every column still within 2^kx = 128 */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad.cx = map.cx + 39; /* 129: column 0 leaves the domain */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        TEST_ASSERT_EQUAL_MEMORY(&poison, &job, sizeof job);
+        c.map = &map;
+    }
     c.row_size = OW * 2 - 1;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_warp_init(&job, &c, &src));
     c.row_size = sizeof g_rowbuf - 1;
