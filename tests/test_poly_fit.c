@@ -311,6 +311,42 @@ static void test_rejection_tie_lowest_index(void)
     }
 }
 
+/* The tie rule where it decides the outcome: 5 pairs at the corners of a
+   square and its centre, order 1 (terms + 2 pairs: one drop at most). The
+   two corners of one diagonal are 10 px off, the rest exact: by the
+   point symmetry of the layout both have s^2 = 1.2 e^2, the largest, and
+   only the one of lower index may go; listed in either order. (The
+   12-pair test above drops both of its tied pairs, whichever first.) */
+static void test_rejection_tie_decides_which(void)
+{
+    static const int32_t pos[5][2] = {{300, 200}, {700, 200}, {500, 400}, {300, 600}, {700, 600}};
+    ssda_poly_fit_config_t cfg = {1, 512};
+    ssda_poly_fit_result_t res;
+    ssda_poly_t p;
+    int order, k;
+    for (order = 0; order < 2; order++) {
+        /* order 0: the diagonal's corners at indices 0 and 4; order 1:
+           the list reversed, so they are at 4 and 0 the other way */
+        for (k = 0; k < 5; k++) {
+            const int i = order == 0 ? k : 4 - k;
+            const int32_t off = (i == 0 || i == 4) ? 10 * 256 : 0;
+            g_pairs[k].ref_x_q8 = pos[i][0] * 256;
+            g_pairs[k].ref_y_q8 = pos[i][1] * 256;
+            g_pairs[k].mov_x_q8 = pos[i][0] * 256 + off;
+            g_pairs[k].mov_y_q8 = pos[i][1] * 256;
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_fit(g_pairs, 5, 1000, 800, &cfg, &p, g_res, g_used,
+                                                     &res, g_work, sizeof g_work));
+        TEST_ASSERT_EQUAL_UINT16(1, res.rejected);
+        TEST_ASSERT_EQUAL_UINT8(0, g_used[0]);
+        for (k = 1; k < 5; k++) {
+            TEST_ASSERT_EQUAL_UINT8(1, g_used[k]);
+        }
+        /* the other four (three on the other diagonal) fit exactly */
+        TEST_ASSERT_EQUAL_UINT32(0, res.max_q8);
+    }
+}
+
 /* The worst-case jobs' pairs (16384, 2048 on the boards), shared by the
    two tests that need them: at the four corners of a 65535 x 65535 grid,
    displacements alternating +-2^22 px (the int32 Q8 extremes +-2^30). */
@@ -837,6 +873,7 @@ int main(void)
     RUN_TEST(test_fig9_no_rejection);
     RUN_TEST(test_rejection_stops_at_minimum);
     RUN_TEST(test_rejection_tie_lowest_index);
+    RUN_TEST(test_rejection_tie_decides_which);
     RUN_TEST(test_worst_case_sums);
     RUN_TEST(test_errors_leave_outputs);
     RUN_TEST(test_degenerate_pairs);
