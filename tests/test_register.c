@@ -780,6 +780,17 @@ static void test_errors(void)
     }
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 15, NULL, g_work, sizeof g_work));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, SSDA_REGISTER_WORK_SIZE(20, 40, 1) - 1));
+    {
+        /* the size macro takes the config's fields as they are: 0 = the
+           defaults (before, 0 divided by zero in SSDA_NCC_WORK_SIZE) */
+        volatile uint16_t w0 = cfg.window, s0 = cfg.search;
+        const size_t need = SSDA_REGISTER_WORK_SIZE(w0, s0, 1);
+        TEST_ASSERT_EQUAL_UINT16(0, w0);
+        TEST_ASSERT_EQUAL_UINT64(SSDA_REGISTER_WORK_SIZE(20, 40, 1), need);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, need));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, need - 1));
+        memset(g_pts, 0x5A, sizeof g_pts);
+    }
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, (uint8_t *)g_work + 4, sizeof g_work - 8));
     cfg.grid_x = 13; /* 240 / 13 = 18 < 20 */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 64, NULL, g_work, sizeof g_work));
