@@ -28,7 +28,8 @@ static int32_t sin_q15(uint32_t phase)
 {
     static const int64_t a1 = 1686624012, a3 = -693522229, a5 = 85292125, a7 = -4652721; /* Q30 */
     const uint32_t quarter = phase >> 30;           /* 0..3 */
-    int64_t t = (int64_t)(phase & 0x3FFFFFFFu);     /* position in the quarter, Q30 */
+    const uint32_t pos = phase & 0x3FFFFFFFu;       /* position in the quarter, Q30 */
+    int64_t t = (int64_t)pos;
     int64_t t2, s;
     if ((quarter & 1u) != 0u) {
         t = (int64_t)0x40000000 - t; /* falling quarter: sin(pi - a); 1..2^30 */
