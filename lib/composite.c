@@ -92,8 +92,12 @@ static void template_view(const job_t *j, uint32_t k, ssda_view_t *v, uint32_t *
 }
 
 /* Sub-pixel offset, Q8 in [-128, 128], of the peak of a parabola through
-   r_m, r_0, r_p (Q2.30, r_0 the largest) at -1, 0, +1: 0 where a neighbour
-   is missing or the three do not make a peak. */
+   r_m, r_0, r_p (Q2.30) at -1, 0, +1: 0 where a neighbour is missing or
+   the three do not make a peak. r_0 is the best of the search, but a
+   neighbour outside the disk (inside its bounding box) may be larger: the
+   vertex may then lie far beyond +-1/2 px, so the offset is clamped before
+   the division (a quotient of 2^32 or more would differ between the
+   divide of the compiler, modulo 2^32, and ssda__div64_32, saturated). */
 static int32_t parabola_q8(int32_t rm, int32_t r0, int32_t rp, bool neg)
 {
     int64_t a, b, num, den, q;
@@ -108,10 +112,13 @@ static int32_t parabola_q8(int32_t rm, int32_t r0, int32_t rp, bool neg)
     if (den <= 0) {
         return 0;
     }
-    num = (b - a) * 256; /* |.| < 2^37 */
+    num = (b - a) * 256; /* |.| < 2^39 */
+    if (num >= 128 * den || -num >= 128 * den) {
+        return num >= 0 ? 128 : -128;
+    }
     q = num >= 0 ? (int64_t)SSDA_DIV64_32((uint64_t)num, (uint32_t)den)
                  : -(int64_t)SSDA_DIV64_32((uint64_t)-num, (uint32_t)den);
-    return (int32_t)(q > 128 ? 128 : (q < -128 ? -128 : q));
+    return (int32_t)q; /* |q| < 128 */
 }
 
 /* Search template t (view tv) in NEXT: the whole of it for the origin

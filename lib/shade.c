@@ -21,17 +21,19 @@ static int64_t mul_q30(int64_t a, int64_t b)
 /* sin(2 pi phase / 2^32) in Q15 ([-32768, 32768]): quarter-wave symmetry
    and an odd 7th-order polynomial in t (t = 1: a quarter turn), fitted
    minimax on [0, 1] (0.02 LSB of Q15 off in 64-bit reference arithmetic; the rounding of the
-   Q30 Horner steps adds under 0.01). */
+   Q30 Horner steps adds under 0.01), so within 0.53 LSB of the true sine
+   after the final rounding. t takes all 30 bits of the position in the
+   quarter (keeping only its top 14 would put it up to 3.6 LSB off). */
 static int32_t sin_q15(uint32_t phase)
 {
     static const int64_t a1 = 1686624012, a3 = -693522229, a5 = 85292125, a7 = -4652721; /* Q30 */
     const uint32_t quarter = phase >> 30;           /* 0..3 */
-    uint32_t f = (phase >> 16) & 0x3FFFu;           /* position in the quarter, Q14 */
-    int64_t t, t2, s;
+    const uint32_t pos = phase & 0x3FFFFFFFu;       /* position in the quarter, Q30 */
+    int64_t t = (int64_t)pos;
+    int64_t t2, s;
     if ((quarter & 1u) != 0u) {
-        f = 0x4000u - f; /* falling quarter: sin(pi - a) */
+        t = (int64_t)0x40000000 - t; /* falling quarter: sin(pi - a); 1..2^30 */
     }
-    t = (int64_t)f * 65536;                         /* Q30, 0..2^30 */
     t2 = mul_q30(t, t);                             /* <= 2^30 */
     s = a5 + mul_q30(a7, t2);                       /* Horner: |s| < 2^31, products < 2^62 */
     s = a3 + mul_q30(s, t2);

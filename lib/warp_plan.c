@@ -65,6 +65,17 @@ static void choose(const ssda_poly_t *map, const plan_geo_t *g, size_t room, uin
     *m = min_h;
 }
 
+/* The map's grid lies inside its domain on one axis: |X - c| <= 2^k for
+   X = 0 .. size - 1 (true of every map from ssda_poly_init or
+   ssda_poly_fit). The row stepping and the tile bounds rely on it: beyond
+   it the 128-bit integer form of the map (poly_internal.h) can wrap. */
+static bool grid_in_domain(uint32_t size, int32_t c, uint32_t k)
+{
+    const int64_t reach = ssda__pow2(k);
+    return size > 0u && (int64_t)c >= -reach && (int64_t)c <= reach &&
+           (int64_t)size - 1 - (int64_t)c <= reach && (int64_t)size - 1 - (int64_t)c >= -reach;
+}
+
 int ssda_warp_plan(const ssda_poly_t *map, uint8_t resample, const ssda_source_config_t *src,
                    uint16_t tile_w, uint16_t tile_h, ssda_warp_plan_t *plan)
 {
@@ -74,7 +85,8 @@ int ssda_warp_plan(const ssda_poly_t *map, uint8_t resample, const ssda_source_c
     if (map == NULL || src == NULL || plan == NULL) {
         return SSDA_ERR_NULL;
     }
-    if (!ssda__poly_valid(map) || map->ref_w == 0u || map->ref_h == 0u ||
+    if (!ssda__poly_valid(map) || !grid_in_domain(map->ref_w, map->cx, map->kx) ||
+        !grid_in_domain(map->ref_h, map->cy, map->ky) ||
         resample > (uint8_t)SSDA_WARP_BILINEAR || tile_w > map->ref_w || tile_h > map->ref_h) {
         return SSDA_ERR_ARG;
     }

@@ -369,6 +369,109 @@ static void test_templates_feed_relaxation(void)
     }
 }
 
+/* Inverted contrast with |rho| (SSDA_NCC_ABS): NEXT = 255 - REF moved by
+   (3, 2), every template's match has rho near -1, and the set's score is
+   the mean of those negative rho (truncated toward zero, as the positive
+   one). Before, no test had a negative mean (the inverted case of
+   test_flat_and_edge_templates loses its origin off NEXT: mean +0.14). */
+static void test_inverted_contrast_mean_is_negative(void)
+{
+    ssda_composite_config_t cfg = config(10, 10, 60, 50);
+    ssda_composite_result_t res;
+    ssda_view_t ref, next;
+    int64_t sum = 0;
+    uint32_t x, y, k;
+    make_pair(5u, 3, 2, 3, 2, W);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            g_next[y][x] = (uint8_t)(255u - g_next[y][x]);
+        }
+    }
+    cfg.metric = SSDA_NCC_ABS;
+    check_against_reference(&cfg);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&ref, g_ref, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&next, g_next, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+    TEST_ASSERT_EQUAL_UINT32(res.count, res.ok);
+    for (k = 0; k < res.count; k++) {
+        TEST_ASSERT_EQUAL_INT32(3 * 256, g_tp[k].dx);
+        TEST_ASSERT_EQUAL_INT32(2 * 256, g_tp[k].dy);
+        TEST_ASSERT_TRUE(g_tp[k].rho_q30 < -SSDA_NCC_ONE_Q30 / 10 * 9);
+        sum += g_tp[k].rho_q30;
+    }
+    TEST_ASSERT_EQUAL_INT32((int32_t)(sum / (int64_t)res.ok), res.mean_rho_q30);
+}
+
+/* Ties of variance: the origin is the smallest k among the largest. A
+   REF periodic with the template step makes every template the same. */
+static void test_origin_tie_smallest_index(void)
+{
+    ssda_composite_config_t cfg = config(0, 0, 60, 50);
+    ssda_composite_result_t res;
+    ssda_view_t ref, next;
+    uint32_t x, y, k;
+    make_pair(6u, 0, 0, 0, 0, W);
+    for (y = 0; y < H; y++) {
+        for (x = 0; x < W; x++) {
+            g_ref[y][x] = g_ref[y % 5u][x % 5u];
+            g_next[y][x] = g_ref[y][x];
+        }
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&ref, g_ref, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&next, g_next, W, H, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 400, &res));
+    TEST_ASSERT_TRUE(res.count > 1u);
+    TEST_ASSERT_TRUE(g_tp[0].var > 0u);
+    for (k = 1; k < res.count; k++) {
+        TEST_ASSERT_EQUAL_UINT64(g_tp[0].var, g_tp[k].var);
+        TEST_ASSERT_EQUAL_UINT8(0, g_tp[k].origin);
+    }
+    TEST_ASSERT_EQUAL_UINT32(0, res.origin);
+    TEST_ASSERT_EQUAL_UINT8(1, g_tp[0].origin);
+}
+
+/* min_std at its edge, exactly: a template is FLAT iff its standard
+   deviation sqrt(var) / n is below min_std_q8 / 256, i.e. iff
+   256^2 var < (min_std_q8 n)^2 (all in 64 bits for a 4 x 4 template),
+   for every min_std_q8 around the template's own (every one on the host). */
+static void test_min_std_edge(void)
+{
+    /* var = 1 578 007: at min_std_q8 = 20 099, 256^2 var < (16 m)^2 <
+       256^2 (var + 1), the case a floor instead of a ceiling gets wrong */
+    static const uint8_t tpl[16] = {74, 80, 54, 14, 51, 38, 87, 251, 239, 220, 31, 6, 165, 73, 121, 181};
+    ssda_composite_config_t cfg = config(0, 0, 4, 4);
+    ssda_composite_result_t res;
+    ssda_view_t ref, next;
+    uint64_t var;
+    uint32_t m, lo, hi, i, s1 = 0, s2 = 0;
+    for (i = 0; i < 16u; i++) {
+        g_ref[i / 4u][i % 4u] = tpl[i];
+        g_next[i / 4u][i % 4u] = tpl[i];
+        s1 += tpl[i];
+        s2 += (uint32_t)tpl[i] * tpl[i];
+    }
+    var = 16u * (uint64_t)s2 - (uint64_t)s1 * s1;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&ref, g_ref, 4, 4, W, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&next, g_next, 4, 4, W, SSDA_PIX_U8));
+    cfg.tp = 4;
+    cfg.step = 1;
+#ifndef SSDA_TEST_SMALL
+    lo = 1;
+    hi = 65535;
+#else
+    lo = 18000; /* the edge is at 20 099 */
+    hi = 22000;
+#endif
+    for (m = lo; m <= hi; m++) {
+        const uint64_t s = (uint64_t)m * 16u;
+        const bool flat = 65536u * var < s * s;
+        cfg.min_std_q8 = (uint16_t)m;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_composite_match(&ref, &next, &cfg, g_tp, 1, &res));
+        TEST_ASSERT_EQUAL_UINT8(flat ? SSDA_COMPOSITE_FLAT : SSDA_COMPOSITE_OK, g_tp[0].status);
+        TEST_ASSERT_EQUAL_UINT32(flat ? 0u : 1u, res.ok);
+    }
+}
+
 static void test_errors_leave_outputs_untouched(void)
 {
     ssda_composite_config_t cfg = config(20, 16, 56, 48);
@@ -450,6 +553,9 @@ int main(void)
     RUN_TEST(test_mask_fill);
     RUN_TEST(test_subpixel_vectors);
     RUN_TEST(test_templates_feed_relaxation);
+    RUN_TEST(test_inverted_contrast_mean_is_negative);
+    RUN_TEST(test_origin_tie_smallest_index);
+    RUN_TEST(test_min_std_edge);
     RUN_TEST(test_errors_leave_outputs_untouched);
     return UNITY_END();
 }

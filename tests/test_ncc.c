@@ -153,6 +153,47 @@ static void test_argmax_equals_exhaustive_search_16bit(void)
     }
 }
 
+/* Binary images (0 / 255, half of each): a window that is an inverted
+   patch of the area has a dot product near 0 at its match, and the
+   early-exit bound's lower side (lb) goes below 0 on the way, where |rho|
+   must keep the position going. Every mode against the exhaustive search.
+   (A planted bug that cut such positions passed every other test: on
+   textured images with a mean level lb stays positive.) */
+static void test_argmax_inverted_binary_images(void)
+{
+    test_rng_t r;
+    uint32_t t;
+    test_rng_seed(&r, 13u);
+    for (t = 0; t < TRIALS; t++) {
+        ssda_view_t av, wv;
+        const uint32_t ww = test_rng_range(&r, 6, MAXW), wh = test_rng_range(&r, 12, MAXW);
+        const uint32_t wx = test_rng_range(&r, 0, AW - ww), wy = test_rng_range(&r, 0, AH - wh);
+        uint32_t x, y;
+        for (y = 0; y < AH; y++) {
+            for (x = 0; x < AW; x++) {
+                g_a8[y][x] = (uint8_t)(test_rng_range(&r, 0, 1) * 255u);
+            }
+        }
+        for (y = 0; y < wh; y++) {
+            for (x = 0; x < ww; x++) {
+                g_w8[y][x] = (uint8_t)(255u - g_a8[wy + y][wx + x]);
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&av, g_a8, AW, AH, AW + 3u, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&wv, g_w8, (uint16_t)ww, (uint16_t)wh,
+                                                      MAXW + 5u, SSDA_PIX_U8));
+        check_all_modes(&av, &wv, &r);
+        {
+            ssda_ncc_config_t cfg = config(SSDA_NCC_ABS, 0);
+            ssda_ncc_result_t res;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_ncc_match(&av, &wv, &cfg, &res));
+            TEST_ASSERT_EQUAL_UINT16(wx, res.x);
+            TEST_ASSERT_EQUAL_UINT16(wy, res.y);
+            TEST_ASSERT_EQUAL_INT32(-SSDA_NCC_ONE_Q30, res.rho_q30);
+        }
+    }
+}
+
 /* A window that is a gain and offset of the area where it was cut matches
    with rho = 1 exactly, at that place; early exit does less work. */
 static void test_gain_offset_gives_rho_one_with_less_work(void)
@@ -487,6 +528,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_argmax_equals_exhaustive_search_8bit);
     RUN_TEST(test_argmax_equals_exhaustive_search_16bit);
+    RUN_TEST(test_argmax_inverted_binary_images);
     RUN_TEST(test_gain_offset_gives_rho_one_with_less_work);
     RUN_TEST(test_inverted_contrast_found_by_abs_only);
     RUN_TEST(test_tie_rule);

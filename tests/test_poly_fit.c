@@ -311,6 +311,42 @@ static void test_rejection_tie_lowest_index(void)
     }
 }
 
+/* The tie rule where it decides the outcome: 5 pairs at the corners of a
+   square and its centre, order 1 (terms + 2 pairs: one drop at most). The
+   two corners of one diagonal are 10 px off, the rest exact: by the
+   point symmetry of the layout both have s^2 = 1.2 e^2, the largest, and
+   only the one of lower index may go; listed in either order. (The
+   12-pair test above drops both of its tied pairs, whichever first.) */
+static void test_rejection_tie_decides_which(void)
+{
+    static const int32_t pos[5][2] = {{300, 200}, {700, 200}, {500, 400}, {300, 600}, {700, 600}};
+    ssda_poly_fit_config_t cfg = {1, 512};
+    ssda_poly_fit_result_t res;
+    ssda_poly_t p;
+    int order, k;
+    for (order = 0; order < 2; order++) {
+        /* order 0: the diagonal's corners at indices 0 and 4; order 1:
+           the list reversed, so they are at 4 and 0 the other way */
+        for (k = 0; k < 5; k++) {
+            const int i = order == 0 ? k : 4 - k;
+            const int32_t off = (i == 0 || i == 4) ? 10 * 256 : 0;
+            g_pairs[k].ref_x_q8 = pos[i][0] * 256;
+            g_pairs[k].ref_y_q8 = pos[i][1] * 256;
+            g_pairs[k].mov_x_q8 = pos[i][0] * 256 + off;
+            g_pairs[k].mov_y_q8 = pos[i][1] * 256;
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_fit(g_pairs, 5, 1000, 800, &cfg, &p, g_res, g_used,
+                                                     &res, g_work, sizeof g_work));
+        TEST_ASSERT_EQUAL_UINT16(1, res.rejected);
+        TEST_ASSERT_EQUAL_UINT8(0, g_used[0]);
+        for (k = 1; k < 5; k++) {
+            TEST_ASSERT_EQUAL_UINT8(1, g_used[k]);
+        }
+        /* the other four (three on the other diagonal) fit exactly */
+        TEST_ASSERT_EQUAL_UINT32(0, res.max_q8);
+    }
+}
+
 /* The worst-case jobs' pairs (16384, 2048 on the boards), shared by the
    two tests that need them: at the four corners of a 65535 x 65535 grid,
    displacements alternating +-2^22 px (the int32 Q8 extremes +-2^30). */
@@ -432,6 +468,123 @@ static void test_degenerate_pairs(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_fit(g_pairs, 12, 1000, 800, &cfg, &p, NULL, NULL, &res, g_work, 12));
     cfg.order = 3;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_poly_fit(g_pairs, 12, 1000, 800, &cfg, &p, NULL, NULL, &res, g_work, 12));
+}
+
+/* The refusal of pairs that barely determine the map (poly.h, SSDA_ERR_SIZE:
+   a Cholesky pivot below 2^-12 of its diagonal): order 1, 12 pairs along a
+   diagonal line of a 1000 x 800 grid, alternately e px either side of it.
+   The pivots of G / n are computed here in double from the exact
+   normalised terms; the fit is refused exactly when the last pivot^2 is
+   below 2^-24 of its diagonal (cases within 5 % of the edge skipped: the
+   library's pivots are rounded to Q60). */
+static void test_pivot_threshold(void)
+{
+    ssda_poly_fit_config_t cfg = {1, UINT32_MAX};
+    ssda_poly_fit_result_t res;
+    ssda_poly_t p, dom;
+    uint32_t refused = 0, accepted = 0, step;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_init(&dom, 1000, 800, 1));
+    for (step = 0; step < 40; step++) {
+        const double e = 4.0 * test_exp(-0.25 * step); /* 4 px .. 0.0002 px */
+        double g[3][3] = {{0}}, l[3][3] = {{0}}, piv[3], ratio = 1.0;
+        int k, i, j, m;
+        for (k = 0; k < 12; k++) {
+            const double t = 100.0 + 60.0 * k, side = (k % 2 ? e : -e) / 1.41421356237;
+            const double X = t + side, Y = 0.75 * t - side;
+            double phi[3];
+            g_pairs[k].ref_x_q8 = (int32_t)(X * 256.0 + (X >= 0 ? 0.5 : -0.5));
+            g_pairs[k].ref_y_q8 = (int32_t)(Y * 256.0 + (Y >= 0 ? 0.5 : -0.5));
+            g_pairs[k].mov_x_q8 = g_pairs[k].ref_x_q8 + 300;
+            g_pairs[k].mov_y_q8 = g_pairs[k].ref_y_q8 - 200;
+            phi[0] = 1.0;
+            phi[1] = (g_pairs[k].ref_x_q8 / 256.0 - dom.cx) / (double)(1u << dom.kx);
+            phi[2] = (g_pairs[k].ref_y_q8 / 256.0 - dom.cy) / (double)(1u << dom.ky);
+            for (i = 0; i < 3; i++)
+                for (j = 0; j < 3; j++) g[i][j] += phi[i] * phi[j] / 12.0;
+        }
+        for (j = 0; j < 3; j++) { /* Cholesky in double */
+            piv[j] = g[j][j];
+            for (m = 0; m < j; m++) piv[j] -= l[j][m] * l[j][m];
+            l[j][j] = test_sqrt(piv[j] > 0 ? piv[j] : 0);
+            for (i = j + 1; i < 3; i++) {
+                l[i][j] = g[i][j];
+                for (m = 0; m < j; m++) l[i][j] -= l[i][m] * l[j][m];
+                l[i][j] = l[j][j] > 0 ? l[i][j] / l[j][j] : 0;
+            }
+            if (piv[j] / g[j][j] < ratio) ratio = piv[j] / g[j][j];
+        }
+        ratio *= 16777216.0; /* in units of 2^-24 */
+        if (ratio > 0.95 && ratio < 1.05) {
+            continue;
+        }
+        k = ssda_poly_fit(g_pairs, 12, 1000, 800, &cfg, &p, NULL, NULL, &res, g_work, 12);
+        TEST_ASSERT_EQUAL_INT(ratio < 1.0 ? SSDA_ERR_SIZE : SSDA_OK, k);
+        refused += ratio < 1.0;
+        accepted += ratio >= 1.0;
+    }
+    TEST_ASSERT_TRUE(refused >= 5u && accepted >= 5u);
+}
+
+/* result.weak at its leverage edge (poly.h: a leverage above
+   SSDA_POLY_WEAK_LEVERAGE_Q15 = 0.8 in Q15): order 1, 7 pairs in a
+   cluster and one moving away from it px by px, so that its leverage
+   rises through 0.8 in steps of a few thousandths. The leverage is
+   computed here in double (h = phi^T G^-1 phi, exact terms); every step
+   farther than 1 Q15 unit from the edge must say weak iff h > 0.8 (8
+   pairs >= 2 per term: the count does not decide). */
+static void test_weak_at_leverage_edge(void)
+{
+    static const int cl[7][2] = {{480, 380}, {520, 390}, {500, 420}, {470, 410},
+                                 {530, 430}, {490, 400}, {510, 370}};
+    ssda_poly_fit_config_t cfg = {1, UINT32_MAX};
+    ssda_poly_fit_result_t res;
+    ssda_poly_t p, dom;
+    uint32_t above = 0, below = 0, d;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_init(&dom, 1000, 800, 1));
+    for (d = 20; d < 400; d++) {
+        double phi[8][3], g[3][3] = {{0}}, inv[3][3], det, hmax = 0.0, lim;
+        int k, i, j;
+        for (k = 0; k < 8; k++) {
+            const int X = k < 7 ? cl[k][0] : 500 + (int)d, Y = k < 7 ? cl[k][1] : 400 + (int)d / 3;
+            g_pairs[k].ref_x_q8 = X * 256;
+            g_pairs[k].ref_y_q8 = Y * 256;
+            g_pairs[k].mov_x_q8 = X * 256 + 100;
+            g_pairs[k].mov_y_q8 = Y * 256 + 50;
+            phi[k][0] = 1.0;
+            phi[k][1] = (X - dom.cx) / (double)(1u << dom.kx);
+            phi[k][2] = (Y - dom.cy) / (double)(1u << dom.ky);
+            for (i = 0; i < 3; i++)
+                for (j = 0; j < 3; j++) g[i][j] += phi[k][i] * phi[k][j];
+        }
+        /* the inverse of the 3 x 3 normal matrix by cofactors */
+        det = g[0][0] * (g[1][1] * g[2][2] - g[1][2] * g[2][1]) -
+              g[0][1] * (g[1][0] * g[2][2] - g[1][2] * g[2][0]) +
+              g[0][2] * (g[1][0] * g[2][1] - g[1][1] * g[2][0]);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                const int a = (j + 1) % 3, b = (j + 2) % 3, c = (i + 1) % 3, e = (i + 2) % 3;
+                inv[i][j] = (g[a][c] * g[b][e] - g[a][e] * g[b][c]) / det;
+            }
+        }
+        for (k = 0; k < 8; k++) {
+            double h = 0.0;
+            for (i = 0; i < 3; i++)
+                for (j = 0; j < 3; j++) h += phi[k][i] * inv[i][j] * phi[k][j];
+            hmax = h > hmax ? h : hmax;
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_fit(g_pairs, 8, 1000, 800, &cfg, &p, NULL, NULL,
+                                                     &res, g_work, 8));
+        TEST_ASSERT_EQUAL_UINT16(8, res.used);
+        lim = SSDA_POLY_WEAK_LEVERAGE_Q15 / 32768.0;
+        if (hmax > lim + 1.0 / 32768) {
+            TEST_ASSERT_TRUE(res.weak);
+            above += hmax < lim + 100.0 / 32768;
+        } else if (hmax < lim - 1.0 / 32768) {
+            TEST_ASSERT_FALSE(res.weak);
+            below++;
+        }
+    }
+    TEST_ASSERT_TRUE(above >= 1u && below >= 10u); /* steps just above the edge */
 }
 
 /* A map beyond 2^24 px per normalised unit: pairs 64 px apart (on a
@@ -837,9 +990,12 @@ int main(void)
     RUN_TEST(test_fig9_no_rejection);
     RUN_TEST(test_rejection_stops_at_minimum);
     RUN_TEST(test_rejection_tie_lowest_index);
+    RUN_TEST(test_rejection_tie_decides_which);
     RUN_TEST(test_worst_case_sums);
     RUN_TEST(test_errors_leave_outputs);
     RUN_TEST(test_degenerate_pairs);
+    RUN_TEST(test_pivot_threshold);
+    RUN_TEST(test_weak_at_leverage_edge);
     RUN_TEST(test_overflow);
     RUN_TEST(test_loo_known_warps_with_outliers);
     RUN_TEST(test_loo_no_false_drops);

@@ -321,17 +321,21 @@ static void test_low_rho(void)
 
 /* The window of each cell is the brute-force most-varied one on the
    lattice; the placement is the brute-force SAD minimum of that window in
-   that area. */
-static void test_window_and_placement_brute_force(void)
+   that area (search x search, its top-left (search - 16) / 2 px up-left of
+   the window's, clipped); the status is BORDER exactly when that minimum
+   touches the area's edge (register.h, step 5). Shifts beyond the margin
+   put minima on every edge; an odd search - window rounds the margin
+   down. */
+static void check_window_placement_status(const map_t *m, uint32_t search)
 {
     test_rng_t r;
-    const map_t m = {3.0, -2.0, 0.0};
     ssda_source_t ref, mov;
     ssda_register_config_t cfg;
     ssda_view_t rv, mv;
+    const uint32_t margin = (search - 16u) / 2u;
     size_t k;
     test_rng_seed(&r, 11);
-    make_pair(&r, &m, 0);
+    make_pair(&r, m, 0);
     ram_sources(&ref, &mov, SSDA_PIX_U8);
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&rv, g_ref, RW, RH, RW, SSDA_PIX_U8));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&mv, g_mov, RW, RH, RW, SSDA_PIX_U8));
@@ -340,13 +344,13 @@ static void test_window_and_placement_brute_force(void)
     cfg.grid_x = 3;
     cfg.grid_y = 2;
     cfg.window = 16;
-    cfg.search = 30;
+    cfg.search = (uint16_t)search;
     cfg.step = 3;
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 6, NULL, g_work, sizeof g_work));
     for (k = 0; k < 6; k++) {
         const uint32_t i = k % 3, j = k / 3;
         const uint32_t x0 = i * RW / 3, x1 = (i + 1) * RW / 3, y0 = j * RH / 2, y1 = (j + 1) * RH / 2;
-        uint32_t x, y, bx = 0, by = 0, ax, ay, px, py;
+        uint32_t x, y, bx = 0, by = 0, ax, ay, aw, ah, px, py;
         double best = -1;
         uint64_t bsad;
         ssda_view_t area, win;
@@ -354,9 +358,9 @@ static void test_window_and_placement_brute_force(void)
             for (x = x0; x + 16 <= x1; x += 3) {
                 double s1 = 0, s2 = 0, v;
                 uint32_t a, b;
-                /* windows whose 30 x 30 area fits the image first (every
-                   cell has some here) */
-                if (x < 7 || y < 7 || x + 23 > RW || y + 23 > RH) {
+                /* windows whose area fits the image first (every cell has
+                   some here) */
+                if (x < margin || y < margin || x - margin + search > RW || y - margin + search > RH) {
                     continue;
                 }
                 for (b = 0; b < 16; b++)
@@ -370,19 +374,143 @@ static void test_window_and_placement_brute_force(void)
         }
         TEST_ASSERT_EQUAL_INT32((int32_t)(2 * bx + 15) * 128, g_pts[k].pair.ref_x_q8);
         TEST_ASSERT_EQUAL_INT32((int32_t)(2 * by + 15) * 128, g_pts[k].pair.ref_y_q8);
-        /* area: 30 x 30 around the window (offset 0), clipped */
-        ax = bx >= 7 ? bx - 7 : 0;
-        ay = by >= 7 ? by - 7 : 0;
-        {
-            uint32_t aw = (bx + 23 > RW ? RW : bx + 23) - ax, ah = (by + 23 > RH ? RH : by + 23) - ay;
-            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&area, &mv, (uint16_t)ax, (uint16_t)ay, (uint16_t)aw, (uint16_t)ah));
-        }
+        /* the area around the window (offset 0), clipped: here it fits */
+        ax = bx - margin;
+        ay = by - margin;
+        aw = search;
+        ah = search;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&area, &mv, (uint16_t)ax, (uint16_t)ay, (uint16_t)aw, (uint16_t)ah));
         TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_roi(&win, &rv, (uint16_t)bx, (uint16_t)by, 16, 16));
         test_best(&area, &win, &px, &py, &bsad);
         TEST_ASSERT_EQUAL_UINT64(bsad, g_pts[k].sad);
         /* the integer part of the match (sub-pixel within +-1/2) */
         TEST_ASSERT_INT32_WITHIN(128, (int32_t)(2 * (ax + px) + 15) * 128, g_pts[k].pair.mov_x_q8);
         TEST_ASSERT_INT32_WITHIN(128, (int32_t)(2 * (ay + py) + 15) * 128, g_pts[k].pair.mov_y_q8);
+        TEST_ASSERT_EQUAL_UINT8(px == 0 || py == 0 || px + 16 == aw || py + 16 == ah
+                                    ? SSDA_REGISTER_BORDER : SSDA_REGISTER_OK,
+                                g_pts[k].status);
+    }
+}
+
+static void test_window_and_placement_brute_force(void)
+{
+    static const map_t maps[5] = {{3.0, -2.0, 0.0}, {9.0, 1.0, 0.0}, {-1.0, -9.0, 0.0},
+                                  {-9.0, 9.0, 0.0}, {1.0, 2.0, 0.0}};
+    uint32_t t, borders = 0;
+    for (t = 0; t < 5u; t++) {
+        size_t k;
+        check_window_placement_status(&maps[t], t % 2u == 0u ? 30u : 31u);
+        for (k = 0; k < 6; k++) {
+            borders += g_pts[k].status == SSDA_REGISTER_BORDER;
+        }
+    }
+    TEST_ASSERT_TRUE(borders >= 6u); /* the rule was exercised */
+}
+
+/* The thresholds at equality: a cell whose only window has a variance of
+   exactly min_texture grey^2 is not FLAT, just below it is (and the
+   defaults, 4 at 8 bits and 1024 at 16, are those thresholds); a point
+   whose |rho| (rho for NCC) equals min_rho is LOW_RHO, one LSB lower
+   it is not (register.h: "not above min_rho"). */
+static void test_thresholds_at_equality(void)
+{
+    static uint8_t img8[8][8];
+    static uint16_t img16[8][8];
+    ssda_register_config_t cfg;
+    ssda_source_t ref, mov;
+    ssda_view_t v;
+    ssda_register_point_t pt;
+    uint32_t i, metric;
+    size_t k;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.grid_x = 1;
+    cfg.grid_y = 1;
+    cfg.window = 8;
+    cfg.search = 8;
+    cfg.step = 8;
+    for (i = 0; i < 64u; i++) { /* half 0, half 4: variance 4 exactly */
+        img8[i / 8u][i % 8u] = (uint8_t)((i + i / 8u) % 2u * 4u);
+        img16[i / 8u][i % 8u] = (uint16_t)((i + i / 8u) % 2u * 64u); /* 1024 */
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, img8, 8, 8, 8, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&ref, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&mov, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT32(4, pt.texture);
+    TEST_ASSERT_TRUE(pt.status != SSDA_REGISTER_FLAT);
+    cfg.min_texture = 5;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_FLAT, pt.status);
+    cfg.min_texture = 4;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_TRUE(pt.status != SSDA_REGISTER_FLAT);
+    cfg.min_texture = 0;
+    img8[3][3] = 3; /* variance 3.95: below the default */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_FLAT, pt.status);
+    TEST_ASSERT_EQUAL_UINT32(3, pt.texture);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, img16, 8, 8, 16, SSDA_PIX_U16));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&ref, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&mov, &v));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT32(1024, pt.texture);
+    TEST_ASSERT_TRUE(pt.status != SSDA_REGISTER_FLAT);
+    img16[3][3] = 63;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, &pt, 1, NULL, g_work, sizeof g_work));
+    TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_FLAT, pt.status);
+    /* equal variances: the first window in raster order of the lattice (a
+       reference periodic with the step: every window the same) */
+    {
+        static uint8_t per[64][64];
+        ssda_register_point_t four[4];
+        uint32_t x, y;
+        for (y = 0; y < 64u; y++) {
+            for (x = 0; x < 64u; x++) {
+                per[y][x] = (uint8_t)(((x % 4u) * 37u + (y % 4u) * 71u) % 256u);
+            }
+        }
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, per, 64, 64, 64, SSDA_PIX_U8));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&ref, &v));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&mov, &v));
+        cfg.grid_x = 2;
+        cfg.grid_y = 2;
+        cfg.step = 4;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, four, 4, NULL, g_work, sizeof g_work));
+        for (k = 0; k < 4; k++) {
+            TEST_ASSERT_EQUAL_INT32((int32_t)(2u * 32u * (k % 2u) + 7u) * 128, four[k].pair.ref_x_q8);
+            TEST_ASSERT_EQUAL_INT32((int32_t)(2u * 32u * (k / 2u) + 7u) * 128, four[k].pair.ref_y_q8);
+        }
+    }
+    /* min_rho at equality, on textured pairs with both correlation metrics */
+    for (metric = SSDA_REGISTER_ABSNCC; metric <= SSDA_REGISTER_NCC; metric++) {
+        test_rng_t r;
+        const map_t m = {2.0, -1.0, 0.01};
+        ssda_register_point_t pts[16];
+        uint32_t checked = 0;
+        test_rng_seed(&r, 40u + metric);
+        make_pair(&r, &m, 0);
+        ram_sources(&ref, &mov, SSDA_PIX_U8);
+        memset(&cfg, 0, sizeof cfg);
+        cfg.metric = (uint8_t)metric;
+        cfg.min_rho_q30 = 1; /* every match is above it */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+        memcpy(pts, g_pts, sizeof pts);
+        for (k = 0; k < 16; k++) {
+            const int32_t a = pts[k].rho_q30 < 0 ? -pts[k].rho_q30 : pts[k].rho_q30;
+            if (pts[k].status != SSDA_REGISTER_OK && pts[k].status != SSDA_REGISTER_BORDER) {
+                continue;
+            }
+            cfg.min_rho_q30 = metric == SSDA_REGISTER_NCC ? pts[k].rho_q30 : a;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+            TEST_ASSERT_EQUAL_UINT8(SSDA_REGISTER_LOW_RHO, g_pts[k].status);
+            cfg.min_rho_q30--;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, sizeof g_work));
+            TEST_ASSERT_EQUAL_UINT8(pts[k].status, g_pts[k].status);
+            if (++checked == 3u) {
+                break;
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT32(3, checked);
     }
 }
 
@@ -652,6 +780,17 @@ static void test_errors(void)
     }
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 15, NULL, g_work, sizeof g_work));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, SSDA_REGISTER_WORK_SIZE(20, 40, 1) - 1));
+    {
+        /* the size macro takes the config's fields as they are: 0 = the
+           defaults (before, 0 divided by zero in SSDA_NCC_WORK_SIZE) */
+        volatile uint16_t w0 = cfg.window, s0 = cfg.search;
+        const size_t need = SSDA_REGISTER_WORK_SIZE(w0, s0, 1);
+        TEST_ASSERT_EQUAL_UINT16(0, w0);
+        TEST_ASSERT_EQUAL_UINT64(SSDA_REGISTER_WORK_SIZE(20, 40, 1), need);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_register_points(&ref, &mov, &cfg, g_pts2, 16, NULL, g_work, need));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, g_work, need - 1));
+        memset(g_pts, 0x5A, sizeof g_pts);
+    }
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_register_points(&ref, &mov, &cfg, g_pts, 16, NULL, (uint8_t *)g_work + 4, sizeof g_work - 8));
     cfg.grid_x = 13; /* 240 / 13 = 18 < 20 */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_SIZE, ssda_register_points(&ref, &mov, &cfg, g_pts, 64, NULL, g_work, sizeof g_work));
@@ -693,6 +832,7 @@ int main(void)
     RUN_TEST(test_correlation_metrics);
     RUN_TEST(test_low_rho);
     RUN_TEST(test_window_and_placement_brute_force);
+    RUN_TEST(test_thresholds_at_equality);
     RUN_TEST(test_statuses);
     RUN_TEST(test_streamed_equals_ram);
     RUN_TEST(test_reads_are_bounded_for_every_accepted_arena);

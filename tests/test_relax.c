@@ -352,6 +352,79 @@ static void test_outliers_repaired_in_track_grid(void)
     }
 }
 
+/* SSDA_RELAX_KEEP keeps a vector whose most likely class is its own
+   exactly (relax.h), where without it the output is the local class mean:
+   a field of one class whose vectors differ by up to 0.1 px. */
+static void test_keep_flag_keeps_input(void)
+{
+    static ssda_relax_vector_t plain[MAXN];
+    test_rng_t r;
+    ssda_relax_config_t cfg = config(20, 0);
+    ssda_relax_grid_t g = grid_of(g_in, MAXC, MAXR, 8);
+    uint32_t k, differ = 0;
+    test_rng_seed(&r, 77u);
+    for (k = 0; k < MAXN; k++) {
+        g_in[k].dx = 3 * 256 + (int32_t)test_rng_range(&r, 0, 50) - 25;
+        g_in[k].dy = -2 * 256 + (int32_t)test_rng_range(&r, 0, 50) - 25;
+        g_in[k].status = 0;
+    }
+    g_in[3 * MAXC + 4].dx = -5 * 256; /* an outlier */
+    cfg.len_step_q8 = 256;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, plain, MAXN));
+    cfg.flags = SSDA_RELAX_KEEP;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, g_out, MAXN));
+    for (k = 0; k < MAXN; k++) {
+        TEST_ASSERT_EQUAL_UINT8(plain[k].flags, g_out[k].flags);
+        TEST_ASSERT_EQUAL_UINT8(plain[k].cls, g_out[k].cls);
+        TEST_ASSERT_EQUAL_UINT16(plain[k].p_q15, g_out[k].p_q15);
+        if ((g_out[k].flags & SSDA_RELAX_CHANGED) != 0u) {
+            TEST_ASSERT_EQUAL_INT32(plain[k].dx_q8, g_out[k].dx_q8);
+            TEST_ASSERT_EQUAL_INT32(plain[k].dy_q8, g_out[k].dy_q8);
+        } else {
+            TEST_ASSERT_EQUAL_INT32(g_in[k].dx, g_out[k].dx_q8);
+            TEST_ASSERT_EQUAL_INT32(g_in[k].dy, g_out[k].dy_q8);
+            differ += plain[k].dx_q8 != g_in[k].dx || plain[k].dy_q8 != g_in[k].dy;
+        }
+    }
+    TEST_ASSERT_TRUE((g_out[3 * MAXC + 4].flags & SSDA_RELAX_CHANGED) != 0u);
+    TEST_ASSERT_TRUE(differ > MAXN / 2u); /* without KEEP: the class means */
+}
+
+/* The automatic length step (len_step_q8 = 0): 2/7 of the mean length of
+   the valid vectors, at least 1/4 px (relax.h). Vectors of exact integer
+   lengths: the run equals one with that step given, and differs from one
+   with a nearby step (so the step decides the classes here). */
+static void test_automatic_length_step(void)
+{
+    static ssda_relax_vector_t given[MAXN];
+    static const int32_t dirs[4][2] = {{280, 0}, {168, 224}, {0, -280}, {-224, 168}};
+    ssda_relax_config_t cfg = config(3, 0);
+    ssda_relax_grid_t g = grid_of(g_in, 6, 5, 8);
+    uint32_t k, pass;
+    for (pass = 0; pass < 3; pass++) {
+        /* lengths 280 Q8 (mean 280: step 80), 50 (step 14: raised to 64),
+           and 0 (no length: 64) */
+        const int32_t num = pass == 0 ? 1 : (pass == 1 ? 5 : 0), den = pass == 0 ? 1 : 28;
+        const uint16_t step = pass == 0 ? 80 : 64, near = pass == 0 ? 70 : 32;
+        for (k = 0; k < 30u; k++) {
+            g_in[k].dx = dirs[k % 4u][0] * num / den;
+            g_in[k].dy = dirs[k % 4u][1] * num / den;
+            g_in[k].status = k == 7u ? 1 : 0;
+        }
+        g_in[7].dx = 100000; /* invalid: not in the mean */
+        cfg.len_step_q8 = 0;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, g_out, 30));
+        cfg.len_step_q8 = step;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, given, 30));
+        TEST_ASSERT_EQUAL_MEMORY(given, g_out, 30u * sizeof given[0]);
+        if (pass < 2u) {
+            cfg.len_step_q8 = near;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_labels(&g, &cfg, given, 30));
+            TEST_ASSERT_TRUE(memcmp(given, g_out, 30u * sizeof given[0]) != 0);
+        }
+    }
+}
+
 /* ---- normalised median test ---- */
 
 static int64_t ref_median(int64_t *v, int n)
@@ -517,6 +590,33 @@ static void test_errors_leave_output_untouched(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_relax_median(&g, NULL, g_out, 12));
 }
 
+/* The median test's defaults, threshold 2 and eps = 0.1 px = 26 Q8
+   (relax.h), at the threshold: a vector d Q8 away from 8 equal neighbours
+   (residual median 0) has r0* = d / 26 and is an outlier iff that is
+   above 2, i.e. d > 52; the same with the defaults given explicitly. */
+static void test_median_defaults_at_the_threshold(void)
+{
+    const ssda_relax_median_config_t explicit_cfg = {512, 26};
+    ssda_relax_grid_t g = grid_of(g_in, 3, 3, 8);
+    static ssda_relax_vector_t a[9];
+    int32_t d;
+    uint32_t k;
+    for (d = 48; d <= 56; d++) {
+        for (k = 0; k < 9u; k++) {
+            g_in[k].dx = 700;
+            g_in[k].dy = -300;
+            g_in[k].status = 0;
+        }
+        g_in[4].dy = -300 + d;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_median(&g, NULL, a, 9));
+        TEST_ASSERT_EQUAL_UINT8(d > 52 ? SSDA_RELAX_VALID | SSDA_RELAX_CHANGED : SSDA_RELAX_VALID,
+                                a[4].flags);
+        TEST_ASSERT_EQUAL_INT32(d > 52 ? -300 : -300 + d, a[4].dy_q8);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_relax_median(&g, &explicit_cfg, g_out, 9));
+        TEST_ASSERT_EQUAL_MEMORY(a, g_out, sizeof a);
+    }
+}
+
 /* No status array: every vector valid; a grid with no valid vector at all;
    zero-filled median options are the defaults. */
 static void test_status_and_defaults(void)
@@ -552,6 +652,9 @@ int main(void)
     RUN_TEST(test_against_double_reference);
     RUN_TEST(test_class_layout);
     RUN_TEST(test_outliers_repaired_in_track_grid);
+    RUN_TEST(test_keep_flag_keeps_input);
+    RUN_TEST(test_automatic_length_step);
+    RUN_TEST(test_median_defaults_at_the_threshold);
     RUN_TEST(test_median_against_reference);
     RUN_TEST(test_errors_leave_output_untouched);
     RUN_TEST(test_status_and_defaults);

@@ -189,6 +189,51 @@ static void test_known_shading_centre_and_correction(void)
     }
 }
 
+/* The basis functions themselves, through K: a 16-bit image 0 but for one
+   full-scale column x0 has K_10 = 2 A cos(2 pi x0 / w) / w and K_20 the
+   same with sin (A = 65535; g_0 = 1 exactly), and one full-scale row y0
+   K_01, K_02 alike in y. shade.h: f, g are the sine of a phase within
+   2^-31 turn of the true one, from a polynomial within 0.03 LSB of Q15,
+   rounded to Q15: within 0.53 LSB (0.55 here, the phase's part
+   included), so K is within 2 A / w * 0.55 / 32768 grey of the double
+   value plus the rounding of K to Q8 (1/512 grey), at every column of
+   every width. (The sine once used 14 bits of the phase in a quarter turn:
+   up to 3.6 LSB off, which this test showed at many widths.) */
+static void test_basis_within_half_lsb(void)
+{
+#ifndef SSDA_TEST_SMALL
+    const uint32_t wstep = 1;
+#else
+    const uint32_t wstep = 7;
+#endif
+    uint16_t row[MW];
+    uint32_t n, i, j, axis;
+    for (axis = 0; axis < 2; axis++) {
+        for (n = 3; n <= MW; n += wstep) {
+            for (i = 0; i < n; i++) {
+                const uint32_t w = axis == 0 ? n : 3, h = axis == 0 ? 3 : n;
+                const double a = 65535.0, ph = 2 * PI * i / n;
+                const double tol = 2.0 * a / n * 0.55 / 32768.0 + 1.0 / 512 + 1e-9;
+                ssda_shade_t sh;
+                int32_t kc, ks;
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_init(&sh, (uint16_t)w, (uint16_t)h, SSDA_PIX_U16));
+                for (j = 0; j < h; j++) {
+                    uint32_t x;
+                    for (x = 0; x < w; x++) {
+                        row[x] = (uint16_t)((axis == 0 ? x : j) == i ? 65535u : 0u);
+                    }
+                    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_add_row(&sh, row));
+                }
+                TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_finish(&sh, SSDA_SHADE_CENTRE_MAX));
+                kc = sh.k_q8[axis == 0 ? 3 : 1]; /* K_10 or K_01 */
+                ks = sh.k_q8[axis == 0 ? 6 : 2]; /* K_20 or K_02 */
+                TEST_ASSERT_DOUBLE_WITHIN(tol, 2.0 * a / n * test_cos(ph), kc / 256.0);
+                TEST_ASSERT_DOUBLE_WITHIN(tol, 2.0 * a / n * test_sin(ph), ks / 256.0);
+            }
+        }
+    }
+}
+
 /* Largest sums: all-max 16-bit images of the widest and the tallest shape
    (65535 x 3 and 3 x 65535), several of them: K_00 = 65535 exactly, the
    others 0 within rounding; in place correction returns the level. */
@@ -245,6 +290,14 @@ static void test_errors_and_states(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_add_row(&sh, row));
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_add_row(&sh, row));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_shade_finish(&sh, 2));
+    {
+        /* a complete image and part of the next: refused, nothing changes */
+        ssda_shade_t part = sh, before;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_add_row(&part, row));
+        before = part;
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_shade_finish(&part, 0));
+        TEST_ASSERT_EQUAL_MEMORY(&before, &part, sizeof part);
+    }
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_shade_finish(&sh, 0));
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_shade_finish(&sh, 0)); /* twice */
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_STATE, ssda_shade_add_row(&sh, row));
@@ -301,6 +354,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_matches_double_definition);
     RUN_TEST(test_known_shading_centre_and_correction);
+    RUN_TEST(test_basis_within_half_lsb);
     RUN_TEST(test_worst_case);
     RUN_TEST(test_errors_and_states);
     RUN_TEST(test_clamp);

@@ -209,6 +209,58 @@ static void test_identity_and_shift(void)
     }
 }
 
+/* The source's last column and row, and the fill count: a source of
+   exactly the output's size (OW x OH, a window of the image) under the
+   identity map gives the source back with both rules, bilinear too at
+   u = 256 (w - 1), v = 256 (h - 1) (warp.h: defined there, the weight-0
+   pixel not read), and no pixel filled; under a shift of (2.5, -1.25) px
+   stats.filled is the number of output pixels whose (u, v) the rule of
+   warp.h puts outside the source, counted here. */
+static void test_edges_and_fill_count(void)
+{
+    test_rng_t r;
+    ssda_view_t v;
+    ssda_source_t src;
+    ssda_poly_t map;
+    ssda_warp_stats_t st;
+    uint32_t x, y;
+    uint8_t rs;
+    test_rng_seed(&r, 6);
+    test_fill_texture_u8(&g_src8[0][0], SW, SH, SW, &r);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, g_src8, OW, OH, SW, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init_view(&src, &v));
+    for (rs = 0; rs < 2; rs++) {
+        uint64_t want = 0;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_poly_init(&map, OW, OH, 1));
+        memset(&st, 0xA5, sizeof st);
+        run_warp(&src, &map, rs, 7, 0, 0, g_out, &st);
+        for (y = 0; y < OH; y++) {
+            for (x = 0; x < OW; x++) {
+                TEST_ASSERT_EQUAL_UINT16(g_src8[y][x], g_out[y][x]);
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT64(0, st.filled);
+        map.u_q24[0] += (int64_t)5 << 23;  /* + 2.5 px */
+        map.v_q24[0] -= (int64_t)5 << 22;  /* - 1.25 px */
+        run_warp(&src, &map, rs, 7, 0, 0, g_out, &st);
+        for (y = 0; y < OH; y++) {
+            for (x = 0; x < OW; x++) {
+                const int32_t u = (int32_t)x * 256 + 640, w = (int32_t)y * 256 - 320;
+                const bool out = rs == SSDA_WARP_BILINEAR
+                                     ? (u < 0 || w < 0 || u > (int32_t)(OW - 1) * 256 || w > (int32_t)(OH - 1) * 256)
+                                     : (fl256(u + 128) < 0 || fl256(w + 128) < 0 || fl256(u + 128) >= (int32_t)OW ||
+                                        fl256(w + 128) >= (int32_t)OH);
+                want += out ? 1u : 0u;
+                if (out) {
+                    TEST_ASSERT_EQUAL_UINT16(7, g_out[y][x]);
+                }
+            }
+        }
+        TEST_ASSERT_TRUE(want > 0u);
+        TEST_ASSERT_EQUAL_UINT64(want, st.filled);
+    }
+}
+
 /* Nearest and bilinear against a direct resampler written from the rule
    in warp.h, on textured 8- and 16-bit images. */
 static void test_against_direct_resampler(void)
@@ -461,6 +513,38 @@ static void test_errors(void)
     map.order = 5;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
     map.order = 1;
+    /* a map whose centre or scale no longer covers its grid (poly.h: the
+       grid lies within |X - cx| <= 2^kx): refused. Accepted before, its
+       cubic terms wrapped the 128-bit form and the tile bounds overflowed
+       int64 (UBSan: signed overflow in warp.c). */
+    {
+        ssda_poly_t bad = map;
+        ssda_source_config_t geo;
+        memset(&geo, 0, sizeof geo);
+        geo.width = SW;
+        geo.height = SH;
+        geo.format = SSDA_PIX_U16;
+        c.map = &bad;
+        bad.cx = 0; /* OW - 1 = 179 > 2^kx = 128 */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad = map;
+        bad.kx = 6; /* 2^6 < 90 */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        bad = map;
+        bad.cy = OH + 200;
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_init(&job, &c, &src));
+        bad = map;
+        bad.ref_h = (uint16_t)(2u * OH + 1u); /* rows beyond cy + 2^ky */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad = map;
+        bad.cx -= 30; /* moved, but every column still within 2^kx = 128 */
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        bad.cx = map.cx + 39; /* 129: column 0 leaves the domain */
+        TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_warp_plan(&bad, 0, &geo, 0, 0, &plan));
+        TEST_ASSERT_EQUAL_MEMORY(&poison, &job, sizeof job);
+        c.map = &map;
+    }
     c.row_size = OW * 2 - 1;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_BUFFER, ssda_warp_init(&job, &c, &src));
     c.row_size = sizeof g_rowbuf - 1;
@@ -547,6 +631,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_exact_against_eval);
     RUN_TEST(test_identity_and_shift);
+    RUN_TEST(test_edges_and_fill_count);
     RUN_TEST(test_against_direct_resampler);
     RUN_TEST(test_streamed_equals_ram);
     RUN_TEST(test_plan_bounds_and_reads);

@@ -24,8 +24,9 @@
  * rotation of about 14 degrees, or a 25 % strain, between the two images),
  * and min_radius = 3 px admits noise and small local motion next to the
  * origin; docs/correlation.md measures the choice. A circle that leaves
- * NEXT is clipped to it; a template with no position left is
- * SSDA_COMPOSITE_EDGE.
+ * NEXT is clipped to it; a template whose centre p0' + (p_k - p0) is not a
+ * position of NEXT (its top-left outside 0..next_w - T, 0..next_h - T) is
+ * SSDA_COMPOSITE_EDGE, even where part of its circle is inside.
  *
  * MASK (flag SSDA_COMPOSITE_MASK; the grid tracking's SSDA_TRACK_MASK, see
  * ssda/track.h, by the same test): pixels equal to mask_value are fill (no
@@ -74,7 +75,7 @@ extern "C" {
 typedef enum {
     SSDA_COMPOSITE_OK = 0,   /* matched: dx, dy, rho valid */
     SSDA_COMPOSITE_FLAT = 1, /* standard deviation below min_std: not matched */
-    SSDA_COMPOSITE_EDGE = 2, /* its search circle holds no position of NEXT */
+    SSDA_COMPOSITE_EDGE = 2, /* its circle's centre is not a position of NEXT */
     SSDA_COMPOSITE_MASKED = 3 /* SSDA_COMPOSITE_MASK: it, its search area or (the
                                  origin) its match holds mask_value */
 } ssda_composite_status_t;

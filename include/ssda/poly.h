@@ -189,8 +189,9 @@ typedef struct {
  * 2, no pair dropped): 1.76 M instructions (0.97 M with the raw-residual
  * rule), stack 3.7 KB (3.4 KB); docs/registration.md.
  *
- *   pairs, n:  the pairs; n <= 65535. Reference positions must lie within
- *              the grid's domain (|X - cx| <= 2^kx, likewise y).
+ *   pairs, n:  the pairs; n <= 16384 (the exact sums' bound). Reference
+ *              positions must lie within the grid's domain (|X - cx| <=
+ *              2^kx, likewise y).
  *   ref_w, ref_h: the reference grid (sets cx, cy, kx, ky).
  *   cfg:       options (NULL = defaults).
  *   poly:      the map (on success).
@@ -202,7 +203,8 @@ typedef struct {
  * Returns SSDA_OK, or with no output written:
  *   SSDA_ERR_NULL    pairs, poly or work NULL
  *   SSDA_ERR_ARG     order not 0..3; a reference position outside the domain
- *   SSDA_ERR_SIZE    zero grid size; fewer pairs than terms, or pairs that do
+ *   SSDA_ERR_SIZE    zero grid size; fewer pairs than terms or more than
+ *                    16384, or pairs that do
  *                    not determine the map (on a line, or too few distinct
  *                    positions: a Cholesky pivot below 2^-12 of its
  *                    diagonal, i.e. cond beyond about 10^7)

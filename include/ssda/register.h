@@ -134,16 +134,20 @@ typedef struct {
 } ssda_register_point_t;
 
 /* Work bytes for a window of `window` px and an area of `search` px
-   (format: bytes per pixel): the window and the area, and the larger of
-   the two searches' work buffers. */
+   (0 = the defaults 20 and 40, as in the config; format: bytes per pixel):
+   the window and the area, and the larger of the two searches' work
+   buffers. */
 #define SSDA_REGISTER_ALIGN8_(n) ((((size_t)(n)) + 7u) & ~(size_t)7u)
+#define SSDA_REGISTER_WINDOW_(w) ((size_t)(w) != 0u ? (size_t)(w) : (size_t)SSDA_REGISTER_DEFAULT_WINDOW)
+#define SSDA_REGISTER_SEARCH_(s) ((size_t)(s) != 0u ? (size_t)(s) : (size_t)SSDA_REGISTER_DEFAULT_SEARCH)
 #define SSDA_REGISTER_WORK_SIZE(window, search, format)                        \
-    (SSDA_REGISTER_ALIGN8_((size_t)(window) * (size_t)(window) * (size_t)(format)) + \
-     SSDA_REGISTER_ALIGN8_((size_t)(search) * (size_t)(search) * (size_t)(format)) + \
-     (SSDA_MATCH_WORK_SIZE(search, search, window, window) >                   \
-              SSDA_NCC_WORK_SIZE(search, window, window)                      \
-          ? SSDA_MATCH_WORK_SIZE(search, search, window, window)              \
-          : SSDA_NCC_WORK_SIZE(search, window, window)))
+    SSDA_REGISTER_WORK_SIZE_(SSDA_REGISTER_WINDOW_(window), SSDA_REGISTER_SEARCH_(search), format)
+#define SSDA_REGISTER_WORK_SIZE_(win, area, format)                            \
+    (SSDA_REGISTER_ALIGN8_((win) * (win) * (size_t)(format)) +                 \
+     SSDA_REGISTER_ALIGN8_((area) * (area) * (size_t)(format)) +               \
+     (SSDA_MATCH_WORK_SIZE(area, area, win, win) > SSDA_NCC_WORK_SIZE(area, win, win) \
+          ? SSDA_MATCH_WORK_SIZE(area, area, win, win)                        \
+          : SSDA_NCC_WORK_SIZE(area, win, win)))
 
 /* Widest cell of a grid of grid_x cells across `width` px: ceil(width /
    grid_x) (grid_x 0 = 4). */
@@ -158,14 +162,11 @@ typedef struct {
    of 4 bytes may need up to 3 bytes a row less: its plate keeps the
    image's stride.) */
 #define SSDA_REGISTER_REF_SIZE(layout, width, grid_x, window, format, read_size, tile_w) \
-    SSDA_SOURCE_SIZE(layout, SSDA_REGISTER_CELL_W(width, grid_x),                \
-                     (size_t)(window) != 0u ? (size_t)(window)                   \
-                                            : (size_t)SSDA_REGISTER_DEFAULT_WINDOW, \
+    SSDA_SOURCE_SIZE(layout, SSDA_REGISTER_CELL_W(width, grid_x), SSDA_REGISTER_WINDOW_(window), \
                      format, read_size, tile_w)
 
 /* Least arena of a streamed moving image `width` px wide: one row of the
    search area (search 0 = 40), or of the image when narrower. */
-#define SSDA_REGISTER_SEARCH_(s) ((size_t)(s) != 0u ? (size_t)(s) : (size_t)SSDA_REGISTER_DEFAULT_SEARCH)
 #define SSDA_REGISTER_MOV_SIZE(layout, width, search, format, read_size, tile_w) \
     SSDA_SOURCE_SIZE(layout,                                                    \
                      SSDA_REGISTER_SEARCH_(search) < (size_t)(width)             \
@@ -180,7 +181,8 @@ typedef struct {
  *   out, out_count: grid_x * grid_y points, raster order of the cells
  *              (all written on success, accepted or not).
  *   accepted:  NULL or the number of OK points.
- *   work, work_size: SSDA_REGISTER_WORK_SIZE(window, search, format) bytes,
+ *   work, work_size: SSDA_REGISTER_WORK_SIZE(window, search, format) bytes
+ *              (cfg's window and search, 0 or not; NULL cfg: 0, 0),
  *              8-byte aligned.
  * Returns SSDA_OK, or with out untouched:
  *   SSDA_ERR_NULL    ref, mov, out or work NULL

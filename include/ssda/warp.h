@@ -106,7 +106,11 @@ typedef struct {
  * Bounds use the map's largest slope and curvature over the grid, so they
  * hold for every tile (tests check every segment against them).
  * Returns SSDA_OK, or without writing *plan: SSDA_ERR_NULL, SSDA_ERR_ARG
- * (map invalid, resample unknown, tile larger than the output),
+ * (map invalid: order or scales out of range, or a grid that leaves the
+ * map's domain, |X - cx| > 2^kx or |Y - cy| > 2^ky for some pixel of the
+ * ref_w x ref_h grid, as after changing cx, kx or ref_w of a map from
+ * ssda_poly_init or ssda_poly_fit; resample unknown, tile larger than the
+ * output),
  * SSDA_ERR_SIZE / _FORMAT (source geometry or format invalid).
  */
 int ssda_warp_plan(const ssda_poly_t *map, uint8_t resample, const ssda_source_config_t *src,
@@ -138,8 +142,8 @@ typedef struct {
  * Returns SSDA_OK, or with *job untouched:
  *   SSDA_ERR_NULL    job, cfg, cfg->map, cfg->sink, cfg->row or src NULL
  *   SSDA_ERR_STATE   src not initialised
- *   SSDA_ERR_ARG     map invalid, resample unknown, fill above the format's
- *                    maximum, tile larger than the output
+ *   SSDA_ERR_ARG     map invalid (as ssda_warp_plan), resample unknown, fill
+ *                    above the format's maximum, tile larger than the output
  *   SSDA_ERR_STRIDE  16-bit format with an odd row buffer address
  *   SSDA_ERR_BUFFER  row_size below SSDA_WARP_ROW_SIZE; a streamed source
  *                    whose arena cannot hold a 1 x 1 (nearest) or 2 x 2
