@@ -745,6 +745,16 @@ static void test_errors(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
     poison.count = 17u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
+    /* a component of sigma 0 has no density (it shifted by 2^32 - 23) */
+    poison = m;
+    poison.comp[poison.count - 1u].sigma_q16 = 0u;
+    memset(lut, 0xA5, sizeof lut);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 1u, 0u, lut));
+    TEST_ASSERT_EACH_EQUAL_HEX8(0xA5u, lut, sizeof lut);
+    memset(px, 0xA5, sizeof px);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_band_pixels(&poison, g_hist, 0u, px));
+    TEST_ASSERT_EACH_EQUAL_HEX32(0xA5A5A5A5u, px, 16u);
     poison = m;
     poison.bins = 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_band_pixels(&poison, g_hist, 0u, px));

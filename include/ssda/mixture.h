@@ -202,7 +202,8 @@ int ssda_mix_fit(const uint32_t *hist, uint32_t bins, const ssda_mix_config_t *c
  * bin z by the rule (ssda_mix_rule_t), band_q8 sigmas wide for
  * SSDA_MIX_LABEL_BAND (Q8, 1..4096, 0 = 2.0). lut has model->bins bytes.
  * Returns SSDA_OK, SSDA_ERR_NULL, SSDA_ERR_ARG (unknown rule, band above
- * 16 sigma, a model with count 0 or above 16 or bins outside 2..4096).
+ * 16 sigma, a model with count 0 or above 16, bins outside 2..4096, or a
+ * component of sigma 0 among the first count).
  */
 int ssda_mix_lut(const ssda_mix_model_t *model, uint8_t rule, uint32_t band_q8, uint8_t *lut);
 
