@@ -839,6 +839,73 @@ static void test_perfect_correlation(void)
     }
 }
 
+/* A band of tiny variance beside one of the largest (16-bit samples, 2^22
+   pixels): band 0 alternates 0 and 65535, bands 1 and 2 are 0 but for a few
+   1s (one per row, and for band 2 one more every `extra` rows). Every r_kl
+   against the exact ratio of the centred sums, which the counts give in
+   closed form (double, relative error ~1e-16): within 1 Q30 step. With
+   the matrix scaled by its largest variance alone the small bands kept
+   ~20 bits and r_12 was hundreds of steps off. */
+#define TINY_W 4096u
+#define TINY_ROWS 1024u
+static uint16_t g_tiny[3][TINY_W];
+
+static void test_tiny_variance_correlation(void)
+{
+    static const uint32_t extras[3] = {2u, 7u, 1000u};
+    uint32_t pass;
+    for (pass = 0; pass < 3u; pass++) {
+        const uint32_t extra = extras[pass];
+        ssda_kl_acc_config_t cfg;
+        ssda_kl_acc_t acc;
+        ssda_kl_t kl;
+        ssda_kl_row_t row;
+        double n, s0, q00, m1, m2, m12, c[3][3];
+        uint32_t y, i, k, l;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.format = SSDA_PIX_U16;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&acc, &cfg));
+        row.band[0] = g_tiny[0];
+        row.band[1] = g_tiny[1];
+        row.band[2] = g_tiny[2];
+        row.step = 1u;
+        for (i = 0; i < TINY_W; i++) {
+            g_tiny[0][i] = (i & 1u) != 0u ? 65535u : 0u;
+            g_tiny[1][i] = i == 0u ? 1u : 0u;
+        }
+        m2 = 0.0;
+        for (y = 0; y < TINY_ROWS; y++) {
+            for (i = 0; i < TINY_W; i++) {
+                g_tiny[2][i] = (uint16_t)((i == 0u || (i == 7u && y % extra == 0u)) ? 1u : 0u);
+            }
+            m2 += y % extra == 0u ? 2.0 : 1.0;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_add_row(&acc, &row, TINY_W));
+        }
+        /* closed forms: C_kl = n sum(x_k x_l) - sum(x_k) sum(x_l) */
+        n = (double)TINY_W * TINY_ROWS;
+        s0 = n / 2.0 * 65535.0;
+        q00 = n / 2.0 * 65535.0 * 65535.0;
+        m1 = TINY_ROWS;
+        m12 = TINY_ROWS; /* pixel 0 of each row: both 1; band 0 is 0 there */
+        c[0][0] = n * q00 - s0 * s0;
+        c[1][1] = n * m1 - m1 * m1;
+        c[2][2] = n * m2 - m2 * m2;
+        c[0][1] = -s0 * m1;
+        c[0][2] = n * (m2 - m1) * 65535.0 - s0 * m2; /* the extra 1s at odd i = 7 */
+        c[1][2] = n * m12 - m1 * m2;
+        c[1][0] = c[0][1];
+        c[2][0] = c[0][2];
+        c[2][1] = c[1][2];
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, NULL, &kl));
+        for (k = 0; k < 3u; k++) {
+            for (l = 0; l < 3u; l++) {
+                const double r = c[k][l] / sqrt(c[k][k] * c[l][l]);
+                TEST_ASSERT_DOUBLE_WITHIN(1.0, r * Q30, (double)kl.matrix_q30[k][l]);
+            }
+        }
+    }
+}
+
 static void test_source_errors(void)
 {
     static uint8_t bytes[64];
@@ -1007,6 +1074,7 @@ int main(void)
     RUN_TEST(test_mask_paths);
     RUN_TEST(test_constant_band);
     RUN_TEST(test_perfect_correlation);
+    RUN_TEST(test_tiny_variance_correlation);
     RUN_TEST(test_source_errors);
     RUN_TEST(test_errors);
     return UNITY_END();
