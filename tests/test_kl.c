@@ -226,6 +226,43 @@ static void test_jacobi_degenerate(void)
     }
 }
 
+/* Diagonal matrices with repeated entries: no rotation runs, and the rows
+   come out by kl.h's rules alone: decreasing eigenvalue, ties to the lower
+   original index, each row the unit vector of its index. */
+static void test_eigen_tie_order(void)
+{
+    static const int64_t diag[][3] = {
+        {3, 3, 3}, {2, 2, 1}, {1, 2, 2}, {2, 1, 2}, {1, 1, 2}, {0, 0, 0}, {1, 3, 1},
+    };
+    uint32_t c, k, j;
+    for (c = 0; c < sizeof diag / sizeof diag[0]; c++) {
+        int64_t m[3][3], lam[3];
+        int32_t vec[3][3];
+        uint32_t want[3] = {0u, 1u, 2u};
+        memset(m, 0, sizeof m);
+        for (k = 0; k < 3u; k++) {
+            m[k][k] = diag[c][k] << 28;
+        }
+        /* the reference order: a stable sort by decreasing value */
+        for (k = 0; k < 3u; k++) {
+            for (j = 0; j + 1u < 3u - k; j++) {
+                if (diag[c][want[j + 1u]] > diag[c][want[j]]) {
+                    const uint32_t t = want[j];
+                    want[j] = want[j + 1u];
+                    want[j + 1u] = t;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT32(1u, ssda__kl_eigen(m, vec, lam));
+        for (k = 0; k < 3u; k++) {
+            TEST_ASSERT_EQUAL_INT64(diag[c][want[k]] << 28, lam[k]);
+            for (j = 0; j < 3u; j++) {
+                TEST_ASSERT_EQUAL_INT32(j == want[k] ? 1 << 30 : 0, vec[k][j]);
+            }
+        }
+    }
+}
+
 /* ---- images ---- */
 
 /* A w x h image of `ch` interleaved channels: three bands correlated through
@@ -438,7 +475,7 @@ static double gain_ref(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t k)
 static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t w, uint32_t h,
                             uint32_t ch, uint16_t nodata)
 {
-    uint32_t y, x, k, clamped = 0u, lo = 0u, hi = 0u;
+    uint32_t y, x, k, clamped = 0u, lo = 0u, hi = 0u, values = 0u, inexact = 0u, near = 0u;
     double g[3];
     for (k = 0; k < 3u; k++) {
         g[k] = gain_ref(kl, s, k);
@@ -463,7 +500,12 @@ static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t 
                 z = floor(z);
                 lo += z < 0.0 ? 1u : 0u;
                 hi += z > kl->out_max ? 1u : 0u;
+                /* formula values whose clamping a 1-step error may change */
+                near += (z >= -1.0 && z <= 0.0) ||
+                        (z >= kl->out_max && z <= kl->out_max + 1.0) ? 1u : 0u;
                 z = z < 0.0 ? 0.0 : z > kl->out_max ? kl->out_max : z;
+                values++;
+                inexact += z != (double)g_z[k][x] ? 1u : 0u;
                 if (fabs(z - (double)g_z[k][x]) > 1.0) {
                     printf("k %u fmt %u range %u out_max %u nsig %u g %.6g shift %u w %d %d %d b %lld zvar %llu\n",
                            (unsigned)k, kl->format, kl->range, kl->out_max, kl->nsigma, g[k],
@@ -474,9 +516,19 @@ static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t 
             }
         }
     }
-    /* clamps counted: each disagreement is a value within 1 of an end */
-    TEST_ASSERT_TRUE(clamped + 2u * w * h >= lo + hi);
-    TEST_ASSERT_TRUE(lo + hi + 2u * w * h >= clamped);
+    /* within 1 as kl.h says, and in fact nearly always equal: a value one
+       step off is a formula value next to a rounding boundary (measured:
+       45 of 293 739 over test_images_vs_double; 169 of 4929, the most, at
+       the capped gain of 4096 steps per sample step, test_constant_band).
+       A half-step bias in the plan's offset passes the 1-step bound but
+       moves half the values. */
+    TEST_ASSERT_TRUE(inexact * 10u <= values);
+    /* clamps counted: a disagreement with the formula's count needs a value
+       one step off at an end (formula value -1, 0, out_max or out_max + 1),
+       and such values are as rare there as anywhere: counting values equal
+       to out_max as clamped moves about a quarter of them */
+    TEST_ASSERT_TRUE(clamped <= lo + hi + near / 100u + 2u);
+    TEST_ASSERT_TRUE(lo + hi <= clamped + near / 100u + 2u);
     if (kl->range == SSDA_KL_RANGE_FULL) {
         TEST_ASSERT_EQUAL_UINT32(0u, lo + hi);
     }
@@ -1067,6 +1119,7 @@ int main(void)
     RUN_TEST(test_seed_eq_2_3);
     RUN_TEST(test_jacobi_random);
     RUN_TEST(test_jacobi_degenerate);
+    RUN_TEST(test_eigen_tie_order);
     RUN_TEST(test_images_vs_double);
     RUN_TEST(test_worst_case_sums);
     RUN_TEST(test_nodata_mask);
