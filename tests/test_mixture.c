@@ -268,6 +268,11 @@ static void test_em_vs_double(void)
             TEST_ASSERT_DOUBLE_WITHIN(2.0 * tol, -2.0 * lref + (3.0 * k - 1.0) * log((double)total),
                                       (double)m.bic_q16 / Q16);
         }
+        /* BIC from the reported log-likelihood: the penalty (3k - 1) ln N
+           to the rounding of ln N in Q16 (half a step per parameter) */
+        TEST_ASSERT_DOUBLE_WITHIN(0.5 * (3.0 * k - 1.0) + 1.0,
+                                  (3.0 * k - 1.0) * log((double)total) * Q16,
+                                  (double)(m.bic_q16 + 2 * m.loglik_q16));
     }
     /* (integers: newlib-nano's printf has no floating point) */
     printf("EM vs double: worst weight %u e-6, mean %u e-6 sd, sd %u e-6 sd\n",
@@ -612,6 +617,59 @@ static void test_worst_case(void)
     TEST_ASSERT_EQUAL_UINT32(15u * 65536u, m.comp[0].mean_q16);
 }
 
+/* Band edges and ties of the label rules on a model made here: bins
+   exactly band sigmas from a mean are inside (|z - mu| <= band sigma), and
+   of equally likely components the lower label wins (mixture.h). */
+static void test_lut_edges_and_ties(void)
+{
+    static const uint32_t band_q8[3] = {512u, 256u, 384u};
+    ssda_mix_model_t m;
+    uint8_t lut[32];
+    uint32_t px[2], b, z, j, rule;
+    memset(&m, 0, sizeof m);
+    m.count = 2u;
+    m.bins = 32u;
+    for (j = 0; j < 2u; j++) {
+        m.comp[j].weight_q16 = 32768u;
+        m.comp[j].mean_q16 = (10u + 10u * j) << 16; /* 10 and 20 */
+        m.comp[j].sigma_q16 = 2u << 16;
+    }
+    memset(g_hist, 0, sizeof g_hist);
+    for (z = 0; z < 32u; z++) {
+        g_hist[z] = 1u + z;
+    }
+    for (b = 0; b < 3u; b++) {
+        const double band = band_q8[b] / 256.0;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, SSDA_MIX_LABEL_BAND, band_q8[b], lut));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_band_pixels(&m, g_hist, band_q8[b], px));
+        for (j = 0; j < 2u; j++) {
+            const double mu = 10.0 + 10.0 * j;
+            uint32_t n = 0u;
+            for (z = 0; z < 32u; z++) {
+                n += fabs((double)z - mu) <= band * 2.0 ? g_hist[z] : 0u;
+            }
+            TEST_ASSERT_EQUAL_UINT32(n, px[j]);
+        }
+        for (z = 0; z < 32u; z++) {
+            const double d0 = fabs((double)z - 10.0), d1 = fabs((double)z - 20.0);
+            /* equal weights and sigmas: the nearer mean is the likelier */
+            uint8_t want = 0u;
+            if (d0 <= band * 2.0 && (d0 <= d1 || d1 > band * 2.0)) {
+                want = 1u;
+            } else if (d1 <= band * 2.0) {
+                want = 2u;
+            }
+            TEST_ASSERT_EQUAL_UINT8(want, lut[z]);
+        }
+    }
+    /* the tie at bin 15, both rules: the lower label */
+    for (rule = 0; rule < 2u; rule++) {
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, (uint8_t)rule, 768u, lut));
+        TEST_ASSERT_EQUAL_UINT8(1u, lut[15]);
+        TEST_ASSERT_EQUAL_UINT8(2u, lut[16]);
+    }
+}
+
 /* Internal paths the public fits reach only on rare data. */
 static void test_internal_paths(void)
 {
@@ -784,6 +842,7 @@ int main(void)
     RUN_TEST(test_recovery);
     RUN_TEST(test_search);
     RUN_TEST(test_lut);
+    RUN_TEST(test_lut_edges_and_ties);
     RUN_TEST(test_hist_add);
     RUN_TEST(test_worst_case);
     RUN_TEST(test_internal_paths);

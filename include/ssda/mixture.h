@@ -60,7 +60,7 @@
  * the steps are then halved and the cycles resumed, 6 times, which finds
  * the minimum the fixed steps straddle. Steps start at height/16, sigma/8
  * (mean) and sigma/16 (sigma) of each component's initial values, at least
- * 1 LSB. Parameters are kept in height [0, 2^25], mean [0, bins - 1],
+ * 1 LSB. Parameters are kept in height [1, 2^25], mean [0, bins - 1],
  * sigma [sigma_min, bins]. Weights are then w_k ~ a_k sigma_k sqrt(2 pi),
  * normalised to sum 1 (the seed's fit is of heights, not a density).
  *
@@ -82,8 +82,8 @@
  * (ties: the smaller K), each K fitted by EM from its own initialisation;
  * the search fit then starts from the same initialisation as that K's EM.
  *
- * LABELS: components are sorted by increasing mean (ties: smaller sigma,
- * then the order found); label k + 1 is component k; 0 is "none".
+ * LABELS: components are sorted by increasing mean (ties: the order
+ * found); label k + 1 is component k; 0 is "none".
  *   SSDA_MIX_LABEL_BAND (the seed): z gets a label when it lies within
  *     band sigmas of that component's mean (|z - mu| <= band sigma); of
  *     several, the most likely (largest s_k, ties: the lower label); none: 0.
