@@ -768,6 +768,18 @@ static void test_stream_source(void)
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_kl_acc_add_source(&before, &src, NULL, ch));
             a_src.count = 4294967295u - 100u;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_OVERFLOW, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            /* the count may reach 2^32 - 1 exactly, not 2^32 (kl.h: as add_row) */
+            test_source_reset(&dev);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&src, &scfg));
+            acfg.format = format;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&a_src, &acfg));
+            a_src.count = (uint32_t)(4294967296u - (uint64_t)W * H);
+            before = a_src;
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_OVERFLOW, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            TEST_ASSERT_EQUAL_MEMORY(&before, &a_src, sizeof before);
+            a_src.count--;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            TEST_ASSERT_EQUAL_UINT32(4294967295u, a_src.count);
         }
     }
 }
