@@ -670,6 +670,39 @@ static void test_lut_edges_and_ties(void)
     }
 }
 
+/* q(z) = ((z - mu) / (sqrt2 sigma))^2 in Q16 against double over sigmas
+   from 2^-16 to 4096 bins, any mean and bin: within 4 sqrt(q) + 2 steps
+   (mixture.h), and the cap at 16384 nats exactly where it is due. */
+static void test_q_vs_double(void)
+{
+    test_rng_t r;
+    uint32_t t;
+    double worst = 0.0;
+    test_rng_seed(&r, 36u);
+    for (t = 0; t < 200000u; t++) {
+        const uint32_t sigma = 1u + (test_rng_next(&r) >> (test_rng_next(&r) % 32u)) % (4096u << 16);
+        const uint32_t mean = test_rng_next(&r) % (4095u << 16);
+        const uint32_t z = test_rng_next(&r) % 4096u;
+        ssda__mix_gauss_t g;
+        double d, ex, got, tol;
+        ssda__mix_prepare(&g, 1u, 1u, mean, sigma);
+        d = ((double)z * Q16 - mean) / (sqrt(2.0) * sigma);
+        ex = d * d * Q16;
+        got = (double)ssda__mix_q(&g, z);
+        if (ex > 16384.0 * Q16 * 1.001) {
+            TEST_ASSERT_EQUAL_UINT32(1073741824u, ssda__mix_q(&g, z));
+            continue;
+        }
+        if (ex > 16384.0 * Q16 * 0.999) {
+            continue; /* at the cap: either */
+        }
+        tol = 4.0 * sqrt(ex / Q16) + 2.0;
+        worst = fabs(got - ex) / tol > worst ? fabs(got - ex) / tol : worst;
+        TEST_ASSERT_DOUBLE_WITHIN(tol, ex, got);
+    }
+    printf("q vs double: worst error %u%% of the bound\n", (unsigned)(worst * 100.0));
+}
+
 /* Internal paths the public fits reach only on rare data. */
 static void test_internal_paths(void)
 {
@@ -843,6 +876,7 @@ int main(void)
     RUN_TEST(test_search);
     RUN_TEST(test_lut);
     RUN_TEST(test_lut_edges_and_ties);
+    RUN_TEST(test_q_vs_double);
     RUN_TEST(test_hist_add);
     RUN_TEST(test_worst_case);
     RUN_TEST(test_internal_paths);

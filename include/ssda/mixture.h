@@ -28,8 +28,11 @@
  *     p(z) = sum_k w_k / (sigma_k sqrt(2 pi)) exp(-(z - mu_k)^2 / (2 sigma_k^2))
  * at bin centres (z an integer), computed in the log domain: per component
  * s_k = ln(w_k / sigma_k) - q_k(z) with q_k(z) = ((z - mu_k) / (sqrt2
- * sigma_k))^2 (Q16, from a 24-bit reciprocal: relative error < 2^-22, capped
- * at 16384 nats), then ln p = max s + ln(sum exp(s_k - max s)) - ln sqrt(2 pi).
+ * sigma_k))^2 (Q16: the ratio in Q16 from a 24-bit reciprocal, relative
+ * error < 2^-22, truncated, then squared: q within 4 sqrt(q) + 2 Q16 steps,
+ * q in nats, so 2^-12 relative near q = 1 and 0.008 nats at the cap;
+ * capped at 16384 nats; tests/test_mixture.c), then
+ * ln p = max s + ln(sum exp(s_k - max s)) - ln sqrt(2 pi).
  * exp(-x) in Q30 within 2 steps, ln in Q24 within 1 step (lib/fixexp.c,
  * tests/test_fixexp.c against libm).
  *
