@@ -911,7 +911,11 @@ static void test_perfect_correlation(void)
    the matrix scaled by its largest variance alone the small bands kept
    ~20 bits and r_12 was hundreds of steps off. */
 #define TINY_W 4096u
+#ifdef SSDA_TEST_SMALL
+#define TINY_ROWS 256u
+#else
 #define TINY_ROWS 1024u
+#endif
 static uint16_t g_tiny[3][TINY_W];
 
 static void test_tiny_variance_correlation(void)

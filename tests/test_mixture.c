@@ -27,9 +27,11 @@ void tearDown(void) {}
 #ifdef SSDA_TEST_SMALL
 #define SAMPLES 20000u
 #define RUNS 3u
+#define Q_CASES 20000u
 #else
 #define SAMPLES 400000u
 #define RUNS 12u
+#define Q_CASES 200000u
 #endif
 
 #define BINS 1024u
@@ -679,7 +681,7 @@ static void test_q_vs_double(void)
     uint32_t t;
     double worst = 0.0;
     test_rng_seed(&r, 36u);
-    for (t = 0; t < 200000u; t++) {
+    for (t = 0; t < Q_CASES; t++) {
         const uint32_t sigma = 1u + (test_rng_next(&r) >> (test_rng_next(&r) % 32u)) % (4096u << 16);
         const uint32_t mean = test_rng_next(&r) % (4095u << 16);
         const uint32_t z = test_rng_next(&r) % 4096u;
