@@ -101,6 +101,11 @@ uint32_t ssda__ratio_q16(uint64_t num, int32_t exp2, uint64_t den)
         const uint32_t k = (uint32_t)(-e);
         nm >>= k;
     }
+    /* the test above leaves quotients in [2^32, 2^33) (nl + e = bitlen(d)
+       + 32): nm / d >= 2^32 exactly when nm >= d 2^32 */
+    if ((nm >> 32) >= d) {
+        return 0xFFFFFFFFu;
+    }
     return SSDA_DIV64_32(nm, (uint32_t)d);
 }
 

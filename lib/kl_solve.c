@@ -56,32 +56,49 @@ static int32_t covariance_q30(const centred_t *c, int64_t a[3][3])
     return e;
 }
 
-/* Correlation coefficients in Q30: C scaled to below 2^62 first, then
-   r = C_kl / sqrt(C_kk C_ll) rounded; a constant band correlates 0. */
+/* Correlation coefficients in Q30: r = C_kl / sqrt(C_kk C_ll) rounded,
+   each pair scaled on its own (a band of small variance beside one of large
+   variance keeps its bits); a constant band correlates 0. */
+static int64_t correlation_pair(const centred_t *c, uint32_t k, uint32_t l)
+{
+    /* C_kk 2^-ek in [2^61, 2^62), C_ll 2^-el in [2^60, 2^62) with ek + el
+       even, so that C_kl is scaled by 2^-(ek + el) / 2 exactly as the root
+       of their product: |C_kl| <= sqrt(C_kk C_ll) (Cauchy-Schwarz) keeps it
+       below 2^62 (bits of C <= 96: ek, el in -62..35) */
+    const int32_t ek = (int32_t)ssda__u128_bits(c->mag[k][k]) - 62;
+    int32_t el = (int32_t)ssda__u128_bits(c->mag[l][l]) - 62;
+    uint64_t dk, dl, den;
+    ssda__u128_t num;
+    int64_t r;
+    if (((uint32_t)(ek + el) & 1u) != 0u) {
+        el++;
+    }
+    dk = scaled(c->mag[k][k], ek);
+    dl = scaled(c->mag[l][l], el);
+    /* relative errors of the truncations < 2^-59: within 1 Q30 step */
+    den = ssda__u128_isqrt(ssda__mul_64x64(dk, dl)); /* < 2^62 */
+    num = ssda__u128_shl(ssda__u128_from(scaled(c->mag[k][l], (ek + el) / 2)), 30u);
+    num = ssda__u128_add(num, ssda__u128_from(den >> 1));
+    r = (int64_t)ssda__u128_div(num, ssda__u128_from(den)).lo;
+    if (r > SSDA__ONE_Q30_KL) {
+        r = SSDA__ONE_Q30_KL; /* floor of the root can push |r| past 1 */
+    }
+    return c->neg[k][l] ? -r : r;
+}
+
 static void correlation_q30(const centred_t *c, int64_t a[3][3])
 {
-    const int32_t e = (int32_t)c->top_bits - 62;
-    uint64_t d[3];
     uint32_t k, l;
-    for (k = 0u; k < 3u; k++) {
-        d[k] = scaled(c->mag[k][k], e);
-    }
     for (k = 0u; k < 3u; k++) {
         for (l = 0u; l < 3u; l++) {
             int64_t r = 0;
             if (k == l) {
                 r = SSDA__ONE_Q30_KL;
-            } else if (d[k] == 0u || d[l] == 0u) {
+            } else if (ssda__u128_bits(c->mag[k][k]) == 0u ||
+                       ssda__u128_bits(c->mag[l][l]) == 0u) {
                 r = 0; /* a constant band */
             } else {
-                const uint64_t den = ssda__u128_isqrt(ssda__mul_64x64(d[k], d[l])); /* < 2^62 */
-                ssda__u128_t num = ssda__u128_shl(ssda__u128_from(scaled(c->mag[k][l], e)), 30u);
-                num = ssda__u128_add(num, ssda__u128_from(den >> 1));
-                r = (int64_t)ssda__u128_div(num, ssda__u128_from(den)).lo;
-                if (r > SSDA__ONE_Q30_KL) {
-                    r = SSDA__ONE_Q30_KL; /* floor of the root can push |r| past 1 */
-                }
-                r = c->neg[k][l] ? -r : r;
+                r = correlation_pair(c, k, l);
             }
             a[k][l] = r;
         }

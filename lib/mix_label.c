@@ -31,9 +31,15 @@ int ssda_mix_hist_add(uint32_t *hist, uint32_t bins, const uint16_t *values, uin
 
 static int check_model(const ssda_mix_model_t *m, uint32_t band_q8)
 {
+    uint32_t k;
     if (m->count == 0u || m->count > SSDA__MIX_K || m->bins < SSDA_MIX_MIN_BINS ||
         m->bins > SSDA_MIX_MAX_BINS || band_q8 > 4096u) {
         return SSDA_ERR_ARG;
+    }
+    for (k = 0u; k < m->count; k++) {
+        if (m->comp[k].sigma_q16 == 0u) {
+            return SSDA_ERR_ARG; /* no density: ssda__mix_prepare needs sigma > 0 */
+        }
     }
     return SSDA_OK;
 }

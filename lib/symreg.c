@@ -59,6 +59,14 @@ static bool area_near(uint32_t area_r, uint32_t area_m, uint32_t s_q16, uint32_t
            ((uint64_t)area_m << 24) <= e * ratio_q8;
 }
 
+/* A contour of zero energy (all samples equal: a one-pixel region) matches
+   nothing (fourier.h): ssda_fd_match and ssda_fd_match_fixed refuse it and
+   the E^2 bounds would divide by its energy. A nucleus never has one. */
+static bool matchable(const ssda_fd_t *a, const ssda_fd_t *b)
+{
+    return a->energy_q16 != 0u && b->energy_q16 != 0u;
+}
+
 /* Insert a candidate into the list sorted by E^2 (ties keep the earlier). */
 static void nuclei_insert(nucleus_t *list, uint32_t *n, uint32_t k, const nucleus_t *c)
 {
@@ -93,7 +101,8 @@ static uint32_t find_nuclei(const plan_t *p, nucleus_t *list, ssda_symreg_result
             if (nm == PER_REF && mine[PER_REF - 1u].e2 < limit) {
                 limit = mine[PER_REF - 1u].e2;
             }
-            if (!area_fits(p->ref[i].area, p->mov[j].area, p->smin, p->smax)) {
+            if (!area_fits(p->ref[i].area, p->mov[j].area, p->smin, p->smax) ||
+                !matchable(&p->fr[i], &p->fm[j])) {
                 continue;
             }
             if (ssda__fd_e2_bound(&p->fr[i], &p->fm[j]) > limit) {
@@ -154,7 +163,8 @@ static uint32_t grow(const plan_t *p, const nucleus_t *nu, const ssda_symreg_aff
             ssda_fd_match_t m;
             const bool forced = i == nu->ref && j == nu->mov;
             if (!forced && (dist2(x, y, p->mov[j].cx_q8, p->mov[j].cy_q8) > r * r ||
-                            !area_near(p->ref[i].area, p->mov[j].area, s, p->ratio_q8))) {
+                            !area_near(p->ref[i].area, p->mov[j].area, s, p->ratio_q8) ||
+                            !matchable(&p->fr[i], &p->fm[j]))) {
                 continue;
             }
             if (!forced && ssda__fd_fixed_bound(&p->fr[i], &p->fm[j], s == 0u ? 1u : s) >

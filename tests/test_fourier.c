@@ -345,6 +345,39 @@ static void test_circle_and_limits(void)
     TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_fd_compute(p, 8u, 3u, &b));
 }
 
+/* The fixed match of a contour with one about 300 times smaller: A / B
+   between 2^16 and 2^17, E^2 >= (s sqrt(A / B) - 1)^2 (|Re Z| <= sqrt(A B))
+   is far above 2^16 and must saturate; the ratio A / B in Q16 (2^32 to
+   2^33) came back modulo 2^32 and E^2 as about 0.2 of its value. */
+static void test_fixed_match_of_far_sizes_saturates(void)
+{
+    ssda_point_q8_t p[N];
+    ssda_fd_t a, b;
+    ssda_fd_match_t m;
+    double ab, lower;
+    uint32_t k;
+    for (k = 0u; k < N; k++) {
+        const double t = 2.0 * TEST_PI * k / N;
+        p[k].x_q8 = q8(1500.0 + 1000.0 * test_cos(t));
+        p[k].y_q8 = q8(1500.0 + 1000.0 * test_sin(t));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_fd_compute(p, N, M, &a));
+    for (k = 0u; k < N; k++) {
+        const double t = 2.0 * TEST_PI * k / N;
+        p[k].x_q8 = q8(50.0 + 3.3 * test_cos(t));
+        p[k].y_q8 = q8(50.0 + 3.3 * test_sin(t));
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_fd_compute(p, N, M, &b));
+    ab = (double)a.energy_q16 / (double)b.energy_q16;
+    TEST_ASSERT_TRUE(ab > 65536.0 && ab < 131072.0);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_fd_match_fixed(&a, &b, 65536u, 0u, &m));
+    lower = (test_sqrt(ab) - 1.0) * (test_sqrt(ab) - 1.0) * 65536.0;
+    TEST_ASSERT_TRUE(lower > 4294967295.0);
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, m.e2_q16);
+    /* the E^2 bound agrees: it may not exceed E^2, and here E^2 saturates */
+    TEST_ASSERT_TRUE(ssda__fd_fixed_bound(&a, &b, 65536u) <= m.e2_q16);
+}
+
 static void test_errors_change_nothing(void)
 {
     ssda_point_q8_t p[N];
@@ -405,6 +438,46 @@ static void test_errors_change_nothing(void)
     TEST_ASSERT_EQUAL_MEMORY(&poison_m, &m, sizeof m);
 }
 
+static uint32_t bits64(uint64_t v)
+{
+    uint32_t n = 0u;
+    while (v != 0u) {
+        n++;
+        v >>= 1;
+    }
+    return n;
+}
+
+/* ssda__ratio_q16 against plain 64-bit division where that is exact: den
+   below 2^32 (no narrowing) and num 2^(exp2 + 16) an integer below 2^64;
+   quotients of 2^30 to 2^34, about the saturation at 2^32. */
+static void ratio_vs_integer_division(void)
+{
+    test_rng_t r;
+    uint32_t t;
+    test_rng_seed(&r, 0x5A71u);
+    for (t = 0u; t < 200000u; t++) {
+        const uint32_t den = (test_rng_next(&r) >> (test_rng_next(&r) % 32u)) | 1u;
+        const uint64_t q = ((uint64_t)test_rng_next(&r) << 2) | (test_rng_next(&r) & 3u);
+        const int32_t e = (int32_t)(test_rng_next(&r) % 12u) - 6; /* exp2 + 16 */
+        uint64_t scaled, num, exact;
+        uint32_t want;
+        if (q < ((uint64_t)1u << 30) || bits64(q) + bits64(den) > 63u) {
+            continue;
+        }
+        scaled = q * den + test_rng_next(&r) % den; /* < 2^63 */
+        if (e >= 0) {
+            num = scaled >> (uint32_t)e; /* num 2^e <= scaled: exact below 2^64 */
+            exact = (num << (uint32_t)e) / den;
+        } else {
+            num = scaled;
+            exact = (num >> (uint32_t)(-e)) / den; /* floor(floor(a / b) / c) = floor(a / bc) */
+        }
+        want = exact > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)exact;
+        TEST_ASSERT_EQUAL_UINT32(want, ssda__ratio_q16(num, e - 16, den));
+    }
+}
+
 static void test_ratio_helpers(void)
 {
     /* floor(num 2^e 2^16 / den), saturated */
@@ -417,6 +490,12 @@ static void test_ratio_helpers(void)
     TEST_ASSERT_EQUAL_UINT32(0u, ssda__ratio_q16(UINT64_MAX, -90, 1u));
     TEST_ASSERT_EQUAL_UINT32(65536u, ssda__ratio_q16((uint64_t)3u << 60, 0, (uint64_t)3u << 60));
     TEST_ASSERT_EQUAL_UINT32(21845u, ssda__ratio_q16(1u << 20, 0, 3u << 20)); /* 1/3 */
+    /* quotients of 2^32 to 2^33 saturate too (they wrapped modulo 2^32) */
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, ssda__ratio_q16(((uint64_t)1u << 32) + 5u, 0, 1u << 16));
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, ssda__ratio_q16((uint64_t)3u << 31, 0, 1u << 16));
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, ssda__ratio_q16((uint64_t)1u << 32, -16, 1u));
+    TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFEu, ssda__ratio_q16(0xFFFFFFFEu, 0, 1u << 16));
+    ratio_vs_integer_division();
     TEST_ASSERT_EQUAL_UINT32(0xFFFFFFFFu, ssda__mulshr_sat(0xFFFFFFFFu, 0xFFFFFFFFu, 16u));
     TEST_ASSERT_EQUAL_UINT32(6u, ssda__mulshr_sat(3u, 4u, 1u));
 }
@@ -430,5 +509,6 @@ int main(void)
     RUN_TEST(test_circle_and_limits);
     RUN_TEST(test_errors_change_nothing);
     RUN_TEST(test_ratio_helpers);
+    RUN_TEST(test_fixed_match_of_far_sizes_saturates);
     return UNITY_END();
 }

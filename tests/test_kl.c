@@ -226,6 +226,43 @@ static void test_jacobi_degenerate(void)
     }
 }
 
+/* Diagonal matrices with repeated entries: no rotation runs, and the rows
+   come out by kl.h's rules alone: decreasing eigenvalue, ties to the lower
+   original index, each row the unit vector of its index. */
+static void test_eigen_tie_order(void)
+{
+    static const int64_t diag[][3] = {
+        {3, 3, 3}, {2, 2, 1}, {1, 2, 2}, {2, 1, 2}, {1, 1, 2}, {0, 0, 0}, {1, 3, 1},
+    };
+    uint32_t c, k, j;
+    for (c = 0; c < sizeof diag / sizeof diag[0]; c++) {
+        int64_t m[3][3], lam[3];
+        int32_t vec[3][3];
+        uint32_t want[3] = {0u, 1u, 2u};
+        memset(m, 0, sizeof m);
+        for (k = 0; k < 3u; k++) {
+            m[k][k] = diag[c][k] << 28;
+        }
+        /* the reference order: a stable sort by decreasing value */
+        for (k = 0; k < 3u; k++) {
+            for (j = 0; j + 1u < 3u - k; j++) {
+                if (diag[c][want[j + 1u]] > diag[c][want[j]]) {
+                    const uint32_t t = want[j];
+                    want[j] = want[j + 1u];
+                    want[j + 1u] = t;
+                }
+            }
+        }
+        TEST_ASSERT_EQUAL_UINT32(1u, ssda__kl_eigen(m, vec, lam));
+        for (k = 0; k < 3u; k++) {
+            TEST_ASSERT_EQUAL_INT64(diag[c][want[k]] << 28, lam[k]);
+            for (j = 0; j < 3u; j++) {
+                TEST_ASSERT_EQUAL_INT32(j == want[k] ? 1 << 30 : 0, vec[k][j]);
+            }
+        }
+    }
+}
+
 /* ---- images ---- */
 
 /* A w x h image of `ch` interleaved channels: three bands correlated through
@@ -438,7 +475,7 @@ static double gain_ref(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t k)
 static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t w, uint32_t h,
                             uint32_t ch, uint16_t nodata)
 {
-    uint32_t y, x, k, clamped = 0u, lo = 0u, hi = 0u;
+    uint32_t y, x, k, clamped = 0u, lo = 0u, hi = 0u, values = 0u, inexact = 0u, near = 0u;
     double g[3];
     for (k = 0; k < 3u; k++) {
         g[k] = gain_ref(kl, s, k);
@@ -463,7 +500,12 @@ static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t 
                 z = floor(z);
                 lo += z < 0.0 ? 1u : 0u;
                 hi += z > kl->out_max ? 1u : 0u;
+                /* formula values whose clamping a 1-step error may change */
+                near += (z >= -1.0 && z <= 0.0) ||
+                        (z >= kl->out_max && z <= kl->out_max + 1.0) ? 1u : 0u;
                 z = z < 0.0 ? 0.0 : z > kl->out_max ? kl->out_max : z;
+                values++;
+                inexact += z != (double)g_z[k][x] ? 1u : 0u;
                 if (fabs(z - (double)g_z[k][x]) > 1.0) {
                     printf("k %u fmt %u range %u out_max %u nsig %u g %.6g shift %u w %d %d %d b %lld zvar %llu\n",
                            (unsigned)k, kl->format, kl->range, kl->out_max, kl->nsigma, g[k],
@@ -474,9 +516,19 @@ static void check_transform(const ssda_kl_t *kl, const ref_stats_t *s, uint32_t 
             }
         }
     }
-    /* clamps counted: each disagreement is a value within 1 of an end */
-    TEST_ASSERT_TRUE(clamped + 2u * w * h >= lo + hi);
-    TEST_ASSERT_TRUE(lo + hi + 2u * w * h >= clamped);
+    /* within 1 as kl.h says, and in fact nearly always equal: a value one
+       step off is a formula value next to a rounding boundary (measured:
+       45 of 293 739 over test_images_vs_double; 169 of 4929, the most, at
+       the capped gain of 4096 steps per sample step, test_constant_band).
+       A half-step bias in the plan's offset passes the 1-step bound but
+       moves half the values. */
+    TEST_ASSERT_TRUE(inexact * 10u <= values);
+    /* clamps counted: a disagreement with the formula's count needs a value
+       one step off at an end (formula value -1, 0, out_max or out_max + 1),
+       and such values are as rare there as anywhere: counting values equal
+       to out_max as clamped moves about a quarter of them */
+    TEST_ASSERT_TRUE(clamped <= lo + hi + near / 100u + 2u);
+    TEST_ASSERT_TRUE(lo + hi <= clamped + near / 100u + 2u);
     if (kl->range == SSDA_KL_RANGE_FULL) {
         TEST_ASSERT_EQUAL_UINT32(0u, lo + hi);
     }
@@ -716,6 +768,18 @@ static void test_stream_source(void)
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_FORMAT, ssda_kl_acc_add_source(&before, &src, NULL, ch));
             a_src.count = 4294967295u - 100u;
             TEST_ASSERT_EQUAL_INT(SSDA_ERR_OVERFLOW, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            /* the count may reach 2^32 - 1 exactly, not 2^32 (kl.h: as add_row) */
+            test_source_reset(&dev);
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_source_init(&src, &scfg));
+            acfg.format = format;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&a_src, &acfg));
+            a_src.count = (uint32_t)(4294967296u - (uint64_t)W * H);
+            before = a_src;
+            TEST_ASSERT_EQUAL_INT(SSDA_ERR_OVERFLOW, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            TEST_ASSERT_EQUAL_MEMORY(&before, &a_src, sizeof before);
+            a_src.count--;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_add_source(&a_src, &src, NULL, ch));
+            TEST_ASSERT_EQUAL_UINT32(4294967295u, a_src.count);
         }
     }
 }
@@ -836,6 +900,77 @@ static void test_perfect_correlation(void)
     }
     /* rank one: lambda = 3, the others 0 */
     TEST_ASSERT_DOUBLE_WITHIN(4.0, 3.0 * 65536.0, (double)kl.lambda_q16[0]);
+    }
+}
+
+/* A band of tiny variance beside one of the largest (16-bit samples, 2^22
+   pixels): band 0 alternates 0 and 65535, bands 1 and 2 are 0 but for a few
+   1s (one per row, and for band 2 one more every `extra` rows). Every r_kl
+   against the exact ratio of the centred sums, which the counts give in
+   closed form (double, relative error ~1e-16): within 1 Q30 step. With
+   the matrix scaled by its largest variance alone the small bands kept
+   ~20 bits and r_12 was hundreds of steps off. */
+#define TINY_W 4096u
+#ifdef SSDA_TEST_SMALL
+#define TINY_ROWS 256u
+#else
+#define TINY_ROWS 1024u
+#endif
+static uint16_t g_tiny[3][TINY_W];
+
+static void test_tiny_variance_correlation(void)
+{
+    static const uint32_t extras[3] = {2u, 7u, 1000u};
+    uint32_t pass;
+    for (pass = 0; pass < 3u; pass++) {
+        const uint32_t extra = extras[pass];
+        ssda_kl_acc_config_t cfg;
+        ssda_kl_acc_t acc;
+        ssda_kl_t kl;
+        ssda_kl_row_t row;
+        double n, s0, q00, m1, m2, m12, c[3][3];
+        uint32_t y, i, k, l;
+        memset(&cfg, 0, sizeof cfg);
+        cfg.format = SSDA_PIX_U16;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_init(&acc, &cfg));
+        row.band[0] = g_tiny[0];
+        row.band[1] = g_tiny[1];
+        row.band[2] = g_tiny[2];
+        row.step = 1u;
+        for (i = 0; i < TINY_W; i++) {
+            g_tiny[0][i] = (i & 1u) != 0u ? 65535u : 0u;
+            g_tiny[1][i] = i == 0u ? 1u : 0u;
+        }
+        m2 = 0.0;
+        for (y = 0; y < TINY_ROWS; y++) {
+            for (i = 0; i < TINY_W; i++) {
+                g_tiny[2][i] = (uint16_t)((i == 0u || (i == 7u && y % extra == 0u)) ? 1u : 0u);
+            }
+            m2 += y % extra == 0u ? 2.0 : 1.0;
+            TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_acc_add_row(&acc, &row, TINY_W));
+        }
+        /* closed forms: C_kl = n sum(x_k x_l) - sum(x_k) sum(x_l) */
+        n = (double)TINY_W * TINY_ROWS;
+        s0 = n / 2.0 * 65535.0;
+        q00 = n / 2.0 * 65535.0 * 65535.0;
+        m1 = TINY_ROWS;
+        m12 = TINY_ROWS; /* pixel 0 of each row: both 1; band 0 is 0 there */
+        c[0][0] = n * q00 - s0 * s0;
+        c[1][1] = n * m1 - m1 * m1;
+        c[2][2] = n * m2 - m2 * m2;
+        c[0][1] = -s0 * m1;
+        c[0][2] = n * (m2 - m1) * 65535.0 - s0 * m2; /* the extra 1s at odd i = 7 */
+        c[1][2] = n * m12 - m1 * m2;
+        c[1][0] = c[0][1];
+        c[2][0] = c[0][2];
+        c[2][1] = c[1][2];
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_kl_solve(&acc, NULL, &kl));
+        for (k = 0; k < 3u; k++) {
+            for (l = 0; l < 3u; l++) {
+                const double r = c[k][l] / sqrt(c[k][k] * c[l][l]);
+                TEST_ASSERT_DOUBLE_WITHIN(1.0, r * Q30, (double)kl.matrix_q30[k][l]);
+            }
+        }
     }
 }
 
@@ -1000,6 +1135,7 @@ int main(void)
     RUN_TEST(test_seed_eq_2_3);
     RUN_TEST(test_jacobi_random);
     RUN_TEST(test_jacobi_degenerate);
+    RUN_TEST(test_eigen_tie_order);
     RUN_TEST(test_images_vs_double);
     RUN_TEST(test_worst_case_sums);
     RUN_TEST(test_nodata_mask);
@@ -1007,6 +1143,7 @@ int main(void)
     RUN_TEST(test_mask_paths);
     RUN_TEST(test_constant_band);
     RUN_TEST(test_perfect_correlation);
+    RUN_TEST(test_tiny_variance_correlation);
     RUN_TEST(test_source_errors);
     RUN_TEST(test_errors);
     return UNITY_END();

@@ -275,6 +275,51 @@ static void test_contour_of_a_mask(void)
     TEST_ASSERT_EQUAL_MEMORY(poison, pts, sizeof pts);
 }
 
+/* Shapes whose outer boundary is known in closed form beyond blocks: an L
+   (a concave corner is cut by one diagonal step), and a three-pixel
+   "roof" whose boundary passes its first pixel twice (the trace must not
+   stop there: Jacob's stop is back at the start about to repeat the first
+   move). */
+static void test_contour_concave_and_revisited(void)
+{
+    static uint8_t mask[16][16];
+    ssda_point_q8_t pts[8];
+    ssda_view_t v;
+    uint32_t per, y;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, mask, 16u, 16u, 16u, SSDA_PIX_U8));
+    /* L: x 1..10 of rows 1..3, x 1..3 of rows 4..10. Through the boundary
+       pixels' centres: 9 + 2 + 6 across and back, sqrt 2 round the inner
+       corner (4, 3) -> (3, 4), then 6 + 2 + 9 */
+    memset(mask, 0, sizeof mask);
+    for (y = 1u; y <= 3u; y++) {
+        memset(&mask[y][1], 1, 10);
+    }
+    for (y = 4u; y <= 10u; y++) {
+        memset(&mask[y][1], 1, 3);
+    }
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_loops_contour(&v, 1u, 1u, 8u, pts, &per));
+    TEST_ASSERT_EQUAL_UINT32((34u * 65536u + 92682u) >> 8, per);
+    /* the first sample at the start, then down the left side: 8 samples
+       35.41 / 8 = 4.43 px apart; sample 2 at 8.85 px: (1, 9.85) */
+    TEST_ASSERT_EQUAL_INT32(256, pts[0].x_q8);
+    TEST_ASSERT_EQUAL_INT32(256, pts[0].y_q8);
+    TEST_ASSERT_EQUAL_INT32(256, pts[2].x_q8);
+    TEST_ASSERT_INT32_WITHIN(1, (int32_t)(9.8535 * 256.0), pts[2].y_q8);
+    /* the roof (5, 5), (4, 6), (6, 6): 4 diagonal steps, start twice */
+    memset(mask, 0, sizeof mask);
+    mask[5][5] = 1u;
+    mask[6][4] = 1u;
+    mask[6][6] = 1u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_loops_contour(&v, 5u, 5u, 8u, pts, &per));
+    TEST_ASSERT_EQUAL_UINT32(4u * 92682u / 256u, per);
+    TEST_ASSERT_EQUAL_INT32(4 * 256, pts[2].x_q8); /* sqrt 2 along: (4, 6) */
+    TEST_ASSERT_EQUAL_INT32(6 * 256, pts[2].y_q8);
+    TEST_ASSERT_EQUAL_INT32(5 * 256, pts[4].x_q8); /* back at the start */
+    TEST_ASSERT_EQUAL_INT32(5 * 256, pts[4].y_q8);
+    TEST_ASSERT_EQUAL_INT32(6 * 256, pts[6].x_q8); /* then (6, 6) */
+    TEST_ASSERT_EQUAL_INT32(6 * 256, pts[6].y_q8);
+}
+
 /* The whole chain on an image: a bright square on a textured background. */
 static void test_image_to_loop(void)
 {
@@ -379,6 +424,7 @@ int main(void)
     RUN_TEST(test_open_branches_pruned);
     RUN_TEST(test_large_region_refused_everywhere);
     RUN_TEST(test_contour_of_a_mask);
+    RUN_TEST(test_contour_concave_and_revisited);
     RUN_TEST(test_image_to_loop);
     RUN_TEST(test_errors_change_nothing);
     return UNITY_END();

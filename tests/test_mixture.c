@@ -27,9 +27,11 @@ void tearDown(void) {}
 #ifdef SSDA_TEST_SMALL
 #define SAMPLES 20000u
 #define RUNS 3u
+#define Q_CASES 20000u
 #else
 #define SAMPLES 400000u
 #define RUNS 12u
+#define Q_CASES 200000u
 #endif
 
 #define BINS 1024u
@@ -268,6 +270,11 @@ static void test_em_vs_double(void)
             TEST_ASSERT_DOUBLE_WITHIN(2.0 * tol, -2.0 * lref + (3.0 * k - 1.0) * log((double)total),
                                       (double)m.bic_q16 / Q16);
         }
+        /* BIC from the reported log-likelihood: the penalty (3k - 1) ln N
+           to the rounding of ln N in Q16 (half a step per parameter) */
+        TEST_ASSERT_DOUBLE_WITHIN(0.5 * (3.0 * k - 1.0) + 1.0,
+                                  (3.0 * k - 1.0) * log((double)total) * Q16,
+                                  (double)(m.bic_q16 + 2 * m.loglik_q16));
     }
     /* (integers: newlib-nano's printf has no floating point) */
     printf("EM vs double: worst weight %u e-6, mean %u e-6 sd, sd %u e-6 sd\n",
@@ -612,6 +619,92 @@ static void test_worst_case(void)
     TEST_ASSERT_EQUAL_UINT32(15u * 65536u, m.comp[0].mean_q16);
 }
 
+/* Band edges and ties of the label rules on a model made here: bins
+   exactly band sigmas from a mean are inside (|z - mu| <= band sigma), and
+   of equally likely components the lower label wins (mixture.h). */
+static void test_lut_edges_and_ties(void)
+{
+    static const uint32_t band_q8[3] = {512u, 256u, 384u};
+    ssda_mix_model_t m;
+    uint8_t lut[32];
+    uint32_t px[2], b, z, j, rule;
+    memset(&m, 0, sizeof m);
+    m.count = 2u;
+    m.bins = 32u;
+    for (j = 0; j < 2u; j++) {
+        m.comp[j].weight_q16 = 32768u;
+        m.comp[j].mean_q16 = (10u + 10u * j) << 16; /* 10 and 20 */
+        m.comp[j].sigma_q16 = 2u << 16;
+    }
+    memset(g_hist, 0, sizeof g_hist);
+    for (z = 0; z < 32u; z++) {
+        g_hist[z] = 1u + z;
+    }
+    for (b = 0; b < 3u; b++) {
+        const double band = band_q8[b] / 256.0;
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, SSDA_MIX_LABEL_BAND, band_q8[b], lut));
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_band_pixels(&m, g_hist, band_q8[b], px));
+        for (j = 0; j < 2u; j++) {
+            const double mu = 10.0 + 10.0 * j;
+            uint32_t n = 0u;
+            for (z = 0; z < 32u; z++) {
+                n += fabs((double)z - mu) <= band * 2.0 ? g_hist[z] : 0u;
+            }
+            TEST_ASSERT_EQUAL_UINT32(n, px[j]);
+        }
+        for (z = 0; z < 32u; z++) {
+            const double d0 = fabs((double)z - 10.0), d1 = fabs((double)z - 20.0);
+            /* equal weights and sigmas: the nearer mean is the likelier */
+            uint8_t want = 0u;
+            if (d0 <= band * 2.0 && (d0 <= d1 || d1 > band * 2.0)) {
+                want = 1u;
+            } else if (d1 <= band * 2.0) {
+                want = 2u;
+            }
+            TEST_ASSERT_EQUAL_UINT8(want, lut[z]);
+        }
+    }
+    /* the tie at bin 15, both rules: the lower label */
+    for (rule = 0; rule < 2u; rule++) {
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_mix_lut(&m, (uint8_t)rule, 768u, lut));
+        TEST_ASSERT_EQUAL_UINT8(1u, lut[15]);
+        TEST_ASSERT_EQUAL_UINT8(2u, lut[16]);
+    }
+}
+
+/* q(z) = ((z - mu) / (sqrt2 sigma))^2 in Q16 against double over sigmas
+   from 2^-16 to 4096 bins, any mean and bin: within 4 sqrt(q) + 2 steps
+   (mixture.h), and the cap at 16384 nats exactly where it is due. */
+static void test_q_vs_double(void)
+{
+    test_rng_t r;
+    uint32_t t;
+    double worst = 0.0;
+    test_rng_seed(&r, 36u);
+    for (t = 0; t < Q_CASES; t++) {
+        const uint32_t sigma = 1u + (test_rng_next(&r) >> (test_rng_next(&r) % 32u)) % (4096u << 16);
+        const uint32_t mean = test_rng_next(&r) % (4095u << 16);
+        const uint32_t z = test_rng_next(&r) % 4096u;
+        ssda__mix_gauss_t g;
+        double d, ex, got, tol;
+        ssda__mix_prepare(&g, 1u, 1u, mean, sigma);
+        d = ((double)z * Q16 - mean) / (sqrt(2.0) * sigma);
+        ex = d * d * Q16;
+        got = (double)ssda__mix_q(&g, z);
+        if (ex > 16384.0 * Q16 * 1.001) {
+            TEST_ASSERT_EQUAL_UINT32(1073741824u, ssda__mix_q(&g, z));
+            continue;
+        }
+        if (ex > 16384.0 * Q16 * 0.999) {
+            continue; /* at the cap: either */
+        }
+        tol = 4.0 * sqrt(ex / Q16) + 2.0;
+        worst = fabs(got - ex) / tol > worst ? fabs(got - ex) / tol : worst;
+        TEST_ASSERT_DOUBLE_WITHIN(tol, ex, got);
+    }
+    printf("q vs double: worst error %u%% of the bound\n", (unsigned)(worst * 100.0));
+}
+
 /* Internal paths the public fits reach only on rare data. */
 static void test_internal_paths(void)
 {
@@ -745,6 +838,16 @@ static void test_errors(void)
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
     poison.count = 17u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
+    /* a component of sigma 0 has no density (it shifted by 2^32 - 23) */
+    poison = m;
+    poison.comp[poison.count - 1u].sigma_q16 = 0u;
+    memset(lut, 0xA5, sizeof lut);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 0u, 0u, lut));
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_lut(&poison, 1u, 0u, lut));
+    TEST_ASSERT_EACH_EQUAL_HEX8(0xA5u, lut, sizeof lut);
+    memset(px, 0xA5, sizeof px);
+    TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_band_pixels(&poison, g_hist, 0u, px));
+    TEST_ASSERT_EACH_EQUAL_HEX32(0xA5A5A5A5u, px, 16u);
     poison = m;
     poison.bins = 1u;
     TEST_ASSERT_EQUAL_INT(SSDA_ERR_ARG, ssda_mix_band_pixels(&poison, g_hist, 0u, px));
@@ -774,6 +877,8 @@ int main(void)
     RUN_TEST(test_recovery);
     RUN_TEST(test_search);
     RUN_TEST(test_lut);
+    RUN_TEST(test_lut_edges_and_ties);
+    RUN_TEST(test_q_vs_double);
     RUN_TEST(test_hist_add);
     RUN_TEST(test_worst_case);
     RUN_TEST(test_internal_paths);

@@ -173,6 +173,73 @@ static void test_known_transforms_come_back(void)
     }
 }
 
+/* Tiny loops as ssda_loops_find gives them with area_min 1 or 2: a one-
+   pixel region (all samples at its centre: zero energy, which matches
+   nothing, fourier.h) in MOV where REF has a two-pixel one, at the place
+   the transform maps it to. The registration must be the scene's own:
+   same pairs, same affine. A zero energy went into ssda__ratio_q16 as a
+   divisor (the E^2 bound of the fixed match) and ssda_fd_match's error
+   left the E^2 read afterwards unset. */
+static void tiny_loop(uint32_t x, uint32_t y, uint32_t pixels, ssda_loop_t *lp,
+                      ssda_point_q8_t *pts, ssda_fd_t *fd)
+{
+    static uint8_t mask[8][8];
+    ssda_view_t v;
+    uint32_t k;
+    memset(mask, 0, sizeof mask);
+    mask[3][3] = 1u;
+    mask[3][4] = pixels > 1u ? 1u : 0u;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_view_init(&v, mask, 8u, 8u, 8u, SSDA_PIX_U8));
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_loops_contour(&v, 3u, 3u, NS, pts, NULL));
+    for (k = 0u; k < NS; k++) {
+        pts[k].x_q8 += (int32_t)(x - 3u) * 256;
+        pts[k].y_q8 += (int32_t)(y - 3u) * 256;
+    }
+    lp->cx_q8 = pts[0].x_q8 + (pixels > 1u ? 128 : 0);
+    lp->cy_q8 = pts[0].y_q8;
+    lp->area = pixels;
+    lp->contour = pts;
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_fd_compute(pts, NS, 10u, fd));
+}
+
+static void test_zero_energy_loops_match_nothing(void)
+{
+    static ssda_loop_t ref[NL + 1u], mov[NL + 1u];
+    static ssda_fd_t fr[NL + 1u], fm[NL + 1u];
+    static ssda_point_q8_t pr[NS], pm[NS];
+    static ssda_symreg_pair_t pairs0[NL + 1u], pairs1[NL + 1u];
+    static uint32_t work[(SSDA_SYMREG_WORK_SIZE(NL + 1u, NL + 1u, SSDA_SYMREG_DEFAULT_NUCLEI) + 3u) / 4u];
+    test_rng_t r;
+    uint32_t perm[NL], i;
+    const double A[6] = {1.0, 0.0, 20.0, 0.0, 1.0, -10.0};
+    ssda_symreg_result_t res0, res1;
+    ssda_symreg_config_t cfg;
+    test_rng_seed(&r, 77u);
+    make_scene(&r, A, perm);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.area_ratio_q8 = 1024u; /* areas 1 and 2 within 1/4..4 */
+    cfg.e2_grow_q16 = 0xFFFFFFFFu; /* every fixed match searched, none skipped by its bound */
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_symreg(g_ref, g_fr, NL, g_mov, g_fm, NL, &cfg, g_work,
+                                               sizeof g_work, pairs0, NL, &res0));
+    TEST_ASSERT_EQUAL_UINT32(K, res0.pairs);
+    for (i = 0u; i < NL; i++) {
+        ref[i] = g_ref[i];
+        mov[i] = g_mov[i];
+        fr[i] = g_fr[i];
+        fm[i] = g_fm[i];
+    }
+    tiny_loop(250u, 250u, 2u, &ref[NL], pr, &fr[NL]);
+    tiny_loop(270u, 240u, 1u, &mov[NL], pm, &fm[NL]);
+    TEST_ASSERT_TRUE(fr[NL].energy_q16 != 0u);
+    TEST_ASSERT_EQUAL_UINT64(0u, fm[NL].energy_q16);
+    memset(&res1, 0x5C, sizeof res1);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, ssda_symreg(ref, fr, NL + 1u, mov, fm, NL + 1u, &cfg, work,
+                                               sizeof work, pairs1, NL + 1u, &res1));
+    TEST_ASSERT_EQUAL_UINT32(res0.pairs, res1.pairs);
+    TEST_ASSERT_EQUAL_MEMORY(&res0.affine, &res1.affine, sizeof res0.affine);
+    TEST_ASSERT_EQUAL_MEMORY(pairs0, pairs1, res0.pairs * sizeof pairs0[0]);
+}
+
 static void test_too_few_loops_register_nothing(void)
 {
     test_rng_t r;
@@ -284,6 +351,102 @@ static void test_fit_equals_double_least_squares(void)
     TEST_ASSERT_FALSE(ssda__symreg_fit(g_ref, g_mov, set, NL, &t));
 }
 
+/* Nearly collinear centroids: a line with offsets of +-9 Q8 steps, which
+   puts the determinant near 2^-24 of xx yy (well above the rounding of
+   the narrowed sums, ~2^-29). The fit refuses a set below 2^-20 (symreg.h:
+   'collinear'); offsets of up to 60 px pass. */
+static void test_fit_refuses_nearly_collinear(void)
+{
+    test_rng_t r;
+    ssda__partner_t set[NL];
+    ssda_symreg_affine_t t;
+    uint32_t i, pass;
+    test_rng_seed(&r, 29u);
+    for (pass = 0u; pass < 2u; pass++) {
+        double mx = 0.0, my = 0.0, xx = 0.0, xy = 0.0, yy = 0.0;
+        for (i = 0u; i < NL; i++) {
+            const double x = frand(&r, 0.0, 1000.0);
+            const double off = pass == 0u ? (i % 2u == 0u ? 9.0 : -9.0) / 256.0
+                                          : frand(&r, -60.0, 60.0);
+            g_ref[i].cx_q8 = q8(x);
+            g_ref[i].cy_q8 = q8(x / 2.0 + 100.0) + (int32_t)(off * 256.0);
+            g_mov[i].cx_q8 = g_ref[i].cx_q8 + 5 * 256;
+            g_mov[i].cy_q8 = g_ref[i].cy_q8 - 7 * 256;
+            set[i].mov = (uint16_t)i;
+            set[i].e2 = 0u;
+        }
+        for (i = 0u; i < NL; i++) {
+            mx += g_ref[i].cx_q8 / (256.0 * NL);
+            my += g_ref[i].cy_q8 / (256.0 * NL);
+        }
+        for (i = 0u; i < NL; i++) {
+            const double dx = g_ref[i].cx_q8 / 256.0 - mx, dy = g_ref[i].cy_q8 / 256.0 - my;
+            xx += dx * dx;
+            xy += dx * dy;
+            yy += dy * dy;
+        }
+        if (pass == 0u) {
+            TEST_ASSERT_TRUE((xx * yy - xy * xy) < xx * yy / 1048576.0 / 4.0);
+            TEST_ASSERT_TRUE((xx * yy - xy * xy) > xx * yy / 1048576.0 / 64.0);
+            TEST_ASSERT_FALSE(ssda__symreg_fit(g_ref, g_mov, set, NL, &t));
+        } else {
+            TEST_ASSERT_TRUE((xx * yy - xy * xy) > xx * yy / 1048576.0 * 4.0);
+            TEST_ASSERT_TRUE(ssda__symreg_fit(g_ref, g_mov, set, NL, &t));
+            TEST_ASSERT_INT32_WITHIN(2, 65536, t.a_q16); /* a translation */
+            TEST_ASSERT_INT32_WITHIN(2, 0, t.b_q16);
+        }
+    }
+}
+
+/* Eqs. 14-15 against double for affines turned every way, with shears
+   that put the y axis's angle on either side of the x axis's: the mean
+   angle goes the shorter way round (across 0 turns too). */
+static void test_scale_rot_vs_double(void)
+{
+    test_rng_t r;
+    uint32_t n;
+    test_rng_seed(&r, 31u);
+    for (n = 0u; n < 2000u; n++) {
+        const double s = frand(&r, 0.3, 3.0), th = frand(&r, 0.0, 2.0 * TEST_PI);
+        const double sh = frand(&r, -0.2, 0.2), k = frand(&r, 0.8, 1.25);
+        ssda_symreg_affine_t t;
+        double a, b, d, e, th1, th2, diff, want, got, det;
+        uint32_t s_q16, phi;
+        /* x axis to s (cos, sin) th, y axis to s k (-sin, cos)(th + sh) */
+        a = s * test_cos(th);
+        d = s * test_sin(th);
+        b = -s * k * test_sin(th + sh);
+        e = s * k * test_cos(th + sh);
+        t.a_q16 = (int32_t)(a * 65536.0);
+        t.b_q16 = (int32_t)(b * 65536.0);
+        t.d_q16 = (int32_t)(d * 65536.0);
+        t.e_q16 = (int32_t)(e * 65536.0);
+        t.c_q8 = 0;
+        t.f_q8 = 0;
+        ssda__symreg_scale_rot(&t, &s_q16, &phi);
+        th1 = test_atan2(t.d_q16, t.a_q16);
+        th2 = test_atan2(t.e_q16, t.b_q16) - TEST_PI / 2.0;
+        diff = th2 - th1;
+        while (diff > TEST_PI) {
+            diff -= 2.0 * TEST_PI;
+        }
+        while (diff < -TEST_PI) {
+            diff += 2.0 * TEST_PI;
+        }
+        want = (th1 + diff / 2.0) / (2.0 * TEST_PI); /* turns */
+        got = phi / 4294967296.0 - want;
+        while (got >= 0.5) { /* wrapped to [-0.5, 0.5) */
+            got -= 1.0;
+        }
+        while (got < -0.5) {
+            got += 1.0;
+        }
+        TEST_ASSERT_DOUBLE_WITHIN(1.0 / 1048576.0, 0.0, got);
+        det = ((double)t.a_q16 * t.e_q16 - (double)t.b_q16 * t.d_q16) / 4294967296.0;
+        TEST_ASSERT_DOUBLE_WITHIN(2.0, test_sqrt(det < 0 ? -det : det) * 65536.0, (double)s_q16);
+    }
+}
+
 static void test_similarity_scale_rotation_and_apply(void)
 {
     ssda_symreg_affine_t t;
@@ -370,8 +533,11 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_known_transforms_come_back);
     RUN_TEST(test_too_few_loops_register_nothing);
+    RUN_TEST(test_zero_energy_loops_match_nothing);
     RUN_TEST(test_fit_equals_double_least_squares);
     RUN_TEST(test_similarity_scale_rotation_and_apply);
+    RUN_TEST(test_fit_refuses_nearly_collinear);
+    RUN_TEST(test_scale_rot_vs_double);
     RUN_TEST(test_errors_change_nothing);
     return UNITY_END();
 }

@@ -28,8 +28,11 @@
  *     p(z) = sum_k w_k / (sigma_k sqrt(2 pi)) exp(-(z - mu_k)^2 / (2 sigma_k^2))
  * at bin centres (z an integer), computed in the log domain: per component
  * s_k = ln(w_k / sigma_k) - q_k(z) with q_k(z) = ((z - mu_k) / (sqrt2
- * sigma_k))^2 (Q16, from a 24-bit reciprocal: relative error < 2^-22, capped
- * at 16384 nats), then ln p = max s + ln(sum exp(s_k - max s)) - ln sqrt(2 pi).
+ * sigma_k))^2 (Q16: the ratio in Q16 from a 24-bit reciprocal, relative
+ * error < 2^-22, truncated, then squared: q within 4 sqrt(q) + 2 Q16 steps,
+ * q in nats, so 2^-12 relative near q = 1 and 0.008 nats at the cap;
+ * capped at 16384 nats; tests/test_mixture.c), then
+ * ln p = max s + ln(sum exp(s_k - max s)) - ln sqrt(2 pi).
  * exp(-x) in Q30 within 2 steps, ln in Q24 within 1 step (lib/fixexp.c,
  * tests/test_fixexp.c against libm).
  *
@@ -60,7 +63,7 @@
  * the steps are then halved and the cycles resumed, 6 times, which finds
  * the minimum the fixed steps straddle. Steps start at height/16, sigma/8
  * (mean) and sigma/16 (sigma) of each component's initial values, at least
- * 1 LSB. Parameters are kept in height [0, 2^25], mean [0, bins - 1],
+ * 1 LSB. Parameters are kept in height [1, 2^25], mean [0, bins - 1],
  * sigma [sigma_min, bins]. Weights are then w_k ~ a_k sigma_k sqrt(2 pi),
  * normalised to sum 1 (the seed's fit is of heights, not a density).
  *
@@ -82,8 +85,8 @@
  * (ties: the smaller K), each K fitted by EM from its own initialisation;
  * the search fit then starts from the same initialisation as that K's EM.
  *
- * LABELS: components are sorted by increasing mean (ties: smaller sigma,
- * then the order found); label k + 1 is component k; 0 is "none".
+ * LABELS: components are sorted by increasing mean (ties: the order
+ * found); label k + 1 is component k; 0 is "none".
  *   SSDA_MIX_LABEL_BAND (the seed): z gets a label when it lies within
  *     band sigmas of that component's mean (|z - mu| <= band sigma); of
  *     several, the most likely (largest s_k, ties: the lower label); none: 0.
@@ -202,7 +205,8 @@ int ssda_mix_fit(const uint32_t *hist, uint32_t bins, const ssda_mix_config_t *c
  * bin z by the rule (ssda_mix_rule_t), band_q8 sigmas wide for
  * SSDA_MIX_LABEL_BAND (Q8, 1..4096, 0 = 2.0). lut has model->bins bytes.
  * Returns SSDA_OK, SSDA_ERR_NULL, SSDA_ERR_ARG (unknown rule, band above
- * 16 sigma, a model with count 0 or above 16 or bins outside 2..4096).
+ * 16 sigma, a model with count 0 or above 16, bins outside 2..4096, or a
+ * component of sigma 0 among the first count).
  */
 int ssda_mix_lut(const ssda_mix_model_t *model, uint8_t rule, uint32_t band_q8, uint8_t *lut);
 

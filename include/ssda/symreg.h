@@ -38,6 +38,8 @@
  *     nucleus.
  * [3] The final set with the most pairs wins (ties: the smaller RMS
  *     residual, then the earlier nucleus).
+ * A loop whose descriptors have zero energy (all samples equal: a one-pixel
+ * region) matches nothing (fourier.h) and is never paired.
  * Not built: the seed's section 4 (b) (two nuclei for the start).
  *
  * FIXED POINT. Centroids Q8 px; the affine's linear part Q16, its
