@@ -90,14 +90,37 @@ static void fit_search(const uint32_t *hist, uint32_t bins, uint32_t total, uint
     to_model(w, k, m);
 }
 
-/* The number of components of least BIC (ties: fewer), by EM. */
+/* Whether two components of m are copies: means and sigmas within 1/16
+   of the larger sigma of each other. EM cannot pull such a pair apart
+   (it moves both alike), and their sum is one Gaussian within a few
+   parts in 1000 of its peak: the fit is one of fewer components. */
+static bool has_copy(const ssda_mix_model_t *m)
+{
+    uint32_t i, j;
+    bool copy = false;
+    for (i = 0u; i < m->count && !copy; i++) {
+        for (j = i + 1u; j < m->count && !copy; j++) {
+            const ssda_mix_component_t *a = &m->comp[i], *b = &m->comp[j];
+            const uint32_t s = a->sigma_q16 > b->sigma_q16 ? a->sigma_q16 : b->sigma_q16;
+            const uint32_t dm = a->mean_q16 > b->mean_q16 ? a->mean_q16 - b->mean_q16
+                                                          : b->mean_q16 - a->mean_q16;
+            const uint32_t ds = a->sigma_q16 > b->sigma_q16 ? a->sigma_q16 - b->sigma_q16
+                                                            : b->sigma_q16 - a->sigma_q16;
+            copy = dm <= (s >> 4) && ds <= (s >> 4);
+        }
+    }
+    return copy;
+}
+
+/* The number of components of least BIC (ties: fewer), by EM; a K whose
+   fit holds a copy (has_copy) is not a candidate. */
 static uint32_t choose_k(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_t hs,
                          const ssda__mix_cfg_t *c, ssda__mix_work_t *w, ssda_mix_model_t *m)
 {
     uint32_t k, best = 1u;
     for (k = 1u; k <= c->kmax; k++) {
         fit_em(hist, bins, total, hs, c, k, w, m);
-        if (k == 1u || m->bic_q16 < w->best.bic_q16) {
+        if (k == 1u || (m->bic_q16 < w->best.bic_q16 && !has_copy(m))) {
             w->best = *m;
             best = k;
         }

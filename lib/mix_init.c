@@ -61,12 +61,37 @@ static void subtract(int32_t *r, uint32_t bins, const ssda__mix_gauss_t *g, int3
     }
 }
 
-/* One peak of the residual, found and measured on the smoothed residual:
-   its parameters into p, height into *height. false if no height is
-   positive. */
-static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_param_t *p,
-                 int32_t *height)
+/* Whether bin z is taken by one of the starts found[0..nfound) too narrow
+   for the 5-bin mean that measures it: FWHM at most 6 bins (the mean's
+   own 5 and one, sigma <= 2.55 bins), and z within 2 bins of its mean (a
+   bin), so that z's 5-bin mean holds that start's bin. The height of such
+   a start falls short of its peak (a saturation spike in one bin: a fifth
+   of it), so that most of the peak stays in the residual; without this
+   the next starts land on it again, at the same mean and sigma, which EM
+   cannot pull apart. A wider start is measured and subtracted whole: what
+   remains where it was is of another width (a narrower top, a base), a
+   component EM can separate, and may take a start there. */
+static bool taken(const ssda__mix_param_t *found, uint32_t nfound, uint32_t z)
 {
+    const uint32_t zq = z << 16; /* z < 4096: < 2^28 */
+    uint32_t j;
+    bool near = false;
+    for (j = 0u; j < nfound && !near; j++) {
+        const uint32_t m = found[j].mean_q16;
+        const uint32_t d = zq > m ? zq - m : m - zq;
+        near = found[j].sigma_q16 <= 6u * INV_FWHM_Q16 && d <= (2u << 16);
+    }
+    return near;
+}
+
+/* One peak of the residual, found and measured on the smoothed residual,
+   away from the starts already found (found[0..nfound), see taken): its
+   parameters into found[nfound], height into *height. false if no such
+   height is positive. */
+static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_param_t *found,
+                 uint32_t nfound, int32_t *height)
+{
+    ssda__mix_param_t *p = &found[nfound];
     ssda__mix_gauss_t g;
     uint32_t z, zp = 0u, wl, wr, fwhm;
     uint64_t sigma;
@@ -74,7 +99,7 @@ static bool peel(int32_t *r, uint32_t bins, uint32_t sigma_min_q16, ssda__mix_pa
     int32_t a;
     for (z = 0u; z < bins; z++) {
         const int64_t sz = smooth(r, bins, z);
-        if (sz > top) {
+        if (sz > top && !taken(found, nfound, z)) {
             top = sz;
             zp = z;
         }
@@ -184,7 +209,7 @@ void ssda__mix_init(const uint32_t *hist, uint32_t bins, uint32_t total, uint32_
         }
         for (j = 0u; j < k && ok; j++) {
             int32_t a = 0;
-            ok = peel(w->cache, bins, c->sigma_min_q16, &w->p[j], &a);
+            ok = peel(w->cache, bins, c->sigma_min_q16, w->p, j, &a);
             w->height_q8[j] = a * 256;
         }
     }

@@ -339,6 +339,85 @@ static void test_recovery(void)
     TEST_ASSERT_EQUAL_UINT32(3u, m.count);
 }
 
+/* ---- a saturation spike ---- */
+
+/* Two Gaussian modes and a tenth of the pixels in the last bin (clipped
+   counts). The peaks start must seed each of the three once: a 5-bin mean
+   measures a fifth of a one-bin spike, and before starts kept off the
+   ones already found, K = 3 put two starts on the spike (same mean, same
+   sigma: EM never pulled them apart) and none on the mode at 160. */
+static void test_spike(void)
+{
+    static const comp_t truth[3] = {{0.45, 70.0, 10.0}, {0.45, 160.0, 14.0}, {0.10, 255.0, 0.5}};
+    static const comp_t modes[2] = {{0.5, 70.0, 10.0}, {0.5, 160.0, 14.0}};
+    test_rng_t r;
+    ssda_mix_model_t m;
+    ssda_mix_config_t cfg;
+    ssda__mix_work_t *w = (ssda__mix_work_t *)(void *)g_work_mem;
+    ssda__mix_cfg_t c;
+    comp_t ref[3], got[3];
+    uint32_t total, i, j, k;
+    double lref, lgot;
+    test_rng_seed(&r, 34u);
+    total = sample(&r, modes, 2u, SAMPLES - SAMPLES / 10u, 256u);
+    g_hist[255] += SAMPLES / 10u;
+    total += SAMPLES / 10u;
+    /* the starts, K = 2..6 */
+    memset(&c, 0, sizeof c);
+    c.init = SSDA_MIX_INIT_PEAKS;
+    c.sigma_min_q16 = SSDA_MIX_DEFAULT_SIGMA_MIN_Q16;
+    w->cache = (int32_t *)(void *)((uint8_t *)g_work_mem + SSDA_MIX_WORK_FIXED);
+    for (k = 2u; k <= 6u; k++) {
+        ssda__mix_init(g_hist, 256u, total, ssda__mix_scale_shift(g_hist, 256u), &c, k, w);
+        for (i = 0; i < k; i++) {
+            for (j = i + 1u; j < k; j++) {
+                const double d = fabs(w->p[j].mean_q16 / Q16 - w->p[i].mean_q16 / Q16);
+                /* a start of FWHM <= 6 bins: none other within 2 bins */
+                const double sd = w->p[i].sigma_q16 / Q16;
+                TEST_ASSERT_TRUE_MESSAGE(sd > 6.0 / 2.3548 || d > 2.0, "two starts on one peak");
+            }
+        }
+    }
+    /* K = 3 by EM: one component per mode and one on the spike, as the
+       double EM from the generating mixture (800 steps) finds them */
+    cfg = config(3u, SSDA_MIX_FIT_EM);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, fit(256u, &cfg, &m));
+    TEST_ASSERT_EQUAL_UINT32(3u, m.count);
+    model_comps(&m, got);
+    for (j = 0; j < 3u; j++) {
+        ref[j] = truth[j];
+    }
+    ref_em(ref, 3u, 256u, 800u, 0.5);
+    for (j = 0; j < 3u; j++) {
+        TEST_ASSERT_DOUBLE_WITHIN(0.002, ref[j].w, got[j].w);
+        TEST_ASSERT_DOUBLE_WITHIN(0.01 * ref[j].sd, ref[j].mu, got[j].mu);
+        TEST_ASSERT_DOUBLE_WITHIN(0.01 * ref[j].sd, ref[j].sd, got[j].sd);
+    }
+    lref = loglik(ref, 3u, 256u);
+    lgot = loglik(got, 3u, 256u);
+    TEST_ASSERT_TRUE(lgot >= lref - 1e-6 * fabs(lref));
+    /* and the generating mixture within the sampling error */
+    check_recovery(truth, 3u, &m, 0.01, 0.05);
+    /* K = 4..6 by EM: no two components at one mean and sigma (a copy
+       adds nothing to the likelihood; the old starts left two to four on
+       the spike) */
+    for (k = 4u; k <= 6u; k++) {
+        cfg = config((uint8_t)k, SSDA_MIX_FIT_EM);
+        TEST_ASSERT_EQUAL_INT(SSDA_OK, fit(256u, &cfg, &m));
+        TEST_ASSERT_EQUAL_UINT32(k, m.count);
+        for (i = 0; i + 1u < k; i++) {
+            const double dm = (m.comp[i + 1u].mean_q16 - m.comp[i].mean_q16) / Q16;
+            const double ds = fabs((double)m.comp[i + 1u].sigma_q16 - m.comp[i].sigma_q16) / Q16;
+            TEST_ASSERT_FALSE_MESSAGE(dm < 0.5 && ds < 0.1, "two components on one peak");
+        }
+    }
+    /* BIC: 3 of up to 8, the same fit */
+    cfg = config(0u, SSDA_MIX_FIT_EM);
+    TEST_ASSERT_EQUAL_INT(SSDA_OK, fit(256u, &cfg, &m));
+    TEST_ASSERT_EQUAL_UINT32(3u, m.count);
+    check_recovery(truth, 3u, &m, 0.01, 0.05);
+}
+
 /* ---- the seed's search ---- */
 
 /* The seed's error of a model over one window, in double (scaled counts). */
@@ -875,6 +954,7 @@ int main(void)
     RUN_TEST(test_work_layout);
     RUN_TEST(test_em_vs_double);
     RUN_TEST(test_recovery);
+    RUN_TEST(test_spike);
     RUN_TEST(test_search);
     RUN_TEST(test_lut);
     RUN_TEST(test_lut_edges_and_ties);

@@ -75,8 +75,16 @@
  *     half height (interpolated; sigma = FWHM / 2.3548, twice the one-sided
  *     width if the other side meets the histogram's end), subtract that
  *     Gaussian from the residual, and repeat; shoulders of a peak become the
- *     next components. If the residual runs out (no positive 5-bin mean
- *     left) the quantile start is used.
+ *     next components. A start of FWHM at most 6 bins (sigma <= 2.55 bins:
+ *     the 5-bin mean's own width and one bin) is narrower than the 5-bin
+ *     mean resolves and its height falls short (a saturation spike in one
+ *     bin: a fifth of it), so most of it stays in the residual: no later
+ *     start is taken within 2 bins of it (the next highest bin elsewhere
+ *     is), else starts would pile onto one spike at one mean and sigma,
+ *     which EM cannot pull apart. Near a wider start the residual is of
+ *     another width (a narrower top, a base) and may take a start. If the
+ *     residual runs out (no positive 5-bin mean left outside those bins)
+ *     the quantile start is used for every component.
  *   SSDA_MIX_INIT_QUANTILES: K slices of equal count along the histogram,
  *     each slice's mean, standard deviation and share.
  *
@@ -84,6 +92,9 @@
  * as the K in 1..max_components of least BIC = -2 ln L + (3K - 1) ln N
  * (ties: the smaller K), each K fitted by EM from its own initialisation;
  * the search fit then starts from the same initialisation as that K's EM.
+ * A K > 1 whose EM fit holds two copies (means and sigmas within 1/16 of
+ * the larger sigma of each other: EM moves such a pair alike, and their
+ * sum is one Gaussian) is not chosen: it is a fit of fewer components.
  *
  * LABELS: components are sorted by increasing mean (ties: the order
  * found); label k + 1 is component k; 0 is "none".
