@@ -37,7 +37,7 @@ LAYERS = [
      "shading (poly.h, warp.h, register.h, shade.h)", "#fff8e1", 2,
      [r"^lib/(poly|warp|register|shade)"]),
     ("search engine and row sources (match.h, view.h)", "#fef7e0", 3,
-     [r"^lib/match", r"^lib/view\."]),
+     [r"^lib/match", r"^lib/view[._]"]),
     ("pitch: AMDF stream (pitch.h)", "#fce8f3", 3, [r"^lib/pitch"]),
     ("image operator: Fig. 8 gradient (grad.h)", "#f1f3f4", 3, [r"^lib/grad\."]),
     ("seed 003: vector-field cleaning, relaxation and median test (relax.h)", "#fbe9e7", 3,
