@@ -70,7 +70,7 @@ static int64_t correlation_pair(const centred_t *c, uint32_t k, uint32_t l)
     uint64_t dk, dl, den;
     ssda__u128_t num;
     int64_t r;
-    if (((uint32_t)(ek + el) & 1u) != 0u) {
+    if ((((uint32_t)ek ^ (uint32_t)el) & 1u) != 0u) { /* ek + el odd */
         el++;
     }
     dk = scaled(c->mag[k][k], ek);
