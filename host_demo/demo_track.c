@@ -159,7 +159,8 @@ static void print_modes(const mode_run_t *run, const ssda_track_grid_t *grid,
                 continue;
             }
             ok++;
-            same += v->dx == r->dx && v->dy == r->dy;
+            /* the minimum found: brute force's SAD (a tie may sit elsewhere) */
+            same += v->sad == r->sad;
             if (wind != NULL) {
                 wind_err_t e;
                 error_vs_wind(wind, grid, v, &e);
@@ -184,7 +185,7 @@ static void report_shown(const mode_run_t *run, const ssda_track_grid_t *grid,
 {
     const mode_run_t *s = &run[SHOWN];
     const double brute_ops = (double)run[0].stats.pixel_ops;
-    size_t ok = 0, w1 = 0, same = 0, k;
+    size_t ok = 0, w1 = 0, same = 0, moved = 0, k;
     double sum_e = 0.0, sum_sub = 0.0;
     for (k = 0; k < grid->count; k++) {
         const ssda_track_vector_t *v = &s->vec[k];
@@ -197,7 +198,9 @@ static void report_shown(const mode_run_t *run, const ssda_track_grid_t *grid,
             continue;
         }
         ok++;
-        same += v->dx == run[0].vec[k].dx && v->dy == run[0].vec[k].dy;
+        same += v->sad == run[0].vec[k].sad;
+        moved += v->sad == run[0].vec[k].sad &&
+                 (v->dx != run[0].vec[k].dx || v->dy != run[0].vec[k].dy);
         if (wind != NULL) {
             wind_err_t e;
             error_vs_wind(wind, grid, v, &e);
@@ -221,7 +224,12 @@ static void report_shown(const mode_run_t *run, const ssda_track_grid_t *grid,
     if (same == ok) {
         printf("found the same minimum in every ok window (exact)\n");
     } else {
-        printf("agreed with brute force in %zu of %zu ok windows\n", same, ok);
+        printf("found brute force's minimum SAD in %zu of %zu ok windows\n", same, ok);
+    }
+    if (moved > 0) {
+        printf("            (%zu of them at another placement of the same SAD as brute force's:\n"
+               "            a tie, which the search with prediction breaks toward the predicted\n"
+               "            vector and brute force toward zero motion)\n", moved);
     }
 }
 

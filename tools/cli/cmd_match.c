@@ -181,7 +181,9 @@ static int run_ncc(const match_opts_t *o, const ssda_view_t *area, const ssda_vi
     int e;
     if ((uint32_t)win->width * win->height > SSDA_NCC_MAX_PIXELS) {
         return cli_input_error("match", "window %u x %u: the correlation search takes at most "
-                               "%u pixels", win->width, win->height, SSDA_NCC_MAX_PIXELS);
+                               "%u pixels (256 x 256): crop or reduce '%s', or search by SAD "
+                               "(--metric sad, the default; no such limit)", win->width,
+                               win->height, SSDA_NCC_MAX_PIXELS, o->window_path);
     }
     memset(&c, 0, sizeof c);
     c.metric = (uint8_t)(o->metric == 2 ? SSDA_NCC_ABS : SSDA_NCC_RHO);

@@ -377,6 +377,16 @@ static int write_outputs(const pitch_opts_t *o, const pitch_job_t *j)
 
 /* ---- summary ---- */
 
+/* Voiced frames of a track. */
+static size_t track_voiced(const pitch_track_t *tr)
+{
+    size_t i, nv = 0;
+    for (i = 0; i < tr->n; i++) {
+        nv += tr->voiced[i] != 0u;
+    }
+    return nv;
+}
+
 /* The score against --ref, and warnings when it cannot mean much. */
 static void print_score(const pitch_opts_t *o, const pitch_job_t *j)
 {
@@ -395,6 +405,13 @@ static void print_score(const pitch_opts_t *o, const pitch_job_t *j)
         fprintf(stderr, "ssda pitch: warning: '%s' (%g..%g s) does not overlap the track's "
                 "frames (%.2f s of sound): nothing was scored\n", o->ref_path, j->rt[0], last,
                 dur);
+    } else if (sc.both_voiced == 0 && track_voiced(&j->tr) == 0) {
+        /* the track, not the reference, has nothing voiced: say what to try */
+        fprintf(stderr, "ssda pitch: warning: no frame of the track is voiced (%zu of %zu "
+                "frames silent), so GPE and fine error mean nothing: try a lower --silence "
+                "(a quiet recording), a higher --threshold (weak periodicity) or --fmin, "
+                "--fmax around the f0 in '%s'\n", j->tr.n - j->tr.analysed, j->tr.n,
+                o->ref_path);
     } else if (sc.both_voiced == 0) {
         fprintf(stderr, "ssda pitch: warning: no frame is voiced in both the track and '%s' "
                 "(of %zu frames compared): GPE and fine error mean nothing; check its columns "

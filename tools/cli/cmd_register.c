@@ -1000,6 +1000,17 @@ int cmd_register(int argc, char **argv)
     if (o.json != NULL && strcmp(o.json, "-") == 0) {
         o.quiet = 1;
     }
+    /* fewer -o than MOVs: the MOVs after the last -o reach a file only
+       through --stack, --json or --flicker (--checker and --diff show the
+       first MOV alone); without them their registration is written nowhere */
+    i = o.nout > 0 || (o.checker == NULL && o.diff == NULL) ? o.nout : 1;
+    if (i < n && o.stack == NULL && o.json == NULL && o.flicker == NULL) {
+        fprintf(stderr, "ssda %s: warning: %d MOV images and %d -o output%s: '%s'%s %s "
+                "registered but written nowhere (give -o once per MOV, in order, or "
+                "--stack, --json, --flicker)\n", a.cmd, n, o.nout, o.nout == 1 ? "" : "s",
+                a.pos[1 + i], n - i > 1 ? " and the MOVs after it" : "",
+                n - i > 1 ? "are" : "is");
+    }
     for (i = 0; i < o.nout; i++) {
         cli_warn_png_name(a.cmd, "-o", o.out[i]);
     }

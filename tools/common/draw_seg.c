@@ -62,6 +62,7 @@ void draw_label_rgb(uint32_t k, double rgb[3])
 
 #define HP_W 960.0
 #define HP_H 280.0
+#define LABEL_MAX_H 4000.0 /* label panels: tallest drawn, px */
 #define HP_L 70.0
 #define HP_R 250.0
 
@@ -261,8 +262,13 @@ int draw_labels_to(FILE *fp, const char *name, const char *title, uint32_t width
                    size_t errlen)
 {
     const double head = title != NULL ? 34.0 : 8.0;
-    const double zoom = width > 700u ? 700.0 / width : (width < 240u ? 240.0 / width : 1.0);
+    /* panels 240..700 px wide; a tall image is reduced to at most
+       LABEL_MAX_H px, so that no surface passes cairo's 32767 px (a
+       512 x 40960 image crashed here, a 20 x 7180 strip was refused) */
+    const double zw = width > 700u ? 700.0 / width : (width < 240u ? 240.0 / width : 1.0);
+    const double zoom = height * zw > LABEL_MAX_H ? LABEL_MAX_H / height : zw;
     const int pw = (int)ceil(width * zoom), ph = (int)ceil(height * zoom);
+    const int slot = pw > 240 ? pw : 240; /* the legend's width at least */
     uint32_t maxk = 0, x, y;
     cairo_surface_t *s, *img;
     cairo_t *cr;
@@ -272,7 +278,7 @@ int draw_labels_to(FILE *fp, const char *name, const char *title, uint32_t width
     for (i = 0; i < n; i++) {
         maxk = p[i].count > maxk ? p[i].count : maxk;
     }
-    s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)(n * (pw + 16) + 16),
+    s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)(n * (slot + 16) + 16),
                                    (int)(head + ph + 30.0 + 16.0 * (maxk + 2u)));
     cr = cairo_create(s);
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -281,17 +287,30 @@ int draw_labels_to(FILE *fp, const char *name, const char *title, uint32_t width
     if (title != NULL) {
         text_at(cr, 12.0, 24.0, 16, 1, title);
     }
-    img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)width, (int)height);
+    /* each panel sampled at its drawn size (nearest pixel of the labels) */
+    img = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pw, ph);
+    if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS) {
+        tool_set_err(err, errlen, "cannot draw '%s': %s", name,
+                     cairo_status_to_string(cairo_surface_status(img)));
+        cairo_surface_destroy(img);
+        cairo_destroy(cr);
+        cairo_surface_destroy(s);
+        return -1;
+    }
     stride = cairo_image_surface_get_stride(img);
     for (i = 0; i < n; i++) {
-        const double x0 = 16.0 + i * (pw + 16.0);
+        const double x0 = 16.0 + i * (slot + 16.0);
         uint32_t k;
         cairo_surface_flush(img);
         data = cairo_image_surface_get_data(img);
-        for (y = 0; y < height; y++) {
+        for (y = 0; y < (uint32_t)ph; y++) {
             uint32_t *row = (uint32_t *)(void *)(data + (size_t)y * (size_t)stride);
-            for (x = 0; x < width; x++) {
-                const size_t at = (size_t)y * width + x;
+            const double fy = (y + 0.5) / zoom;
+            const uint32_t sy = fy >= height ? height - 1u : (uint32_t)fy;
+            for (x = 0; x < (uint32_t)pw; x++) {
+                const double fx = (x + 0.5) / zoom;
+                const uint32_t sx = fx >= width ? width - 1u : (uint32_t)fx;
+                const size_t at = (size_t)sy * width + sx;
                 double rgb[3];
                 if (p[i].nodata != NULL && p[i].nodata[at] != 0u) {
                     rgb[0] = rgb[1] = rgb[2] = 0.0;
@@ -307,7 +326,6 @@ int draw_labels_to(FILE *fp, const char *name, const char *title, uint32_t width
         cairo_surface_mark_dirty(img);
         cairo_save(cr);
         cairo_translate(cr, x0, head);
-        cairo_scale(cr, zoom, zoom);
         cairo_set_source_surface(cr, img, 0, 0);
         cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
         cairo_paint(cr);

@@ -38,6 +38,12 @@ match)
   run 1 match a.png flat.png --metric ncc --json && stderr_has "window 'flat.png' is flat" &&
     [ ! -s out.txt ] || fail "flat window: $(cat out.txt)"
   run 0 match a.png flat.png --json || fail "flat window by SAD"
+  # a window above the correlation's 65536 pixels: the message says what to do
+  "$gen" texture big.png --size 300x300 --seed 6
+  "$flowtool" crop big.png bw.png 10 10 260 260
+  run 1 match big.png bw.png --metric ncc && stderr_has "at most 65536 pixels" &&
+    stderr_has "crop or reduce 'bw.png'" && stderr_has "--metric sad"
+  run 0 match big.png bw.png --json && grep -q '"x":10,"y":10' out.txt || fail "large window by SAD"
   ;;
 
 flow)

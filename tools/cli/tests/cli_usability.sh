@@ -95,6 +95,11 @@ pitch)
   run 0 pitch v.wav --ref ref_ms.csv && stderr_has "look like milliseconds"
   awk -F, '{ printf "%s,0\n", $1 }' ref.csv >ref_unvoiced.csv
   run 0 pitch v.wav --ref ref_unvoiced.csv && stderr_has "no frame is voiced in both"
+  # a track with no voiced frame (every frame below the gate): the warning
+  # is about the track and its options, not the reference's columns
+  run 0 pitch v.wav --ref ref.csv --silence 0dB && stderr_has "no frame of the track is voiced" &&
+    stderr_has "a lower --silence" && grep -q "check its columns" err.txt &&
+    fail "--silence 0dB blamed the reference: $(cat err.txt)"
   run 0 pitch v.wav --ref ref.csv && grep -q "warning" err.txt && fail "warning on a good reference: $(cat err.txt)"
   # item 9: the silence gate: a quiet clean recording (peak about 30 of 32768)
   # keeps its voiced frames by default; --silence sets the gate

@@ -2,6 +2,12 @@
  * flow_tool.c - helpers of the correlation CLI tests (cli_flow.sh):
  *   flow_tool gain IN.png OUT.png G O       OUT = clamp(G IN + O), 8-bit
  *   flow_tool crop IN.png OUT.png X Y W H   OUT = the W x H rectangle of IN at (X, Y)
+ *   flow_tool halfshift IN.png A.png B.png D ROW   A = IN with every value
+ *     made even (2 round(0.49 v)); B = A moved right by D + 1 px above row
+ *     ROW and by D + 1/2 px from ROW down, B(x) = (A(x-D-1) + A(x-D)) / 2:
+ *     there every window has exactly the same SAD at dx = D and D + 1 (a
+ *     tie, which the prediction from the rows above breaks toward D + 1
+ *     and a search without prediction toward D); 8-bit
  *   flow_tool check FILE.json DX DY MINFRAC [--relaxed] [--changed-min N]
  *     FILE is `ssda flow --json`: at least MINFRAC of the "ok" templates
  *     move by (DX, DY) within 0.5 px (of relax_dx/dy with --relaxed); the
@@ -89,6 +95,47 @@ static int crop(int argc, char **argv)
     }
     if (png_write_gray(argv[1], &out, err, sizeof err) != 0) {
         fprintf(stderr, "flow_tool crop: %s\n", err);
+        return 1;
+    }
+    gray_image_free(&img);
+    gray_image_free(&out);
+    return 0;
+}
+
+static int halfshift(int argc, char **argv)
+{
+    gray_image_t img = {0}, out = {0};
+    char err[256];
+    uint32_t x, y;
+    long d, row;
+    if (argc != 5 || png_read_gray(argv[0], PNG_GRAY_8, &img, NULL, err, sizeof err) != 0) {
+        fprintf(stderr, "flow_tool halfshift: %s\n", argc == 5 ? err : "usage");
+        return 2;
+    }
+    d = atol(argv[3]);
+    row = atol(argv[4]);
+    if (d < 0 || d + 2 > (long)img.width || gray_image_alloc(&out, img.width, img.height, 8) != 0) {
+        fprintf(stderr, "flow_tool halfshift: bad D\n");
+        return 2;
+    }
+    for (y = 0; y < img.height; y++) {
+        uint8_t *a = (uint8_t *)img.pixels + (size_t)y * img.stride;
+        for (x = 0; x < img.width; x++) {
+            a[x] = (uint8_t)(2 * (int)(0.49 * a[x] + 0.5));
+        }
+    }
+    for (y = 0; y < img.height; y++) {
+        const uint8_t *a = (const uint8_t *)img.pixels + (size_t)y * img.stride;
+        uint8_t *b = (uint8_t *)out.pixels + (size_t)y * out.stride;
+        for (x = 0; x < img.width; x++) {
+            long s = (long)x - d - 1; /* B(x) = A(x - d - 1) above ROW */
+            long s0 = s < 0 ? 0 : s, s1 = s + 1 < 0 ? 0 : s + 1;
+            b[x] = (long)y < row ? a[s0] : (uint8_t)((a[s0] + a[s1]) / 2);
+        }
+    }
+    if (png_write_gray(argv[1], &img, err, sizeof err) != 0 ||
+        png_write_gray(argv[2], &out, err, sizeof err) != 0) {
+        fprintf(stderr, "flow_tool halfshift: %s\n", err);
         return 1;
     }
     gray_image_free(&img);
@@ -421,6 +468,9 @@ int main(int argc, char **argv)
     if (argc >= 2 && !strcmp(argv[1], "crop")) {
         return crop(argc - 2, argv + 2);
     }
+    if (argc >= 2 && !strcmp(argv[1], "halfshift")) {
+        return halfshift(argc - 2, argv + 2);
+    }
     if (argc >= 2 && !strcmp(argv[1], "check")) {
         return check(argc - 2, argv + 2);
     }
@@ -431,7 +481,7 @@ int main(int argc, char **argv)
         return track_rho(argc - 2, argv + 2);
     }
     fprintf(stderr, "usage: flow_tool gain IN OUT G O | crop IN OUT X Y W H | "
-                    "check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
+                    "halfshift IN A B D ROW | check FILE DX DY MINFRAC [...] | track-rho FIRST SECOND FILE MODE MINOK | "
                     "track-check FILE DX DY MINFRAC | shrink IN OUT N | "
                     "track-sub FILE DX DY TOL MINFRAC [--relaxed [--kept]] | track-status FILE\n");
     return 2;

@@ -56,6 +56,16 @@ run 0 register ref.png mov.png mov.png -o a.png -o b.png --stack s3.png --json t
   chk map two.json truth.txt 0.5 0; chk map two.json truth.txt 0.5 1; chk png s3.png 320 240 3 8
   chk same a.png b.png
 }
+# fewer -o than MOVs: the MOV without one is written nowhere, and a
+# warning names it; --json (or --stack, --flicker) takes it: no warning
+run 0 register ref.png mov.png mov16.png -o w1.png -q && {
+  stderr_has "warning: 2 MOV images and 1 -o output: 'mov16.png' is registered but written nowhere"
+  [ -s w1.png ] || fail "w1.png not written"
+}
+run 0 register ref.png mov.png mov16.png -o w2.png --json w2.json -q &&
+  grep -q "written nowhere" err.txt && fail "warned with --json: $(cat err.txt)"
+run 0 register ref.png mov.png mov.png mov16.png --checker wc.png -q &&
+  stderr_has "'mov.png' and the MOVs after it are registered but written nowhere"
 # JSON on stdout
 run 0 register ref.png mov.png --json - && grep -q '"coeffs_x"' out.txt || fail "--json - printed no JSON"
 

@@ -6,8 +6,8 @@
  *       zero corner). KIND: brightness (three grays, dark to light: Z1
  *       separates them) or hue (reddish, neutral, bluish of equal
  *       brightness: Z2 separates them). Noise: sd 4 (8-bit scale).
- *   mixture OUT.png: a 128 x 128 gray image whose values are drawn from
- *       0.3 N(50, 6) + 0.5 N(120, 10) + 0.2 N(200, 5).
+ *   mixture OUT.png [WxH]: a 128 x 128 (W x H) gray image whose values are
+ *       drawn from 0.3 N(50, 6) + 0.5 N(120, 10) + 0.2 N(200, 5).
  *   blank OUT.png: a 16 x 8 RGB image of zeros (all nodata with --nodata 0).
  * Exit status 0, or 2 on a bad command line.
  */
@@ -110,19 +110,22 @@ static void scene(const char *kind, const char *out, const char *truth, int bits
     free(lab);
 }
 
-static void mixture(const char *out)
+static void mixture(const char *out, uint32_t width, uint32_t height)
 {
     static const double w[3] = {0.3, 0.5, 0.2}, m[3] = {50, 120, 200}, s[3] = {6, 10, 5};
-    uint8_t *img = malloc(128u * 128u);
+    uint8_t *img = malloc((size_t)width * height);
     uint32_t i, j;
-    for (i = 0; i < 128u * 128u; i++) {
+    if (img == NULL) {
+        die("mixture: out of memory");
+    }
+    for (i = 0; i < width * height; i++) {
         const double u = uniform();
         double v;
         j = u < w[0] ? 0 : u < w[0] + w[1] ? 1 : 2;
         v = m[j] + s[j] * normal();
         img[i] = (uint8_t)(v < 0.0 ? 0.0 : v > 255.0 ? 255.0 : lround(v));
     }
-    write_png(out, 128u, 128u, 8, 0, img);
+    write_png(out, width, height, 8, 0, img);
     free(img);
 }
 
@@ -140,14 +143,18 @@ int main(int argc, char **argv)
             }
         }
         scene(argv[2], argv[3], argv[4], bits == 16 ? 16 : 8, nodata);
-    } else if (argc == 3 && strcmp(argv[1], "mixture") == 0) {
-        mixture(argv[2]);
+    } else if ((argc == 3 || argc == 4) && strcmp(argv[1], "mixture") == 0) {
+        unsigned w = 128u, h = 128u;
+        if (argc == 4 && (sscanf(argv[3], "%ux%u", &w, &h) != 2 || w == 0u || h == 0u)) {
+            die("mixture: size WxH");
+        }
+        mixture(argv[2], w, h);
     } else if (argc == 3 && strcmp(argv[1], "blank") == 0) {
         uint8_t img[16 * 8 * 3];
         memset(img, 0, sizeof img);
         write_png(argv[2], 16, 8, 8, 1, img);
     } else {
-        die("usage: seg_gen scene KIND OUT TRUTH [--bits 16] [--nodata] | mixture OUT | blank OUT");
+        die("usage: seg_gen scene KIND OUT TRUTH [--bits 16] [--nodata] | mixture OUT [WxH] | blank OUT");
     }
     return 0;
 }

@@ -14,6 +14,7 @@
 "$gen" scene brightness holes.png holes-truth.png --nodata || exit 1
 "$gen" mixture mix.png || exit 1
 "$gen" blank blank.png || exit 1
+"$gen" mixture tall.png 40x33000 || exit 1
 
 # ---- usage ----
 run 0 segment --help && grep -q "usage: ssda segment" out.txt || fail "segment --help"
@@ -67,6 +68,10 @@ chk json all.json 3 3
 [ -s h.png ] || fail "no plot"
 [ -s p.png ] || fail "no picture"
 grep -q '"unlabelled_pixels":[[:space:]]*0' all.json || fail "--rule likely left pixels unlabelled"
+# a tall image (40 x 33000, taller than cairo's 32767 px): the picture is
+# drawn reduced to at most 4000 px tall, no crash (a segfault before)
+run 0 segment tall.png --components 3 -o tall-lab.png --picture tall-p.png -q &&
+  { chk png tall-lab.png 40 33000; [ -s tall-p.png ] || fail "no picture of the tall image"; }
 # a gray image: the histogram part alone, means in pixel values
 run 0 segment mix.png --components 3 --json mix.json --no-clean || true
 chk json mix.json 1 3 50 120 200
